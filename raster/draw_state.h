@@ -1,0 +1,101 @@
+// The validated state one draw needs, as plain values: the "draw snapshot".
+// raster/ knows no GL enums; state/ translates them into these.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "raster/texture.h"
+
+namespace pineda::raster {
+
+enum class CompareFunc : uint8_t { Never, Less, Equal, LessEqual, Greater, NotEqual, GreaterEqual, Always };
+enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, Decr, Invert, IncrWrap, DecrWrap };
+enum class BlendFactor : uint8_t {
+  Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor, SrcAlpha, OneMinusSrcAlpha,
+  DstAlpha, OneMinusDstAlpha, ConstantColor, OneMinusConstantColor, ConstantAlpha,
+  OneMinusConstantAlpha, SrcAlphaSaturate
+};
+enum class BlendEquation : uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+enum class LogicOp : uint8_t {
+  Clear, And, AndReverse, Copy, AndInverted, Noop, Xor, Or, Nor, Equiv, Invert, OrReverse,
+  CopyInverted, OrInverted, Nand, Set
+};
+enum class PolygonMode : uint8_t { Point, Line, Fill };
+enum class Primitive : uint8_t {
+  Points, Lines, LineLoop, LineStrip, Triangles, TriangleStrip, TriangleFan, Quads, QuadStrip, Polygon
+};
+
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;
+  double near_z = 0.0, far_z = 1.0;  // glDepthRange, clamped to [0, 1]
+};
+
+struct Rect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+struct StencilFace {
+  CompareFunc func = CompareFunc::Always;
+  int ref = 0;
+  uint8_t value_mask = 0xff;
+  uint8_t write_mask = 0xff;
+  StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, depth_pass = StencilOp::Keep;
+};
+
+struct BlendState {
+  BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
+  BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;
+  BlendEquation eq_rgb = BlendEquation::Add, eq_alpha = BlendEquation::Add;
+  float color[4] = {0, 0, 0, 0};
+};
+
+struct DrawState {
+  Viewport viewport;
+  bool scissor_test = false;
+  Rect scissor;
+
+  // Primitive processing
+  bool cull_face = false;
+  bool cull_front = false, cull_back = true;  // glCullFace
+  bool front_ccw = true;                       // glFrontFace
+  PolygonMode polygon_front = PolygonMode::Fill, polygon_back = PolygonMode::Fill;
+  bool offset_fill = false, offset_line = false, offset_point = false;
+  float offset_factor = 0.f, offset_units = 0.f;
+  float point_size = 1.f;
+  float line_width = 1.f;
+  bool flat_shading = false;  // GL_FLAT: the provoking vertex's colour for the whole primitive
+
+  // Per-fragment stages, in pipeline order
+  bool alpha_test = false;
+  CompareFunc alpha_func = CompareFunc::Always;
+  float alpha_ref = 0.f;
+  bool stencil_test = false;
+  StencilFace stencil_front, stencil_back;
+  bool depth_test = false;
+  CompareFunc depth_func = CompareFunc::Less;
+  bool depth_write = true;
+  bool blend = false;
+  BlendState blend_state;
+  bool logic_op_enabled = false;
+  LogicOp logic_op = LogicOp::Copy;
+  bool dither = true;  // accepted; Pineda never dithers (exact output)
+  std::array<bool, 4> color_write = {true, true, true, true};
+
+  // Texturing (fixed function); a unit is enabled when its image is non-null.
+  std::array<TextureUnit, kMaxTextureUnits> texture_units;
+};
+
+// What glClear needs.
+struct ClearState {
+  bool color = false, depth = false, stencil = false;
+  float color_value[4] = {0, 0, 0, 0};
+  double depth_value = 1.0;
+  int stencil_value = 0;
+  std::array<bool, 4> color_write = {true, true, true, true};
+  uint8_t stencil_write_mask = 0xff;
+  bool depth_write = true;
+  bool scissor_test = false;
+  Rect scissor;
+};
+
+}  // namespace pineda::raster

@@ -1,0 +1,45 @@
+// The pipeline below the API, one per context: primitive assembly, clipping, setup,
+// binning into tiles, and the deferred tile rasterization on worker threads.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "raster/draw_state.h"
+#include "raster/framebuffer.h"
+#include "raster/vertex.h"
+
+namespace pineda::raster {
+
+class Scene;
+class WorkerPool;
+
+class Renderer {
+ public:
+  // threads == 0: PINEDA_THREADS if set, otherwise one per core.
+  explicit Renderer(int threads = 0);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Completes pending work on the previous framebuffer, then renders into this one.
+  void set_framebuffer(const Framebuffer& fb);
+  const Framebuffer& framebuffer() const;
+
+  void clear(const ClearState& clear);
+
+  // Assembles `mode` primitives from `vertices` (in order, or through `indices` when it is
+  // not empty; an index past the end of `vertices` drops its primitive), clips, sets up and
+  // bins them. Nothing of `state` or the spans is referenced after the call returns.
+  void draw(const DrawState& state, Primitive mode, std::span<const ClipVertex> vertices,
+            std::span<const uint32_t> indices = {});
+
+  // Executes everything queued; afterwards the framebuffer's memory is up to date.
+  void flush();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pineda::raster

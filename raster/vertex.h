@@ -1,0 +1,29 @@
+// Vertices before and after the vertex stage.
+#pragma once
+#include <cstdint>
+
+#include "raster/texture.h"
+
+namespace pineda::raster {
+
+// One vertex as the application specified it (immediate mode or client arrays).
+struct VertexInput {
+  float position[4] = {0, 0, 0, 1};
+  float color[4] = {1, 1, 1, 1};
+  float normal[3] = {0, 0, 1};
+  float texcoord[kMaxTextureUnits][4] = {};
+  bool edge_flag = true;
+};
+
+// One vertex after transform and lighting: clip-space position plus the varyings the
+// rasterizer interpolates. Colours are clamped to [0, 1]; `back_color` is used for
+// back-facing polygons when two-sided lighting is on (equal to `color` otherwise).
+struct ClipVertex {
+  float clip[4];
+  float color[4];
+  float back_color[4];
+  float texcoord[kMaxTextureUnits][4];
+  bool edge_flag;
+};
+
+}  // namespace pineda::raster

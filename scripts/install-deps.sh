@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what building and testing Pineda needs on a fresh Debian 12 machine.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config python3 git
+  khronos-api librust-khronos-api-dev   # gl.xml (khronos-api) and egl.xml (the registry crate's copy)
+  libegl-dev libgles-dev mesa-common-dev libosmesa6-dev libx11-dev
+  libglm-dev libpng-dev libgtest-dev googletest
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q
+  apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,150 @@
+// The GL context: all GL state and objects, error recording, and the bridge to raster/.
+#pragma once
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "raster/draw_state.h"
+#include "raster/renderer.h"
+#include "raster/vertex.h"
+#include "state/drawable.h"
+#include "state/texture_object.h"
+
+namespace pineda {
+
+struct ContextAttribs {
+  int major = 1, minor = 1;
+  bool gles = false;
+  int threads = 0;  // 0: PINEDA_THREADS or one per core
+};
+
+struct MatrixStack {
+  std::vector<glm::dmat4> stack{glm::dmat4(1.0)};
+  size_t max_depth = 32;
+  glm::dmat4& top() { return stack.back(); }
+  const glm::dmat4& top() const { return stack.back(); }
+};
+
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+};
+
+struct PixelStore {
+  GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
+  GLboolean swap_bytes = GL_FALSE, lsb_first = GL_FALSE;
+};
+
+struct TextureUnitState {
+  bool enabled_2d = false, enabled_1d = false;
+  GLuint bound_2d = 0, bound_1d = 0;
+  GLenum env_mode = GL_MODULATE;
+  float env_color[4] = {0, 0, 0, 0};
+  float current_texcoord[4] = {0, 0, 0, 1};
+  ClientArray texcoord_array;
+};
+
+class Context {
+ public:
+  explicit Context(const ContextAttribs& attribs);
+  ~Context();
+
+  const ContextAttribs& attribs() const { return attribs_; }
+
+  // Window-system binding (driver/). A null drawable is a surfaceless context.
+  void make_current(Drawable* draw, Drawable* read);
+  void release_current();
+  Drawable* draw_drawable() const { return draw_; }
+  // The driver calls this when a bound drawable's buffers were replaced (resize, swap).
+  void drawable_changed();
+
+  // Errors: the first one is kept until glGetError reads it.
+  void record_error(GLenum error) {
+    if (error_ == GL_NO_ERROR) error_ = error;
+  }
+  GLenum take_error() {
+    GLenum e = error_;
+    error_ = GL_NO_ERROR;
+    return e;
+  }
+  bool inside_begin_end() const { return in_begin_end; }
+
+  raster::Renderer& renderer() { return *renderer_; }
+  void finish() { renderer_->flush(); }
+
+  // ---- state, read and written by the state/ implementation files ----
+  bool in_begin_end = false;
+  GLenum begin_mode = GL_POINTS;
+  std::vector<raster::VertexInput> immediate;
+
+  // Current vertex attributes
+  float current_color[4] = {1, 1, 1, 1};
+  float current_normal[3] = {0, 0, 1};
+  bool current_edge_flag = true;
+  GLuint active_texture = 0, client_active_texture = 0;
+
+  // Transform
+  GLenum matrix_mode = GL_MODELVIEW;
+  MatrixStack modelview, projection;
+  std::array<MatrixStack, raster::kMaxTextureUnits> texture_matrix;
+  raster::Viewport viewport;
+  bool normalize = false, rescale_normal = false;
+
+  // Rasterization & fragment state lives in its raster form; GL enums are translated on set.
+  raster::DrawState draw_state;
+  bool enable_cull = false;
+  GLenum cull_face_mode = GL_BACK, front_face = GL_CCW;
+  GLenum polygon_mode_front = GL_FILL, polygon_mode_back = GL_FILL;
+  GLenum shade_model = GL_SMOOTH;
+  bool point_smooth = false, line_smooth = false, polygon_smooth = false;
+  bool line_stipple = false, polygon_stipple = false;
+  bool lighting = false, color_material = false, fog = false;
+
+  // Raw GL values for glGet
+  GLenum depth_func = GL_LESS, alpha_func = GL_ALWAYS;
+  GLenum stencil_func = GL_ALWAYS, stencil_fail = GL_KEEP, stencil_zfail = GL_KEEP, stencil_zpass = GL_KEEP;
+  GLenum blend_src_rgb = GL_ONE, blend_dst_rgb = GL_ZERO, blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
+  GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_alpha = GL_FUNC_ADD;
+  GLenum logic_op = GL_COPY;
+  GLuint stencil_value_mask = ~0u, stencil_write_mask = ~0u;
+
+  // Clear values
+  float clear_color[4] = {0, 0, 0, 0};
+  double clear_depth = 1.0;
+  GLint clear_stencil = 0;
+
+  // Hints
+  GLenum hint_perspective = GL_DONT_CARE, hint_point = GL_DONT_CARE, hint_line = GL_DONT_CARE,
+         hint_polygon = GL_DONT_CARE, hint_fog = GL_DONT_CARE;
+
+  // Client arrays and pixel storage
+  ClientArray vertex_array, color_array, normal_array;
+  PixelStore pack, unpack;
+
+  // Textures
+  std::array<TextureUnitState, raster::kMaxTextureUnits> texture_units;
+  TextureNamespace textures;
+
+  GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+
+ private:
+  ContextAttribs attribs_;
+  GLenum error_ = GL_NO_ERROR;
+  std::unique_ptr<raster::Renderer> renderer_;
+  Drawable* draw_ = nullptr;
+  Drawable* read_ = nullptr;
+  bool ever_bound_ = false;
+};
+
+}  // namespace pineda
