@@ -15,6 +15,7 @@
 #include "raster/draw_state.h"
 #include "raster/renderer.h"
 #include "raster/vertex.h"
+#include "raster/vertex_transform.h"
 #include "state/drawable.h"
 #include "state/texture_object.h"
 
@@ -66,6 +67,7 @@ class Context {
   void make_current(Drawable* draw, Drawable* read);
   void release_current();
   Drawable* draw_drawable() const { return draw_; }
+  Drawable* read_drawable() const { return read_; }
   // The driver calls this when a bound drawable's buffers were replaced (resize, swap).
   void drawable_changed();
 
@@ -87,6 +89,8 @@ class Context {
   bool in_begin_end = false;
   GLenum begin_mode = GL_POINTS;
   std::vector<raster::VertexInput> immediate;
+  std::vector<raster::VertexInput> fetched;   // client-array vertices of the current draw
+  std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
 
   // Current vertex attributes
   float current_color[4] = {1, 1, 1, 1};
@@ -109,7 +113,12 @@ class Context {
   GLenum shade_model = GL_SMOOTH;
   bool point_smooth = false, line_smooth = false, polygon_smooth = false;
   bool line_stipple = false, polygon_stipple = false;
-  bool lighting = false, color_material = false, fog = false;
+  raster::Lighting lighting;
+  GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+  bool fog = false;
+  // Capabilities GL 1.1 accepts whose rendering Pineda does not do yet (fog, stipple,
+  // smoothing, clip planes, texgen, evaluators): the enable bit is kept for glIsEnabled.
+  std::unordered_map<GLenum, bool> unrendered_caps;
 
   // Raw GL values for glGet
   GLenum depth_func = GL_LESS, alpha_func = GL_ALWAYS;
@@ -130,6 +139,7 @@ class Context {
 
   // Client arrays and pixel storage
   ClientArray vertex_array, color_array, normal_array;
+  bool index_array = false, edge_flag_array_enabled = false;
   PixelStore pack, unpack;
 
   // Textures
@@ -137,8 +147,11 @@ class Context {
   TextureNamespace textures;
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+  std::string version_string;  // storage for glGetString(GL_VERSION)
 
  private:
+  void bind_framebuffer();
+
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;
   std::unique_ptr<raster::Renderer> renderer_;

@@ -1,0 +1,118 @@
+#include "raster/vertex_transform.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pineda::raster {
+namespace {
+
+struct MaterialColors {
+  glm::vec4 ambient, diffuse, specular, emission;
+  float shininess;
+};
+
+MaterialColors material_for(const Lighting& l, const Material& m, bool is_front, const float* color) {
+  MaterialColors c{m.ambient, m.diffuse, m.specular, m.emission, m.shininess};
+  const ColorMaterial& cm = l.color_material;
+  if (cm.enabled && (is_front ? cm.front : cm.back)) {
+    const glm::vec4 current(color[0], color[1], color[2], color[3]);
+    if (cm.ambient) c.ambient = current;
+    if (cm.diffuse) c.diffuse = current;
+    if (cm.specular) c.specular = current;
+    if (cm.emission) c.emission = current;
+  }
+  return c;
+}
+
+// The GL 1.x lighting equation (GL 1.5 spec, section 2.14.1) for one face.
+glm::vec4 light_vertex(const Lighting& l, const MaterialColors& m, const glm::vec3& eye_pos,
+                       const glm::vec3& normal) {
+  glm::vec3 color = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(l.model_ambient);
+  for (const Light& light : l.lights) {
+    if (!light.enabled) continue;
+    glm::vec3 to_light;
+    float attenuation = 1.f;
+    if (light.position.w != 0.f) {
+      to_light = glm::vec3(light.position) / light.position.w - eye_pos;
+      const float d = glm::length(to_light);
+      const float denom = light.constant_attenuation + light.linear_attenuation * d +
+                          light.quadratic_attenuation * d * d;
+      attenuation = denom > 0.f ? 1.f / denom : 1.f;
+      if (d > 0.f) to_light /= d;
+    } else {
+      to_light = glm::normalize(glm::vec3(light.position));
+    }
+    float spot = 1.f;
+    if (light.spot_cutoff != 180.f) {
+      const float cos_angle = glm::dot(-to_light, glm::normalize(light.spot_direction));
+      const float cos_cutoff = std::cos(glm::radians(light.spot_cutoff));
+      spot = cos_angle >= cos_cutoff ? std::pow(std::max(cos_angle, 0.f), light.spot_exponent) : 0.f;
+    }
+    const float factor = attenuation * spot;
+    if (factor == 0.f) continue;
+    glm::vec3 contribution = glm::vec3(m.ambient) * glm::vec3(light.ambient);
+    const float n_dot_l = glm::dot(normal, to_light);
+    if (n_dot_l > 0.f) {
+      contribution += n_dot_l * glm::vec3(m.diffuse) * glm::vec3(light.diffuse);
+      const glm::vec3 to_eye = l.local_viewer ? glm::normalize(-eye_pos) : glm::vec3(0, 0, 1);
+      const glm::vec3 half = to_light + to_eye;
+      const float half_len = glm::length(half);
+      if (half_len > 0.f) {
+        const float n_dot_h = glm::dot(normal, half / half_len);
+        if (n_dot_h > 0.f) {
+          const float spec = m.shininess == 0.f ? 1.f : std::pow(n_dot_h, m.shininess);
+          contribution += spec * glm::vec3(m.specular) * glm::vec3(light.specular);
+        }
+      }
+    }
+    color += factor * contribution;
+  }
+  return glm::vec4(glm::clamp(color, 0.f, 1.f), std::clamp(m.diffuse.a, 0.f, 1.f));
+}
+
+void store(float* dst, const glm::vec4& v) {
+  dst[0] = v.x;
+  dst[1] = v.y;
+  dst[2] = v.z;
+  dst[3] = v.w;
+}
+
+}  // namespace
+
+void transform_vertices(const Transform& t, std::span<const VertexInput> in, std::vector<ClipVertex>& out) {
+  out.resize(in.size());
+  const Lighting& lighting = t.lighting;
+  for (size_t i = 0; i < in.size(); ++i) {
+    const VertexInput& v = in[i];
+    ClipVertex& o = out[i];
+    const glm::vec4 obj(v.position[0], v.position[1], v.position[2], v.position[3]);
+    store(o.clip, t.modelview_projection * obj);
+    o.edge_flag = v.edge_flag;
+
+    if (lighting.enabled) {
+      const glm::vec4 eye4 = t.modelview * obj;
+      const glm::vec3 eye_pos = eye4.w != 0.f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
+      glm::vec3 normal = t.normal_matrix * glm::vec3(v.normal[0], v.normal[1], v.normal[2]);
+      normal *= t.rescale_factor;
+      if (t.normalize) {
+        const float len = glm::length(normal);
+        if (len > 0.f) normal /= len;
+      }
+      store(o.color, light_vertex(lighting, material_for(lighting, lighting.front, true, v.color), eye_pos, normal));
+      if (lighting.two_side)
+        store(o.back_color,
+              light_vertex(lighting, material_for(lighting, lighting.back, false, v.color), eye_pos, -normal));
+      else
+        std::copy(o.color, o.color + 4, o.back_color);
+    } else {
+      for (int c = 0; c < 4; ++c) o.color[c] = o.back_color[c] = std::clamp(v.color[c], 0.f, 1.f);
+    }
+
+    for (int u = 0; u < t.texture_units; ++u) {
+      const glm::vec4 tc(v.texcoord[u][0], v.texcoord[u][1], v.texcoord[u][2], v.texcoord[u][3]);
+      store(o.texcoord[u], t.texture_matrix_identity[u] ? tc : t.texture_matrix[u] * tc);
+    }
+  }
+}
+
+}  // namespace pineda::raster

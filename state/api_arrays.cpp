@@ -1,0 +1,172 @@
+// Client vertex arrays: the pointers, glDrawArrays, glDrawElements, glArrayElement,
+// glInterleavedArrays.
+#include <algorithm>
+#include <cstring>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/draw.h"
+#include "state/enum_translate.h"
+#include "state/vertex_fetch.h"
+
+namespace pineda::gl {
+namespace {
+
+void set_pointer(Context& ctx, ClientArray& array, GLint size, GLenum type, GLsizei stride, const void* ptr,
+                 std::initializer_list<GLint> sizes, std::initializer_list<GLenum> types) {
+  if (std::find(sizes.begin(), sizes.end(), size) == sizes.end() || stride < 0)
+    return ctx.record_error(GL_INVALID_VALUE);
+  if (std::find(types.begin(), types.end(), type) == types.end()) return ctx.record_error(GL_INVALID_ENUM);
+  array.size = size;
+  array.type = type;
+  array.stride = stride;
+  array.pointer = ptr;
+}
+
+bool valid_mode(Context& ctx, GLenum mode) {
+  raster::Primitive p;
+  if (to_primitive(mode, p)) return true;
+  ctx.record_error(GL_INVALID_ENUM);
+  return false;
+}
+
+bool can_fetch(const Context& ctx) { return ctx.vertex_array.enabled && ctx.vertex_array.pointer; }
+
+template <typename Index>
+void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {
+  Index lo = indices[0], hi = indices[0];
+  for (GLsizei i = 1; i < count; ++i) {
+    lo = std::min(lo, indices[i]);
+    hi = std::max(hi, indices[i]);
+  }
+  const size_t range = size_t(hi) - lo + 1;
+  std::vector<uint32_t> rebased;
+  if (range <= size_t(count) * 4) {
+    // Dense indices: transform each referenced vertex once and pass the indices along.
+    ctx.fetched.resize(range);
+    for (size_t i = 0; i < range; ++i) fetch_vertex(ctx, lo + i, ctx.fetched[i]);
+    rebased.resize(count);
+    for (GLsizei i = 0; i < count; ++i) rebased[i] = uint32_t(indices[i] - lo);
+  } else {
+    ctx.fetched.resize(count);
+    for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], ctx.fetched[i]);
+  }
+  draw_vertices(ctx, mode, ctx.fetched, rebased);
+}
+
+}  // namespace
+
+void VertexPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(ctx, ctx.vertex_array, size, type, stride, ptr, {2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+void ColorPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(ctx, ctx.color_array, size, type, stride, ptr, {3, 4},
+              {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+void NormalPointer(Context& ctx, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(ctx, ctx.normal_array, 3, type, stride, ptr, {3}, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+void TexCoordPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(ctx, ctx.texture_units[ctx.client_active_texture].texcoord_array, size, type, stride, ptr,
+              {1, 2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
+  if (!valid_mode(ctx, mode)) return;
+  if (count < 0 || first < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (count == 0 || !can_fetch(ctx)) return;
+  ctx.fetched.resize(count);
+  for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, ctx.fetched[i]);
+  draw_vertices(ctx, mode, ctx.fetched, {});
+}
+
+void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (!valid_mode(ctx, mode)) return;
+  if (count < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
+    return ctx.record_error(GL_INVALID_ENUM);
+  if (count == 0 || !indices || !can_fetch(ctx)) return;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return draw_indexed(ctx, mode, count, static_cast<const GLubyte*>(indices));
+    case GL_UNSIGNED_SHORT: return draw_indexed(ctx, mode, count, static_cast<const GLushort*>(indices));
+    default: return draw_indexed(ctx, mode, count, static_cast<const GLuint*>(indices));
+  }
+}
+
+// Behaves as the Color/Normal/TexCoord/Vertex calls it stands for: the current values change.
+void ArrayElement(Context& ctx, GLint i) {
+  if (i < 0) return ctx.record_error(GL_INVALID_VALUE);
+  raster::VertexInput v;
+  fetch_vertex(ctx, size_t(i), v);
+  if (ctx.color_array.enabled && ctx.color_array.pointer) std::copy(v.color, v.color + 4, ctx.current_color);
+  if (ctx.normal_array.enabled && ctx.normal_array.pointer) std::copy(v.normal, v.normal + 3, ctx.current_normal);
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+    TextureUnitState& unit = ctx.texture_units[u];
+    if (unit.texcoord_array.enabled && unit.texcoord_array.pointer)
+      std::copy(v.texcoord[u], v.texcoord[u] + 4, unit.current_texcoord);
+  }
+  if (can_fetch(ctx) && ctx.in_begin_end) ctx.immediate.push_back(v);
+}
+
+void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* pointer) {
+  // Table 2.5 of the GL 1.1 spec: which arrays each format enables, sizes and offsets.
+  struct Layout {
+    GLenum format;
+    bool tex, color, normal;
+    GLint st, sc, sv;
+    GLenum tc;
+    int pc, pn, pv, s;  // offsets and default stride in units of sizeof(float)
+  };
+  constexpr int f = sizeof(GLfloat);
+  static constexpr Layout layouts[] = {
+      {GL_V2F, false, false, false, 0, 0, 2, 0, 0, 0, 0, 2},
+      {GL_V3F, false, false, false, 0, 0, 3, 0, 0, 0, 0, 3},
+      {GL_C4UB_V2F, false, true, false, 0, 4, 2, GL_UNSIGNED_BYTE, 0, 0, 1, 3},
+      {GL_C4UB_V3F, false, true, false, 0, 4, 3, GL_UNSIGNED_BYTE, 0, 0, 1, 4},
+      {GL_C3F_V3F, false, true, false, 0, 3, 3, GL_FLOAT, 0, 0, 3, 6},
+      {GL_N3F_V3F, false, false, true, 0, 0, 3, 0, 0, 0, 3, 6},
+      {GL_C4F_N3F_V3F, false, true, true, 0, 4, 3, GL_FLOAT, 0, 4, 7, 10},
+      {GL_T2F_V3F, true, false, false, 2, 0, 3, 0, 0, 0, 2, 5},
+      {GL_T4F_V4F, true, false, false, 4, 0, 4, 0, 0, 0, 4, 8},
+      {GL_T2F_C4UB_V3F, true, true, false, 2, 4, 3, GL_UNSIGNED_BYTE, 2, 0, 3, 6},
+      {GL_T2F_C3F_V3F, true, true, false, 2, 3, 3, GL_FLOAT, 2, 0, 5, 8},
+      {GL_T2F_N3F_V3F, true, false, true, 2, 0, 3, 0, 0, 2, 5, 8},
+      {GL_T2F_C4F_N3F_V3F, true, true, true, 2, 4, 3, GL_FLOAT, 2, 6, 9, 12},
+      {GL_T4F_C4F_N3F_V4F, true, true, true, 4, 4, 4, GL_FLOAT, 4, 8, 11, 15},
+  };
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
+  const Layout* layout = nullptr;
+  for (const Layout& l : layouts)
+    if (l.format == format) layout = &l;
+  if (!layout) return ctx.record_error(GL_INVALID_ENUM);
+  const GLsizei s = stride ? stride : layout->s * f;
+  const auto* base = static_cast<const uint8_t*>(pointer);
+  ClientArray& tex = ctx.texture_units[ctx.client_active_texture].texcoord_array;
+  tex.enabled = layout->tex;
+  if (layout->tex) tex = {true, layout->st, GL_FLOAT, s, base};
+  ctx.color_array.enabled = layout->color;
+  if (layout->color) ctx.color_array = {true, layout->sc, layout->tc, s, base + layout->pc * f};
+  ctx.normal_array.enabled = layout->normal;
+  if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, base + layout->pn * f};
+  ctx.index_array = false;
+  ctx.edge_flag_array_enabled = false;
+  ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, base + layout->pv * f};
+}
+
+void GetPointerv(Context& ctx, GLenum pname, void** params) {
+  if (!params) return;
+  switch (pname) {
+    case GL_VERTEX_ARRAY_POINTER: *params = const_cast<void*>(ctx.vertex_array.pointer); break;
+    case GL_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.color_array.pointer); break;
+    case GL_NORMAL_ARRAY_POINTER: *params = const_cast<void*>(ctx.normal_array.pointer); break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER:
+      *params = const_cast<void*>(ctx.texture_units[ctx.client_active_texture].texcoord_array.pointer);
+      break;
+    default: ctx.record_error(GL_INVALID_ENUM);
+  }
+}
+
+}  // namespace pineda::gl

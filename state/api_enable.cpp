@@ -1,0 +1,101 @@
+// glEnable/glDisable/glIsEnabled and the client-array switches.
+#include "glapi/gl_entry_points.h"
+#include "state/capabilities.h"
+#include "state/context.h"
+
+namespace pineda {
+namespace {
+
+bool is_unrendered_cap(GLenum cap) {
+  switch (cap) {
+    case GL_FOG: case GL_LINE_SMOOTH: case GL_LINE_STIPPLE: case GL_POINT_SMOOTH:
+    case GL_POLYGON_SMOOTH: case GL_POLYGON_STIPPLE: case GL_AUTO_NORMAL:
+    case GL_CLIP_PLANE0: case GL_CLIP_PLANE1: case GL_CLIP_PLANE2: case GL_CLIP_PLANE3:
+    case GL_CLIP_PLANE4: case GL_CLIP_PLANE5:
+    case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T: case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
+    case GL_MAP1_COLOR_4: case GL_MAP1_INDEX: case GL_MAP1_NORMAL: case GL_MAP1_TEXTURE_COORD_1:
+    case GL_MAP1_TEXTURE_COORD_2: case GL_MAP1_TEXTURE_COORD_3: case GL_MAP1_TEXTURE_COORD_4:
+    case GL_MAP1_VERTEX_3: case GL_MAP1_VERTEX_4: case GL_MAP2_COLOR_4: case GL_MAP2_INDEX:
+    case GL_MAP2_NORMAL: case GL_MAP2_TEXTURE_COORD_1: case GL_MAP2_TEXTURE_COORD_2:
+    case GL_MAP2_TEXTURE_COORD_3: case GL_MAP2_TEXTURE_COORD_4: case GL_MAP2_VERTEX_3:
+    case GL_MAP2_VERTEX_4: case GL_INDEX_LOGIC_OP:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+bool* server_capability(Context& ctx, GLenum cap) {
+  raster::DrawState& s = ctx.draw_state;
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + raster::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
+  switch (cap) {
+    case GL_ALPHA_TEST: return &s.alpha_test;
+    case GL_BLEND: return &s.blend;
+    case GL_COLOR_LOGIC_OP: return &s.logic_op_enabled;
+    case GL_CULL_FACE: return &ctx.enable_cull;
+    case GL_DEPTH_TEST: return &s.depth_test;
+    case GL_DITHER: return &s.dither;
+    case GL_SCISSOR_TEST: return &s.scissor_test;
+    case GL_STENCIL_TEST: return &s.stencil_test;
+    case GL_POLYGON_OFFSET_FILL: return &s.offset_fill;
+    case GL_POLYGON_OFFSET_LINE: return &s.offset_line;
+    case GL_POLYGON_OFFSET_POINT: return &s.offset_point;
+    case GL_LIGHTING: return &ctx.lighting.enabled;
+    case GL_COLOR_MATERIAL: return &ctx.lighting.color_material.enabled;
+    case GL_NORMALIZE: return &ctx.normalize;
+    case GL_RESCALE_NORMAL: return &ctx.rescale_normal;
+    case GL_TEXTURE_1D: return &ctx.texture_units[ctx.active_texture].enabled_1d;
+    case GL_TEXTURE_2D: return &ctx.texture_units[ctx.active_texture].enabled_2d;
+    default:
+      if (is_unrendered_cap(cap)) return &ctx.unrendered_caps[cap];
+      return nullptr;
+  }
+}
+
+bool* client_capability(Context& ctx, GLenum array) {
+  switch (array) {
+    case GL_VERTEX_ARRAY: return &ctx.vertex_array.enabled;
+    case GL_COLOR_ARRAY: return &ctx.color_array.enabled;
+    case GL_NORMAL_ARRAY: return &ctx.normal_array.enabled;
+    case GL_TEXTURE_COORD_ARRAY: return &ctx.texture_units[ctx.client_active_texture].texcoord_array.enabled;
+    case GL_INDEX_ARRAY: return &ctx.index_array;
+    case GL_EDGE_FLAG_ARRAY: return &ctx.edge_flag_array_enabled;
+    default: return nullptr;
+  }
+}
+
+}  // namespace pineda
+
+namespace pineda::gl {
+namespace {
+
+void set_capability(Context& ctx, GLenum cap, bool value) {
+  bool* flag = server_capability(ctx, cap);
+  if (!flag) return ctx.record_error(GL_INVALID_ENUM);
+  *flag = value;
+}
+
+void set_client_capability(Context& ctx, GLenum array, bool value) {
+  bool* flag = client_capability(ctx, array);
+  if (!flag) return ctx.record_error(GL_INVALID_ENUM);
+  *flag = value;
+}
+
+}  // namespace
+
+void Enable(Context& ctx, GLenum cap) { set_capability(ctx, cap, true); }
+void Disable(Context& ctx, GLenum cap) { set_capability(ctx, cap, false); }
+
+GLboolean IsEnabled(Context& ctx, GLenum cap) {
+  if (bool* flag = server_capability(ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
+  if (bool* flag = client_capability(ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
+  ctx.record_error(GL_INVALID_ENUM);
+  return GL_FALSE;
+}
+
+void EnableClientState(Context& ctx, GLenum array) { set_client_capability(ctx, array, true); }
+void DisableClientState(Context& ctx, GLenum array) { set_client_capability(ctx, array, false); }
+
+}  // namespace pineda::gl

@@ -1,0 +1,113 @@
+// Per-fragment operation state: alpha, stencil, depth, blend, logic op, masks, scissor.
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/enum_translate.h"
+
+namespace pineda::gl {
+namespace {
+float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }  // NaN -> 0
+}
+
+void AlphaFunc(Context& ctx, GLenum func, GLfloat ref) {
+  raster::CompareFunc f;
+  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  ctx.alpha_func = func;
+  ctx.draw_state.alpha_func = f;
+  ctx.draw_state.alpha_ref = clamp01(ref);
+}
+
+void DepthFunc(Context& ctx, GLenum func) {
+  raster::CompareFunc f;
+  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  ctx.depth_func = func;
+  ctx.draw_state.depth_func = f;
+}
+
+void DepthMask(Context& ctx, GLboolean flag) { ctx.draw_state.depth_write = flag != GL_FALSE; }
+
+void StencilFunc(Context& ctx, GLenum func, GLint ref, GLuint mask) {
+  raster::CompareFunc f;
+  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  ctx.stencil_func = func;
+  ctx.stencil_value_mask = mask;
+  for (raster::StencilFace* face : {&ctx.draw_state.stencil_front, &ctx.draw_state.stencil_back}) {
+    face->func = f;
+    face->ref = ref;
+    face->value_mask = static_cast<uint8_t>(mask);
+  }
+}
+
+void StencilOp(Context& ctx, GLenum fail, GLenum zfail, GLenum zpass) {
+  raster::StencilOp f, zf, zp;
+  if (!to_stencil_op(fail, f) || !to_stencil_op(zfail, zf) || !to_stencil_op(zpass, zp))
+    return ctx.record_error(GL_INVALID_ENUM);
+  ctx.stencil_fail = fail;
+  ctx.stencil_zfail = zfail;
+  ctx.stencil_zpass = zpass;
+  for (raster::StencilFace* face : {&ctx.draw_state.stencil_front, &ctx.draw_state.stencil_back}) {
+    face->fail = f;
+    face->depth_fail = zf;
+    face->depth_pass = zp;
+  }
+}
+
+void StencilMask(Context& ctx, GLuint mask) {
+  ctx.stencil_write_mask = mask;
+  ctx.draw_state.stencil_front.write_mask = ctx.draw_state.stencil_back.write_mask = static_cast<uint8_t>(mask);
+}
+
+void BlendFuncSeparate(Context& ctx, GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha) {
+  raster::BlendFactor sr, dr, sa, da;
+  if (!to_blend_factor(src_rgb, sr) || !to_blend_factor(dst_rgb, dr) || !to_blend_factor(src_alpha, sa) ||
+      !to_blend_factor(dst_alpha, da))
+    return ctx.record_error(GL_INVALID_ENUM);
+  ctx.blend_src_rgb = src_rgb;
+  ctx.blend_dst_rgb = dst_rgb;
+  ctx.blend_src_alpha = src_alpha;
+  ctx.blend_dst_alpha = dst_alpha;
+  raster::BlendState& b = ctx.draw_state.blend_state;
+  b.src_rgb = sr;
+  b.dst_rgb = dr;
+  b.src_alpha = sa;
+  b.dst_alpha = da;
+}
+
+void BlendFunc(Context& ctx, GLenum src, GLenum dst) { BlendFuncSeparate(ctx, src, dst, src, dst); }
+
+void BlendEquationSeparate(Context& ctx, GLenum mode_rgb, GLenum mode_alpha) {
+  raster::BlendEquation rgb, alpha;
+  if (!to_blend_equation(mode_rgb, rgb) || !to_blend_equation(mode_alpha, alpha))
+    return ctx.record_error(GL_INVALID_ENUM);
+  ctx.blend_eq_rgb = mode_rgb;
+  ctx.blend_eq_alpha = mode_alpha;
+  ctx.draw_state.blend_state.eq_rgb = rgb;
+  ctx.draw_state.blend_state.eq_alpha = alpha;
+}
+
+void BlendEquation(Context& ctx, GLenum mode) { BlendEquationSeparate(ctx, mode, mode); }
+
+void BlendColor(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+  float* c = ctx.draw_state.blend_state.color;
+  c[0] = clamp01(r);
+  c[1] = clamp01(g);
+  c[2] = clamp01(b);
+  c[3] = clamp01(a);
+}
+
+void LogicOp(Context& ctx, GLenum opcode) {
+  raster::LogicOp op;
+  if (!to_logic_op(opcode, op)) return ctx.record_error(GL_INVALID_ENUM);
+  ctx.logic_op = opcode;
+  ctx.draw_state.logic_op = op;
+}
+
+void ColorMask(Context& ctx, GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
+  ctx.draw_state.color_write = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
+}
+
+void Scissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  ctx.draw_state.scissor = {x, y, width, height};
+}
+
+}  // namespace pineda::gl

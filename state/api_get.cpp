@@ -1,0 +1,243 @@
+// glGet* for the state that exists, with GL's type conversions, and glGetString.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "glapi/gl_entry_points.h"
+#include "state/capabilities.h"
+#include "state/context.h"
+#include "state/limits.h"
+
+namespace pineda::gl {
+namespace {
+
+enum class Kind { Int, Enum, Bool, Float, Color };  // Color: [0,1] values that map to the int range
+
+struct Values {
+  Kind kind = Kind::Int;
+  std::vector<double> v;
+};
+
+Values ints(std::initializer_list<double> v) { return {Kind::Int, v}; }
+Values enums(std::initializer_list<double> v) { return {Kind::Enum, v}; }
+Values bools(std::initializer_list<double> v) { return {Kind::Bool, v}; }
+Values floats(std::initializer_list<double> v) { return {Kind::Float, v}; }
+Values colors(const float* c) { return {Kind::Color, {c[0], c[1], c[2], c[3]}}; }
+Values matrix(const glm::dmat4& m) {
+  Values r{Kind::Float, {}};
+  for (int c = 0; c < 4; ++c)
+    for (int row = 0; row < 4; ++row) r.v.push_back(m[c][row]);
+  return r;
+}
+
+enum class ArrayField { Size, Type, Stride };
+
+const ClientArray* client_array(Context& ctx, GLenum pname, ArrayField& field) {
+  struct Entry { GLenum size, type, stride; const ClientArray* array; };
+  const Entry entries[] = {
+      {GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE, &ctx.vertex_array},
+      {GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE, &ctx.color_array},
+      {0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, &ctx.normal_array},
+      {GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE, GL_TEXTURE_COORD_ARRAY_STRIDE,
+       &ctx.texture_units[ctx.client_active_texture].texcoord_array},
+  };
+  for (const Entry& e : entries) {
+    if (pname == e.size && e.size) field = ArrayField::Size;
+    else if (pname == e.type) field = ArrayField::Type;
+    else if (pname == e.stride) field = ArrayField::Stride;
+    else continue;
+    return e.array;
+  }
+  return nullptr;
+}
+
+bool query(Context& ctx, GLenum pname, Values& out) {
+  const raster::DrawState& s = ctx.draw_state;
+  const Drawable* d = ctx.draw_drawable();
+  const int stencil_bits = d ? d->framebuffer.stencil.bits : 0;
+  const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (ArrayField field; const ClientArray* a = client_array(ctx, pname, field)) {
+    out = field == ArrayField::Type ? enums({double(a->type)})
+                                    : ints({double(field == ArrayField::Size ? a->size : a->stride)});
+    return true;
+  }
+  switch (pname) {
+    case GL_CURRENT_COLOR: out = colors(ctx.current_color); return true;
+    case GL_CURRENT_NORMAL: out = floats({ctx.current_normal[0], ctx.current_normal[1], ctx.current_normal[2]}); return true;
+    case GL_CURRENT_TEXTURE_COORDS: {
+      const float* t = unit.current_texcoord;
+      out = floats({t[0], t[1], t[2], t[3]});
+      return true;
+    }
+    case GL_EDGE_FLAG: out = bools({double(ctx.current_edge_flag)}); return true;
+    case GL_COLOR_CLEAR_VALUE: out = colors(ctx.clear_color); return true;
+    case GL_DEPTH_CLEAR_VALUE: out = {Kind::Color, {ctx.clear_depth}}; return true;
+    case GL_STENCIL_CLEAR_VALUE: out = ints({double(ctx.clear_stencil)}); return true;
+    case GL_DEPTH_RANGE: out = {Kind::Color, {ctx.viewport.near_z, ctx.viewport.far_z}}; return true;
+    case GL_VIEWPORT: out = ints({double(ctx.viewport.x), double(ctx.viewport.y), double(ctx.viewport.width), double(ctx.viewport.height)}); return true;
+    case GL_SCISSOR_BOX: out = ints({double(s.scissor.x), double(s.scissor.y), double(s.scissor.width), double(s.scissor.height)}); return true;
+    case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
+    case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: out = ints({kMaxModelviewStackDepth}); return true;
+    case GL_MAX_PROJECTION_STACK_DEPTH: out = ints({kMaxProjectionStackDepth}); return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
+    case GL_MAX_LIGHTS: out = ints({raster::kMaxLights}); return true;
+    case GL_MAX_CLIP_PLANES: out = ints({6}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({16}); return true;
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({16}); return true;
+    case GL_MAX_NAME_STACK_DEPTH: out = ints({64}); return true;
+    case GL_MAX_LIST_NESTING: out = ints({64}); return true;
+    case GL_MAX_EVAL_ORDER: out = ints({30}); return true;
+    case GL_MAX_PIXEL_MAP_TABLE: out = ints({256}); return true;
+    case GL_SUBPIXEL_BITS: out = ints({kSubpixelBits}); return true;
+    case GL_RED_BITS: out = ints({double(d ? d->red_bits : 0)}); return true;
+    case GL_GREEN_BITS: out = ints({double(d ? d->green_bits : 0)}); return true;
+    case GL_BLUE_BITS: out = ints({double(d ? d->blue_bits : 0)}); return true;
+    case GL_ALPHA_BITS: out = ints({double(d ? d->alpha_bits : 0)}); return true;
+    case GL_DEPTH_BITS: out = ints({double(d ? d->framebuffer.depth.bits : 0)}); return true;
+    case GL_STENCIL_BITS: out = ints({double(stencil_bits)}); return true;
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
+    case GL_INDEX_BITS: case GL_AUX_BUFFERS:
+      out = ints({0});
+      return true;
+    case GL_RGBA_MODE: out = bools({1}); return true;
+    case GL_INDEX_MODE: case GL_STEREO: out = bools({0}); return true;
+    case GL_DOUBLEBUFFER: out = bools({double(d && d->double_buffered)}); return true;
+    case GL_MATRIX_MODE: out = enums({double(ctx.matrix_mode)}); return true;
+    case GL_MODELVIEW_MATRIX: out = matrix(ctx.modelview.top()); return true;
+    case GL_PROJECTION_MATRIX: out = matrix(ctx.projection.top()); return true;
+    case GL_TEXTURE_MATRIX: out = matrix(ctx.texture_matrix[ctx.active_texture].top()); return true;
+    case GL_MODELVIEW_STACK_DEPTH: out = ints({double(ctx.modelview.stack.size())}); return true;
+    case GL_PROJECTION_STACK_DEPTH: out = ints({double(ctx.projection.stack.size())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: out = ints({double(ctx.texture_matrix[ctx.active_texture].stack.size())}); return true;
+    case GL_POINT_SIZE: out = floats({s.point_size}); return true;
+    case GL_POINT_SIZE_RANGE: out = floats({kPointSizeRange[0], kPointSizeRange[1]}); return true;
+    case GL_POINT_SIZE_GRANULARITY: out = floats({1.0}); return true;
+    case GL_LINE_WIDTH: out = floats({s.line_width}); return true;
+    case GL_LINE_WIDTH_RANGE: out = floats({kLineWidthRange[0], kLineWidthRange[1]}); return true;
+    case GL_LINE_WIDTH_GRANULARITY: out = floats({1.0}); return true;
+    case GL_CULL_FACE_MODE: out = enums({double(ctx.cull_face_mode)}); return true;
+    case GL_FRONT_FACE: out = enums({double(ctx.front_face)}); return true;
+    case GL_POLYGON_MODE: out = enums({double(ctx.polygon_mode_front), double(ctx.polygon_mode_back)}); return true;
+    case GL_POLYGON_OFFSET_FACTOR: out = floats({s.offset_factor}); return true;
+    case GL_POLYGON_OFFSET_UNITS: out = floats({s.offset_units}); return true;
+    case GL_SHADE_MODEL: out = enums({double(ctx.shade_model)}); return true;
+    case GL_DEPTH_FUNC: out = enums({double(ctx.depth_func)}); return true;
+    case GL_DEPTH_WRITEMASK: out = bools({double(s.depth_write)}); return true;
+    case GL_ALPHA_TEST_FUNC: out = enums({double(ctx.alpha_func)}); return true;
+    case GL_ALPHA_TEST_REF: out = {Kind::Color, {s.alpha_ref}}; return true;
+    case GL_STENCIL_FUNC: out = enums({double(ctx.stencil_func)}); return true;
+    case GL_STENCIL_VALUE_MASK: out = ints({double(ctx.stencil_value_mask)}); return true;
+    case GL_STENCIL_REF: out = ints({double(s.stencil_front.ref)}); return true;
+    case GL_STENCIL_FAIL: out = enums({double(ctx.stencil_fail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_FAIL: out = enums({double(ctx.stencil_zfail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_PASS: out = enums({double(ctx.stencil_zpass)}); return true;
+    case GL_STENCIL_WRITEMASK: out = ints({double(ctx.stencil_write_mask)}); return true;
+    case GL_BLEND_SRC: out = enums({double(ctx.blend_src_rgb)}); return true;
+    case GL_BLEND_DST: out = enums({double(ctx.blend_dst_rgb)}); return true;
+    case GL_BLEND_SRC_ALPHA: out = enums({double(ctx.blend_src_alpha)}); return true;
+    case GL_BLEND_DST_ALPHA: out = enums({double(ctx.blend_dst_alpha)}); return true;
+    case GL_BLEND_EQUATION: out = enums({double(ctx.blend_eq_rgb)}); return true;
+    case GL_BLEND_EQUATION_ALPHA: out = enums({double(ctx.blend_eq_alpha)}); return true;
+    case GL_BLEND_COLOR: out = colors(s.blend_state.color); return true;
+    case GL_LOGIC_OP_MODE: out = enums({double(ctx.logic_op)}); return true;
+    case GL_COLOR_WRITEMASK:
+      out = bools({double(s.color_write[0]), double(s.color_write[1]), double(s.color_write[2]), double(s.color_write[3])});
+      return true;
+    case GL_DRAW_BUFFER: out = enums({double(ctx.draw_buffer)}); return true;
+    case GL_READ_BUFFER: out = enums({double(ctx.read_buffer)}); return true;
+    case GL_PACK_ALIGNMENT: out = ints({double(ctx.pack.alignment)}); return true;
+    case GL_PACK_ROW_LENGTH: out = ints({double(ctx.pack.row_length)}); return true;
+    case GL_PACK_SKIP_ROWS: out = ints({double(ctx.pack.skip_rows)}); return true;
+    case GL_PACK_SKIP_PIXELS: out = ints({double(ctx.pack.skip_pixels)}); return true;
+    case GL_PACK_SWAP_BYTES: out = bools({double(ctx.pack.swap_bytes)}); return true;
+    case GL_PACK_LSB_FIRST: out = bools({double(ctx.pack.lsb_first)}); return true;
+    case GL_UNPACK_ALIGNMENT: out = ints({double(ctx.unpack.alignment)}); return true;
+    case GL_UNPACK_ROW_LENGTH: out = ints({double(ctx.unpack.row_length)}); return true;
+    case GL_UNPACK_SKIP_ROWS: out = ints({double(ctx.unpack.skip_rows)}); return true;
+    case GL_UNPACK_SKIP_PIXELS: out = ints({double(ctx.unpack.skip_pixels)}); return true;
+    case GL_UNPACK_SWAP_BYTES: out = bools({double(ctx.unpack.swap_bytes)}); return true;
+    case GL_UNPACK_LSB_FIRST: out = bools({double(ctx.unpack.lsb_first)}); return true;
+    case GL_TEXTURE_BINDING_1D: out = ints({double(unit.bound_1d)}); return true;
+    case GL_TEXTURE_BINDING_2D: out = ints({double(unit.bound_2d)}); return true;
+    case GL_PERSPECTIVE_CORRECTION_HINT: out = enums({double(ctx.hint_perspective)}); return true;
+    case GL_POINT_SMOOTH_HINT: out = enums({double(ctx.hint_point)}); return true;
+    case GL_LINE_SMOOTH_HINT: out = enums({double(ctx.hint_line)}); return true;
+    case GL_POLYGON_SMOOTH_HINT: out = enums({double(ctx.hint_polygon)}); return true;
+    case GL_FOG_HINT: out = enums({double(ctx.hint_fog)}); return true;
+    case GL_LIGHT_MODEL_AMBIENT: {
+      const glm::vec4& a = ctx.lighting.model_ambient;
+      out = floats({a.r, a.g, a.b, a.a});
+      return true;
+    }
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: out = bools({double(ctx.lighting.local_viewer)}); return true;
+    case GL_LIGHT_MODEL_TWO_SIDE: out = bools({double(ctx.lighting.two_side)}); return true;
+    case GL_COLOR_MATERIAL_FACE: out = enums({double(ctx.color_material_face)}); return true;
+    case GL_COLOR_MATERIAL_PARAMETER: out = enums({double(ctx.color_material_mode)}); return true;
+    default: break;
+  }
+  // Every capability is also a boolean state.
+  bool* flag = server_capability(ctx, pname);
+  if (!flag) flag = client_capability(ctx, pname);
+  if (!flag) return false;
+  out = bools({double(*flag)});
+  return true;
+}
+
+// GL 1.1 spec 6.1.2: colours become integers by a linear map of [-1, 1] onto the int range.
+GLint to_int(Kind kind, double v) {
+  if (kind == Kind::Color) return static_cast<GLint>(std::clamp(v, -1.0, 1.0) * 2147483647.0);
+  if (kind == Kind::Float) return static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
+  return static_cast<GLint>(static_cast<int64_t>(v));
+}
+
+template <typename T, typename Convert>
+void get(Context& ctx, GLenum pname, T* params, Convert convert) {
+  Values values;
+  if (!query(ctx, pname, values)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!params) return;
+  for (size_t i = 0; i < values.v.size(); ++i) params[i] = convert(values.kind, values.v[i]);
+}
+
+std::string version_string(const Context& ctx) {
+  return std::to_string(ctx.attribs().major) + "." + std::to_string(ctx.attribs().minor) + " Pineda " +
+         PINEDA_VERSION_STRING;
+}
+
+}  // namespace
+
+void GetBooleanv(Context& ctx, GLenum pname, GLboolean* params) {
+  get(ctx, pname, params, [](Kind, double v) -> GLboolean { return v != 0.0 ? GL_TRUE : GL_FALSE; });
+}
+void GetIntegerv(Context& ctx, GLenum pname, GLint* params) { get(ctx, pname, params, to_int); }
+void GetFloatv(Context& ctx, GLenum pname, GLfloat* params) {
+  get(ctx, pname, params, [](Kind, double v) { return static_cast<GLfloat>(v); });
+}
+void GetDoublev(Context& ctx, GLenum pname, GLdouble* params) {
+  get(ctx, pname, params, [](Kind, double v) { return v; });
+}
+
+const GLubyte* GetString(Context& ctx, GLenum name) {
+  static const std::string kVendor = "Pineda";
+  static const std::string kRenderer = "Pineda (software rasterizer)";
+  static const std::string kExtensions = "GL_EXT_blend_color GL_EXT_blend_minmax GL_EXT_blend_subtract";
+  switch (name) {
+    case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
+    case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());
+    case GL_VERSION: {
+      ctx.version_string = version_string(ctx);
+      return reinterpret_cast<const GLubyte*>(ctx.version_string.c_str());
+    }
+    case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>(kExtensions.c_str());
+    default: ctx.record_error(GL_INVALID_ENUM); return nullptr;
+  }
+}
+
+GLenum GetError(Context& ctx) { return ctx.take_error(); }
+
+void Flush(Context& ctx) { ctx.finish(); }
+void Finish(Context& ctx) { ctx.finish(); }
+
+}  // namespace pineda::gl

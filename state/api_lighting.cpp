@@ -1,0 +1,197 @@
+// glLight, glLightModel, glMaterial, glColorMaterial and their queries.
+#include <algorithm>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+
+namespace pineda::gl {
+namespace {
+
+glm::vec4 vec4_of(const GLfloat* v) { return {v[0], v[1], v[2], v[3]}; }
+
+int param_count(GLenum pname) {
+  switch (pname) {
+    case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_EMISSION:
+    case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT:
+      return 4;
+    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES: return 3;
+    default: return 1;
+  }
+}
+
+void light(Context& ctx, GLenum which, GLenum pname, const GLfloat* v) {
+  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights) return ctx.record_error(GL_INVALID_ENUM);
+  raster::Light& l = ctx.lighting.lights[which - GL_LIGHT0];
+  const glm::mat4 mv(ctx.modelview.top());
+  switch (pname) {
+    case GL_AMBIENT: l.ambient = vec4_of(v); break;
+    case GL_DIFFUSE: l.diffuse = vec4_of(v); break;
+    case GL_SPECULAR: l.specular = vec4_of(v); break;
+    case GL_POSITION: l.position = mv * vec4_of(v); break;  // stored in eye coordinates
+    case GL_SPOT_DIRECTION: l.spot_direction = glm::mat3(mv) * glm::vec3(v[0], v[1], v[2]); break;
+    case GL_SPOT_EXPONENT:
+      if (v[0] < 0.f || v[0] > 128.f) return ctx.record_error(GL_INVALID_VALUE);
+      l.spot_exponent = v[0];
+      break;
+    case GL_SPOT_CUTOFF:
+      if ((v[0] < 0.f || v[0] > 90.f) && v[0] != 180.f) return ctx.record_error(GL_INVALID_VALUE);
+      l.spot_cutoff = v[0];
+      break;
+    case GL_CONSTANT_ATTENUATION: case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION:
+      if (v[0] < 0.f) return ctx.record_error(GL_INVALID_VALUE);
+      (pname == GL_CONSTANT_ATTENUATION ? l.constant_attenuation
+       : pname == GL_LINEAR_ATTENUATION ? l.linear_attenuation : l.quadratic_attenuation) = v[0];
+      break;
+    default: ctx.record_error(GL_INVALID_ENUM);
+  }
+}
+
+void light_model(Context& ctx, GLenum pname, const GLfloat* v) {
+  switch (pname) {
+    case GL_LIGHT_MODEL_AMBIENT: ctx.lighting.model_ambient = vec4_of(v); break;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: ctx.lighting.local_viewer = v[0] != 0.f; break;
+    case GL_LIGHT_MODEL_TWO_SIDE: ctx.lighting.two_side = v[0] != 0.f; break;
+    default: ctx.record_error(GL_INVALID_ENUM);
+  }
+}
+
+void material(Context& ctx, GLenum face, GLenum pname, const GLfloat* v) {
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return ctx.record_error(GL_INVALID_ENUM);
+  if (pname == GL_SHININESS && (v[0] < 0.f || v[0] > 128.f)) return ctx.record_error(GL_INVALID_VALUE);
+  for (raster::Material* m : {&ctx.lighting.front, &ctx.lighting.back}) {
+    if ((m == &ctx.lighting.front && face == GL_BACK) || (m == &ctx.lighting.back && face == GL_FRONT)) continue;
+    switch (pname) {
+      case GL_AMBIENT: m->ambient = vec4_of(v); break;
+      case GL_DIFFUSE: m->diffuse = vec4_of(v); break;
+      case GL_SPECULAR: m->specular = vec4_of(v); break;
+      case GL_EMISSION: m->emission = vec4_of(v); break;
+      case GL_AMBIENT_AND_DIFFUSE: m->ambient = m->diffuse = vec4_of(v); break;
+      case GL_SHININESS: m->shininess = v[0]; break;
+      case GL_COLOR_INDEXES: break;  // colour-index lighting: Pineda is RGBA only
+      default: return ctx.record_error(GL_INVALID_ENUM);
+    }
+  }
+}
+
+template <typename T>
+void to_floats(GLenum pname, const T* params, GLfloat out[4], bool colour) {
+  const int n = param_count(pname);
+  for (int i = 0; i < n; ++i)
+    out[i] = colour ? GLfloat((2.0 * params[i] + 1.0) / 4294967295.0) : GLfloat(params[i]);
+}
+
+bool is_colour_param(GLenum pname) {
+  return pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR || pname == GL_EMISSION ||
+         pname == GL_AMBIENT_AND_DIFFUSE || pname == GL_LIGHT_MODEL_AMBIENT;
+}
+
+bool is_scalar_light_param(GLenum pname) {
+  return pname == GL_SPOT_EXPONENT || pname == GL_SPOT_CUTOFF || pname == GL_CONSTANT_ATTENUATION ||
+         pname == GL_LINEAR_ATTENUATION || pname == GL_QUADRATIC_ATTENUATION;
+}
+
+}  // namespace
+
+void Lightf(Context& ctx, GLenum l, GLenum pname, GLfloat param) {
+  if (!is_scalar_light_param(pname)) return ctx.record_error(GL_INVALID_ENUM);
+  const GLfloat v[4] = {param, 0, 0, 0};
+  light(ctx, l, pname, v);
+}
+void Lighti(Context& ctx, GLenum l, GLenum pname, GLint param) { Lightf(ctx, l, pname, GLfloat(param)); }
+void Lightfv(Context& ctx, GLenum l, GLenum pname, const GLfloat* params) {
+  if (params) light(ctx, l, pname, params);
+}
+void Lightiv(Context& ctx, GLenum l, GLenum pname, const GLint* params) {
+  if (!params) return;
+  GLfloat v[4] = {};
+  to_floats(pname, params, v, is_colour_param(pname));
+  light(ctx, l, pname, v);
+}
+
+void LightModelf(Context& ctx, GLenum pname, GLfloat param) {
+  if (pname == GL_LIGHT_MODEL_AMBIENT) return ctx.record_error(GL_INVALID_ENUM);
+  const GLfloat v[4] = {param, 0, 0, 0};
+  light_model(ctx, pname, v);
+}
+void LightModeli(Context& ctx, GLenum pname, GLint param) { LightModelf(ctx, pname, GLfloat(param)); }
+void LightModelfv(Context& ctx, GLenum pname, const GLfloat* params) {
+  if (params) light_model(ctx, pname, params);
+}
+void LightModeliv(Context& ctx, GLenum pname, const GLint* params) {
+  if (!params) return;
+  GLfloat v[4] = {};
+  to_floats(pname, params, v, is_colour_param(pname));
+  light_model(ctx, pname, v);
+}
+
+void Materialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) {
+  if (pname != GL_SHININESS) return ctx.record_error(GL_INVALID_ENUM);
+  const GLfloat v[4] = {param, 0, 0, 0};
+  material(ctx, face, pname, v);
+}
+void Materiali(Context& ctx, GLenum face, GLenum pname, GLint param) { Materialf(ctx, face, pname, GLfloat(param)); }
+void Materialfv(Context& ctx, GLenum face, GLenum pname, const GLfloat* params) {
+  if (params) material(ctx, face, pname, params);
+}
+void Materialiv(Context& ctx, GLenum face, GLenum pname, const GLint* params) {
+  if (!params) return;
+  GLfloat v[4] = {};
+  to_floats(pname, params, v, is_colour_param(pname));
+  material(ctx, face, pname, v);
+}
+
+void ColorMaterial(Context& ctx, GLenum face, GLenum mode) {
+  if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
+      (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+       mode != GL_AMBIENT_AND_DIFFUSE))
+    return ctx.record_error(GL_INVALID_ENUM);
+  ctx.color_material_face = face;
+  ctx.color_material_mode = mode;
+  raster::ColorMaterial& cm = ctx.lighting.color_material;
+  cm.front = face != GL_BACK;
+  cm.back = face != GL_FRONT;
+  cm.ambient = mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE;
+  cm.diffuse = mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE;
+  cm.specular = mode == GL_SPECULAR;
+  cm.emission = mode == GL_EMISSION;
+}
+
+void GetLightfv(Context& ctx, GLenum which, GLenum pname, GLfloat* params) {
+  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights) return ctx.record_error(GL_INVALID_ENUM);
+  const raster::Light& l = ctx.lighting.lights[which - GL_LIGHT0];
+  glm::vec4 v(0);
+  switch (pname) {
+    case GL_AMBIENT: v = l.ambient; break;
+    case GL_DIFFUSE: v = l.diffuse; break;
+    case GL_SPECULAR: v = l.specular; break;
+    case GL_POSITION: v = l.position; break;
+    case GL_SPOT_DIRECTION: v = glm::vec4(l.spot_direction, 0); break;
+    case GL_SPOT_EXPONENT: v.x = l.spot_exponent; break;
+    case GL_SPOT_CUTOFF: v.x = l.spot_cutoff; break;
+    case GL_CONSTANT_ATTENUATION: v.x = l.constant_attenuation; break;
+    case GL_LINEAR_ATTENUATION: v.x = l.linear_attenuation; break;
+    case GL_QUADRATIC_ATTENUATION: v.x = l.quadratic_attenuation; break;
+    default: return ctx.record_error(GL_INVALID_ENUM);
+  }
+  if (params)
+    for (int i = 0; i < param_count(pname); ++i) params[i] = v[i];
+}
+
+void GetMaterialfv(Context& ctx, GLenum face, GLenum pname, GLfloat* params) {
+  if (face != GL_FRONT && face != GL_BACK) return ctx.record_error(GL_INVALID_ENUM);
+  const raster::Material& m = face == GL_FRONT ? ctx.lighting.front : ctx.lighting.back;
+  glm::vec4 v(0);
+  switch (pname) {
+    case GL_AMBIENT: v = m.ambient; break;
+    case GL_DIFFUSE: v = m.diffuse; break;
+    case GL_SPECULAR: v = m.specular; break;
+    case GL_EMISSION: v = m.emission; break;
+    case GL_SHININESS: v.x = m.shininess; break;
+    case GL_COLOR_INDEXES: break;
+    default: return ctx.record_error(GL_INVALID_ENUM);
+  }
+  if (params)
+    for (int i = 0; i < param_count(pname); ++i) params[i] = v[i];
+}
+
+}  // namespace pineda::gl

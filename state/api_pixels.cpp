@@ -1,0 +1,87 @@
+// glPixelStore and glReadPixels.
+#include <algorithm>
+#include <vector>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/pixel_format.h"
+
+namespace pineda::gl {
+namespace {
+
+void set_store(Context& ctx, GLenum pname, double value) {
+  PixelStore& s = (pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT) ? ctx.pack : ctx.unpack;
+  const GLint v = static_cast<GLint>(value);
+  switch (pname) {
+    case GL_PACK_SWAP_BYTES: case GL_UNPACK_SWAP_BYTES: s.swap_bytes = value != 0.0; return;
+    case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST: s.lsb_first = value != 0.0; return;
+    default: break;
+  }
+  if (pname != GL_PACK_ROW_LENGTH && pname != GL_PACK_SKIP_ROWS && pname != GL_PACK_SKIP_PIXELS &&
+      pname != GL_PACK_ALIGNMENT && pname != GL_UNPACK_ROW_LENGTH && pname != GL_UNPACK_SKIP_ROWS &&
+      pname != GL_UNPACK_SKIP_PIXELS && pname != GL_UNPACK_ALIGNMENT)
+    return ctx.record_error(GL_INVALID_ENUM);
+  if (v < 0) return ctx.record_error(GL_INVALID_VALUE);
+  switch (pname) {
+    case GL_PACK_ROW_LENGTH: case GL_UNPACK_ROW_LENGTH: s.row_length = v; return;
+    case GL_PACK_SKIP_ROWS: case GL_UNPACK_SKIP_ROWS: s.skip_rows = v; return;
+    case GL_PACK_SKIP_PIXELS: case GL_UNPACK_SKIP_PIXELS: s.skip_pixels = v; return;
+    default:
+      if (v != 1 && v != 2 && v != 4 && v != 8) return ctx.record_error(GL_INVALID_VALUE);
+      s.alignment = v;
+  }
+}
+
+bool valid_read_format(GLenum format) {
+  return color_format_components(format) > 0 || format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX;
+}
+
+// Reads a framebuffer pixel in RGBA floats.
+void read_color(const raster::ColorBuffer& cb, int x, int y, float rgba[4]) {
+  const uint8_t* p = cb.base + cb.stride * y + 4 * x;
+  const bool bgra = cb.format == raster::ColorFormat::BGRA8;
+  rgba[0] = p[bgra ? 2 : 0] / 255.f;
+  rgba[1] = p[1] / 255.f;
+  rgba[2] = p[bgra ? 0 : 2] / 255.f;
+  rgba[3] = p[3] / 255.f;
+}
+
+}  // namespace
+
+void PixelStorei(Context& ctx, GLenum pname, GLint param) { set_store(ctx, pname, param); }
+void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pname, param); }
+
+void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                void* pixels) {
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!valid_read_format(format) || pixel_type_size(type) == 0) return ctx.record_error(GL_INVALID_ENUM);
+  const Drawable* d = ctx.read_drawable();
+  if (format == GL_DEPTH_COMPONENT && (!d || d->framebuffer.depth.bits == 0)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!d || !pixels || width == 0 || height == 0) return;
+  ctx.finish();
+  const raster::Framebuffer& fb = d->framebuffer;
+  const ImageLayout layout = image_layout(ctx.pack, width, format, type);
+  auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
+  // Pixels outside the framebuffer are undefined in GL; Pineda leaves the memory untouched.
+  const int x0 = std::max(x, 0), x1 = std::min<int64_t>(int64_t(x) + width, fb.width);
+  const int y0 = std::max(y, 0), y1 = std::min<int64_t>(int64_t(y) + height, fb.height);
+  const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
+  for (int fy = y0; fy < y1; ++fy) {
+    uint8_t* row = out + layout.row_stride * size_t(fy - y);
+    for (int fx = x0; fx < x1; ++fx) {
+      uint8_t* dst = row + layout.pixel_bytes * size_t(fx - x);
+      if (format == GL_DEPTH_COMPONENT) {
+        store_scalar(fb.depth.base[fb.depth.stride * fy + fx] / depth_max, true, type, dst);
+      } else if (format == GL_STENCIL_INDEX) {
+        store_scalar(fb.stencil.base[fb.stencil.stride * fy + fx], false, type, dst);
+      } else {
+        float rgba[4];
+        read_color(fb.color, fx, fy, rgba);
+        store_color(rgba, format, type, dst);
+      }
+    }
+  }
+}
+
+}  // namespace pineda::gl

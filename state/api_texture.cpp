@@ -1,0 +1,390 @@
+// Texture objects, images, parameters and environment (GL 1.1: 1D and 2D textures).
+#include <algorithm>
+#include <cmath>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/limits.h"
+#include "state/pixel_format.h"
+
+namespace pineda::gl {
+namespace {
+
+using raster::TexBaseFormat;
+
+bool base_format_of(GLint internal_format, TexBaseFormat& out) {
+  switch (internal_format) {
+    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_ALPHA12: case GL_ALPHA16:
+      out = TexBaseFormat::Alpha; return true;
+    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:
+      out = TexBaseFormat::Luminance; return true;
+    case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_LUMINANCE8_ALPHA8:
+    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
+      out = TexBaseFormat::LuminanceAlpha; return true;
+    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12: case GL_INTENSITY16:
+      out = TexBaseFormat::Intensity; return true;
+    case 3: case GL_RGB: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10: case GL_RGB12:
+    case GL_RGB16:
+      out = TexBaseFormat::RGB; return true;
+    case 4: case GL_RGBA: case GL_RGBA2: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA8: case GL_RGB10_A2:
+    case GL_RGBA12: case GL_RGBA16:
+      out = TexBaseFormat::RGBA; return true;
+    default: return false;
+  }
+}
+
+// An RGBA colour reduced to what the base format keeps, as an RGBA8 texel.
+uint32_t to_texel(const float rgba[4], TexBaseFormat base) {
+  auto u8 = [](float v) { return uint32_t(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); };
+  uint32_t r = u8(rgba[0]), g = u8(rgba[1]), b = u8(rgba[2]), a = u8(rgba[3]);
+  switch (base) {
+    case TexBaseFormat::Alpha: r = g = b = 0; break;
+    case TexBaseFormat::Luminance: g = b = r; a = 255; break;
+    case TexBaseFormat::LuminanceAlpha: g = b = r; break;
+    case TexBaseFormat::Intensity: g = b = a = r; break;
+    case TexBaseFormat::RGB: a = 255; break;
+    case TexBaseFormat::RGBA: break;
+  }
+  return r | g << 8 | b << 16 | a << 24;
+}
+
+TextureObject* bound_texture(Context& ctx, GLenum target) {
+  TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (target == GL_TEXTURE_2D) return &ctx.textures.get_or_create(unit.bound_2d, GL_TEXTURE_2D);
+  if (target == GL_TEXTURE_1D) return &ctx.textures.get_or_create(unit.bound_1d, GL_TEXTURE_1D);
+  return nullptr;
+}
+
+bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
+  if (color_format_components(format) == 0 || pixel_type_size(type) == 0) {
+    ctx.record_error(GL_INVALID_ENUM);
+    return false;
+  }
+  return true;
+}
+
+int max_level() { return int(std::log2(kMaxTextureSize)); }
+
+// Copies a width x height client image into texels at (xoffset, yoffset) of `level`; the
+// source's border texels (when border == 1) are skipped.
+void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int xoffset, int yoffset, int width,
+                 int height, int border, GLenum format, GLenum type, const void* pixels) {
+  if (!pixels) return;
+  const int full_width = width + 2 * border;
+  const ImageLayout layout = image_layout(ctx.unpack, full_width, format, type);
+  const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
+  for (int y = 0; y < height; ++y) {
+    const uint8_t* row = src + layout.row_stride * size_t(y + border) + layout.pixel_bytes * border;
+    uint32_t* dst = level.texels.data() + size_t(yoffset + y) * level.width + xoffset;
+    for (int x = 0; x < width; ++x) {
+      float rgba[4];
+      load_color(row + layout.pixel_bytes * x, format, type, rgba);
+      dst[x] = to_texel(rgba, base);
+    }
+  }
+}
+
+void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, GLsizei width, GLsizei height,
+               GLint border, GLenum format, GLenum type, const void* pixels) {
+  TexBaseFormat base;
+  TextureObject* tex = bound_texture(ctx, target);
+  if (!tex) return ctx.record_error(GL_INVALID_ENUM);
+  if (!valid_format_type(ctx, format, type)) return;
+  if (level < 0 || level > max_level() || !base_format_of(internal_format, base) || (border != 0 && border != 1))
+    return ctx.record_error(GL_INVALID_VALUE);
+  const int inner_w = width - 2 * border, inner_h = target == GL_TEXTURE_1D ? 1 : height - 2 * border;
+  if (inner_w < 0 || inner_h < 0 || inner_w > kMaxTextureSize || inner_h > kMaxTextureSize)
+    return ctx.record_error(GL_INVALID_VALUE);
+  if (tex->levels.size() <= size_t(level)) tex->levels.resize(level + 1);
+  TextureLevelData& l = tex->levels[level];
+  l.width = inner_w;
+  l.height = inner_h;
+  l.border = border;
+  l.internal_format = internal_format;
+  l.texels.assign(size_t(inner_w) * inner_h, 0u);
+  if (level == 0) tex->base_format = base;
+  unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, format, type, pixels);
+  tex->changed();
+}
+
+void tex_sub_image(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  TextureObject* tex = bound_texture(ctx, target);
+  if (!tex) return ctx.record_error(GL_INVALID_ENUM);
+  if (!valid_format_type(ctx, format, type)) return;
+  if (level < 0 || level > max_level() || width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (size_t(level) >= tex->levels.size() || tex->levels[level].width == 0)
+    return ctx.record_error(GL_INVALID_OPERATION);
+  TextureLevelData& l = tex->levels[level];
+  if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + width > l.width || int64_t(yoffset) + height > l.height)
+    return ctx.record_error(GL_INVALID_VALUE);
+  TexBaseFormat base;
+  base_format_of(l.internal_format, base);
+  unpack_into(ctx, l, base, xoffset, yoffset, width, height, 0, format, type, pixels);
+  tex->changed();
+}
+
+bool set_tex_parameter(Context& ctx, TextureObject& tex, GLenum pname, const GLfloat* v) {
+  const GLenum e = static_cast<GLenum>(v[0]);
+  switch (pname) {
+    case GL_TEXTURE_MIN_FILTER:
+      if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
+          e != GL_NEAREST_MIPMAP_LINEAR && e != GL_LINEAR_MIPMAP_LINEAR)
+        return false;
+      tex.min_filter = e;
+      break;
+    case GL_TEXTURE_MAG_FILTER:
+      if (e != GL_NEAREST && e != GL_LINEAR) return false;
+      tex.mag_filter = e;
+      break;
+    case GL_TEXTURE_WRAP_S:
+    case GL_TEXTURE_WRAP_T:
+      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT)
+        return false;
+      (pname == GL_TEXTURE_WRAP_S ? tex.wrap_s : tex.wrap_t) = e;
+      break;
+    case GL_TEXTURE_BORDER_COLOR:
+      for (int i = 0; i < 4; ++i) tex.border_color[i] = std::clamp(v[i], 0.f, 1.f);
+      break;
+    case GL_TEXTURE_PRIORITY:
+      tex.priority = std::clamp(v[0], 0.f, 1.f);
+      return true;
+    default:
+      return false;
+  }
+  tex.changed();
+  return true;
+}
+
+void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
+  TextureObject* tex = bound_texture(ctx, target);
+  if (!tex || !set_tex_parameter(ctx, *tex, pname, v)) ctx.record_error(GL_INVALID_ENUM);
+}
+
+bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR; }
+
+void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
+  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
+  TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (pname == GL_TEXTURE_ENV_MODE) {
+    const GLenum mode = static_cast<GLenum>(v[0]);
+    if (mode != GL_MODULATE && mode != GL_REPLACE && mode != GL_DECAL && mode != GL_BLEND && mode != GL_ADD)
+      return ctx.record_error(GL_INVALID_ENUM);
+    unit.env_mode = mode;
+  } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    for (int i = 0; i < 4; ++i) unit.env_color[i] = std::clamp(v[i], 0.f, 1.f);
+  } else {
+    ctx.record_error(GL_INVALID_ENUM);
+  }
+}
+
+// The values of a texture parameter; `colour` tells whether integer queries map them as colours.
+bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], int& count, bool& colour) {
+  TextureObject* tex = bound_texture(ctx, target);
+  if (!tex) return false;
+  count = 1;
+  colour = false;
+  switch (pname) {
+    case GL_TEXTURE_MIN_FILTER: out[0] = float(tex->min_filter); return true;
+    case GL_TEXTURE_MAG_FILTER: out[0] = float(tex->mag_filter); return true;
+    case GL_TEXTURE_WRAP_S: out[0] = float(tex->wrap_s); return true;
+    case GL_TEXTURE_WRAP_T: out[0] = float(tex->wrap_t); return true;
+    case GL_TEXTURE_PRIORITY: out[0] = tex->priority; colour = true; return true;
+    case GL_TEXTURE_RESIDENT: out[0] = 1.f; return true;
+    case GL_TEXTURE_BORDER_COLOR:
+      std::copy(tex->border_color, tex->border_color + 4, out);
+      count = 4;
+      colour = true;
+      return true;
+    default: return false;
+  }
+}
+
+bool get_tex_level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLint& out) {
+  TextureObject* tex = bound_texture(ctx, target);
+  if (!tex) return false;
+  const TextureLevelData empty;
+  const TextureLevelData& l = size_t(level) < tex->levels.size() ? tex->levels[level] : empty;
+  TexBaseFormat base = TexBaseFormat::RGBA;
+  const bool defined = l.width > 0 && base_format_of(l.internal_format, base);
+  auto bits = [&](bool has) { return defined && has ? 8 : 0; };
+  const bool rgb = base == TexBaseFormat::RGB || base == TexBaseFormat::RGBA;
+  const bool alpha = base == TexBaseFormat::Alpha || base == TexBaseFormat::LuminanceAlpha || base == TexBaseFormat::RGBA;
+  const bool lum = base == TexBaseFormat::Luminance || base == TexBaseFormat::LuminanceAlpha;
+  switch (pname) {
+    case GL_TEXTURE_WIDTH: out = defined ? l.width + 2 * l.border : 0; return true;
+    case GL_TEXTURE_HEIGHT: out = defined ? (target == GL_TEXTURE_1D ? 1 : l.height + 2 * l.border) : 0; return true;
+    case GL_TEXTURE_BORDER: out = defined ? l.border : 0; return true;
+    case GL_TEXTURE_INTERNAL_FORMAT: out = defined ? l.internal_format : 1; return true;
+    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: out = bits(rgb); return true;
+    case GL_TEXTURE_ALPHA_SIZE: out = bits(alpha); return true;
+    case GL_TEXTURE_LUMINANCE_SIZE: out = bits(lum); return true;
+    case GL_TEXTURE_INTENSITY_SIZE: out = bits(base == TexBaseFormat::Intensity); return true;
+    default: return false;
+  }
+}
+
+}  // namespace
+
+void GenTextures(Context& ctx, GLsizei n, GLuint* textures) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (textures) ctx.textures.generate(n, textures);
+}
+
+void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!textures) return;
+  for (GLsizei i = 0; i < n; ++i) {
+    const GLuint name = textures[i];
+    if (name == 0) continue;
+    for (TextureUnitState& unit : ctx.texture_units) {  // deleting a bound texture binds 0
+      if (unit.bound_2d == name) unit.bound_2d = 0;
+      if (unit.bound_1d == name) unit.bound_1d = 0;
+    }
+    ctx.textures.remove(name);
+  }
+}
+
+void BindTexture(Context& ctx, GLenum target, GLuint texture) {
+  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
+  if (texture != 0) {
+    TextureObject* existing = ctx.textures.find(texture);
+    if (existing && existing->target != 0 && existing->target != target) return ctx.record_error(GL_INVALID_OPERATION);
+    ctx.textures.get_or_create(texture, target).target = target;
+  }
+  TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  (target == GL_TEXTURE_2D ? unit.bound_2d : unit.bound_1d) = texture;
+}
+
+GLboolean IsTexture(Context& ctx, GLuint texture) { return ctx.textures.is_texture(texture) ? GL_TRUE : GL_FALSE; }
+
+void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
+  tex_image(ctx, target, level, internalformat, width, height, border, format, type, pixels);
+}
+
+void TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
+                GLenum format, GLenum type, const void* pixels) {
+  if (target != GL_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
+  tex_image(ctx, target, level, internalformat, width, 1, border, format, type, pixels);
+}
+
+void TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  if (target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
+  tex_sub_image(ctx, target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+
+void TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type,
+                   const void* pixels) {
+  if (target != GL_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
+  tex_sub_image(ctx, target, level, xoffset, 0, width, 1, format, type, pixels);
+}
+
+void TexParameterf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
+  if (is_vector_tex_param(pname)) return ctx.record_error(GL_INVALID_ENUM);
+  const GLfloat v[4] = {param, 0, 0, 0};
+  tex_parameter(ctx, target, pname, v);
+}
+void TexParameteri(Context& ctx, GLenum target, GLenum pname, GLint param) { TexParameterf(ctx, target, pname, GLfloat(param)); }
+void TexParameterfv(Context& ctx, GLenum target, GLenum pname, const GLfloat* params) {
+  if (params) tex_parameter(ctx, target, pname, params);
+}
+void TexParameteriv(Context& ctx, GLenum target, GLenum pname, const GLint* params) {
+  if (!params) return;
+  GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
+  if (is_vector_tex_param(pname))  // integer colours map [-2^31, 2^31-1] onto [-1, 1]
+    for (int i = 0; i < 4; ++i) v[i] = GLfloat((2.0 * params[i] + 1.0) / 4294967295.0);
+  tex_parameter(ctx, target, pname, v);
+}
+
+void GetTexParameterfv(Context& ctx, GLenum target, GLenum pname, GLfloat* params) {
+  float v[4];
+  int count;
+  bool colour;
+  if (!get_tex_parameter(ctx, target, pname, v, count, colour)) return ctx.record_error(GL_INVALID_ENUM);
+  if (params) std::copy(v, v + count, params);
+}
+void GetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
+  float v[4];
+  int count;
+  bool colour;
+  if (!get_tex_parameter(ctx, target, pname, v, count, colour)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!params) return;
+  for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : GLint(v[i]);
+}
+
+void GetTexLevelParameteriv(Context& ctx, GLenum target, GLint level, GLenum pname, GLint* params) {
+  if (level < 0 || level > max_level()) return ctx.record_error(GL_INVALID_VALUE);
+  GLint v;
+  if (!get_tex_level_parameter(ctx, target, level, pname, v)) return ctx.record_error(GL_INVALID_ENUM);
+  if (params) *params = v;
+}
+void GetTexLevelParameterfv(Context& ctx, GLenum target, GLint level, GLenum pname, GLfloat* params) {
+  GLint v = 0;
+  GetTexLevelParameteriv(ctx, target, level, pname, &v);
+  if (params) *params = GLfloat(v);
+}
+
+void TexEnvf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
+  if (pname == GL_TEXTURE_ENV_COLOR) return ctx.record_error(GL_INVALID_ENUM);
+  const GLfloat v[4] = {param, 0, 0, 0};
+  tex_env(ctx, target, pname, v);
+}
+void TexEnvi(Context& ctx, GLenum target, GLenum pname, GLint param) { TexEnvf(ctx, target, pname, GLfloat(param)); }
+void TexEnvfv(Context& ctx, GLenum target, GLenum pname, const GLfloat* params) {
+  if (params) tex_env(ctx, target, pname, params);
+}
+void TexEnviv(Context& ctx, GLenum target, GLenum pname, const GLint* params) {
+  if (!params) return;
+  GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
+  if (pname == GL_TEXTURE_ENV_COLOR)
+    for (int i = 0; i < 4; ++i) v[i] = GLfloat((2.0 * params[i] + 1.0) / 4294967295.0);
+  tex_env(ctx, target, pname, v);
+}
+
+void GetTexEnvfv(Context& ctx, GLenum target, GLenum pname, GLfloat* params) {
+  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
+  const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (pname == GL_TEXTURE_ENV_MODE) {
+    if (params) params[0] = GLfloat(unit.env_mode);
+  } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    if (params) std::copy(unit.env_color, unit.env_color + 4, params);
+  } else {
+    ctx.record_error(GL_INVALID_ENUM);
+  }
+}
+void GetTexEnviv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
+  GLfloat v[4] = {0, 0, 0, 0};
+  GetTexEnvfv(ctx, target, pname, v);
+  if (!params) return;
+  if (pname == GL_TEXTURE_ENV_COLOR)
+    for (int i = 0; i < 4; ++i) params[i] = GLint(double(v[i]) * 2147483647.0);
+  else if (pname == GL_TEXTURE_ENV_MODE)
+    params[0] = GLint(v[0]);
+}
+
+void PrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures, const GLfloat* priorities) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!textures || !priorities) return;
+  for (GLsizei i = 0; i < n; ++i)
+    if (TextureObject* t = ctx.textures.find(textures[i])) t->priority = std::clamp(priorities[i], 0.f, 1.f);
+}
+
+// Every texture is resident in a software renderer.
+GLboolean AreTexturesResident(Context& ctx, GLsizei n, const GLuint* textures, GLboolean* residences) {
+  if (n < 0) {
+    ctx.record_error(GL_INVALID_VALUE);
+    return GL_FALSE;
+  }
+  if (!textures) return GL_TRUE;
+  for (GLsizei i = 0; i < n; ++i)
+    if (textures[i] == 0 || !ctx.textures.is_texture(textures[i])) {
+      ctx.record_error(GL_INVALID_VALUE);
+      return GL_FALSE;
+    }
+  return GL_TRUE;
+}
+
+}  // namespace pineda::gl

@@ -1,0 +1,14 @@
+// The enable bits behind glEnable and glEnableClientState.
+#pragma once
+#include <GL/gl.h>
+
+namespace pineda {
+
+class Context;
+
+// The flag for a server capability (glEnable) or null when `cap` is not one.
+bool* server_capability(Context& ctx, GLenum cap);
+// The flag for a client array (glEnableClientState) or null when `array` is not one.
+bool* client_capability(Context& ctx, GLenum array);
+
+}  // namespace pineda

@@ -1,0 +1,42 @@
+#include "state/context.h"
+
+namespace pineda {
+
+Context::Context(const ContextAttribs& attribs)
+    : attribs_(attribs), renderer_(std::make_unique<raster::Renderer>(attribs.threads)) {
+  for (auto& stack : texture_matrix) stack.max_depth = 10;
+  projection.max_depth = 10;
+  lighting.lights[0].diffuse = glm::vec4(1);
+  lighting.lights[0].specular = glm::vec4(1);
+}
+
+Context::~Context() = default;
+
+void Context::make_current(Drawable* draw, Drawable* read) {
+  draw_ = draw;
+  read_ = read;
+  bind_framebuffer();
+  // GL: the viewport and scissor take the drawable's size when the context is first bound.
+  if (!ever_bound_ && draw) {
+    ever_bound_ = true;
+    viewport.x = viewport.y = 0;
+    viewport.width = draw->framebuffer.width;
+    viewport.height = draw->framebuffer.height;
+    draw_state.scissor = {0, 0, draw->framebuffer.width, draw->framebuffer.height};
+  }
+  draw_buffer = read_buffer = (draw && draw->double_buffered) ? GL_BACK : GL_FRONT;
+}
+
+void Context::release_current() {
+  renderer_->flush();
+  draw_ = read_ = nullptr;
+  renderer_->set_framebuffer(raster::Framebuffer{});
+}
+
+void Context::drawable_changed() { bind_framebuffer(); }
+
+void Context::bind_framebuffer() {
+  renderer_->set_framebuffer(draw_ ? draw_->framebuffer : raster::Framebuffer{});
+}
+
+}  // namespace pineda

@@ -1,0 +1,81 @@
+#include "state/draw.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include "state/context.h"
+#include "state/enum_translate.h"
+
+namespace pineda {
+namespace {
+
+bool is_identity(const glm::mat4& m) { return m == glm::mat4(1.f); }
+
+raster::Transform build_transform(Context& ctx, int texture_units) {
+  raster::Transform t;
+  const glm::dmat4& mv = ctx.modelview.top();
+  t.modelview = glm::mat4(mv);
+  t.modelview_projection = glm::mat4(ctx.projection.top() * mv);
+  t.lighting = ctx.lighting;
+  if (ctx.lighting.enabled) {
+    t.normal_matrix = glm::mat3(glm::inverseTranspose(glm::dmat3(mv)));
+    t.normalize = ctx.normalize;
+    if (ctx.rescale_normal && !ctx.normalize) {
+      // GL: the factor is 1 / length of the third row of the inverse modelview's upper 3x3.
+      const glm::dmat3 inv = glm::inverse(glm::dmat3(mv));
+      const double len = glm::length(glm::dvec3(inv[0][2], inv[1][2], inv[2][2]));
+      t.rescale_factor = len > 0.0 ? static_cast<float>(1.0 / len) : 1.f;
+    }
+  }
+  t.texture_units = texture_units;
+  for (int u = 0; u < texture_units; ++u) {
+    t.texture_matrix[u] = glm::mat4(ctx.texture_matrix[u].top());
+    t.texture_matrix_identity[u] = is_identity(t.texture_matrix[u]);
+  }
+  return t;
+}
+
+// Fills the draw snapshot's texture units; returns how many units the rasterizer reads.
+int snapshot_textures(Context& ctx) {
+  int used = 0;
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+    TextureUnitState& unit = ctx.texture_units[u];
+    raster::TextureUnit& out = ctx.draw_state.texture_units[u];
+    out.image.reset();
+    TextureObject* tex = nullptr;
+    if (unit.enabled_2d)
+      tex = &ctx.textures.get_or_create(unit.bound_2d, GL_TEXTURE_2D);
+    else if (unit.enabled_1d)
+      tex = &ctx.textures.get_or_create(unit.bound_1d, GL_TEXTURE_1D);
+    if (!tex) continue;
+    out.image = tex->snapshot();
+    if (!out.image) continue;
+    out.sampler = tex->sampler();
+    switch (unit.env_mode) {
+      case GL_REPLACE: out.env_mode = raster::TexEnvMode::Replace; break;
+      case GL_DECAL: out.env_mode = raster::TexEnvMode::Decal; break;
+      case GL_BLEND: out.env_mode = raster::TexEnvMode::Blend; break;
+      case GL_ADD: out.env_mode = raster::TexEnvMode::Add; break;
+      default: out.env_mode = raster::TexEnvMode::Modulate; break;
+    }
+    std::copy(unit.env_color, unit.env_color + 4, out.env_color);
+    used = u + 1;
+  }
+  return used;
+}
+
+}  // namespace
+
+void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
+                   std::span<const uint32_t> indices) {
+  if (!ctx.draw_drawable() || vertices.empty()) return;
+  raster::Primitive primitive;
+  if (!to_primitive(mode, primitive)) return;
+  const int texture_units = snapshot_textures(ctx);
+  raster::transform_vertices(build_transform(ctx, texture_units), vertices, ctx.transformed);
+  raster::DrawState& state = ctx.draw_state;
+  state.viewport = ctx.viewport;
+  state.cull_face = ctx.enable_cull;
+  ctx.renderer().draw(state, primitive, ctx.transformed, indices);
+}
+
+}  // namespace pineda

@@ -1,0 +1,15 @@
+// The implementation limits Pineda reports through glGet.
+#pragma once
+
+namespace pineda {
+
+constexpr int kMaxViewportDim = 16384;
+constexpr int kMaxTextureSize = 8192;
+constexpr int kMaxModelviewStackDepth = 32;
+constexpr int kMaxProjectionStackDepth = 10;
+constexpr int kMaxTextureStackDepth = 10;
+constexpr float kPointSizeRange[2] = {1.f, 255.f};
+constexpr float kLineWidthRange[2] = {1.f, 255.f};
+constexpr int kSubpixelBits = 8;
+
+}  // namespace pineda

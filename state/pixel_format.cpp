@@ -1,0 +1,136 @@
+#include "state/pixel_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "state/context.h"
+
+namespace pineda {
+namespace {
+
+template <typename T>
+void put(uint8_t* dst, T v) {
+  std::memcpy(dst, &v, sizeof v);
+}
+template <typename T>
+T get(const uint8_t* src) {
+  T v;
+  std::memcpy(&v, src, sizeof v);
+  return v;
+}
+
+// GL's float -> normalized integer conversions, rounding to nearest.
+void store_component(float c, GLenum type, uint8_t* dst) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(std::lround(c * 255.f))); break;
+    case GL_BYTE: put<GLbyte>(dst, GLbyte(std::lround(c * 127.f))); break;
+    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(std::lround(c * 65535.f))); break;
+    case GL_SHORT: put<GLshort>(dst, GLshort(std::lround(c * 32767.f))); break;
+    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(std::llround(double(c) * 4294967295.0))); break;
+    case GL_INT: put<GLint>(dst, GLint(std::llround(double(c) * 2147483647.0))); break;
+    case GL_FLOAT: put<GLfloat>(dst, c); break;
+  }
+}
+
+float load_component(const uint8_t* src, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return get<GLubyte>(src) / 255.f;
+    case GL_BYTE: return std::max(get<GLbyte>(src) / 127.f, -1.f);
+    case GL_UNSIGNED_SHORT: return get<GLushort>(src) / 65535.f;
+    case GL_SHORT: return std::max(get<GLshort>(src) / 32767.f, -1.f);
+    case GL_UNSIGNED_INT: return float(get<GLuint>(src) / 4294967295.0);
+    case GL_INT: return float(std::max(get<GLint>(src) / 2147483647.0, -1.0));
+    case GL_FLOAT: return get<GLfloat>(src);
+    default: return 0.f;
+  }
+}
+
+// Which RGBA channel each component of `format` holds; -1 for luminance (R+G+B on read).
+int channel_of(GLenum format, int component) {
+  switch (format) {
+    case GL_RED: return 0;
+    case GL_GREEN: return 1;
+    case GL_BLUE: return 2;
+    case GL_ALPHA: return 3;
+    case GL_LUMINANCE: return -1;
+    case GL_LUMINANCE_ALPHA: return component == 0 ? -1 : 3;
+    case GL_BGR: case GL_BGRA: return component < 3 ? 2 - component : 3;
+    default: return component;  // RGB, RGBA
+  }
+}
+
+}  // namespace
+
+int color_format_components(GLenum format) {
+  switch (format) {
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_RGBA: case GL_BGRA: return 4;
+    default: return 0;
+  }
+}
+
+int pixel_type_size(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    default: return 0;
+  }
+}
+
+// GL 1.1 spec 3.6.4: rows start at multiples of the alignment when components are smaller.
+ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type) {
+  ImageLayout l;
+  const int components = std::max(color_format_components(format), 1);
+  const size_t size = pixel_type_size(type);
+  l.pixel_bytes = components * size;
+  const size_t row_pixels = store.row_length > 0 ? size_t(store.row_length) : size_t(std::max(width, 0));
+  const size_t row_bytes = row_pixels * l.pixel_bytes;
+  const size_t align = size_t(store.alignment);
+  l.row_stride = size >= align ? row_bytes : (row_bytes + align - 1) / align * align;
+  l.offset = size_t(std::max(store.skip_rows, 0)) * l.row_stride + size_t(std::max(store.skip_pixels, 0)) * l.pixel_bytes;
+  return l;
+}
+
+void store_color(const float rgba[4], GLenum format, GLenum type, uint8_t* dst) {
+  const int n = color_format_components(format);
+  const int size = pixel_type_size(type);
+  for (int c = 0; c < n; ++c) {
+    const int ch = channel_of(format, c);
+    const float v = ch < 0 ? std::min(rgba[0] + rgba[1] + rgba[2], 1.f) : rgba[ch];
+    store_component(v, type, dst + c * size);
+  }
+}
+
+void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]) {
+  rgba[0] = rgba[1] = rgba[2] = 0.f;
+  rgba[3] = 1.f;
+  const int n = color_format_components(format);
+  const int size = pixel_type_size(type);
+  for (int c = 0; c < n; ++c) {
+    const float v = load_component(src + c * size, type);
+    const int ch = channel_of(format, c);
+    if (ch < 0)
+      rgba[0] = rgba[1] = rgba[2] = v;
+    else
+      rgba[ch] = v;
+  }
+}
+
+void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst) {
+  if (normalized) return store_component(float(value), type, dst);
+  switch (type) {
+    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(value)); break;
+    case GL_BYTE: put<GLbyte>(dst, GLbyte(value)); break;
+    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(value)); break;
+    case GL_SHORT: put<GLshort>(dst, GLshort(value)); break;
+    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(value)); break;
+    case GL_INT: put<GLint>(dst, GLint(value)); break;
+    case GL_FLOAT: put<GLfloat>(dst, GLfloat(value)); break;
+  }
+}
+
+}  // namespace pineda

@@ -1,0 +1,36 @@
+// Client pixel formats: sizes, row layout under PixelStore, and per-pixel conversion
+// between the application's format/type and RGBA floats.
+#pragma once
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace pineda {
+
+struct PixelStore;
+
+// Components per pixel of a colour format (RGBA, RGB, BGRA, BGR, RED, GREEN, BLUE, ALPHA,
+// LUMINANCE, LUMINANCE_ALPHA), or 0 when `format` is not one.
+int color_format_components(GLenum format);
+// Bytes of one component of `type` (the unpacked types), or 0 when it is not one.
+int pixel_type_size(GLenum type);
+
+// The byte layout of a width x height image in client memory.
+struct ImageLayout {
+  size_t pixel_bytes = 0;
+  size_t row_stride = 0;
+  size_t offset = 0;  // of the first pixel, from the skips
+  size_t end(int height) const { return height > 0 ? offset + row_stride * size_t(height - 1) : 0; }
+};
+ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type);
+
+// One pixel of a colour format, converted from RGBA (already clamped to [0, 1]).
+void store_color(const float rgba[4], GLenum format, GLenum type, uint8_t* dst);
+// One pixel of a colour format, converted to RGBA with GL's defaults for missing components.
+void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]);
+// One value of a single-component image (depth, stencil), as the type's storage.
+void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst);
+
+}  // namespace pineda

@@ -1,0 +1,57 @@
+// Texture objects and their name space. Each object keeps its levels in RGBA8 and hands
+// the rasterizer an immutable snapshot, rebuilt only after a change: a queued scene keeps
+// the image it was recorded with, so changing a texture never waits for rendering.
+#pragma once
+#include <GL/gl.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "raster/texture.h"
+
+namespace pineda {
+
+struct TextureLevelData {
+  GLint width = 0, height = 0, border = 0;
+  GLint internal_format = 0;  // as the application gave it (for glGetTexLevelParameter)
+  std::vector<uint32_t> texels;
+};
+
+struct TextureObject {
+  GLenum target = 0;  // 0 until first bound
+  std::vector<TextureLevelData> levels;  // index = level
+  raster::TexBaseFormat base_format = raster::TexBaseFormat::RGBA;
+  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
+  float border_color[4] = {0, 0, 0, 0};
+  float priority = 1.f;
+
+  // The image the sampler reads, or null when the texture is incomplete.
+  std::shared_ptr<const raster::TextureImage> snapshot();
+  raster::Sampler sampler() const;
+  void changed() { snapshot_.reset(); snapshot_valid_ = false; }
+
+ private:
+  std::shared_ptr<const raster::TextureImage> snapshot_;
+  bool snapshot_valid_ = false;
+};
+
+class TextureNamespace {
+ public:
+  TextureNamespace();
+  void generate(GLsizei n, GLuint* names);
+  // The object for `name`, created when missing; name 0 is the target's default texture.
+  TextureObject& get_or_create(GLuint name, GLenum target);
+  TextureObject* find(GLuint name);
+  void remove(GLuint name);
+  bool is_texture(GLuint name) const;
+
+ private:
+  std::map<GLuint, std::unique_ptr<TextureObject>> objects_;
+  std::map<GLuint, bool> reserved_;  // generated names not bound yet
+  GLuint next_name_ = 1;
+  TextureObject default_2d_, default_1d_;
+};
+
+}  // namespace pineda

@@ -1,0 +1,77 @@
+#include "state/vertex_fetch.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "state/context.h"
+
+namespace pineda {
+namespace {
+
+template <typename T>
+T load(const uint8_t* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+float read_component(const uint8_t* p, GLenum type, bool normalize) {
+  switch (type) {
+    case GL_BYTE: { auto v = load<GLbyte>(p); return normalize ? (2.f * v + 1.f) / 255.f : v; }
+    case GL_UNSIGNED_BYTE: { auto v = load<GLubyte>(p); return normalize ? v / 255.f : v; }
+    case GL_SHORT: { auto v = load<GLshort>(p); return normalize ? (2.f * v + 1.f) / 65535.f : v; }
+    case GL_UNSIGNED_SHORT: { auto v = load<GLushort>(p); return normalize ? v / 65535.f : v; }
+    case GL_INT: { auto v = load<GLint>(p); return normalize ? float((2.0 * v + 1.0) / 4294967295.0) : float(v); }
+    case GL_UNSIGNED_INT: { auto v = load<GLuint>(p); return normalize ? float(v / 4294967295.0) : float(v); }
+    case GL_FLOAT: return load<GLfloat>(p);
+    case GL_DOUBLE: return static_cast<float>(load<GLdouble>(p));
+    default: return 0.f;
+  }
+}
+
+// Reads `array.size` components of element `index` into dst (which keeps its defaults
+// for the components the array does not have).
+void read_array(const ClientArray& array, size_t index, float* dst, bool normalize) {
+  const int component = gl_type_size(array.type);
+  const size_t stride = array.stride ? array.stride : size_t(component) * array.size;
+  const uint8_t* p = static_cast<const uint8_t*>(array.pointer) + stride * index;
+  for (int c = 0; c < array.size; ++c) dst[c] = read_component(p + c * component, array.type, normalize);
+}
+
+}  // namespace
+
+int gl_type_size(unsigned type) {
+  switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
+  out = raster::VertexInput{};
+  read_array(ctx.vertex_array, index, out.position, false);
+  if (ctx.color_array.enabled && ctx.color_array.pointer) {
+    read_array(ctx.color_array, index, out.color, true);
+  } else {
+    std::copy(ctx.current_color, ctx.current_color + 4, out.color);
+  }
+  if (ctx.normal_array.enabled && ctx.normal_array.pointer) {
+    read_array(ctx.normal_array, index, out.normal, true);
+  } else {
+    std::copy(ctx.current_normal, ctx.current_normal + 3, out.normal);
+  }
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+    const TextureUnitState& unit = ctx.texture_units[u];
+    if (unit.texcoord_array.enabled && unit.texcoord_array.pointer) {
+      out.texcoord[u][3] = 1.f;
+      read_array(unit.texcoord_array, index, out.texcoord[u], false);
+    } else
+      std::copy(unit.current_texcoord, unit.current_texcoord + 4, out.texcoord[u]);
+  }
+  out.edge_flag = ctx.current_edge_flag;
+}
+
+}  // namespace pineda

@@ -1,0 +1,16 @@
+// Reading vertices out of the application's client arrays.
+#pragma once
+#include "raster/vertex.h"
+
+namespace pineda {
+
+class Context;
+
+// Builds vertex `index` from the enabled client arrays, taking the current values for
+// disabled ones.
+void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out);
+
+// Byte size of one component of a GL array type, 0 when the type is not one.
+int gl_type_size(unsigned type);
+
+}  // namespace pineda
