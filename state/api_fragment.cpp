@@ -111,3 +111,12 @@ void Scissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
 }
 
 }  // namespace pineda::gl
+
+// The EXT names of the blend extensions Pineda advertises.
+namespace pineda::gl {
+void BlendColorEXT(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) { BlendColor(ctx, r, g, b, a); }
+void BlendEquationEXT(Context& ctx, GLenum mode) { BlendEquation(ctx, mode); }
+void BlendFuncSeparateEXT(Context& ctx, GLenum sr, GLenum dr, GLenum sa, GLenum da) {
+  BlendFuncSeparate(ctx, sr, dr, sa, da);
+}
+}  // namespace pineda::gl

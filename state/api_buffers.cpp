@@ -1,0 +1,43 @@
+// glDrawBuffer and glReadBuffer: which colour buffer of the drawable is drawn and read.
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+
+namespace pineda::gl {
+namespace {
+
+// A drawable has a front buffer, and a back buffer when double-buffered; no aux buffers.
+bool buffer_exists(const Context& ctx, GLenum buffer) {
+  const Drawable* d = ctx.draw_drawable();
+  const bool double_buffered = d && d->double_buffered;
+  switch (buffer) {
+    case GL_FRONT: case GL_LEFT: case GL_FRONT_LEFT: case GL_FRONT_AND_BACK: case GL_NONE: return true;
+    case GL_BACK: case GL_BACK_LEFT: return double_buffered;
+    default: return false;
+  }
+}
+
+bool is_buffer_enum(GLenum b) {
+  switch (b) {
+    case GL_NONE: case GL_FRONT_LEFT: case GL_FRONT_RIGHT: case GL_BACK_LEFT: case GL_BACK_RIGHT: case GL_FRONT:
+    case GL_BACK: case GL_LEFT: case GL_RIGHT: case GL_FRONT_AND_BACK: case GL_AUX0: case GL_AUX1: case GL_AUX2:
+    case GL_AUX3:
+      return true;
+    default: return false;
+  }
+}
+
+}  // namespace
+
+void DrawBuffer(Context& ctx, GLenum buffer) {
+  if (!is_buffer_enum(buffer)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
+  ctx.draw_buffer = buffer;
+}
+
+void ReadBuffer(Context& ctx, GLenum buffer) {
+  if (!is_buffer_enum(buffer) || buffer == GL_FRONT_AND_BACK || buffer == GL_NONE) return ctx.record_error(GL_INVALID_ENUM);
+  if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
+  ctx.read_buffer = buffer;
+}
+
+}  // namespace pineda::gl
