@@ -1,0 +1,146 @@
+// eglBindAPI, eglQueryAPI, eglCreateContext (with EGL_KHR_create_context attributes),
+// eglDestroyContext, eglQueryContext.
+#include "driver/egl_config.h"
+#include "driver/egl_registry.h"
+#include "driver/egl_thread.h"
+#include "driver/gl_version.h"
+#include "glapi/egl_entry_points.h"
+
+namespace pineda::egl {
+namespace {
+
+struct Request {
+  EGLint major = 1, minor = 0;
+  EGLint flags = 0;
+  bool robust = false;
+  EGLint reset_strategy = EGL_NO_RESET_NOTIFICATION;
+};
+
+// Returns EGL_SUCCESS or the error for the attribute list.
+EGLint parse_attributes(const EGLint* attribs, Request* r) {
+  constexpr EGLint kKnownFlags = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR |
+                                 EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE_BIT_KHR |
+                                 EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR;
+  for (const EGLint* a = attribs; a && a[0] != EGL_NONE; a += 2) {
+    EGLint value = a[1];
+    switch (a[0]) {
+      case EGL_CONTEXT_MAJOR_VERSION: r->major = value; break;
+      case EGL_CONTEXT_MINOR_VERSION: r->minor = value; break;
+      case EGL_CONTEXT_FLAGS_KHR:
+        if (value & ~kKnownFlags) return EGL_BAD_ATTRIBUTE;
+        r->flags = value;
+        if (value & EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR) r->robust = true;
+        break;
+      case EGL_CONTEXT_OPENGL_PROFILE_MASK:
+        if (!(value & (EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT |
+                       EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT)))
+          return EGL_BAD_ATTRIBUTE;
+        break;  // below GL 3.2 the profile is ignored (EGL 1.5, 3.7.1.1)
+      case EGL_CONTEXT_OPENGL_DEBUG:
+      case EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE:
+        if (value != EGL_TRUE && value != EGL_FALSE) return EGL_BAD_ATTRIBUTE;
+        break;
+      case EGL_CONTEXT_OPENGL_ROBUST_ACCESS:
+        if (value != EGL_TRUE && value != EGL_FALSE) return EGL_BAD_ATTRIBUTE;
+        r->robust = value == EGL_TRUE;
+        break;
+      case EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY:
+        if (value != EGL_NO_RESET_NOTIFICATION && value != EGL_LOSE_CONTEXT_ON_RESET)
+          return EGL_BAD_ATTRIBUTE;
+        r->reset_strategy = value;
+        break;
+      default: return EGL_BAD_ATTRIBUTE;
+    }
+  }
+  return EGL_SUCCESS;
+}
+
+}  // namespace
+
+EGLBoolean BindAPI(EGLenum api) {
+  // Only desktop OpenGL is implemented; EGL_OPENGL_ES_API joins with ES 2.0.
+  if (api != EGL_OPENGL_API) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
+  thread_state().api = api;
+  return succeed(EGL_TRUE);
+}
+
+EGLenum QueryAPI() { return succeed(thread_state().api); }
+
+EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_context,
+                         const EGLint* attrib_list) {
+  auto lock = Registry::instance().lock();
+  Display* display = initialized_display(dpy);
+  if (!display) return EGL_NO_CONTEXT;
+  EGLenum api = thread_state().api;
+  if (api == EGL_NONE) return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+  const Config* c = find_config(config);
+  if (!c) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
+  if (!(c->renderable_type & EGL_OPENGL_BIT)) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
+  if (share_context != EGL_NO_CONTEXT) {
+    if (!display->find_context(share_context)) return fail(EGL_BAD_CONTEXT, EGL_NO_CONTEXT);
+    // Share groups are not implemented yet: the two contexts cannot share objects.
+    return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+  }
+  Request request;
+  if (EGLint error = parse_attributes(attrib_list, &request); error != EGL_SUCCESS)
+    return fail(error, EGL_NO_CONTEXT);
+  if (!driver::gl_version_supported(request.major, request.minor))
+    return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+  // No robust buffer access, no reset notification.
+  if (request.robust || request.reset_strategy != EGL_NO_RESET_NOTIFICATION)
+    return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+
+  auto object = std::make_shared<ContextObject>();
+  object->config = c;
+  object->api = api;
+  // GL may return a later version compatible with the one asked for: the highest one.
+  object->major = driver::kMaxGLMajor;
+  object->minor = driver::kMaxGLMinor;
+  try {
+    object->gl = std::make_unique<pineda::Context>(
+        ContextAttribs{.major = object->major, .minor = object->minor, .gles = false});
+  } catch (const std::bad_alloc&) {
+    return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
+  }
+  EGLContext handle = object.get();
+  display->contexts.emplace(handle, std::move(object));
+  return succeed(handle);
+}
+
+EGLBoolean DestroyContext(EGLDisplay dpy, EGLContext ctx) {
+  std::shared_ptr<ContextObject> doomed;  // destroyed after the lock is released
+  auto lock = Registry::instance().lock();
+  Display* display = initialized_display(dpy);
+  if (!display) return EGL_FALSE;
+  auto it = display->contexts.find(ctx);
+  if (it == display->contexts.end()) return fail(EGL_BAD_CONTEXT, EGL_FALSE);
+  // A context current to a thread lives on through that thread's reference.
+  doomed = std::move(it->second);
+  display->contexts.erase(it);
+  lock.unlock();
+  return succeed(EGL_TRUE);
+}
+
+EGLBoolean QueryContext(EGLDisplay dpy, EGLContext ctx, EGLint attribute, EGLint* value) {
+  auto lock = Registry::instance().lock();
+  Display* display = initialized_display(dpy);
+  if (!display) return EGL_FALSE;
+  auto object = display->find_context(ctx);
+  if (!object) return fail(EGL_BAD_CONTEXT, EGL_FALSE);
+  EGLint result;
+  switch (attribute) {
+    case EGL_CONFIG_ID: result = object->config->id; break;
+    case EGL_CONTEXT_CLIENT_TYPE: result = static_cast<EGLint>(object->api); break;
+    case EGL_CONTEXT_CLIENT_VERSION: result = object->major; break;
+    case EGL_RENDER_BUFFER:
+      // Pbuffers render to their back buffer; an unbound context reports EGL_NONE.
+      result = object->bound_to_surface ? EGL_BACK_BUFFER : EGL_NONE;
+      break;
+    default: return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE);
+  }
+  if (!value) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
+  *value = result;
+  return succeed(EGL_TRUE);
+}
+
+}  // namespace pineda::egl

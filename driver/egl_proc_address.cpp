@@ -1,0 +1,21 @@
+// eglGetProcAddress (EGL and GL functions: EGL_KHR_get_all_proc_addresses) and eglGetError.
+#include "driver/egl_thread.h"
+#include "glapi/egl_entry_points.h"
+#include "glapi/proc_table.h"
+
+namespace pineda::egl {
+
+__eglMustCastToProperFunctionPointerType GetProcAddress(const char* procname) {
+  void* proc = glapi::lookup_egl_proc(procname);
+  if (!proc) proc = glapi::lookup_gl_proc(procname);
+  return succeed(reinterpret_cast<__eglMustCastToProperFunctionPointerType>(proc));
+}
+
+EGLint GetError() {
+  ThreadState& t = thread_state();
+  EGLint error = t.error;
+  t.error = EGL_SUCCESS;
+  return error;
+}
+
+}  // namespace pineda::egl

@@ -1,0 +1,39 @@
+// Per-thread EGL state: the last error, the bound API and the current binding.
+#pragma once
+#include <memory>
+
+#include "driver/egl_objects.h"
+
+namespace pineda::egl {
+
+struct ThreadState {
+  EGLint error = EGL_SUCCESS;
+  EGLenum api = EGL_NONE;  // EGL_OPENGL_ES_API once ES is implemented
+  Display* display = nullptr;
+  EGLContext context_handle = EGL_NO_CONTEXT;
+  EGLSurface draw_handle = EGL_NO_SURFACE, read_handle = EGL_NO_SURFACE;
+  std::shared_ptr<ContextObject> context;
+  std::shared_ptr<Surface> draw, read;
+
+  // A thread that ends with a current context releases it.
+  ~ThreadState();
+};
+
+ThreadState& thread_state();
+
+// Releases the calling thread's current context, if any (takes the registry lock).
+void release_current_binding();
+
+template <class T>
+T fail(EGLint error, T result) {
+  thread_state().error = error;
+  return result;
+}
+
+template <class T>
+T succeed(T result) {
+  thread_state().error = EGL_SUCCESS;
+  return result;
+}
+
+}  // namespace pineda::egl
