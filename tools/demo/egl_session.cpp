@@ -1,0 +1,93 @@
+#include "egl_session.h"
+
+#include <EGL/eglext.h>
+
+#include <cstdio>
+
+namespace pineda::demo {
+namespace {
+
+std::string eglError(const char* what) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "%s failed (EGL error 0x%04x)", what, eglGetError());
+  return buffer;
+}
+
+EGLDisplay openDisplay() {
+  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (getPlatformDisplay) {
+    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (display != EGL_NO_DISPLAY) return display;
+  }
+  return eglGetDisplay(EGL_DEFAULT_DISPLAY);
+}
+
+}  // namespace
+
+EglSession::~EglSession() {
+  if (display_ == EGL_NO_DISPLAY) return;
+  destroyContext();
+  if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
+  eglTerminate(display_);
+  eglReleaseThread();
+}
+
+bool EglSession::open(int width, int height, std::string& error) {
+  display_ = openDisplay();
+  if (display_ == EGL_NO_DISPLAY) {
+    error = eglError("eglGetDisplay");
+    return false;
+  }
+  if (!eglInitialize(display_, nullptr, nullptr)) {
+    error = eglError("eglInitialize");
+    display_ = EGL_NO_DISPLAY;
+    return false;
+  }
+  if (!eglBindAPI(EGL_OPENGL_API)) {
+    error = eglError("eglBindAPI(EGL_OPENGL_API)");
+    return false;
+  }
+  const EGLint configAttribs[] = {
+      EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+      EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
+      EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
+  EGLint count = 0;
+  if (!eglChooseConfig(display_, configAttribs, &config_, 1, &count) || count < 1) {
+    error = eglError("eglChooseConfig (RGBA8, depth 24, stencil 8, pbuffer, OpenGL)");
+    return false;
+  }
+  const EGLint surfaceAttribs[] = {EGL_WIDTH, width, EGL_HEIGHT, height, EGL_NONE};
+  surface_ = eglCreatePbufferSurface(display_, config_, surfaceAttribs);
+  if (surface_ == EGL_NO_SURFACE) {
+    error = eglError("eglCreatePbufferSurface");
+    return false;
+  }
+  return freshContext(error);
+}
+
+bool EglSession::freshContext(std::string& error) {
+  destroyContext();
+  const EGLint versioned[] = {EGL_CONTEXT_MAJOR_VERSION, 1, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
+  context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, versioned);
+  if (context_ == EGL_NO_CONTEXT)  // EGL 1.4 without EGL_KHR_create_context
+    context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, nullptr);
+  if (context_ == EGL_NO_CONTEXT) {
+    error = eglError("eglCreateContext (OpenGL 1.1)");
+    return false;
+  }
+  if (!eglMakeCurrent(display_, surface_, surface_, context_)) {
+    error = eglError("eglMakeCurrent");
+    return false;
+  }
+  return true;
+}
+
+void EglSession::destroyContext() {
+  if (context_ == EGL_NO_CONTEXT) return;
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroyContext(display_, context_);
+  context_ = EGL_NO_CONTEXT;
+}
+
+}  // namespace pineda::demo

@@ -1,0 +1,31 @@
+#pragma once
+// A demo scene: GL 1.1 calls only. Each scene runs in a fresh context, so it sets up
+// everything it needs in its constructor and assumes GL's initial state.
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace pineda::demo {
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+  // Draws frame `frame`; animation depends only on the frame index.
+  virtual void draw(int frame) = 0;
+};
+
+struct SceneEntry {
+  std::string_view name;
+  std::unique_ptr<Scene> (*create)(int width, int height);
+};
+
+const std::vector<SceneEntry>& allScenes();
+
+std::unique_ptr<Scene> createTriangles(int width, int height);
+std::unique_ptr<Scene> createCube(int width, int height);
+std::unique_ptr<Scene> createTextured(int width, int height);
+std::unique_ptr<Scene> createGears(int width, int height);
+std::unique_ptr<Scene> createBlend(int width, int height);
+std::unique_ptr<Scene> createLinesPoints(int width, int height);
+
+}  // namespace pineda::demo

@@ -1,0 +1,13 @@
+#include "scene.h"
+
+namespace pineda::demo {
+
+const std::vector<SceneEntry>& allScenes() {
+  static const std::vector<SceneEntry> scenes = {
+      {"triangles", createTriangles}, {"cube", createCube},   {"textured", createTextured},
+      {"gears", createGears},         {"blend", createBlend}, {"lines_points", createLinesPoints},
+  };
+  return scenes;
+}
+
+}  // namespace pineda::demo
