@@ -1,0 +1,88 @@
+#include "raster/clip.h"
+
+namespace pineda::raster {
+namespace {
+
+constexpr int kPlaneCount = 7;
+// Points closer than this to w = 0 are clipped away: their projection is meaningless.
+constexpr double kMinW = 1e-30;
+
+double plane_distance(const ClipVert& v, const ClipVolume& vol, int plane) {
+  const double x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
+  switch (plane) {
+    case 0: return z + w;               // near
+    case 1: return w - z;               // far
+    case 2: return w - kMinW;           // in front of the eye
+    case 3: return x - vol.x_min * w;   // guard band, left
+    case 4: return vol.x_max * w - x;   // right
+    case 5: return y - vol.y_min * w;   // bottom
+    default: return vol.y_max * w - y;  // top
+  }
+}
+
+// The point where the segment from `in` (inside) to `out` (outside) meets the plane.
+ClipVert intersect(const ClipVert& in, const ClipVert& out, double d_in, double d_out) {
+  const double t = d_in / (d_in - d_out);
+  ClipVert r;
+  for (int i = 0; i < 4; ++i) r.pos[i] = in.pos[i] + t * (out.pos[i] - in.pos[i]);
+  const float tf = static_cast<float>(t);
+  for (int i = 0; i < kClipAttrs; ++i) r.attr[i] = in.attr[i] + tf * (out.attr[i] - in.attr[i]);
+  return r;
+}
+
+}  // namespace
+
+uint32_t clip_outcode(const ClipVert& v, const ClipVolume& vol) {
+  uint32_t code = 0;
+  for (int p = 0; p < kPlaneCount; ++p)
+    if (!(plane_distance(v, vol, p) >= 0.0)) code |= 1u << p;
+  return code;
+}
+
+void clip_polygon(const std::vector<ClipVert>& in, const ClipVolume& vol, std::vector<ClipVert>& out,
+                  std::vector<ClipVert>& scratch) {
+  out = in;
+  uint32_t any = 0, all = ~0u;
+  for (const ClipVert& v : in) {
+    const uint32_t c = clip_outcode(v, vol);
+    any |= c;
+    all &= c;
+  }
+  if (all) {
+    out.clear();
+    return;
+  }
+  for (int p = 0; p < kPlaneCount && !out.empty(); ++p) {
+    if (!(any & (1u << p))) continue;
+    scratch.clear();
+    const size_t n = out.size();
+    for (size_t i = 0; i < n; ++i) {
+      const ClipVert& a = out[i];
+      const ClipVert& b = out[(i + 1) % n];
+      const double da = plane_distance(a, vol, p), db = plane_distance(b, vol, p);
+      const bool a_in = da >= 0.0, b_in = db >= 0.0;
+      if (a_in) scratch.push_back(a);
+      if (a_in && !b_in) scratch.push_back(intersect(a, b, da, db));
+      if (!a_in && b_in) scratch.push_back(intersect(b, a, db, da));
+    }
+    out.swap(scratch);
+    if (out.size() < 3) out.clear();
+  }
+}
+
+bool clip_line(ClipVert& a, ClipVert& b, const ClipVolume& vol) {
+  const uint32_t ca = clip_outcode(a, vol), cb = clip_outcode(b, vol);
+  if (ca & cb) return false;
+  const uint32_t any = ca | cb;
+  for (int p = 0; p < kPlaneCount; ++p) {
+    if (!(any & (1u << p))) continue;
+    const double da = plane_distance(a, vol, p), db = plane_distance(b, vol, p);
+    const bool a_in = da >= 0.0, b_in = db >= 0.0;
+    if (!a_in && !b_in) return false;
+    if (a_in && !b_in) b = intersect(a, b, da, db);
+    else if (!a_in && b_in) a = intersect(b, a, db, da);
+  }
+  return true;
+}
+
+}  // namespace pineda::raster

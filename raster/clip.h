@@ -1,0 +1,37 @@
+// Homogeneous clipping of polygons and lines, in double precision, with the vertex
+// attributes interpolated linearly in clip space.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "raster/texture.h"
+
+namespace pineda::raster {
+
+// colour (4), back colour (4), then s, t, r, q per texture unit.
+constexpr int kClipAttrs = 8 + 4 * kMaxTextureUnits;
+
+struct ClipVert {
+  double pos[4];
+  float attr[kClipAttrs];
+};
+
+// The clip volume: near and far always, w > epsilon always, and x/y against the guard band
+// (expressed as multiples of w, so the band is fixed in window pixels).
+struct ClipVolume {
+  double x_min = -1, x_max = 1, y_min = -1, y_max = 1;
+};
+
+// Bit i set when the vertex is outside plane i.
+uint32_t clip_outcode(const ClipVert& v, const ClipVolume& vol);
+
+// Clips a convex polygon; `out` receives the visible polygon (empty when nothing is left).
+// An edge crossing a plane is always cut from its inside vertex, so that two primitives
+// sharing an edge get the same new vertex.
+void clip_polygon(const std::vector<ClipVert>& in, const ClipVolume& vol, std::vector<ClipVert>& out,
+                  std::vector<ClipVert>& scratch);
+
+// Clips a segment in place; false when nothing is left.
+bool clip_line(ClipVert& a, ClipVert& b, const ClipVolume& vol);
+
+}  // namespace pineda::raster

@@ -1,0 +1,57 @@
+#include "raster/draw_record.h"
+
+#include <algorithm>
+
+#include "raster/fragment_pipeline.h"
+
+namespace pineda::raster {
+namespace {
+
+float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }
+
+// A texture the sampler can read without bounds checks: every level non-empty and complete.
+bool texture_usable(const TextureImage* image) {
+  if (!image || image->levels.empty()) return false;
+  for (const TextureLevel& l : image->levels) {
+    if (l.width <= 0 || l.height <= 0) return false;
+    if (l.texels.size() < static_cast<size_t>(l.width) * static_cast<size_t>(l.height)) return false;
+  }
+  return true;
+}
+
+uint8_t stencil_ref(int ref) { return static_cast<uint8_t>(std::clamp(ref, 0, 255)); }
+
+}  // namespace
+
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
+  DrawRecord d;
+  d.state = state;
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    TextureUnit& unit = d.state.texture_units[u];
+    if (!texture_usable(unit.image.get())) {
+      unit.image.reset();
+      continue;
+    }
+    d.units[d.num_units++] = static_cast<uint8_t>(u);
+  }
+  d.planes = kColorPlanes + kTexPlanesPerUnit * d.num_units;
+
+  const bool has_depth = fb.depth.base && fb.depth.bits > 0;
+  const bool has_stencil = fb.stencil.base && fb.stencil.bits > 0;
+  d.depth_max = fb.depth.bits >= 32 ? 4294967295.0 : static_cast<double>((uint64_t{1} << std::max(fb.depth.bits, 1)) - 1);
+  d.alpha_ref = clamp01(state.alpha_ref);
+  for (int i = 0; i < 4; ++i) d.blend_color[i] = clamp01(state.blend_state.color[i]);
+  d.stencil_ref[0] = stencil_ref(state.stencil_front.ref);
+  d.stencil_ref[1] = stencil_ref(state.stencil_back.ref);
+  d.color_write_any = std::any_of(state.color_write.begin(), state.color_write.end(), [](bool b) { return b; });
+
+  d.key.textured = d.num_units > 0;
+  d.key.depth = state.depth_test && has_depth;
+  d.key.stencil = state.stencil_test && has_stencil;
+  d.key.blend = state.blend || state.logic_op_enabled;
+  d.key.flat = state.flat_shading;
+  d.routine = select_quad_routine(d.key);
+  return d;
+}
+
+}  // namespace pineda::raster

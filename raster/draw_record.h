@@ -1,0 +1,47 @@
+// A draw as the scene keeps it: a copy of the DrawState plus what is derived from it once
+// per draw (the specialization key's routine, clamped reference values).
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "raster/draw_state.h"
+#include "raster/framebuffer.h"
+#include "raster/prim_setup.h"
+
+namespace pineda::raster {
+
+struct DrawRecord;
+
+// Shades one 2x2 quad at (x, y) (even coordinates); bit i of `mask` is pixel
+// (x + (i & 1), y + (i >> 1)).
+using QuadRoutine = void (*)(const DrawRecord&, const PrimSetup&, const Framebuffer&, int x, int y,
+                             unsigned mask);
+
+// The compile-time part of the fragment pipeline: each combination has its own routine.
+struct FragmentKey {
+  bool textured = false;
+  bool depth = false;
+  bool stencil = false;
+  bool blend = false;  // blending or logic op: the destination colour is read
+  bool flat = false;
+};
+
+struct DrawRecord {
+  DrawState state;
+  FragmentKey key;
+  QuadRoutine routine = nullptr;
+
+  int num_units = 0;
+  std::array<uint8_t, kMaxTextureUnits> units{};  // enabled texture units, in order
+  int planes = kColorPlanes;                      // interpolated planes
+
+  double depth_max = 0.0;  // 2^bits - 1
+  float alpha_ref = 0.f;
+  float blend_color[4] = {0, 0, 0, 0};
+  uint8_t stencil_ref[2] = {0, 0};  // front, back
+  bool color_write_any = true;
+};
+
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb);
+
+}  // namespace pineda::raster

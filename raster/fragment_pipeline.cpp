@@ -1,0 +1,170 @@
+#include "raster/fragment_pipeline.h"
+
+#include <array>
+#include <utility>
+
+#include "raster/fragment_ops.h"
+#include "raster/sampler.h"
+#include "raster/tex_env.h"
+
+namespace pineda::raster {
+namespace {
+
+// Byte position of each RGBA channel in a pixel of the colour buffer.
+struct ChannelOrder {
+  int at[4];
+};
+constexpr ChannelOrder kRgbaOrder{{0, 1, 2, 3}};
+constexpr ChannelOrder kBgraOrder{{2, 1, 0, 3}};
+
+inline float eval(const Plane& p, float ox, float oy) { return p.a0 + p.dx * ox + p.dy * oy; }
+
+// Interpolated fragment colours of the quad, textured: rgba[pixel][channel].
+template <bool kTex, bool kFlat>
+void quad_colors(const DrawRecord& d, const PrimSetup& p, const float ox[4], const float oy[4],
+                 float rgba[4][4]) {
+  if constexpr (kFlat) {
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 4; ++c) rgba[i][c] = p.flat_color[c];
+  } else if (p.perspective) {
+    for (int i = 0; i < 4; ++i) {
+      const float w = 1.f / eval(p.inv_w, ox[i], oy[i]);
+      for (int c = 0; c < 4; ++c) rgba[i][c] = eval(p.planes[c], ox[i], oy[i]) * w;
+    }
+  } else {
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 4; ++c) rgba[i][c] = eval(p.planes[c], ox[i], oy[i]);
+  }
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 4; ++c) rgba[i][c] = clamp01(rgba[i][c]);
+
+  if constexpr (kTex) {
+    for (int k = 0; k < d.num_units; ++k) {
+      const TextureUnit& unit = d.state.texture_units[d.units[k]];
+      const Plane* tp = &p.planes[kColorPlanes + kTexPlanesPerUnit * k];
+      float s[4], t[4];
+      for (int i = 0; i < 4; ++i) {
+        // (s/w) / (q/w) = s/q: 1/w cancels, so perspective needs no extra divide here.
+        const float q = eval(tp[2], ox[i], oy[i]);
+        s[i] = eval(tp[0], ox[i], oy[i]) / q;
+        t[i] = eval(tp[1], ox[i], oy[i]) / q;
+      }
+      float texel[4][4];
+      sample_quad(*unit.image, unit.sampler, s, t, texel);
+      for (int i = 0; i < 4; ++i)
+        apply_tex_env(unit.env_mode, unit.image->base_format, unit.env_color, texel[i], rgba[i]);
+    }
+  }
+}
+
+uint8_t* color_address(const Framebuffer& fb, int x, int y) {
+  return fb.color.base + static_cast<ptrdiff_t>(y) * fb.color.stride + static_cast<ptrdiff_t>(x) * 4;
+}
+
+template <bool kBlend>
+void write_color(const DrawRecord& d, const ChannelOrder& order, uint8_t* px, const float src[4]) {
+  const DrawState& s = d.state;
+  uint8_t out[4];
+  if constexpr (kBlend) {
+    uint8_t dst_bytes[4];
+    for (int c = 0; c < 4; ++c) dst_bytes[c] = px[order.at[c]];
+    if (s.logic_op_enabled) {
+      for (int c = 0; c < 4; ++c) out[c] = logic_op(s.logic_op, to_unorm8(src[c]), dst_bytes[c]);
+    } else {
+      float dst[4];
+      for (int c = 0; c < 4; ++c) dst[c] = static_cast<float>(dst_bytes[c]) * (1.f / 255.f);
+      const BlendState& b = s.blend_state;
+      for (int c = 0; c < 4; ++c) {
+        const bool alpha = c == 3;
+        const float sf = blend_factor(alpha ? b.src_alpha : b.src_rgb, c, src, dst, d.blend_color);
+        const float df = blend_factor(alpha ? b.dst_alpha : b.dst_rgb, c, src, dst, d.blend_color);
+        out[c] = to_unorm8(blend_equation(alpha ? b.eq_alpha : b.eq_rgb, src[c], sf, dst[c], df));
+      }
+    }
+  } else {
+    for (int c = 0; c < 4; ++c) out[c] = to_unorm8(src[c]);
+  }
+  for (int c = 0; c < 4; ++c)
+    if (s.color_write[c]) px[order.at[c]] = out[c];
+}
+
+template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat>
+void shade_quad(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask) {
+  const DrawState& s = d.state;
+  float ox[4], oy[4];
+  for (int i = 0; i < 4; ++i) {
+    ox[i] = static_cast<float>(x + (i & 1)) + 0.5f - p.ref_x;
+    oy[i] = static_cast<float>(y + (i >> 1)) + 0.5f - p.ref_y;
+  }
+  float rgba[4][4];
+  quad_colors<kTex, kFlat>(d, p, ox, oy, rgba);
+
+  if (s.alpha_test) {
+    for (int i = 0; i < 4; ++i)
+      if (!compare(s.alpha_func, rgba[i][3], d.alpha_ref)) mask &= ~(1u << i);
+  }
+
+  if constexpr (kDepth || kStencil) {
+    const StencilFace& face = p.back_facing ? s.stencil_back : s.stencil_front;
+    const uint8_t ref = d.stencil_ref[p.back_facing ? 1 : 0];
+    for (int i = 0; i < 4; ++i) {
+      if (!(mask & (1u << i))) continue;
+      const int px = x + (i & 1), py = y + (i >> 1);
+      uint8_t* stencil = nullptr;
+      uint8_t sv = 0;
+      auto update_stencil = [&](StencilOp op) {
+        const uint8_t nv = stencil_op(op, sv, ref);
+        *stencil = static_cast<uint8_t>((sv & ~face.write_mask) | (nv & face.write_mask));
+      };
+      if constexpr (kStencil) {
+        stencil = fb.stencil.base + static_cast<ptrdiff_t>(py) * fb.stencil.stride + px;
+        sv = *stencil;
+        if (!compare(face.func, static_cast<uint8_t>(ref & face.value_mask), static_cast<uint8_t>(sv & face.value_mask))) {
+          update_stencil(face.fail);
+          mask &= ~(1u << i);
+          continue;
+        }
+      }
+      if constexpr (kDepth) {
+        double z = p.z0 + p.dzdx * ox[i] + p.dzdy * oy[i];
+        z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+        const uint32_t zi = static_cast<uint32_t>(z + 0.5);
+        uint32_t* depth = fb.depth.base + static_cast<ptrdiff_t>(py) * fb.depth.stride + px;
+        if (!compare(s.depth_func, zi, *depth)) {
+          if constexpr (kStencil) update_stencil(face.depth_fail);
+          mask &= ~(1u << i);
+          continue;
+        }
+        if (s.depth_write) *depth = zi;
+      }
+      if constexpr (kStencil) update_stencil(face.depth_pass);
+    }
+  }
+
+  if (!mask || !fb.color.base || !d.color_write_any) return;
+  const ChannelOrder& order = fb.color.format == ColorFormat::BGRA8 ? kBgraOrder : kRgbaOrder;
+  for (int i = 0; i < 4; ++i)
+    if (mask & (1u << i)) write_color<kBlend>(d, order, color_address(fb, x + (i & 1), y + (i >> 1)), rgba[i]);
+}
+
+template <int kBits>
+constexpr QuadRoutine routine_for() {
+  return &shade_quad<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0>;
+}
+
+template <int... kBits>
+constexpr auto make_table(std::integer_sequence<int, kBits...>) {
+  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits>()...};
+}
+
+constexpr auto kRoutines = make_table(std::make_integer_sequence<int, 32>{});
+
+}  // namespace
+
+QuadRoutine select_quad_routine(const FragmentKey& key) {
+  const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
+                   (key.flat ? 16 : 0);
+  return kRoutines[bits];
+}
+
+}  // namespace pineda::raster

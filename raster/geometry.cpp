@@ -1,0 +1,202 @@
+#include "raster/geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raster/fragment_ops.h"
+#include "raster/raster_limits.h"
+
+namespace pineda::raster {
+namespace {
+
+bool finite_position(const ClipVertex& v) {
+  return std::isfinite(v.clip[0]) && std::isfinite(v.clip[1]) && std::isfinite(v.clip[2]) && std::isfinite(v.clip[3]);
+}
+
+int rounded_size(float size, int max) {
+  if (!(size >= 1.5f)) return 1;
+  return static_cast<int>(std::min(std::floor(size + 0.5f), static_cast<float>(max)));
+}
+
+int clamp_to_int(int64_t v) { return static_cast<int>(std::clamp<int64_t>(v, INT32_MIN, INT32_MAX)); }
+
+int64_t snap(double window) {
+  // Beyond the guard band only by clipping's rounding; the clamp keeps llround defined.
+  return std::llround(std::clamp(window, -4.0 * kGuardBand, 4.0 * kGuardBand) * kSubpixelOne);
+}
+
+}  // namespace
+
+GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full)
+    : scene_(scene), on_full_(std::move(on_full)) {
+  const DrawState& s = scene_.current_draw().state;
+  const Viewport& vp = s.viewport;
+  if (vp.width <= 0 || vp.height <= 0) return;
+  PixelRect rect{vp.x, vp.y, clamp_to_int(int64_t{vp.x} + vp.width), clamp_to_int(int64_t{vp.y} + vp.height)};
+  if (s.scissor_test) {
+    const Rect& sc = s.scissor;
+    rect = intersect(rect, {sc.x, sc.y, clamp_to_int(int64_t{sc.x} + sc.width), clamp_to_int(int64_t{sc.y} + sc.height)});
+  }
+  clip_rect_ = intersect(rect, scene_.render_area());
+  if (clip_rect_.empty()) return;
+  active_ = true;
+
+  vp_half_w_ = vp.width * 0.5;
+  vp_half_h_ = vp.height * 0.5;
+  vp_x_ = vp.x;
+  vp_y_ = vp.y;
+  depth_near_ = std::clamp(vp.near_z, 0.0, 1.0);
+  depth_far_ = std::clamp(vp.far_z, 0.0, 1.0);
+  // The guard band in window pixels, as NDC multiples of w.
+  volume_.x_min = (-kGuardBand - vp_x_) / vp_half_w_ - 1.0;
+  volume_.x_max = (kGuardBand - vp_x_) / vp_half_w_ - 1.0;
+  volume_.y_min = (-kGuardBand - vp_y_) / vp_half_h_ - 1.0;
+  volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
+  line_width_ = rounded_size(s.line_width, kMaxLineWidth);
+  point_size_ = rounded_size(s.point_size, kMaxPointSize);
+}
+
+ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
+  ClipVert c;
+  for (int i = 0; i < 4; ++i) c.pos[i] = v.clip[i];
+  for (int i = 0; i < 4; ++i) {
+    c.attr[i] = v.color[i];
+    c.attr[4 + i] = v.back_color[i];
+  }
+  for (int u = 0; u < kMaxTextureUnits; ++u)
+    for (int i = 0; i < 4; ++i) c.attr[8 + 4 * u + i] = v.texcoord[u][i];
+  return c;
+}
+
+WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
+  const DrawRecord& d = scene_.current_draw();
+  WinVert w;
+  w.inv_w = 1.0 / v.pos[3];
+  w.x = snap((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_);
+  w.y = snap((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_);
+  double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
+  z = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
+  w.z = z * d.depth_max;
+  const int color = back_color ? 4 : 0;
+  for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
+  for (int k = 0; k < d.num_units; ++k) {
+    const float* tc = &v.attr[8 + 4 * d.units[k]];
+    float* out = &w.attr[kColorPlanes + kTexPlanesPerUnit * k];
+    out[0] = tc[0];
+    out[1] = tc[1];
+    out[2] = tc[3];
+  }
+  return w;
+}
+
+SetupParams GeometryStage::params(const Style& style) const {
+  SetupParams p;
+  p.clip = clip_rect_;
+  p.planes = scene_.current_draw().planes;
+  p.flat = style.flat;
+  for (int i = 0; i < 4; ++i) p.flat_color[i] = style.flat_color[i];
+  p.back_facing = style.back_facing;
+  p.depth_offset = style.depth_offset;
+  return p;
+}
+
+GeometryStage::Style GeometryStage::style_for(const ClipVertex& provoking, bool back_facing) const {
+  Style st;
+  st.back_facing = back_facing;
+  st.flat = scene_.current_draw().state.flat_shading;
+  const float* c = back_facing ? provoking.back_color : provoking.color;
+  for (int i = 0; i < 4; ++i) st.flat_color[i] = clamp01(c[i]);
+  return st;
+}
+
+void GeometryStage::emit(const PrimSetup& prim) {
+  scene_.add_prim(prim);
+  if (scene_.full()) on_full_();
+}
+
+void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
+  if (!clip_line(a, b, volume_)) return;
+  const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
+  PrimSetup prim;
+  if (setup_line(wa, wb, line_width_, params(style), prim)) emit(prim);
+}
+
+void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
+  const double x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
+  // A point is drawn when its centre is inside the clip volume.
+  if (!(w > 0.0 && -w <= x && x <= w && -w <= y && y <= w && -w <= z && z <= w)) return;
+  const WinVert wv = to_window(v, style.back_facing);
+  PrimSetup prim;
+  if (setup_point(wv, point_size_, params(style), prim)) emit(prim);
+}
+
+void GeometryStage::point(const ClipVertex& v) {
+  if (!active_ || !finite_position(v)) return;
+  draw_point(to_clip(v), style_for(v, false));
+}
+
+void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) {
+  if (!active_ || !finite_position(a) || !finite_position(b)) return;
+  draw_line(to_clip(a), to_clip(b), style_for(provoking, false));
+}
+
+double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool enabled) const {
+  if (!enabled) return 0.0;
+  const DrawState& s = scene_.current_draw().state;
+  double dzdx = 0.0, dzdy = 0.0;
+  for (size_t i = 1; i + 1 < window.size(); ++i)
+    if (depth_slopes(window[0], window[i], window[i + 1], dzdx, dzdy)) break;
+  const double slope = std::max(std::fabs(dzdx), std::fabs(dzdy));
+  const double offset = s.offset_factor * slope + s.offset_units;
+  return std::isfinite(offset) ? offset : 0.0;
+}
+
+void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
+                            const ClipVertex& provoking) {
+  if (!active_) return;
+  for (const ClipVertex* p : v)
+    if (!finite_position(*p)) return;
+  in_.clear();
+  for (const ClipVertex* p : v) in_.push_back(to_clip(*p));
+  clip_polygon(in_, volume_, clipped_, scratch_);
+  if (clipped_.size() < 3) return;
+
+  // Facing from the snapped window positions of the visible part.
+  window_.clear();
+  for (const ClipVert& c : clipped_) window_.push_back(to_window(c, false));
+  int64_t area = 0;
+  for (size_t i = 1; i + 1 < window_.size(); ++i) area += signed_area2(window_[0], window_[i], window_[i + 1]);
+  const DrawState& s = scene_.current_draw().state;
+  const bool front = s.front_ccw ? area > 0 : area < 0;
+  if (s.cull_face && (front ? s.cull_front : s.cull_back)) return;
+  const PolygonMode mode = front ? s.polygon_front : s.polygon_back;
+  Style style = style_for(provoking, !front);
+
+  if (mode == PolygonMode::Fill) {
+    if (area == 0) return;
+    style.depth_offset = polygon_offset(window_, s.offset_fill);
+    if (!front)
+      for (size_t i = 0; i < clipped_.size(); ++i) window_[i] = to_window(clipped_[i], true);
+    const SetupParams p = params(style);
+    for (size_t i = 1; i + 1 < window_.size(); ++i) {
+      // Slivers that snapping turned inside out would cover pixels twice; they are dropped.
+      const int64_t a = signed_area2(window_[0], window_[i], window_[i + 1]);
+      if (a == 0 || (a > 0) != (area > 0)) continue;
+      PrimSetup prim;
+      if (setup_triangle(window_[0], window_[i], window_[i + 1], p, prim)) emit(prim);
+    }
+    return;
+  }
+  const size_t n = v.size();
+  if (mode == PolygonMode::Line) {
+    style.depth_offset = polygon_offset(window_, s.offset_line);
+    for (size_t i = 0; i < n; ++i)
+      if (edge_flags[i]) draw_line(in_[i], in_[(i + 1) % n], style);
+  } else {
+    style.depth_offset = polygon_offset(window_, s.offset_point);
+    for (size_t i = 0; i < n; ++i)
+      if (edge_flags[i]) draw_point(in_[i], style);
+  }
+}
+
+}  // namespace pineda::raster

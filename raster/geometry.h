@@ -1,0 +1,55 @@
+// The per-draw front end: clipping, facing and culling, polygon modes, setup and binning of
+// the primitives that assembly produces.
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "raster/clip.h"
+#include "raster/primitive.h"
+#include "raster/scene.h"
+#include "raster/setup.h"
+
+namespace pineda::raster {
+
+class GeometryStage final : public PrimitiveSink {
+ public:
+  // Uses the scene's current draw; `on_full` is called when the scene asks to be executed.
+  GeometryStage(Scene& scene, std::function<void()> on_full);
+
+  void point(const ClipVertex& v) override;
+  void line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) override;
+  void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
+               const ClipVertex& provoking) override;
+
+  // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
+  bool active() const { return active_; }
+
+ private:
+  struct Style {  // how a polygon's facing shapes its lines and points
+    bool back_facing = false;
+    bool flat = false;
+    float flat_color[4] = {0, 0, 0, 0};
+    double depth_offset = 0.0;
+  };
+
+  ClipVert to_clip(const ClipVertex& v) const;
+  WinVert to_window(const ClipVert& v, bool back_color) const;
+  SetupParams params(const Style& style) const;
+  Style style_for(const ClipVertex& provoking, bool back_facing) const;
+  void emit(const PrimSetup& prim);
+  void draw_line(ClipVert a, ClipVert b, const Style& style);
+  void draw_point(const ClipVert& v, const Style& style);
+  double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
+
+  Scene& scene_;
+  std::function<void()> on_full_;
+  bool active_ = false;
+  ClipVolume volume_;
+  PixelRect clip_rect_;
+  double vp_x_ = 0, vp_y_ = 0, vp_half_w_ = 0, vp_half_h_ = 0, depth_near_ = 0, depth_far_ = 1;
+  int line_width_ = 1, point_size_ = 1;
+  std::vector<ClipVert> in_, clipped_, scratch_;
+  std::vector<WinVert> window_;
+};
+
+}  // namespace pineda::raster

@@ -1,0 +1,63 @@
+// A primitive after setup: what a tile needs to find its pixels and shade them.
+#pragma once
+#include <cstdint>
+
+#include "raster/texture.h"
+
+namespace pineda::raster {
+
+constexpr int kColorPlanes = 4;
+constexpr int kTexPlanesPerUnit = 3;  // s, t, q
+constexpr int kMaxPlanes = kColorPlanes + kTexPlanesPerUnit * kMaxTextureUnits;
+
+// Pixel rectangle, half-open: [x0, x1) x [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+inline PixelRect intersect(const PixelRect& a, const PixelRect& b) {
+  return {a.x0 > b.x0 ? a.x0 : b.x0, a.y0 > b.y0 ? a.y0 : b.y0, a.x1 < b.x1 ? a.x1 : b.x1,
+          a.y1 < b.y1 ? a.y1 : b.y1};
+}
+
+// value(x, y) = a0 + dx * (x - ref_x) + dy * (y - ref_y), x and y in pixels.
+struct Plane {
+  float a0 = 0.f, dx = 0.f, dy = 0.f;
+};
+
+// E(px, py) = a * px + b * py + c with px, py in sub-pixels; a pixel centre is inside when
+// E >= 0 (the fill-rule bias is folded into c).
+struct EdgeFunction {
+  int64_t a = 0, b = 0, c = 0;
+};
+
+// A line as GL rasterizes it: along the major axis one span of `width` pixels per column
+// (x-major) or row (y-major). Coordinates in sub-pixels.
+struct LineCoverage {
+  int64_t x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width = 1;
+  bool x_major = true;
+  int major_min = 0, major_max = -1;  // inclusive range of columns (rows) hit
+};
+
+enum class CoverageKind : uint8_t { Triangle, Line, Point };
+
+struct PrimSetup {
+  CoverageKind kind = CoverageKind::Triangle;
+  bool back_facing = false;
+  bool perspective = false;  // planes hold a/w and inv_w holds 1/w
+  uint32_t draw = 0;         // index of the draw record in the scene
+  PixelRect bounds;          // clipped to viewport, scissor and framebuffer
+
+  EdgeFunction edges[3];
+  LineCoverage line;
+
+  float ref_x = 0.f, ref_y = 0.f;
+  double z0 = 0.0, dzdx = 0.0, dzdy = 0.0;  // window depth in depth-buffer units
+  Plane inv_w;
+  Plane planes[kMaxPlanes];  // r, g, b, a, then s, t, q per enabled unit (in unit order)
+  float flat_color[4] = {0, 0, 0, 0};
+};
+
+}  // namespace pineda::raster

@@ -1,0 +1,107 @@
+#include "raster/scene.h"
+
+#include <algorithm>
+
+#include "raster/raster_limits.h"
+#include "raster/tile_raster.h"
+#include "raster/worker_pool.h"
+
+namespace pineda::raster {
+namespace {
+
+constexpr size_t kMaxPrims = size_t{1} << 16;
+constexpr size_t kMaxCommands = size_t{1} << 22;
+constexpr size_t kMaxDraws = 4096;
+// Below this many binned commands the calling thread does the work alone.
+constexpr size_t kSmallScene = 64;
+
+}  // namespace
+
+void Scene::reset(const Framebuffer& fb) {
+  fb_ = fb;
+  render_w_ = std::clamp(fb.width, 0, kMaxRenderSize);
+  render_h_ = std::clamp(fb.height, 0, kMaxRenderSize);
+  tiles_x_ = (render_w_ + kTileSize - 1) / kTileSize;
+  tiles_y_ = (render_h_ + kTileSize - 1) / kTileSize;
+  if (tiles_x_ == 0 || tiles_y_ == 0) tiles_x_ = tiles_y_ = 0;
+  draws_.clear();
+  prims_.clear();
+  clears_.clear();
+  bins_.assign(static_cast<size_t>(tiles_x_) * tiles_y_, {});
+  touched_tiles_.clear();
+  commands_ = 0;
+}
+
+void Scene::begin_draw(DrawRecord&& draw) { draws_.push_back(std::move(draw)); }
+
+void Scene::add_prim(PrimSetup prim) {
+  const PixelRect r = intersect(prim.bounds, render_area());
+  if (r.empty() || draws_.empty()) return;
+  prim.draw = static_cast<uint32_t>(draws_.size() - 1);
+  const uint32_t index = static_cast<uint32_t>(prims_.size());
+  bool used = false;
+  for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
+    for (int tx = r.x0 >> kTileShift; tx <= (r.x1 - 1) >> kTileShift; ++tx) {
+      if (prim.kind == CoverageKind::Triangle) {
+        const PixelRect tile{tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize};
+        if (!triangle_may_touch(prim, intersect(tile, r))) continue;
+      }
+      std::vector<uint32_t>& bin = bins_[static_cast<size_t>(ty) * tiles_x_ + tx];
+      if (bin.empty()) touched_tiles_.push_back(ty * tiles_x_ + tx);
+      bin.push_back(index);
+      ++commands_;
+      used = true;
+    }
+  if (used) prims_.push_back(prim);
+}
+
+void Scene::add_clear(const ClearRecord& clear) {
+  const PixelRect r = intersect(clear.rect, render_area());
+  if (r.empty()) return;
+  const uint32_t index = static_cast<uint32_t>(clears_.size()) | kClearBit;
+  clears_.push_back(clear);
+  for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
+    for (int tx = r.x0 >> kTileShift; tx <= (r.x1 - 1) >> kTileShift; ++tx) {
+      std::vector<uint32_t>& bin = bins_[static_cast<size_t>(ty) * tiles_x_ + tx];
+      if (bin.empty()) touched_tiles_.push_back(ty * tiles_x_ + tx);
+      bin.push_back(index);
+      ++commands_;
+    }
+}
+
+bool Scene::full() const {
+  return prims_.size() >= kMaxPrims || commands_ >= kMaxCommands || clears_.size() >= kMaxPrims ||
+         draws_.size() >= kMaxDraws;
+}
+
+void Scene::run_tile(int tile) const {
+  const int tx = tile % tiles_x_, ty = tile / tiles_x_;
+  const PixelRect rect = intersect({tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize},
+                                   render_area());
+  for (const uint32_t cmd : bins_[tile]) {
+    if (cmd & kClearBit) {
+      apply_clear(clears_[cmd & ~kClearBit], fb_, rect);
+    } else {
+      const PrimSetup& prim = prims_[cmd];
+      rasterize_in_tile(prim, draws_[prim.draw], fb_, rect);
+    }
+  }
+}
+
+void Scene::execute(WorkerPool& pool) {
+  if (commands_ > 0) {
+    if (commands_ < kSmallScene) {
+      for (const int t : touched_tiles_) run_tile(t);
+    } else {
+      pool.run(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
+    }
+  }
+  for (const int t : touched_tiles_) bins_[t].clear();
+  touched_tiles_.clear();
+  prims_.clear();
+  clears_.clear();
+  commands_ = 0;
+  if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
+}
+
+}  // namespace pineda::raster

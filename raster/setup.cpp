@@ -1,0 +1,180 @@
+#include "raster/setup.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+
+#include "raster/raster_limits.h"
+
+namespace pineda::raster {
+namespace {
+
+void copy_common(const SetupParams& params, PrimSetup& out) {
+  out.draw = params.draw;
+  out.back_facing = params.back_facing;
+  for (int i = 0; i < 4; ++i) out.flat_color[i] = params.flat_color[i];
+}
+
+void constant_planes(const WinVert& v, const SetupParams& params, PrimSetup& out) {
+  out.perspective = false;
+  out.ref_x = static_cast<float>(static_cast<double>(v.x) / kSubpixelOne);
+  out.ref_y = static_cast<float>(static_cast<double>(v.y) / kSubpixelOne);
+  out.inv_w = {1.f, 0.f, 0.f};
+  for (int k = 0; k < params.planes; ++k) out.planes[k] = {v.attr[k], 0.f, 0.f};
+  out.z0 = v.z + params.depth_offset;
+  out.dzdx = out.dzdy = 0.0;
+}
+
+// Planes through the values at two or three vertices; `gradient` maps the values at the
+// vertices to the per-pixel slopes.
+template <typename Gradient>
+void interpolation_planes(const WinVert* const* v, int count, const SetupParams& params, Gradient gradient,
+                          PrimSetup& out) {
+  bool same_w = true;
+  for (int i = 1; i < count; ++i) same_w &= v[i]->inv_w == v[0]->inv_w;
+  out.perspective = !same_w;
+  out.ref_x = static_cast<float>(static_cast<double>(v[0]->x) / kSubpixelOne);
+  out.ref_y = static_cast<float>(static_cast<double>(v[0]->y) / kSubpixelOne);
+  double f[3], gx, gy;
+  auto make_plane = [&]() {
+    gradient(f, gx, gy);
+    return Plane{static_cast<float>(f[0]), static_cast<float>(gx), static_cast<float>(gy)};
+  };
+  for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->inv_w : 1.0;
+  out.inv_w = make_plane();
+  for (int k = 0; k < params.planes; ++k) {
+    for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->attr[k] * v[i]->inv_w : v[i]->attr[k];
+    out.planes[k] = make_plane();
+  }
+  for (int i = 0; i < count; ++i) f[i] = v[i]->z;
+  gradient(f, gx, gy);
+  out.z0 = f[0] + params.depth_offset;
+  out.dzdx = gx;
+  out.dzdy = gy;
+}
+
+}  // namespace
+
+int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c) {
+  return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+}
+
+bool depth_slopes(const WinVert& a, const WinVert& b, const WinVert& c, double& dzdx, double& dzdy) {
+  const double dx1 = static_cast<double>(b.x - a.x) / kSubpixelOne, dy1 = static_cast<double>(b.y - a.y) / kSubpixelOne;
+  const double dx2 = static_cast<double>(c.x - a.x) / kSubpixelOne, dy2 = static_cast<double>(c.y - a.y) / kSubpixelOne;
+  const double area = dx1 * dy2 - dx2 * dy1;
+  if (area == 0.0) return false;
+  dzdx = ((b.z - a.z) * dy2 - (c.z - a.z) * dy1) / area;
+  dzdy = ((c.z - a.z) * dx1 - (b.z - a.z) * dx2) / area;
+  return true;
+}
+
+bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const SetupParams& params,
+                    PrimSetup& out) {
+  const int64_t area = signed_area2(a, b, c);
+  if (area == 0) return false;
+  const WinVert* v[3] = {&a, &b, &c};
+  if (area < 0) std::swap(v[1], v[2]);  // edges below assume counter-clockwise order
+
+  const int64_t min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
+  const int64_t min_y = std::min({a.y, b.y, c.y}), max_y = std::max({a.y, b.y, c.y});
+  // Pixels whose centre (x + 1/2) can lie inside the vertices' box.
+  const PixelRect box{static_cast<int>(ceil_div(min_x - kSubpixelHalf, kSubpixelOne)),
+                      static_cast<int>(ceil_div(min_y - kSubpixelHalf, kSubpixelOne)),
+                      static_cast<int>(floor_div(max_x - kSubpixelHalf, kSubpixelOne) + 1),
+                      static_cast<int>(floor_div(max_y - kSubpixelHalf, kSubpixelOne) + 1)};
+  out.bounds = intersect(box, params.clip);
+  if (out.bounds.empty()) return false;
+
+  out.kind = CoverageKind::Triangle;
+  copy_common(params, out);
+  for (int i = 0; i < 3; ++i) {
+    const WinVert& p = *v[i];
+    const WinVert& q = *v[(i + 1) % 3];
+    const int64_t dx = q.x - p.x, dy = q.y - p.y;
+    EdgeFunction& e = out.edges[i];
+    e.a = -dy;
+    e.b = dx;
+    e.c = dy * p.x - dx * p.y;
+    // Fill rule with GL's lower-left origin: left edges (going down) and bottom edges
+    // (horizontal, going right) own the pixel centres on them; the others do not.
+    const bool owns_boundary = dy < 0 || (dy == 0 && dx > 0);
+    if (!owns_boundary) e.c -= 1;
+  }
+
+  const double dx1 = static_cast<double>(v[1]->x - v[0]->x) / kSubpixelOne;
+  const double dy1 = static_cast<double>(v[1]->y - v[0]->y) / kSubpixelOne;
+  const double dx2 = static_cast<double>(v[2]->x - v[0]->x) / kSubpixelOne;
+  const double dy2 = static_cast<double>(v[2]->y - v[0]->y) / kSubpixelOne;
+  const double inv_area = 1.0 / (dx1 * dy2 - dx2 * dy1);
+  interpolation_planes(
+      v, 3, params,
+      [&](const double* f, double& gx, double& gy) {
+        gx = ((f[1] - f[0]) * dy2 - (f[2] - f[0]) * dy1) * inv_area;
+        gy = ((f[2] - f[0]) * dx1 - (f[1] - f[0]) * dx2) * inv_area;
+      },
+      out);
+  return true;
+}
+
+bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams& params, PrimSetup& out) {
+  const int64_t dx = b.x - a.x, dy = b.y - a.y;
+  if (dx == 0 && dy == 0) return false;
+  LineCoverage& l = out.line;
+  l = {a.x, a.y, b.x, b.y, width, std::llabs(dx) >= std::llabs(dy), 0, -1};
+  // Along the major axis the pixels whose centre lies in the half-open range from the first
+  // vertex (included) to the last (excluded): the diamond-exit rule's outcome.
+  const int64_t s0 = l.x_major ? a.x : a.y, s1 = l.x_major ? b.x : b.y;
+  int64_t lo, hi;
+  if (s1 > s0) {
+    lo = ceil_div(s0 - kSubpixelHalf, kSubpixelOne);
+    hi = ceil_div(s1 - kSubpixelHalf, kSubpixelOne) - 1;
+  } else {
+    lo = floor_div(s1 - kSubpixelHalf, kSubpixelOne) + 1;
+    hi = floor_div(s0 - kSubpixelHalf, kSubpixelOne);
+  }
+  if (lo > hi) return false;
+  l.major_min = static_cast<int>(lo);
+  l.major_max = static_cast<int>(hi);
+  const int64_t m0 = l.x_major ? std::min(a.y, b.y) : std::min(a.x, b.x);
+  const int64_t m1 = l.x_major ? std::max(a.y, b.y) : std::max(a.x, b.x);
+  const int64_t half = kSubpixelHalf * width;
+  const int minor_lo = static_cast<int>(floor_div(m0 - half - kSubpixelOne, kSubpixelOne));
+  const int minor_hi = static_cast<int>(floor_div(m1 + half, kSubpixelOne) + 1);
+  const PixelRect box = l.x_major ? PixelRect{l.major_min, minor_lo, l.major_max + 1, minor_hi}
+                                  : PixelRect{minor_lo, l.major_min, minor_hi, l.major_max + 1};
+  out.bounds = intersect(box, params.clip);
+  if (out.bounds.empty()) return false;
+  out.kind = CoverageKind::Line;
+  copy_common(params, out);
+
+  // Attributes vary with the position's projection onto the segment.
+  const double ddx = static_cast<double>(dx) / kSubpixelOne, ddy = static_cast<double>(dy) / kSubpixelOne;
+  const double len2 = ddx * ddx + ddy * ddy;
+  const WinVert* v[2] = {&a, &b};
+  interpolation_planes(
+      v, 2, params,
+      [&](const double* f, double& gx, double& gy) {
+        gx = (f[1] - f[0]) * ddx / len2;
+        gy = (f[1] - f[0]) * ddy / len2;
+      },
+      out);
+  return true;
+}
+
+bool setup_point(const WinVert& v, int size, const SetupParams& params, PrimSetup& out) {
+  // GL's square point: centred on floor(x) + 1/2 for odd sizes, on floor(x + 1/2) for even
+  // ones; both give the first pixel floor(x - (size - 1) / 2).
+  const int64_t left = floor_div(v.x - (size - 1) * kSubpixelHalf, kSubpixelOne);
+  const int64_t bottom = floor_div(v.y - (size - 1) * kSubpixelHalf, kSubpixelOne);
+  const PixelRect box{static_cast<int>(left), static_cast<int>(bottom), static_cast<int>(left + size),
+                      static_cast<int>(bottom + size)};
+  out.bounds = intersect(box, params.clip);
+  if (out.bounds.empty()) return false;
+  out.kind = CoverageKind::Point;
+  copy_common(params, out);
+  constant_planes(v, params, out);
+  return true;
+}
+
+}  // namespace pineda::raster

@@ -1,0 +1,43 @@
+// Setup: from window-space vertices to the coverage and interpolation data of a primitive.
+#pragma once
+#include <cstdint>
+
+#include "raster/prim_setup.h"
+
+namespace pineda::raster {
+
+// A vertex in window space, snapped to sub-pixels; attributes in PrimSetup plane order.
+struct WinVert {
+  int64_t x = 0, y = 0;  // sub-pixels
+  double z = 0.0;        // window depth in depth-buffer units
+  double inv_w = 1.0;
+  float attr[kMaxPlanes] = {};
+};
+
+struct SetupParams {
+  uint32_t draw = 0;
+  PixelRect clip;   // viewport ∩ scissor ∩ framebuffer
+  int planes = 4;   // how many of attr[] are interpolated
+  bool flat = false;
+  float flat_color[4] = {0, 0, 0, 0};
+  bool back_facing = false;
+  double depth_offset = 0.0;  // added to window depth (polygon offset), depth-buffer units
+};
+
+// Twice the signed area in sub-pixels squared; positive when counter-clockwise (y up).
+int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c);
+
+// Depth slopes of the triangle's plane, per pixel, for polygon offset.
+bool depth_slopes(const WinVert& a, const WinVert& b, const WinVert& c, double& dzdx, double& dzdy);
+
+// false when the primitive covers no pixel.
+bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const SetupParams& params,
+                    PrimSetup& out);
+bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams& params, PrimSetup& out);
+bool setup_point(const WinVert& v, int size, const SetupParams& params, PrimSetup& out);
+
+// Floor division and its ceiling counterpart, for any signs (b > 0).
+inline int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+inline int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
+
+}  // namespace pineda::raster

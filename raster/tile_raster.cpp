@@ -1,0 +1,166 @@
+#include "raster/tile_raster.h"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "raster/raster_limits.h"
+#include "raster/setup.h"
+
+namespace pineda::raster {
+namespace {
+
+// Quad pixels of (x, y) (even) that lie inside rect.
+unsigned rect_mask(int x, int y, const PixelRect& r) {
+  unsigned m = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int px = x + (i & 1), py = y + (i >> 1);
+    if (px >= r.x0 && px < r.x1 && py >= r.y0 && py < r.y1) m |= 1u << i;
+  }
+  return m;
+}
+
+int64_t edge_at(const EdgeFunction& e, int x, int y) {
+  return e.a * (int64_t{x} * kSubpixelOne + kSubpixelHalf) + e.b * (int64_t{y} * kSubpixelOne + kSubpixelHalf) + e.c;
+}
+
+// The smallest and largest edge value over the pixel centres of r.
+void edge_range(const EdgeFunction& e, const PixelRect& r, int64_t& lo, int64_t& hi) {
+  const int64_t base = edge_at(e, r.x0, r.y0);
+  const int64_t sx = e.a * kSubpixelOne * (r.x1 - 1 - r.x0), sy = e.b * kSubpixelOne * (r.y1 - 1 - r.y0);
+  lo = base + std::min<int64_t>(sx, 0) + std::min<int64_t>(sy, 0);
+  hi = base + std::max<int64_t>(sx, 0) + std::max<int64_t>(sy, 0);
+}
+
+enum class BlockCover { None, Partial, Full };
+
+BlockCover classify(const PrimSetup& p, const PixelRect& r) {
+  bool full = true;
+  for (const EdgeFunction& e : p.edges) {
+    int64_t lo, hi;
+    edge_range(e, r, lo, hi);
+    if (hi < 0) return BlockCover::None;
+    full &= lo >= 0;
+  }
+  return full ? BlockCover::Full : BlockCover::Partial;
+}
+
+struct QuadSink {
+  const PrimSetup& p;
+  const DrawRecord& d;
+  const Framebuffer& fb;
+  void operator()(int x, int y, unsigned mask) const {
+    if (mask) d.routine(d, p, fb, x, y, mask);
+  }
+};
+
+// Every quad of `block` (aligned to 2), clipped to `clip`.
+void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
+  for (int y = block.y0 & ~1; y < block.y1; y += 2)
+    for (int x = block.x0 & ~1; x < block.x1; x += 2) sink(x, y, rect_mask(x, y, clip));
+}
+
+void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
+  for (int y = block.y0 & ~1; y < block.y1; y += 2)
+    for (int x = block.x0 & ~1; x < block.x1; x += 2) {
+      unsigned m = rect_mask(x, y, clip);
+      for (int i = 0; i < 4 && m; ++i) {
+        if (!(m & (1u << i))) continue;
+        for (const EdgeFunction& e : p.edges)
+          if (edge_at(e, x + (i & 1), y + (i >> 1)) < 0) {
+            m &= ~(1u << i);
+            break;
+          }
+      }
+      sink(x, y, m);
+    }
+}
+
+void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+  constexpr int kBlock = 16, kSub = 4;
+  for (int by = area.y0 & ~(kBlock - 1); by < area.y1; by += kBlock)
+    for (int bx = area.x0 & ~(kBlock - 1); bx < area.x1; bx += kBlock) {
+      const PixelRect block = intersect({bx, by, bx + kBlock, by + kBlock}, area);
+      if (block.empty()) continue;
+      const BlockCover c = classify(p, block);
+      if (c == BlockCover::None) continue;
+      if (c == BlockCover::Full) {
+        emit_full(block, area, sink);
+        continue;
+      }
+      for (int sy = block.y0 & ~(kSub - 1); sy < block.y1; sy += kSub)
+        for (int sx = block.x0 & ~(kSub - 1); sx < block.x1; sx += kSub) {
+          const PixelRect sub = intersect({sx, sy, sx + kSub, sy + kSub}, area);
+          if (sub.empty()) continue;
+          const BlockCover sc = classify(p, sub);
+          if (sc == BlockCover::Full) emit_full(sub, area, sink);
+          else if (sc == BlockCover::Partial) emit_tested(p, sub, area, sink);
+        }
+    }
+}
+
+// Lines and points: a bit mask per row of the tile, then quads.
+struct TileMask {
+  PixelRect area;
+  uint64_t rows[kTileSize] = {};
+  void set(int x, int y) { rows[y - area.y0] |= uint64_t{1} << (x - area.x0); }
+  bool get(int x, int y) const {
+    return x >= area.x0 && x < area.x1 && y >= area.y0 && y < area.y1 && ((rows[y - area.y0] >> (x - area.x0)) & 1);
+  }
+};
+
+// First pixel of the span across the line at major coordinate `m` (a column for x-major lines).
+int64_t span_start(const LineCoverage& l, int m) {
+  const int64_t c = int64_t{m} * kSubpixelOne + kSubpixelHalf;
+  const int64_t a0 = l.x_major ? l.x0 : l.y0, a1 = l.x_major ? l.x1 : l.y1;
+  const int64_t b0 = l.x_major ? l.y0 : l.x0, b1 = l.x_major ? l.y1 : l.x1;
+  int64_t num = b0 * (a1 - a0) + (c - a0) * (b1 - b0), den = a1 - a0;
+  if (den < 0) {
+    num = -num;
+    den = -den;
+  }
+  const int64_t minor = floor_div(num, den);  // floor of the line's minor coordinate there
+  // Pixels whose centre lies in (minor - width/2, minor + width/2].
+  return floor_div(minor - kSubpixelHalf * l.width - kSubpixelHalf, kSubpixelOne) + 1;
+}
+
+void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+  const LineCoverage& l = p.line;
+  TileMask mask{area};
+  const int m_lo = std::max(l.major_min, l.x_major ? area.x0 : area.y0);
+  const int m_hi = std::min(l.major_max, (l.x_major ? area.x1 : area.y1) - 1);
+  const int n_lo = l.x_major ? area.y0 : area.x0, n_hi = (l.x_major ? area.y1 : area.x1) - 1;
+  for (int m = m_lo; m <= m_hi; ++m) {
+    const int64_t start = span_start(l, m);
+    const int64_t lo = std::max<int64_t>(start, n_lo), hi = std::min<int64_t>(start + l.width - 1, n_hi);
+    for (int64_t n = lo; n <= hi; ++n) {
+      if (l.x_major) mask.set(m, static_cast<int>(n));
+      else mask.set(static_cast<int>(n), m);
+    }
+  }
+  for (int y = area.y0 & ~1; y < area.y1; y += 2)
+    for (int x = area.x0 & ~1; x < area.x1; x += 2) {
+      unsigned m = 0;
+      for (int i = 0; i < 4; ++i)
+        if (mask.get(x + (i & 1), y + (i >> 1))) m |= 1u << i;
+      sink(x, y, m);
+    }
+}
+
+}  // namespace
+
+bool triangle_may_touch(const PrimSetup& prim, const PixelRect& rect) {
+  return classify(prim, rect) != BlockCover::None;
+}
+
+void rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile) {
+  const PixelRect area = intersect(prim.bounds, tile);
+  if (area.empty()) return;
+  const QuadSink sink{prim, draw, fb};
+  switch (prim.kind) {
+    case CoverageKind::Triangle: rasterize_triangle(prim, area, sink); break;
+    case CoverageKind::Line: rasterize_line(prim, area, sink); break;
+    case CoverageKind::Point: emit_full(area, area, sink); break;
+  }
+}
+
+}  // namespace pineda::raster

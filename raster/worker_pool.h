@@ -1,0 +1,44 @@
+// A fixed set of threads that, together with the calling thread, runs the items of a job.
+#pragma once
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace pineda::raster {
+
+class WorkerPool {
+ public:
+  // `threads` counts the calling thread: 1 means no extra threads.
+  explicit WorkerPool(int threads);
+  ~WorkerPool();
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+
+  int threads() const { return static_cast<int>(workers_.size()) + 1; }
+
+  // Calls fn(i) once for each i in [0, count), on any of the threads; returns when all are done.
+  void run(int count, const std::function<void(int)>& fn);
+
+ private:
+  void worker_loop();
+  void drain(std::unique_lock<std::mutex>& lock);
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::condition_variable done_;
+  const std::function<void(int)>* job_ = nullptr;
+  int count_ = 0;
+  int next_ = 0;
+  int finished_ = 0;
+  uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
+// threads <= 0: PINEDA_THREADS if set to a positive number, otherwise one per core.
+int resolve_thread_count(int threads);
+
+}  // namespace pineda::raster
