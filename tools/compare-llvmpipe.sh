@@ -2,17 +2,19 @@
 # Renders every demo scene on Pineda and on Mesa's llvmpipe, compares the images and prints
 # a table of time per frame and image difference. Exits non-zero when a scene has fewer
 # than 99.9% of its pixels within 1/255 of llvmpipe's (or fails to render).
-# Usage: tools/compare-llvmpipe.sh [--size WxH] [--frames N] [--build DIR]
+# Usage: tools/compare-llvmpipe.sh [--size WxH] [--frames N] [--build DIR] [--scene NAME]...
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${PINEDA_BUILD:-$root/build}
 size=512x512
 frames=10
+scenes=
 while [ $# -gt 0 ]; do
   case "$1" in
     --size) size=$2; shift 2 ;;
     --frames) frames=$2; shift 2 ;;
     --build) build=$(cd "$2" && pwd); shift 2 ;;
+    --scene) scenes="$scenes $2"; shift 2 ;;
     -h|--help) sed -n '2,5p' "$0"; exit 0 ;;
     *) echo "compare-llvmpipe: unknown option $1" >&2; exit 2 ;;
   esac
@@ -39,7 +41,7 @@ fi
 
 out=$root/out/compare
 mkdir -p "$out/pineda" "$out/llvmpipe" "$out/diff"
-rm -f "$out"/pineda/*.png "$out"/llvmpipe/*.png "$out"/diff/*.png
+rm -f "$out"/{pineda,llvmpipe,diff}/*.{png,log}
 
 # Each scene runs in its own process so that a crash or hang costs only that scene.
 render() {  # render DRIVER SCENE: prints "ms first_ms" or nothing on failure
@@ -56,7 +58,7 @@ render() {  # render DRIVER SCENE: prints "ms first_ms" or nothing on failure
   awk -v s="$scene" '$1 == s && $2 ~ /\.png$/ { print $(NF-1), $NF }' "$log"
 }
 
-scenes=$("$demo" --help | sed -n 's/^scenes: *//p')
+[ -n "$scenes" ] || scenes=$("$demo" --help | sed -n 's/^scenes: *//p')
 renderer() { sed -n 's/^GL_RENDERER: //p' "$out/$1/$2.log" | head -1; }
 
 failed=0
