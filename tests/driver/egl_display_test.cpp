@@ -1,4 +1,5 @@
 // EGL displays: getting, initializing, terminating; their error codes.
+#define EGL_EGLEXT_PROTOTYPES
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <gtest/gtest.h>

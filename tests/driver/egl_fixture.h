@@ -1,5 +1,6 @@
 // A test fixture with an initialized surfaceless display and the OpenGL API bound.
 #pragma once
+#define EGL_EGLEXT_PROTOTYPES
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <gtest/gtest.h>
