@@ -65,7 +65,9 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   }
   switch (pname) {
     case GL_CURRENT_COLOR: out = colors(ctx.current_color); return true;
-    case GL_CURRENT_NORMAL: out = floats({ctx.current_normal[0], ctx.current_normal[1], ctx.current_normal[2]}); return true;
+    case GL_CURRENT_NORMAL:  // normals map to the int range as colours do (GL 1.1 spec 6.1.2)
+      out = {Kind::Color, {ctx.current_normal[0], ctx.current_normal[1], ctx.current_normal[2]}};
+      return true;
     case GL_CURRENT_TEXTURE_COORDS: {
       const float* t = unit.current_texcoord;
       out = floats({t[0], t[1], t[2], t[3]});
@@ -169,7 +171,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_FOG_HINT: out = enums({double(ctx.hint_fog)}); return true;
     case GL_LIGHT_MODEL_AMBIENT: {
       const glm::vec4& a = ctx.lighting.model_ambient;
-      out = floats({a.r, a.g, a.b, a.a});
+      out = {Kind::Color, {a.r, a.g, a.b, a.a}};
       return true;
     }
     case GL_LIGHT_MODEL_LOCAL_VIEWER: out = bools({double(ctx.lighting.local_viewer)}); return true;
@@ -229,7 +231,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());
     case GL_VERSION: {
-      ctx.version_string = version_string(ctx);
+      // Built once: a pointer returned earlier must stay valid.
+      if (ctx.version_string.empty()) ctx.version_string = version_string(ctx);
       return reinterpret_cast<const GLubyte*>(ctx.version_string.c_str());
     }
     case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>(kExtensions.c_str());

@@ -322,8 +322,9 @@ void GetTexLevelParameteriv(Context& ctx, GLenum target, GLint level, GLenum pna
   if (params) *params = v;
 }
 void GetTexLevelParameterfv(Context& ctx, GLenum target, GLint level, GLenum pname, GLfloat* params) {
-  GLint v = 0;
-  GetTexLevelParameteriv(ctx, target, level, pname, &v);
+  if (level < 0 || level > max_level()) return ctx.record_error(GL_INVALID_VALUE);
+  GLint v;
+  if (!get_tex_level_parameter(ctx, target, level, pname, v)) return ctx.record_error(GL_INVALID_ENUM);
   if (params) *params = GLfloat(v);
 }
 
@@ -344,24 +345,33 @@ void TexEnviv(Context& ctx, GLenum target, GLenum pname, const GLint* params) {
   tex_env(ctx, target, pname, v);
 }
 
-void GetTexEnvfv(Context& ctx, GLenum target, GLenum pname, GLfloat* params) {
-  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
+namespace {
+// The values of a texture environment parameter; false (and an error) when it is not one.
+bool get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
   const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
-  if (pname == GL_TEXTURE_ENV_MODE) {
-    if (params) params[0] = GLfloat(unit.env_mode);
-  } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    if (params) std::copy(unit.env_color, unit.env_color + 4, params);
-  } else {
+  if (target != GL_TEXTURE_ENV || (pname != GL_TEXTURE_ENV_MODE && pname != GL_TEXTURE_ENV_COLOR)) {
     ctx.record_error(GL_INVALID_ENUM);
+    return false;
   }
+  if (pname == GL_TEXTURE_ENV_MODE)
+    v[0] = GLfloat(unit.env_mode);
+  else
+    std::copy(unit.env_color, unit.env_color + 4, v);
+  return true;
+}
+}  // namespace
+
+void GetTexEnvfv(Context& ctx, GLenum target, GLenum pname, GLfloat* params) {
+  GLfloat v[4];
+  if (!get_tex_env(ctx, target, pname, v) || !params) return;
+  std::copy(v, v + (pname == GL_TEXTURE_ENV_COLOR ? 4 : 1), params);
 }
 void GetTexEnviv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
-  GLfloat v[4] = {0, 0, 0, 0};
-  GetTexEnvfv(ctx, target, pname, v);
-  if (!params) return;
+  GLfloat v[4];
+  if (!get_tex_env(ctx, target, pname, v) || !params) return;
   if (pname == GL_TEXTURE_ENV_COLOR)
     for (int i = 0; i < 4; ++i) params[i] = GLint(double(v[i]) * 2147483647.0);
-  else if (pname == GL_TEXTURE_ENV_MODE)
+  else
     params[0] = GLint(v[0]);
 }
 
