@@ -1,0 +1,147 @@
+// Deferred execution: identical output for any thread count, snapshots of draw state, and
+// scenes that flush themselves when they grow large.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <random>
+
+#include "tests/raster/test_support.h"
+
+namespace pineda::raster::test {
+namespace {
+
+constexpr int kW = 300, kH = 211;  // partial tiles on both axes
+
+std::shared_ptr<TextureImage> noise_texture(std::mt19937& rng) {
+  auto t = std::make_shared<TextureImage>();
+  for (int size = 16; size >= 1; size /= 2) {
+    TextureLevel l{size, size, {}};
+    for (int i = 0; i < size * size; ++i) l.texels.push_back(static_cast<uint32_t>(rng()));
+    t->levels.push_back(std::move(l));
+  }
+  return t;
+}
+
+// A busy random scene: blended, depth- and stencil-tested, textured triangles, lines, points.
+void render_scene(Renderer& r, OwnedFramebuffer& fb) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> pos(-1.3f, 1.3f), unit(0.f, 1.f), w(0.5f, 3.f);
+  r.set_framebuffer(fb.fb);
+  clear_all(r, 0.1f, 1.0, 0);
+  auto tex = noise_texture(rng);
+  for (int d = 0; d < 40; ++d) {
+    DrawState s = state_for(kW, kH);
+    s.depth_test = d % 3 != 0;
+    s.depth_func = CompareFunc::LessEqual;
+    s.blend = d % 2 == 0;
+    s.blend_state.src_rgb = BlendFactor::SrcAlpha;
+    s.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+    s.stencil_test = d % 4 == 1;
+    s.stencil_front.depth_pass = StencilOp::IncrWrap;
+    s.stencil_back.depth_pass = StencilOp::Invert;
+    s.flat_shading = d % 5 == 0;
+    s.line_width = static_cast<float>(1 + d % 3);
+    s.point_size = static_cast<float>(1 + d % 4);
+    if (d % 3 == 2) {
+      s.texture_units[0].image = tex;
+      s.texture_units[0].sampler.min_filter = TexFilter::LinearMipmapLinear;
+    }
+    if (d % 7 == 3) {
+      s.scissor_test = true;
+      s.scissor = {20, 30, 200, 150};
+    }
+    std::vector<ClipVertex> v;
+    for (int i = 0; i < 60; ++i) {
+      const float ww = w(rng);
+      ClipVertex p = vertex(pos(rng) * ww, pos(rng) * ww, (unit(rng) * 2 - 1) * ww, ww, unit(rng), unit(rng), unit(rng), unit(rng));
+      p.texcoord[0][0] = unit(rng) * 3;
+      p.texcoord[0][1] = unit(rng) * 3;
+      v.push_back(p);
+    }
+    const Primitive modes[] = {Primitive::Triangles, Primitive::TriangleStrip, Primitive::Lines, Primitive::Points,
+                               Primitive::Quads, Primitive::LineLoop};
+    r.draw(s, modes[d % 6], v);
+    if (d == 20) {
+      ClearState c;
+      c.depth = true;
+      c.scissor_test = true;
+      c.scissor = {50, 50, 100, 100};
+      r.clear(c);
+    }
+  }
+  r.flush();
+}
+
+TEST(Scene, ThreadCountsGiveIdenticalImages) {
+  OwnedFramebuffer one(kW, kH), two(kW, kH), four(kW, kH);
+  Renderer r1(1), r2(2), r4(4);
+  render_scene(r1, one);
+  render_scene(r2, two);
+  render_scene(r4, four);
+  EXPECT_GT(one.count_nonzero_red(), kW * kH / 2);
+  EXPECT_EQ(one.color, two.color);
+  EXPECT_EQ(one.color, four.color);
+  EXPECT_EQ(one.depth, two.depth);
+  EXPECT_EQ(one.depth, four.depth);
+  EXPECT_EQ(one.stencil_buf, two.stencil_buf);
+  EXPECT_EQ(one.stencil_buf, four.stencil_buf);
+}
+
+TEST(Scene, DrawStateAndVerticesAreCopied) {
+  OwnedFramebuffer fb(16, 16);
+  Renderer r(2);
+  r.set_framebuffer(fb.fb);
+  clear_all(r);
+  {
+    auto s = std::make_unique<DrawState>(state_for(16, 16));
+    auto tex = std::make_shared<TextureImage>();
+    tex->levels.push_back({1, 1, {0xff00ff00u}});
+    s->texture_units[0].image = tex;
+    s->texture_units[0].env_mode = TexEnvMode::Replace;
+    std::vector<ClipVertex> v{vertex(-1, -1), vertex(1, -1), vertex(1, 1), vertex(-1, 1)};
+    r.draw(*s, Primitive::Quads, v);
+    s->viewport.width = 0;
+    s->texture_units[0].image.reset();
+    v.assign(4, vertex(5, 5));
+  }
+  r.flush();
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      ASSERT_EQ(fb.pixel(x, y)[0], 0);
+      ASSERT_EQ(fb.pixel(x, y)[1], 255);
+    }
+}
+
+TEST(Scene, LargeDrawsFlushOnTheirOwnAndKeepOrder) {
+  OwnedFramebuffer fb(8, 8);
+  Renderer r(2);
+  r.set_framebuffer(fb.fb);
+  clear_all(r);
+  DrawState s = state_for(8, 8);
+  s.stencil_test = true;
+  s.stencil_front.depth_pass = StencilOp::IncrWrap;
+  std::vector<ClipVertex> v;
+  constexpr int kTriangles = 70000;  // more than one scene holds
+  for (int i = 0; i < kTriangles; ++i) {
+    v.push_back(vertex(-1, -1));
+    v.push_back(vertex(3, -1));
+    v.push_back(vertex(-1, 3));
+  }
+  r.draw(s, Primitive::Triangles, v);
+  r.flush();
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) ASSERT_EQ(fb.stencil_at(x, y), kTriangles % 256);
+}
+
+TEST(Scene, SetFramebufferCompletesPendingWork) {
+  OwnedFramebuffer a(8, 8), b(8, 8);
+  Renderer r(2);
+  r.set_framebuffer(a.fb);
+  clear_all(r, 1.f);
+  r.set_framebuffer(b.fb);
+  EXPECT_EQ(a.pixel(7, 7)[0], 255);
+  EXPECT_EQ(b.pixel(7, 7)[0], 0);
+}
+
+}  // namespace
+}  // namespace pineda::raster::test
