@@ -53,6 +53,7 @@ EGLBoolean Terminate(EGLDisplay dpy) {
   // thread's references until it releases them.
   display->contexts.clear();
   display->surfaces.clear();
+  display->syncs.clear();
   display->initialized = false;
   return succeed(EGL_TRUE);
 }

@@ -46,12 +46,18 @@ struct Surface {
   const ThreadState* bound_thread = nullptr;  // guarded by the registry mutex
 };
 
+// A fence: Pineda completes the rendering when the fence is created, so it is born signaled.
+struct Sync {
+  EGLenum type = EGL_SYNC_FENCE;
+};
+
 struct Display {
   EGLenum platform = 0;
   void* native = nullptr;
   bool initialized = false;
   std::unordered_map<EGLContext, std::shared_ptr<ContextObject>> contexts;
   std::unordered_map<EGLSurface, std::shared_ptr<Surface>> surfaces;
+  std::unordered_map<EGLSync, std::unique_ptr<Sync>> syncs;
 
   std::shared_ptr<ContextObject> find_context(EGLContext handle) const {
     auto it = contexts.find(handle);

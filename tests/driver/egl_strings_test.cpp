@@ -67,7 +67,7 @@ TEST(EglProcAddress, UnknownNamesAreNull) {
   EXPECT_EQ(eglGetProcAddress(nullptr), nullptr);
   // In gl.xml, but not implemented: not offered.
   EXPECT_EQ(eglGetProcAddress("glDispatchCompute"), nullptr);
-  EXPECT_EQ(eglGetProcAddress("eglCreateSync"), nullptr);
+  EXPECT_EQ(eglGetProcAddress("eglCreateSyncKHR"), nullptr);
 }
 
 }  // namespace
