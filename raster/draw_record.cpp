@@ -45,6 +45,8 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.stencil_ref[1] = stencil_ref(state.stencil_back.ref);
   d.color_write_any = std::any_of(state.color_write.begin(), state.color_write.end(), [](bool b) { return b; });
 
+  d.color_write_all = std::all_of(state.color_write.begin(), state.color_write.end(), [](bool b) { return b; });
+
   d.key.textured = d.num_units > 0;
   d.key.depth = state.depth_test && has_depth;
   d.key.stencil = state.stencil_test && has_stencil;

@@ -40,6 +40,7 @@ struct DrawRecord {
   float blend_color[4] = {0, 0, 0, 0};
   uint8_t stencil_ref[2] = {0, 0};  // front, back
   bool color_write_any = true;
+  bool color_write_all = true;
 };
 
 DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb);
