@@ -16,6 +16,7 @@
 #include "raster/renderer.h"
 #include "raster/vertex.h"
 #include "raster/vertex_transform.h"
+#include "state/display_list.h"
 #include "state/drawable.h"
 #include "state/texture_object.h"
 
@@ -82,6 +83,11 @@ class Context {
   }
   bool inside_begin_end() const { return in_begin_end; }
 
+  // Display-list compilation (glNewList .. glEndList).
+  bool compiling_list() const { return compilation.name != 0; }
+  bool executing_while_compiling() const { return compilation.mode == GL_COMPILE_AND_EXECUTE; }
+  void record_list_command(ListCommand command) { compilation.list->commands.push_back(std::move(command)); }
+
   raster::Renderer& renderer() { return *renderer_; }
   void finish() { renderer_->flush(); }
 
@@ -147,6 +153,12 @@ class Context {
   TextureNamespace textures;
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+
+  // Display lists
+  DisplayLists lists;
+  ListCompilation compilation;
+  GLuint list_base = 0;
+  int list_depth = 0;  // nesting of glCallList
   std::string version_string;  // storage for glGetString(GL_VERSION)
 
  private:

@@ -1,0 +1,180 @@
+// The calls that read client memory are compiled by reading it now (GL 1.1 spec 5.4):
+// vertex arrays become vertex data in the list, images become tightly packed copies.
+#include <algorithm>
+#include <cstring>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/draw.h"
+#include "state/enum_translate.h"
+#include "state/pixel_format.h"
+#include "state/vertex_fetch.h"
+
+namespace pineda::gl {
+namespace {
+
+// Which attributes came from enabled arrays; the others take the current values when the
+// list runs.
+struct ArraySources {
+  bool vertex = false, color = false, normal = false;
+  bool texcoord[raster::kMaxTextureUnits] = {};
+};
+
+ArraySources array_sources(const Context& ctx) {
+  ArraySources s;
+  s.vertex = ctx.vertex_array.enabled && ctx.vertex_array.pointer;
+  s.color = ctx.color_array.enabled && ctx.color_array.pointer;
+  s.normal = ctx.normal_array.enabled && ctx.normal_array.pointer;
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u)
+    s.texcoord[u] = ctx.texture_units[u].texcoord_array.enabled && ctx.texture_units[u].texcoord_array.pointer;
+  return s;
+}
+
+void merge_current(const Context& ctx, const ArraySources& s, raster::VertexInput& v) {
+  if (!s.color) std::copy(ctx.current_color, ctx.current_color + 4, v.color);
+  if (!s.normal) std::copy(ctx.current_normal, ctx.current_normal + 3, v.normal);
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u)
+    if (!s.texcoord[u])
+      std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4, v.texcoord[u]);
+  v.edge_flag = ctx.current_edge_flag;
+}
+
+void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> vertices, GLenum error) {
+  const ArraySources sources = array_sources(ctx);
+  ctx.record_list_command([mode, vertices = std::move(vertices), sources, error](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (error != GL_NO_ERROR) return c.record_error(error);
+    if (!sources.vertex || vertices.empty()) return;
+    c.fetched = vertices;
+    for (raster::VertexInput& v : c.fetched) merge_current(c, sources, v);
+    draw_vertices(c, mode, c.fetched, {});
+  });
+}
+
+GLenum mode_error(GLenum mode) {
+  raster::Primitive p;
+  return to_primitive(mode, p) ? GL_NO_ERROR : GL_INVALID_ENUM;
+}
+
+template <typename Index>
+void fetch_indexed(const Context& ctx, GLsizei count, const Index* indices, std::vector<raster::VertexInput>& out) {
+  out.resize(count);
+  for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], out[i]);
+}
+
+// A tightly packed copy (alignment 1, no skips) of a client image under the current
+// unpack state, or empty when the call is invalid or has no pixels.
+std::vector<uint8_t> pack_image(const Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                                const void* pixels) {
+  std::vector<uint8_t> out;
+  if (!pixels || width <= 0 || height <= 0 || color_format_components(format) == 0 || pixel_type_size(type) == 0)
+    return out;
+  const ImageLayout layout = image_layout(ctx.unpack, width, format, type);
+  const size_t row = layout.pixel_bytes * size_t(width);
+  out.resize(row * size_t(height));
+  const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
+  for (GLsizei y = 0; y < height; ++y) std::memcpy(out.data() + row * y, src + layout.row_stride * y, row);
+  return out;
+}
+
+// Runs `call` with a default unpack state, so that a packed copy is read as it was stored.
+template <typename Call>
+void with_packed_unpack(Context& c, Call call) {
+  const PixelStore saved = c.unpack;
+  c.unpack = PixelStore{};
+  c.unpack.alignment = 1;
+  call();
+  c.unpack = saved;
+}
+
+}  // namespace
+
+void compile_ArrayElement(Context& ctx, GLint i) {
+  raster::VertexInput v;
+  if (i >= 0) fetch_vertex(ctx, size_t(i), v);
+  const ArraySources sources = array_sources(ctx);
+  ctx.record_list_command([i, v, sources](Context& c) {
+    if (i < 0) return c.record_error(GL_INVALID_VALUE);
+    if (sources.color) std::copy(v.color, v.color + 4, c.current_color);
+    if (sources.normal) std::copy(v.normal, v.normal + 3, c.current_normal);
+    for (int u = 0; u < raster::kMaxTextureUnits; ++u)
+      if (sources.texcoord[u]) std::copy(v.texcoord[u], v.texcoord[u] + 4, c.texture_units[u].current_texcoord);
+    if (!sources.vertex || !c.in_begin_end) return;
+    raster::VertexInput vertex = v;
+    merge_current(c, sources, vertex);
+    c.immediate.push_back(vertex);
+  });
+}
+
+void compile_DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
+  GLenum error = mode_error(mode);
+  if (error == GL_NO_ERROR && (count < 0 || first < 0)) error = GL_INVALID_VALUE;
+  std::vector<raster::VertexInput> vertices;
+  if (error == GL_NO_ERROR && array_sources(ctx).vertex) {
+    vertices.resize(count);
+    for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, vertices[i]);
+  }
+  record_draw(ctx, mode, std::move(vertices), error);
+}
+
+void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  GLenum error = mode_error(mode);
+  if (error == GL_NO_ERROR && count < 0) error = GL_INVALID_VALUE;
+  if (error == GL_NO_ERROR && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
+    error = GL_INVALID_ENUM;
+  std::vector<raster::VertexInput> vertices;
+  if (error == GL_NO_ERROR && indices && array_sources(ctx).vertex) {
+    if (type == GL_UNSIGNED_BYTE) fetch_indexed(ctx, count, static_cast<const GLubyte*>(indices), vertices);
+    else if (type == GL_UNSIGNED_SHORT) fetch_indexed(ctx, count, static_cast<const GLushort*>(indices), vertices);
+    else fetch_indexed(ctx, count, static_cast<const GLuint*>(indices), vertices);
+  }
+  record_draw(ctx, mode, std::move(vertices), error);
+}
+
+void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
+                        GLsizei height, GLint border, GLenum format, GLenum type, const void* pixels) {
+  auto image = pack_image(ctx, width, height, format, type, pixels);
+  ctx.record_list_command([=, image = std::move(image)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    with_packed_unpack(c, [&] {
+      TexImage2D(c, target, level, internalformat, width, height, border, format, type,
+                 image.empty() ? nullptr : image.data());
+    });
+  });
+}
+
+void compile_TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
+                        GLint border, GLenum format, GLenum type, const void* pixels) {
+  auto image = pack_image(ctx, width, 1, format, type, pixels);
+  ctx.record_list_command([=, image = std::move(image)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    with_packed_unpack(c, [&] {
+      TexImage1D(c, target, level, internalformat, width, border, format, type, image.empty() ? nullptr : image.data());
+    });
+  });
+}
+
+void compile_TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                           GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  auto image = pack_image(ctx, width, height, format, type, pixels);
+  ctx.record_list_command([=, image = std::move(image)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    with_packed_unpack(c, [&] {
+      TexSubImage2D(c, target, level, xoffset, yoffset, width, height, format, type,
+                    image.empty() ? nullptr : image.data());
+    });
+  });
+}
+
+void compile_TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
+                           GLenum type, const void* pixels) {
+  auto image = pack_image(ctx, width, 1, format, type, pixels);
+  ctx.record_list_command([=, image = std::move(image)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    with_packed_unpack(c, [&] {
+      TexSubImage1D(c, target, level, xoffset, width, format, type, image.empty() ? nullptr : image.data());
+    });
+  });
+}
+
+}  // namespace pineda::gl
