@@ -86,6 +86,15 @@ void unbind_current() {
   if (destroy) delete ctx;
 }
 
+// A thread that ends with a context current lets go of it, so that another thread can
+// bind it and OSMesaDestroyContext can free it.
+struct ThreadExit {
+  ~ThreadExit() { unbind_current(); }
+};
+thread_local ThreadExit thread_exit;
+
+void note_binding() { (void)&thread_exit; }  // odr-use: constructs the thread's guard
+
 }  // namespace
 
 PINEDA_EXPORT OSMesaContext GLAPIENTRY OSMesaCreateContext(GLenum format, OSMesaContext sharelist) {
@@ -158,6 +167,7 @@ PINEDA_EXPORT GLboolean GLAPIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* bu
     return GL_FALSE;
   }
   current = ctx;
+  note_binding();
   pineda::set_current_context(ctx->gl.get());
   ctx->gl->make_current(&ctx->drawable, &ctx->drawable);
   pineda::glapi::set_flush_listener(ctx->gl.get(), ctx);

@@ -280,3 +280,20 @@ TEST(OSMesa, TwoThreadsRenderIndependently) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(OSMesa, ThreadEndingWithAContextCurrentReleasesIt) {
+  OSMesaContext ctx = OSMesaCreateContext(OSMESA_RGB, nullptr);
+  Bytes a(2 * 2 * 3, 0), b(2 * 2 * 3, 0);
+  std::thread([&] {
+    ASSERT_TRUE(OSMesaMakeCurrent(ctx, a.data(), GL_UNSIGNED_BYTE, 2, 2));
+    clear(1, 2, 3, 255);
+  }).join();
+  // The binding ended with the thread: the image got what was drawn.
+  EXPECT_EQ(a, repeat({1, 2, 3}, 4));
+  ASSERT_TRUE(OSMesaMakeCurrent(ctx, b.data(), GL_UNSIGNED_BYTE, 2, 2));
+  OSMesaDestroyContext(ctx);
+}
+
+}  // namespace
