@@ -192,3 +192,21 @@ TEST_F(EglCurrent, ReleaseThreadAndWait) {
 }
 
 }  // namespace
+
+namespace {
+
+using EglThreadExit = pineda_test::EglTest;
+
+TEST_F(EglThreadExit, ThreadEndingWithAContextCurrentReleasesIt) {
+  EGLContext ctx = context(config());
+  EGLBoolean bound = EGL_FALSE;
+  std::thread([&] {
+    eglBindAPI(EGL_OPENGL_API);
+    bound = eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx);
+  }).join();
+  ASSERT_TRUE(bound);
+  EXPECT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx));
+  EXPECT_EQ(eglGetError(), EGL_SUCCESS);
+}
+
+}  // namespace
