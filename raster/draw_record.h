@@ -12,10 +12,10 @@ namespace pineda::raster {
 
 struct DrawRecord;
 
-// Shades one 2x2 quad at (x, y) (even coordinates); bit i of `mask` is pixel
-// (x + (i & 1), y + (i >> 1)).
-using QuadRoutine = void (*)(const DrawRecord&, const PrimSetup&, const Framebuffer&, int x, int y,
-                             unsigned mask);
+// Shades a row of `count` 2x2 quads, quad k at (x + 2k, y) (even coordinates); bit i of
+// masks[k] is pixel (x + 2k + (i & 1), y + (i >> 1)).
+using QuadRoutine = void (*)(const DrawRecord&, const PrimSetup&, const Framebuffer&, int x, int y, int count,
+                             const uint8_t* masks);
 
 // The compile-time part of the fragment pipeline: each combination has its own routine.
 struct FragmentKey {

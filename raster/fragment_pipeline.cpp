@@ -5,63 +5,58 @@
 #include <utility>
 
 #include "raster/fragment_ops.h"
+#include "raster/quad_vector.h"
 #include "raster/sampler.h"
 #include "raster/tex_env.h"
 
 namespace pineda::raster {
 namespace {
 
-// Byte position of each RGBA channel in a pixel of the colour buffer.
-struct ChannelOrder {
-  int at[4];
+// Bit position of each RGBA channel in a pixel as a little-endian uint32.
+struct ChannelShift {
+  uint32_t at[4];
 };
-constexpr ChannelOrder kRgbaOrder{{0, 1, 2, 3}};
-constexpr ChannelOrder kBgraOrder{{2, 1, 0, 3}};
+constexpr ChannelShift kRgbaShift{{0, 8, 16, 24}};
+constexpr ChannelShift kBgraShift{{16, 8, 0, 24}};
 
-inline float eval(const Plane& p, float ox, float oy) { return p.a0 + p.dx * ox + p.dy * oy; }
+struct QuadColor {
+  F4 c[4];  // r, g, b, a; one lane per pixel
+};
 
-// The quad's values are kept channel-major, c[channel][pixel], so that the loops over the four
-// pixels vectorize.
-using QuadColor = float[4][4];
+inline F4 eval(const Plane& p, F4 ox, F4 oy) { return p.a0 + p.dx * ox + p.dy * oy; }
 
 // Interpolated fragment colours of the quad, textured.
 template <bool kTex, bool kFlat>
-void quad_colors(const DrawRecord& d, const PrimSetup& p, const float ox[4], const float oy[4], QuadColor col) {
+QuadColor quad_colors(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy) {
+  QuadColor col;
   if constexpr (kFlat) {
-    for (int c = 0; c < 4; ++c)
-      for (int i = 0; i < 4; ++i) col[c][i] = p.flat_color[c];
+    for (int c = 0; c < 4; ++c) col.c[c] = splat(p.flat_color[c]);
   } else if (p.perspective) {
-    float w[4];
-    for (int i = 0; i < 4; ++i) w[i] = 1.f / eval(p.inv_w, ox[i], oy[i]);
-    for (int c = 0; c < 4; ++c)
-      for (int i = 0; i < 4; ++i) col[c][i] = eval(p.planes[c], ox[i], oy[i]) * w[i];
+    const F4 w = 1.f / eval(p.inv_w, ox, oy);
+    for (int c = 0; c < 4; ++c) col.c[c] = clamp01(eval(p.planes[c], ox, oy) * w);
   } else {
-    for (int c = 0; c < 4; ++c)
-      for (int i = 0; i < 4; ++i) col[c][i] = eval(p.planes[c], ox[i], oy[i]);
+    for (int c = 0; c < 4; ++c) col.c[c] = clamp01(eval(p.planes[c], ox, oy));
   }
-  for (int c = 0; c < 4; ++c)
-    for (int i = 0; i < 4; ++i) col[c][i] = clamp01(col[c][i]);
 
   if constexpr (kTex) {
     for (int k = 0; k < d.num_units; ++k) {
       const TextureUnit& unit = d.state.texture_units[d.units[k]];
       const Plane* tp = &p.planes[kColorPlanes + kTexPlanesPerUnit * k];
+      // (s/w) / (q/w) = s/q: 1/w cancels, so perspective needs no extra divide here.
+      const F4 q = eval(tp[2], ox, oy);
       float s[4], t[4];
-      for (int i = 0; i < 4; ++i) {
-        // (s/w) / (q/w) = s/q: 1/w cancels, so perspective needs no extra divide here.
-        const float q = eval(tp[2], ox[i], oy[i]);
-        s[i] = eval(tp[0], ox[i], oy[i]) / q;
-        t[i] = eval(tp[1], ox[i], oy[i]) / q;
-      }
+      store4(s, eval(tp[0], ox, oy) / q);
+      store4(t, eval(tp[1], ox, oy) / q);
       float texel[4][4];
       sample_quad(*unit.image, unit.sampler, s, t, texel);
       for (int i = 0; i < 4; ++i) {
-        float frag[4] = {col[0][i], col[1][i], col[2][i], col[3][i]};
+        float frag[4] = {col.c[0][i], col.c[1][i], col.c[2][i], col.c[3][i]};
         apply_tex_env(unit.env_mode, unit.image->base_format, unit.env_color, texel[i], frag);
-        for (int c = 0; c < 4; ++c) col[c][i] = frag[c];
+        for (int c = 0; c < 4; ++c) col.c[c][i] = frag[c];
       }
     }
   }
+  return col;
 }
 
 uint8_t* color_address(const Framebuffer& fb, int x, int y) {
@@ -69,155 +64,211 @@ uint8_t* color_address(const Framebuffer& fb, int x, int y) {
 }
 
 // One blend factor for channel `c` of the four pixels.
-void blend_factors(BlendFactor f, int c, const QuadColor src, const QuadColor dst, const float k[4], float out[4]) {
+F4 blend_factors(BlendFactor f, int c, const QuadColor& src, const QuadColor& dst, const float k[4]) {
+  const F4 one = splat(1.f);
   switch (f) {
-    case BlendFactor::SrcAlphaSaturate:
-      for (int i = 0; i < 4; ++i) out[i] = c == 3 ? 1.f : std::min(src[3][i], 1.f - dst[3][i]);
-      return;
-    case BlendFactor::SrcColor:
-    case BlendFactor::OneMinusSrcColor:
-    case BlendFactor::SrcAlpha:
-    case BlendFactor::OneMinusSrcAlpha:
-    case BlendFactor::DstColor:
-    case BlendFactor::OneMinusDstColor:
-    case BlendFactor::DstAlpha:
-    case BlendFactor::OneMinusDstAlpha: {
-      const bool from_src = f == BlendFactor::SrcColor || f == BlendFactor::OneMinusSrcColor ||
-                            f == BlendFactor::SrcAlpha || f == BlendFactor::OneMinusSrcAlpha;
-      const bool alpha = f == BlendFactor::SrcAlpha || f == BlendFactor::OneMinusSrcAlpha ||
-                         f == BlendFactor::DstAlpha || f == BlendFactor::OneMinusDstAlpha;
-      const bool inverted = f == BlendFactor::OneMinusSrcColor || f == BlendFactor::OneMinusSrcAlpha ||
-                            f == BlendFactor::OneMinusDstColor || f == BlendFactor::OneMinusDstAlpha;
-      const float* v = (from_src ? src : dst)[alpha ? 3 : c];
-      for (int i = 0; i < 4; ++i) out[i] = inverted ? 1.f - v[i] : v[i];
-      return;
-    }
-    default: {
-      const float constant = blend_factor(f, c, k, k, k);  // Zero, One and the constant colour
-      for (int i = 0; i < 4; ++i) out[i] = constant;
-      return;
+    case BlendFactor::Zero: return splat(0.f);
+    case BlendFactor::One: return one;
+    case BlendFactor::SrcColor: return src.c[c];
+    case BlendFactor::OneMinusSrcColor: return one - src.c[c];
+    case BlendFactor::DstColor: return dst.c[c];
+    case BlendFactor::OneMinusDstColor: return one - dst.c[c];
+    case BlendFactor::SrcAlpha: return src.c[3];
+    case BlendFactor::OneMinusSrcAlpha: return one - src.c[3];
+    case BlendFactor::DstAlpha: return dst.c[3];
+    case BlendFactor::OneMinusDstAlpha: return one - dst.c[3];
+    case BlendFactor::ConstantColor: return splat(k[c]);
+    case BlendFactor::OneMinusConstantColor: return splat(1.f - k[c]);
+    case BlendFactor::ConstantAlpha: return splat(k[3]);
+    case BlendFactor::OneMinusConstantAlpha: return splat(1.f - k[3]);
+    case BlendFactor::SrcAlphaSaturate: {
+      if (c == 3) return one;
+      const F4 a = src.c[3], b = one - dst.c[3];
+      return a < b ? a : b;
     }
   }
+  return one;
 }
 
-void blend_quad(const DrawRecord& d, const QuadColor src, const QuadColor dst, QuadColor out) {
+QuadColor blend_quad(const DrawRecord& d, const QuadColor& src, const QuadColor& dst) {
   const BlendState& b = d.state.blend_state;
+  QuadColor out;
   for (int c = 0; c < 4; ++c) {
     const bool alpha = c == 3;
     const BlendEquation eq = alpha ? b.eq_alpha : b.eq_rgb;
-    if (eq == BlendEquation::Min || eq == BlendEquation::Max) {
-      for (int i = 0; i < 4; ++i) out[c][i] = blend_equation(eq, src[c][i], 0.f, dst[c][i], 0.f);
+    const F4 s = src.c[c], t = dst.c[c];
+    if (eq == BlendEquation::Min) {
+      out.c[c] = s < t ? s : t;
       continue;
     }
-    float sf[4], df[4];
-    blend_factors(alpha ? b.src_alpha : b.src_rgb, c, src, dst, d.blend_color, sf);
-    blend_factors(alpha ? b.dst_alpha : b.dst_rgb, c, src, dst, d.blend_color, df);
-    for (int i = 0; i < 4; ++i) {
-      const float s = src[c][i] * sf[i], t = dst[c][i] * df[i];
-      out[c][i] = eq == BlendEquation::Add ? s + t : (eq == BlendEquation::Subtract ? s - t : t - s);
+    if (eq == BlendEquation::Max) {
+      out.c[c] = s > t ? s : t;
+      continue;
     }
+    const F4 ss = s * blend_factors(alpha ? b.src_alpha : b.src_rgb, c, src, dst, d.blend_color);
+    const F4 tt = t * blend_factors(alpha ? b.dst_alpha : b.dst_rgb, c, src, dst, d.blend_color);
+    out.c[c] = eq == BlendEquation::Add ? ss + tt : (eq == BlendEquation::Subtract ? ss - tt : tt - ss);
   }
+  return out;
+}
+
+U4 load_pixels(uint8_t* const px[4], unsigned mask) {
+  uint32_t v[4] = {0, 0, 0, 0};
+  if (mask == 0xf) {
+    std::memcpy(&v[0], px[0], 8);
+    std::memcpy(&v[2], px[2], 8);
+  } else {
+    for (int i = 0; i < 4; ++i)
+      if (px[i]) std::memcpy(&v[i], px[i], 4);
+  }
+  return U4{v[0], v[1], v[2], v[3]};
 }
 
 template <bool kBlend>
-void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor col) {
+void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
   const DrawState& s = d.state;
-  const ChannelOrder& order = fb.color.format == ColorFormat::BGRA8 ? kBgraOrder : kRgbaOrder;
+  const ChannelShift& shift = fb.color.format == ColorFormat::BGRA8 ? kBgraShift : kRgbaShift;
   uint8_t* px[4] = {};
   for (int i = 0; i < 4; ++i)
     if (mask & (1u << i)) px[i] = color_address(fb, x + (i & 1), y + (i >> 1));
-  uint8_t bytes[4][4];  // [pixel][byte in memory order]
+  U4 packed = {0, 0, 0, 0};
   if constexpr (kBlend) {
-    uint8_t dst_bytes[4][4] = {};
-    for (int i = 0; i < 4; ++i)
-      if (px[i]) std::memcpy(dst_bytes[i], px[i], 4);
+    const U4 old = load_pixels(px, mask);
     if (s.logic_op_enabled) {
-      for (int c = 0; c < 4; ++c)
+      for (int c = 0; c < 4; ++c) {
+        const U4 src = to_unorm8(col.c[c]), dst = (old >> shift.at[c]) & 0xffu;
         for (int i = 0; i < 4; ++i)
-          bytes[i][order.at[c]] = logic_op(s.logic_op, to_unorm8(col[c][i]), dst_bytes[i][order.at[c]]);
+          packed[i] |= uint32_t{logic_op(s.logic_op, static_cast<uint8_t>(src[i]), static_cast<uint8_t>(dst[i]))}
+                       << shift.at[c];
+      }
     } else {
-      QuadColor dst, out;
-      for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < 4; ++i) dst[c][i] = static_cast<float>(dst_bytes[i][order.at[c]]) * (1.f / 255.f);
-      blend_quad(d, col, dst, out);
-      for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < 4; ++i) bytes[i][order.at[c]] = to_unorm8(out[c][i]);
+      QuadColor dst;
+      for (int c = 0; c < 4; ++c) dst.c[c] = from_unorm8(old >> shift.at[c]);
+      const QuadColor out = blend_quad(d, col, dst);
+      for (int c = 0; c < 4; ++c) packed |= to_unorm8(out.c[c]) << shift.at[c];
     }
   } else {
-    for (int c = 0; c < 4; ++c)
-      for (int i = 0; i < 4; ++i) bytes[i][order.at[c]] = to_unorm8(col[c][i]);
+    for (int c = 0; c < 4; ++c) packed |= to_unorm8(col.c[c]) << shift.at[c];
   }
-  if (d.color_write_all) {
-    for (int i = 0; i < 4; ++i)
-      if (px[i]) std::memcpy(px[i], bytes[i], 4);
+  if (mask == 0xf && d.color_write_all) {
+    uint32_t v[4] = {packed[0], packed[1], packed[2], packed[3]};
+    std::memcpy(px[0], &v[0], 8);
+    std::memcpy(px[2], &v[2], 8);
     return;
   }
-  for (int i = 0; i < 4; ++i)
-    if (px[i])
-      for (int c = 0; c < 4; ++c)
-        if (s.color_write[c]) px[i][order.at[c]] = bytes[i][order.at[c]];
+  uint32_t keep = 0;  // bits of the old pixel the colour mask preserves
+  for (int c = 0; c < 4; ++c)
+    if (!s.color_write[c]) keep |= 0xffu << shift.at[c];
+  for (int i = 0; i < 4; ++i) {
+    if (!px[i]) continue;
+    uint32_t v = packed[i];
+    if (keep) {
+      uint32_t old;
+      std::memcpy(&old, px[i], 4);
+      v = (v & ~keep) | (old & keep);
+    }
+    std::memcpy(px[i], &v, 4);
+  }
+}
+
+template <bool kDepth, bool kStencil>
+unsigned depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
+                       F4 ox, F4 oy) {
+  const DrawState& s = d.state;
+  const StencilFace& face = p.back_facing ? s.stencil_back : s.stencil_front;
+  const uint8_t ref = d.stencil_ref[p.back_facing ? 1 : 0];
+  for (int i = 0; i < 4; ++i) {
+    if (!(mask & (1u << i))) continue;
+    const int px = x + (i & 1), py = y + (i >> 1);
+    uint8_t* stencil = nullptr;
+    uint8_t sv = 0;
+    auto update_stencil = [&](StencilOp op) {
+      const uint8_t nv = stencil_op(op, sv, ref);
+      *stencil = static_cast<uint8_t>((sv & ~face.write_mask) | (nv & face.write_mask));
+    };
+    if constexpr (kStencil) {
+      stencil = fb.stencil.base + static_cast<ptrdiff_t>(py) * fb.stencil.stride + px;
+      sv = *stencil;
+      if (!compare(face.func, static_cast<uint8_t>(ref & face.value_mask), static_cast<uint8_t>(sv & face.value_mask))) {
+        update_stencil(face.fail);
+        mask &= ~(1u << i);
+        continue;
+      }
+    }
+    if constexpr (kDepth) {
+      double z = p.z0 + p.dzdx * ox[i] + p.dzdy * oy[i];
+      z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+      const uint32_t zi = static_cast<uint32_t>(z + 0.5);
+      uint32_t* depth = fb.depth.base + static_cast<ptrdiff_t>(py) * fb.depth.stride + px;
+      if (!compare(s.depth_func, zi, *depth)) {
+        if constexpr (kStencil) update_stencil(face.depth_fail);
+        mask &= ~(1u << i);
+        continue;
+      }
+      if (s.depth_write) *depth = zi;
+    }
+    if constexpr (kStencil) update_stencil(face.depth_pass);
+  }
+  return mask;
+}
+
+// Depth test and write without stencil: the four lanes at once.
+unsigned depth_only(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
+                    F4 ox, F4 oy) {
+  uint32_t zi[4], stored[4];
+  uint32_t* row[2] = {fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x, nullptr};
+  if (mask & 0xc) row[1] = fb.depth.base + static_cast<ptrdiff_t>(y + 1) * fb.depth.stride + x;
+  for (int i = 0; i < 4; ++i) {
+    double z = p.z0 + p.dzdx * ox[i] + p.dzdy * oy[i];
+    z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+    zi[i] = static_cast<uint32_t>(z + 0.5);
+    stored[i] = (mask & (1u << i)) ? row[i >> 1][i & 1] : 0;
+  }
+  unsigned pass = 0;
+  switch (d.state.depth_func) {
+    case CompareFunc::Never: break;
+    case CompareFunc::Less: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] < stored[i]} << i; break;
+    case CompareFunc::Equal: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] == stored[i]} << i; break;
+    case CompareFunc::LessEqual: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] <= stored[i]} << i; break;
+    case CompareFunc::Greater: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] > stored[i]} << i; break;
+    case CompareFunc::NotEqual: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] != stored[i]} << i; break;
+    case CompareFunc::GreaterEqual: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] >= stored[i]} << i; break;
+    case CompareFunc::Always: pass = 0xf; break;
+  }
+  mask &= pass;
+  if (d.state.depth_write)
+    for (int i = 0; i < 4; ++i)
+      if (mask & (1u << i)) row[i >> 1][i & 1] = zi[i];
+  return mask;
 }
 
 template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat>
-void shade_quad(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask) {
+void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                 const uint8_t* masks) {
   const DrawState& s = d.state;
-  float ox[4], oy[4];
-  for (int i = 0; i < 4; ++i) {
-    ox[i] = static_cast<float>(x + (i & 1)) + 0.5f - p.ref_x;
-    oy[i] = static_cast<float>(y + (i >> 1)) + 0.5f - p.ref_y;
-  }
-  QuadColor col;
-  quad_colors<kTex, kFlat>(d, p, ox, oy, col);
-
-  if (s.alpha_test) {
-    for (int i = 0; i < 4; ++i)
-      if (!compare(s.alpha_func, col[3][i], d.alpha_ref)) mask &= ~(1u << i);
-  }
-
-  if constexpr (kDepth || kStencil) {
-    const StencilFace& face = p.back_facing ? s.stencil_back : s.stencil_front;
-    const uint8_t ref = d.stencil_ref[p.back_facing ? 1 : 0];
-    for (int i = 0; i < 4; ++i) {
-      if (!(mask & (1u << i))) continue;
-      const int px = x + (i & 1), py = y + (i >> 1);
-      uint8_t* stencil = nullptr;
-      uint8_t sv = 0;
-      auto update_stencil = [&](StencilOp op) {
-        const uint8_t nv = stencil_op(op, sv, ref);
-        *stencil = static_cast<uint8_t>((sv & ~face.write_mask) | (nv & face.write_mask));
-      };
-      if constexpr (kStencil) {
-        stencil = fb.stencil.base + static_cast<ptrdiff_t>(py) * fb.stencil.stride + px;
-        sv = *stencil;
-        if (!compare(face.func, static_cast<uint8_t>(ref & face.value_mask), static_cast<uint8_t>(sv & face.value_mask))) {
-          update_stencil(face.fail);
-          mask &= ~(1u << i);
-          continue;
-        }
-      }
-      if constexpr (kDepth) {
-        double z = p.z0 + p.dzdx * ox[i] + p.dzdy * oy[i];
-        z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
-        const uint32_t zi = static_cast<uint32_t>(z + 0.5);
-        uint32_t* depth = fb.depth.base + static_cast<ptrdiff_t>(py) * fb.depth.stride + px;
-        if (!compare(s.depth_func, zi, *depth)) {
-          if constexpr (kStencil) update_stencil(face.depth_fail);
-          mask &= ~(1u << i);
-          continue;
-        }
-        if (s.depth_write) *depth = zi;
-      }
-      if constexpr (kStencil) update_stencil(face.depth_pass);
+  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
+  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const bool write_color = fb.color.base && d.color_write_any;
+  for (int q = 0; q < count; ++q) {
+    unsigned mask = masks[q];
+    if (!mask) continue;
+    const int qx = x + 2 * q;
+    // Offsets from the reference point (exact while the primitive stays near the framebuffer).
+    const F4 ox = ox0 + splat(static_cast<float>(2 * q));
+    const QuadColor col = quad_colors<kTex, kFlat>(d, p, ox, oy);
+    if (s.alpha_test) {
+      for (int i = 0; i < 4; ++i)
+        if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
     }
+    if constexpr (kDepth && !kStencil) mask = depth_only(d, p, fb, qx, y, mask, ox, oy);
+    else if constexpr (kStencil) mask = depth_stencil<kDepth, kStencil>(d, p, fb, qx, y, mask, ox, oy);
+    if (mask && write_color) write_quad<kBlend>(d, fb, qx, y, mask, col);
   }
-
-  if (!mask || !fb.color.base || !d.color_write_any) return;
-  write_quad<kBlend>(d, fb, x, y, mask, col);
 }
 
 template <int kBits>
 constexpr QuadRoutine routine_for() {
-  return &shade_quad<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0>;
+  return &shade_quads<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0>;
 }
 
 template <int... kBits>

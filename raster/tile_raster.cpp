@@ -44,24 +44,47 @@ BlockCover classify(const PrimSetup& p, const PixelRect& r) {
   return full ? BlockCover::Full : BlockCover::Partial;
 }
 
+// Collects the quad masks of one quad row and hands them to the fragment routine at once.
 struct QuadSink {
   const PrimSetup& p;
   const DrawRecord& d;
   const Framebuffer& fb;
-  void operator()(int x, int y, unsigned mask) const {
-    if (mask) d.routine(d, p, fb, x, y, mask);
+  void row(int x, int y, int count, const uint8_t* masks) const {
+    // Skip empty quads at both ends.
+    while (count > 0 && !masks[0]) {
+      ++masks;
+      x += 2;
+      --count;
+    }
+    while (count > 0 && !masks[count - 1]) --count;
+    if (count > 0) d.routine(d, p, fb, x, y, count, masks);
   }
 };
 
-// Every quad of `block` (aligned to 2), clipped to `clip`.
+constexpr int kMaxQuadsPerRow = kTileSize / 2;
+
+// Every quad of `block`, clipped to `clip`.
 void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
-  for (int y = block.y0 & ~1; y < block.y1; y += 2)
-    for (int x = block.x0 & ~1; x < block.x1; x += 2) sink(x, y, rect_mask(x, y, clip));
+  const int x0 = block.x0 & ~1;
+  const int count = (block.x1 - x0 + 1) / 2;
+  uint8_t masks[kMaxQuadsPerRow];
+  for (int y = block.y0 & ~1; y < block.y1; y += 2) {
+    const bool rows_inside = y >= clip.y0 && y + 1 < clip.y1;
+    for (int q = 0; q < count; ++q) {
+      const int x = x0 + 2 * q;
+      masks[q] = rows_inside && x >= clip.x0 && x + 1 < clip.x1 ? 0xf : static_cast<uint8_t>(rect_mask(x, y, clip));
+    }
+    sink.row(x0, y, count, masks);
+  }
 }
 
 void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
-  for (int y = block.y0 & ~1; y < block.y1; y += 2)
-    for (int x = block.x0 & ~1; x < block.x1; x += 2) {
+  const int x0 = block.x0 & ~1;
+  const int count = (block.x1 - x0 + 1) / 2;
+  uint8_t masks[kMaxQuadsPerRow];
+  for (int y = block.y0 & ~1; y < block.y1; y += 2) {
+    for (int q = 0; q < count; ++q) {
+      const int x = x0 + 2 * q;
       unsigned m = rect_mask(x, y, clip);
       for (int i = 0; i < 4 && m; ++i) {
         if (!(m & (1u << i))) continue;
@@ -71,8 +94,10 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
             break;
           }
       }
-      sink(x, y, m);
+      masks[q] = static_cast<uint8_t>(m);
     }
+    sink.row(x0, y, count, masks);
+  }
 }
 
 void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
@@ -137,13 +162,18 @@ void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& s
       else mask.set(static_cast<int>(n), m);
     }
   }
-  for (int y = area.y0 & ~1; y < area.y1; y += 2)
-    for (int x = area.x0 & ~1; x < area.x1; x += 2) {
+  const int x0 = area.x0 & ~1;
+  const int count = (area.x1 - x0 + 1) / 2;
+  uint8_t masks[kMaxQuadsPerRow];
+  for (int y = area.y0 & ~1; y < area.y1; y += 2) {
+    for (int q = 0; q < count; ++q) {
       unsigned m = 0;
       for (int i = 0; i < 4; ++i)
-        if (mask.get(x + (i & 1), y + (i >> 1))) m |= 1u << i;
-      sink(x, y, m);
+        if (mask.get(x0 + 2 * q + (i & 1), y + (i >> 1))) m |= 1u << i;
+      masks[q] = static_cast<uint8_t>(m);
     }
+    sink.row(x0, y, count, masks);
+  }
 }
 
 }  // namespace
