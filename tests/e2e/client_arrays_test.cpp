@@ -1,0 +1,212 @@
+// Client arrays: DrawArrays, DrawElements, ArrayElement and InterleavedArrays draw exactly
+// what the same vertices draw in immediate mode.
+#include <algorithm>
+#include <vector>
+
+#include "tests/e2e/support/gl_test.h"
+
+namespace pineda::test {
+namespace {
+
+struct Vertex {
+  float s, t;
+  float r, g, b, a;
+  float x, y, z;
+};
+
+// A fan of smooth-shaded, textured triangles over the surface.
+const std::vector<Vertex> kVertices = {
+    {0.5f, 0.5f, 1, 1, 1, 1, 16, 16, 0}, {0, 0, 1, 0, 0, 1, 1, 1, 0},    {1, 0, 0, 1, 0, 1, 31, 2, 0},
+    {1, 1, 0, 0, 1, 1, 30, 30, 0},       {0, 1, 1, 1, 0, 0.5f, 3, 29, 0}, {0, 0, 0, 1, 1, 1, 1, 1, 0},
+};
+
+class ClientArraysTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    pixel_projection();
+    const uint8_t texels[2 * 2 * 4] = {255, 255, 255, 255, 128, 128, 128, 255, 200, 100, 50, 255, 50, 100, 200, 255};
+    glBindTexture(GL_TEXTURE_2D, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glEnable(GL_TEXTURE_2D);
+  }
+
+  std::vector<uint8_t> immediate_reference(GLenum mode, const std::vector<unsigned>& order) {
+    clear_to(0, 0, 0, 0);
+    glBegin(mode);
+    for (unsigned i : order) {
+      const Vertex& v = kVertices[i];
+      glTexCoord2f(v.s, v.t);
+      glColor4f(v.r, v.g, v.b, v.a);
+      glVertex3f(v.x, v.y, v.z);
+    }
+    glEnd();
+    return read_all();
+  }
+
+  void set_separate_arrays() {
+    const Vertex* base = kVertices.data();
+    glTexCoordPointer(2, GL_FLOAT, sizeof(Vertex), &base->s);
+    glColorPointer(4, GL_FLOAT, sizeof(Vertex), &base->r);
+    glVertexPointer(3, GL_FLOAT, sizeof(Vertex), &base->x);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_VERTEX_ARRAY);
+  }
+};
+
+TEST_F(ClientArraysTest, DrawArraysEqualsImmediateMode) {
+  const auto reference = immediate_reference(GL_TRIANGLE_FAN, {0, 1, 2, 3, 4, 5});
+  ASSERT_GT(std::count_if(reference.begin(), reference.end(), [](uint8_t b) { return b != 0; }), 1000);
+  clear_to(0, 0, 0, 0);
+  set_separate_arrays();
+  glDrawArrays(GL_TRIANGLE_FAN, 0, 6);
+  EXPECT_EQ(read_all(), reference);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(ClientArraysTest, DrawArraysWithFirst) {
+  const auto reference = immediate_reference(GL_TRIANGLES, {2, 3, 4});
+  clear_to(0, 0, 0, 0);
+  set_separate_arrays();
+  glDrawArrays(GL_TRIANGLES, 2, 3);
+  EXPECT_EQ(read_all(), reference);
+}
+
+TEST_F(ClientArraysTest, DrawElementsEqualsImmediateModeForEveryIndexType) {
+  const std::vector<unsigned> order = {0, 1, 2, 0, 3, 4, 0, 4, 1};
+  const auto reference = immediate_reference(GL_TRIANGLES, order);
+  set_separate_arrays();
+  const std::vector<GLubyte> u8(order.begin(), order.end());
+  const std::vector<GLushort> u16(order.begin(), order.end());
+  const std::vector<GLuint> u32(order.begin(), order.end());
+  clear_to(0, 0, 0, 0);
+  glDrawElements(GL_TRIANGLES, 9, GL_UNSIGNED_BYTE, u8.data());
+  EXPECT_EQ(read_all(), reference);
+  clear_to(0, 0, 0, 0);
+  glDrawElements(GL_TRIANGLES, 9, GL_UNSIGNED_SHORT, u16.data());
+  EXPECT_EQ(read_all(), reference);
+  clear_to(0, 0, 0, 0);
+  glDrawElements(GL_TRIANGLES, 9, GL_UNSIGNED_INT, u32.data());
+  EXPECT_EQ(read_all(), reference);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(ClientArraysTest, ArrayElementEqualsImmediateMode) {
+  const std::vector<unsigned> order = {3, 0, 2, 4};
+  const auto reference = immediate_reference(GL_QUADS, order);
+  set_separate_arrays();
+  clear_to(0, 0, 0, 0);
+  glBegin(GL_QUADS);
+  for (unsigned i : order) glArrayElement(GLint(i));
+  glEnd();
+  EXPECT_EQ(read_all(), reference);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(ClientArraysTest, InterleavedT2fC4fN3fV3fEqualsImmediateMode) {
+  const auto reference = immediate_reference(GL_TRIANGLE_FAN, {0, 1, 2, 3, 4, 5});
+  std::vector<float> interleaved;
+  for (const Vertex& v : kVertices)
+    interleaved.insert(interleaved.end(), {v.s, v.t, v.r, v.g, v.b, v.a, 0, 0, 1, v.x, v.y, v.z});
+  clear_to(0, 0, 0, 0);
+  glInterleavedArrays(GL_T2F_C4F_N3F_V3F, 0, interleaved.data());
+  EXPECT_EQ(glIsEnabled(GL_NORMAL_ARRAY), GL_TRUE);
+  glDrawArrays(GL_TRIANGLE_FAN, 0, 6);
+  EXPECT_EQ(read_all(), reference);
+}
+
+TEST_F(ClientArraysTest, InterleavedC4ubV2fWithStride) {
+  glDisable(GL_TEXTURE_2D);
+  clear_to(0, 0, 0, 0);
+  glBegin(GL_TRIANGLES);
+  glColor4ub(255, 0, 0, 255);
+  glVertex2f(1, 1);
+  glColor4ub(0, 255, 0, 255);
+  glVertex2f(30, 4);
+  glColor4ub(0, 0, 255, 255);
+  glVertex2f(10, 28);
+  glEnd();
+  const auto reference = read_all();
+  struct Packed {
+    GLubyte c[4];
+    float x, y;
+    float padding;
+  };
+  const Packed packed[3] = {{{255, 0, 0, 255}, 1, 1, 0}, {{0, 255, 0, 255}, 30, 4, 0}, {{0, 0, 255, 255}, 10, 28, 0}};
+  clear_to(0, 0, 0, 0);
+  glInterleavedArrays(GL_C4UB_V2F, sizeof(Packed), packed);
+  EXPECT_EQ(glIsEnabled(GL_TEXTURE_COORD_ARRAY), GL_FALSE);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(read_all(), reference);
+}
+
+TEST_F(ClientArraysTest, IntegerAndShortVertexTypes) {
+  glDisable(GL_TEXTURE_2D);
+  const GLshort shorts[] = {2, 2, 12, 2, 12, 12, 2, 12};
+  const GLint ints[] = {16, 16, 26, 16, 26, 26, 16, 26};
+  const GLubyte colors[] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 0};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glColorPointer(3, GL_UNSIGNED_BYTE, 0, colors);
+  clear_to(0, 0, 0, 0);
+  glVertexPointer(2, GL_SHORT, 0, shorts);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glVertexPointer(2, GL_INT, 0, ints);
+  glDrawArrays(GL_QUADS, 0, 4);
+  const auto drawn = read_all();
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+  clear_to(0, 0, 0, 0);
+  glBegin(GL_QUADS);
+  for (int i = 0; i < 4; ++i) {
+    glColor3ubv(colors + 3 * i);
+    glVertex2sv(shorts + 2 * i);
+  }
+  for (int i = 0; i < 4; ++i) {
+    glColor3ubv(colors + 3 * i);
+    glVertex2iv(ints + 2 * i);
+  }
+  glEnd();
+  EXPECT_EQ(read_all(), drawn);
+}
+
+TEST_F(ClientArraysTest, ErrorsAndDisabledVertexArray) {
+  set_separate_arrays();
+  clear_to(0, 0, 0, 0);
+  glDrawArrays(GL_TRIANGLES, 0, -1);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glDrawArrays(GL_POLYGON + 1, 0, 3);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  const GLubyte idx[3] = {0, 1, 2};
+  glDrawElements(GL_TRIANGLES, 3, GL_BYTE, idx);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glDrawElements(GL_TRIANGLES, -3, GL_UNSIGNED_BYTE, idx);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glBegin(GL_TRIANGLES);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  // Without the vertex array nothing is drawn.
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(ClientArraysTest, ArrayElementUpdatesTheCurrentAttributes) {
+  set_separate_arrays();
+  glArrayElement(2);
+  GLfloat c[4], t[4];
+  glGetFloatv(GL_CURRENT_COLOR, c);
+  glGetFloatv(GL_CURRENT_TEXTURE_COORDS, t);
+  EXPECT_EQ(c[0], 0.f);
+  EXPECT_EQ(c[1], 1.f);
+  EXPECT_EQ(t[0], 1.f);
+  EXPECT_EQ(t[1], 0.f);
+  EXPECT_EQ(t[3], 1.f);
+}
+
+}  // namespace
+}  // namespace pineda::test

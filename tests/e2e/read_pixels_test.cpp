@@ -1,0 +1,190 @@
+// glReadPixels: every format and type, pack alignment, row length and skips, depth and
+// stencil, and reads partly outside the surface.
+#include <cmath>
+#include <cstring>
+
+#include "tests/e2e/support/gl_test.h"
+
+namespace pineda::test {
+namespace {
+
+constexpr int kR = 51, kG = 102, kB = 153, kA = 204;  // 0.2, 0.4, 0.6, 0.8
+
+class ReadPixelsTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    clear_to(kR / 255.f, kG / 255.f, kB / 255.f, kA / 255.f);
+  }
+};
+
+// The expected value of one component byte value `k` (of 255) in `type`.
+double expected_component(int k, GLenum type) {
+  const double c = k / 255.0;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return k;
+    case GL_BYTE: return std::round(c * 127);
+    case GL_UNSIGNED_SHORT: return k * 257.0;
+    case GL_SHORT: return std::round(c * 32767);
+    case GL_UNSIGNED_INT: return k * 16843009.0;
+    case GL_INT: return std::round(c * 2147483647.0);
+    default: return c;  // GL_FLOAT
+  }
+}
+
+double read_component(const uint8_t* p, GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return *p;
+    case GL_BYTE: return *reinterpret_cast<const int8_t*>(p);
+    case GL_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return v; }
+    case GL_SHORT: { int16_t v; std::memcpy(&v, p, 2); return v; }
+    case GL_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
+    case GL_INT: { int32_t v; std::memcpy(&v, p, 4); return v; }
+    default: { float v; std::memcpy(&v, p, 4); return v; }
+  }
+}
+
+int type_size(GLenum type) {
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    default: return 4;
+  }
+}
+
+struct FormatCase {
+  GLenum format;
+  std::vector<int> components;  // byte values expected, in order; -1: luminance (R+G+B clamped)
+};
+
+TEST_F(ReadPixelsTest, EveryFormatAndType) {
+  const int lum = std::min(kR + kG + kB, 255);
+  const FormatCase formats[] = {
+      {GL_RGBA, {kR, kG, kB, kA}}, {GL_RGB, {kR, kG, kB}}, {GL_BGRA, {kB, kG, kR, kA}}, {GL_BGR, {kB, kG, kR}},
+      {GL_RED, {kR}},              {GL_GREEN, {kG}},       {GL_BLUE, {kB}},            {GL_ALPHA, {kA}},
+      {GL_LUMINANCE, {lum}},       {GL_LUMINANCE_ALPHA, {lum, kA}}};
+  const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                          GL_UNSIGNED_INT,  GL_INT,  GL_FLOAT};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  for (const FormatCase& f : formats)
+    for (GLenum type : types) {
+      const int n = int(f.components.size()), size = type_size(type);
+      std::vector<uint8_t> out(size_t(3 * 2 * n * size) + 16, 0xEE);
+      glReadPixels(5, 7, 3, 2, f.format, type, out.data());
+      ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << std::hex << f.format << " " << type;
+      for (int p = 0; p < 6; ++p)
+        for (int c = 0; c < n; ++c) {
+          const double got = read_component(&out[size_t((p * n + c) * size)], type);
+          const double want = expected_component(f.components[c], type);
+          const double tolerance = type == GL_FLOAT ? 1e-6 : (type == GL_INT || type == GL_UNSIGNED_INT) ? 256 : 1;
+          EXPECT_NEAR(got, want, tolerance) << std::hex << "format " << f.format << " type " << type << std::dec
+                                            << " pixel " << p << " component " << c;
+        }
+      EXPECT_EQ(out[size_t(6 * n * size)], 0xEE) << "wrote past the image";
+    }
+}
+
+TEST_F(ReadPixelsTest, PackAlignmentPadsRows) {
+  for (GLint alignment : {1, 2, 4, 8}) {
+    glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+    // 3 RGB bytes x 3 pixels = 9 bytes per row, padded to the alignment.
+    const int stride = (9 + alignment - 1) / alignment * alignment;
+    std::vector<uint8_t> out(size_t(stride) * 3, 0xEE);
+    glReadPixels(0, 0, 3, 3, GL_RGB, GL_UNSIGNED_BYTE, out.data());
+    for (int row = 0; row < 3; ++row) {
+      for (int i = 0; i < 9; i += 3) {
+        EXPECT_EQ(out[row * stride + i], kR) << alignment;
+        EXPECT_EQ(out[row * stride + i + 2], kB) << alignment;
+      }
+      for (int pad = 9; row < 2 && pad < stride; ++pad) EXPECT_EQ(out[row * stride + pad], 0xEE) << alignment;
+    }
+  }
+}
+
+TEST_F(ReadPixelsTest, PackRowLengthAndSkips) {
+  pixel_projection();
+  glColor3ub(10, 20, 30);
+  glRecti(2, 2, 3, 3);  // one distinct pixel at (2, 2)
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ROW_LENGTH, 10);
+  glPixelStorei(GL_PACK_SKIP_PIXELS, 2);
+  glPixelStorei(GL_PACK_SKIP_ROWS, 3);
+  std::vector<uint8_t> out(10 * 8 * 4, 0xEE);
+  glReadPixels(1, 1, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  auto at = [&](int col, int row) { return &out[size_t((row * 10 + col) * 4)]; };
+  // Pixel (2, 2) of the surface is image pixel (1, 1): written at row 3 + 1, column 2 + 1.
+  EXPECT_EQ(at(3, 4)[0], 10);
+  EXPECT_EQ(at(3, 4)[1], 20);
+  EXPECT_EQ(at(3, 4)[2], 30);
+  EXPECT_EQ(at(2, 3)[0], kR);
+  EXPECT_EQ(at(5, 6)[3], kA);
+  EXPECT_EQ(at(1, 3)[0], 0xEE);  // skipped pixels untouched
+  EXPECT_EQ(at(2, 2)[0], 0xEE);  // skipped rows untouched
+  EXPECT_EQ(at(6, 3)[0], 0xEE);  // past the row's width
+  EXPECT_EQ(at(2, 7)[0], 0xEE);  // past the last row
+}
+
+TEST_F(ReadPixelsTest, DepthComponentTypes) {
+  glClearDepth(0.25);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  GLuint u = 0;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &u);
+  EXPECT_NEAR(double(u), 0.25 * 4294967295.0, 512.0);
+  GLushort s = 0;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, &s);
+  EXPECT_NEAR(double(s), 0.25 * 65535, 1.0);
+  GLubyte b = 0;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, &b);
+  EXPECT_NEAR(double(b), 0.25 * 255, 1.0);
+}
+
+TEST_F(ReadPixelsTest, StencilIndexTypes) {
+  glClearStencil(200);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  GLuint u = 0;
+  glReadPixels(3, 3, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_INT, &u);
+  EXPECT_EQ(u, 200u);
+  GLfloat f = 0;
+  glReadPixels(3, 3, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, &f);
+  EXPECT_EQ(f, 200.f);
+  GLshort sh = 0;
+  glReadPixels(3, 3, 1, 1, GL_STENCIL_INDEX, GL_SHORT, &sh);
+  EXPECT_EQ(sh, 200);
+}
+
+TEST_F(ReadPixelsTest, ReadsOutsideTheSurfaceLeaveMemoryAndInsideIsRead) {
+  std::vector<uint8_t> out(4 * 4 * 4, 0xEE);
+  glReadPixels(width() - 2, height() - 2, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  EXPECT_EQ(out[0], kR);                    // (w-2, h-2): inside
+  EXPECT_EQ(out[(1 * 4 + 1) * 4 + 3], kA);  // (w-1, h-1): inside
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(ReadPixelsTest, Errors) {
+  uint8_t out[64] = {};
+  glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glReadPixels(0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glReadPixels(0, 0, 1, 1, GL_RGBA, 0x1234, out);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glReadPixels(0, 0, 1, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, out);  // no colour-index buffers
+  EXPECT_NE(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+class ReadPixelsWithoutDepthTest : public GlTest {
+ protected:
+  SurfaceSpec spec() const override { return {8, 8, 0, 0}; }
+};
+
+TEST_F(ReadPixelsWithoutDepthTest, DepthAndStencilReadsAreInvalidOperation) {
+  GLfloat f = 5;
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glReadPixels(0, 0, 1, 1, GL_STENCIL_INDEX, GL_FLOAT, &f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(f, 5.f);
+}
+
+}  // namespace
+}  // namespace pineda::test
