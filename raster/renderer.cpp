@@ -18,7 +18,8 @@ struct Renderer::Impl {
 
 Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads)) {}
 
-Renderer::~Renderer() { flush(); }
+// Work still queued is dropped: the framebuffer's owner may already have released its memory.
+Renderer::~Renderer() = default;
 
 void Renderer::set_framebuffer(const Framebuffer& fb) {
   flush();

@@ -192,3 +192,43 @@ TEST(Clipping, IndexPastTheEndDropsItsPrimitive) {
 
 }  // namespace
 }  // namespace pineda::raster::test
+
+namespace pineda::raster::test {
+namespace {
+
+TEST(Clipping, GuardBandClippedEdgeFollowsTheExactLine) {
+  // The hypotenuse from (1e4, -1) to (-1, 1) in NDC starts ~320k px right of the window, far
+  // outside the guard band; after clipping the edge must still be the same line.
+  OwnedFramebuffer fb(kW, kH);
+  Renderer r(1);
+  r.set_framebuffer(fb.fb);
+  clear_all(r);
+  r.draw(state_for(kW, kH), Primitive::Triangles, std::vector<ClipVertex>{vertex(-1, -1), vertex(1e4f, -1), vertex(-1, 1)});
+  r.flush();
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const double xn = (x + 0.5) * 2.0 / kW - 1.0, yn = (y + 0.5) * 2.0 / kH - 1.0;
+      const double d = yn - (-1.0 + 2.0 * (1e4 - xn) / (1e4 + 1.0));  // < 0: below the edge
+      if (std::fabs(d) < 1e-4) continue;
+      ASSERT_EQ(fb.pixel(x, y)[0] != 0, d < 0) << x << "," << y;
+    }
+}
+
+TEST(Clipping, ViewportBoundsTheFragmentsOfPrimitivesInsideTheGuardBand) {
+  OwnedFramebuffer fb(kW, kH);
+  Renderer r(1);
+  r.set_framebuffer(fb.fb);
+  clear_all(r);
+  DrawState s = state_for(kW, kH);
+  s.viewport = {10, 12, 20, 16, 0, 1};
+  r.draw(s, Primitive::Triangles, std::vector<ClipVertex>{vertex(-1.5f, -1.5f), vertex(5, -1.5f), vertex(-1.5f, 5)});
+  s.point_size = 9;
+  r.draw(s, Primitive::Points, std::vector<ClipVertex>{vertex(1, 1)});
+  r.flush();
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      ASSERT_EQ(fb.pixel(x, y)[0] != 0, x >= 10 && x < 30 && y >= 12 && y < 28) << x << "," << y;
+}
+
+}  // namespace
+}  // namespace pineda::raster::test
