@@ -132,7 +132,7 @@ class Gears final : public Scene {
     const float angle = 10.0f + frame * 2.0f;
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glLoadIdentity();
-    glTranslatef(1.0f, -0.5f, -40.0f);
+    glTranslatef(1.0f, 0.0f, -40.0f);
     glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
     glRotatef(30.0f, 0.0f, 1.0f, 0.0f);
     const struct { float x, y, turn, phase; } placements[3] = {
