@@ -20,9 +20,10 @@ inline F4 clamp01(F4 v) {
 }
 
 // Round to nearest unorm8 (v * 255 + 0.5, truncated) in the low byte of each lane.
-inline U4 to_unorm8(F4 v) { return __builtin_convertvector(clamp01(v) * 255.f + 0.5f, U4); }
+// (Converted as signed: one instruction, and the values fit.)
+inline U4 to_unorm8(F4 v) { return reinterpret_cast<U4>(__builtin_convertvector(clamp01(v) * 255.f + 0.5f, I4)); }
 
-inline F4 from_unorm8(U4 v) { return __builtin_convertvector(v & 0xffu, F4) * (1.f / 255.f); }
+inline F4 from_unorm8(U4 v) { return __builtin_convertvector(reinterpret_cast<I4>(v & 0xffu), F4) * (1.f / 255.f); }
 
 inline F4 load4(const float* p) {
   F4 v;
