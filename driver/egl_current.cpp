@@ -1,5 +1,7 @@
 // eglMakeCurrent (with EGL_KHR_surfaceless_context), eglGetCurrentContext/Surface/Display,
 // eglReleaseThread, eglWaitGL/WaitClient/WaitNative.
+#include <utility>
+
 #include "driver/egl_registry.h"
 #include "driver/egl_thread.h"
 #include "glapi/current.h"
@@ -49,33 +51,35 @@ EGLBoolean MakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLCont
     if (!compatible(*s->config, *context->config)) return fail(EGL_BAD_MATCH, EGL_FALSE);
   }
 
-  // Hand the old binding's ownership back and take the new one's, under the lock.
-  std::shared_ptr<ContextObject> old_context = std::move(t.context);
-  std::shared_ptr<Surface> old_draw = std::move(t.draw), old_read = std::move(t.read);
-  if (old_context) {
-    old_context->bound_thread = nullptr;
-    old_context->bound_to_surface = false;
-  }
-  if (old_draw) old_draw->bound_thread = nullptr;
-  if (old_read) old_read->bound_thread = nullptr;
+  // Claim the new binding. The old one stays this thread's until its GL side has let go,
+  // so that no other thread can bind it while it is still being released.
   context->bound_thread = &t;
   context->bound_to_surface = draw_surface != nullptr;
   if (draw_surface) draw_surface->bound_thread = &t;
   if (read_surface) read_surface->bound_thread = &t;
-  t.context = context;
-  t.draw = draw_surface;
-  t.read = read_surface;
+  lock.unlock();
+
+  std::shared_ptr<ContextObject> old_context = std::exchange(t.context, context);
+  std::shared_ptr<Surface> old_draw = std::exchange(t.draw, draw_surface);
+  std::shared_ptr<Surface> old_read = std::exchange(t.read, read_surface);
   t.display = display;
   t.context_handle = ctx;
   t.draw_handle = draw;
   t.read_handle = read;
-  lock.unlock();
-
-  // The contexts now belong to this thread alone: bind them outside the lock.
   if (old_context && old_context != context) old_context->gl->release_current();
   set_current_context(context->gl.get());
   context->gl->make_current(draw_surface ? &draw_surface->drawable : nullptr,
                             read_surface ? &read_surface->drawable : nullptr);
+
+  // Hand back what the new binding does not use.
+  lock.lock();
+  if (old_context && old_context != context) {
+    old_context->bound_thread = nullptr;
+    old_context->bound_to_surface = false;
+  }
+  for (const auto& s : {old_draw, old_read})
+    if (s && s != draw_surface && s != read_surface) s->bound_thread = nullptr;
+  lock.unlock();
   return succeed(EGL_TRUE);
 }
 

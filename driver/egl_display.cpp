@@ -51,10 +51,15 @@ EGLBoolean Terminate(EGLDisplay dpy) {
   if (!display) return fail(EGL_BAD_DISPLAY, EGL_FALSE);
   // Handles become invalid now; objects still current to a thread live on through the
   // thread's references until it releases them.
+  // Freed after the lock is released.
+  auto contexts = std::move(display->contexts);
+  auto surfaces = std::move(display->surfaces);
+  auto syncs = std::move(display->syncs);
   display->contexts.clear();
   display->surfaces.clear();
   display->syncs.clear();
   display->initialized = false;
+  lock.unlock();
   return succeed(EGL_TRUE);
 }
 

@@ -11,28 +11,27 @@ ThreadState& thread_state() {
 }
 
 ThreadState::~ThreadState() {
-  if (context) release_current_binding();
+  if (context) release_binding(*this);
 }
 
-void release_current_binding() {
-  ThreadState& t = thread_state();
+void release_current_binding() { release_binding(thread_state()); }
+
+void release_binding(ThreadState& t) {
   std::shared_ptr<ContextObject> context = std::move(t.context);
   std::shared_ptr<Surface> draw = std::move(t.draw), read = std::move(t.read);
+  t.display = nullptr;
+  t.context_handle = EGL_NO_CONTEXT;
+  t.draw_handle = t.read_handle = EGL_NO_SURFACE;
+  if (!context) return;
+  // The GL side lets go first: until ownership is handed back no other thread can bind it.
+  context->gl->release_current();
+  set_current_context(nullptr);
   {
     auto lock = Registry::instance().lock();
-    if (context) {
-      context->bound_thread = nullptr;
-      context->bound_to_surface = false;
-    }
+    context->bound_thread = nullptr;
+    context->bound_to_surface = false;
     if (draw) draw->bound_thread = nullptr;
     if (read) read->bound_thread = nullptr;
-    t.display = nullptr;
-    t.context_handle = EGL_NO_CONTEXT;
-    t.draw_handle = t.read_handle = EGL_NO_SURFACE;
-  }
-  if (context) {
-    context->gl->release_current();
-    set_current_context(nullptr);
   }
   // The references drop here: a destroyed context or surface is freed now.
 }

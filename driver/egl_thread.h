@@ -23,6 +23,8 @@ ThreadState& thread_state();
 
 // Releases the calling thread's current context, if any (takes the registry lock).
 void release_current_binding();
+// The same, given the calling thread's state (also while it is being destroyed).
+void release_binding(ThreadState& t);
 
 template <class T>
 T fail(EGLint error, T result) {
