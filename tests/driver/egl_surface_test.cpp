@@ -1,4 +1,6 @@
 // Pbuffer surfaces: creation, attributes, destruction, swap.
+#include <GL/gl.h>
+
 #include "egl_fixture.h"
 
 namespace {
@@ -36,6 +38,12 @@ TEST_F(EglSurface, DefaultSizeIsZero) {
   surfaces.push_back(s);
   EXPECT_EQ(query(dpy, s, EGL_WIDTH), 0);
   EXPECT_EQ(query(dpy, s, EGL_HEIGHT), 0);
+  // Rendering into it is harmless.
+  ASSERT_TRUE(eglMakeCurrent(dpy, s, s, context(config())));
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  EXPECT_TRUE(eglSwapBuffers(dpy, s));
+  EXPECT_EQ(glGetError(), GL_NO_ERROR);
 }
 
 TEST_F(EglSurface, NegativeSizeIsBadParameter) {
