@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "glapi/gl_entry_points.h"
+#include "state/color_material.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
@@ -101,7 +102,10 @@ void ArrayElement(Context& ctx, GLint i) {
   if (i < 0) return ctx.record_error(GL_INVALID_VALUE);
   raster::VertexInput v;
   fetch_vertex(ctx, size_t(i), v);
-  if (ctx.color_array.enabled && ctx.color_array.pointer) std::copy(v.color, v.color + 4, ctx.current_color);
+  if (ctx.color_array.enabled && ctx.color_array.pointer) {
+    std::copy(v.color, v.color + 4, ctx.current_color);
+    track_color_material(ctx);
+  }
   if (ctx.normal_array.enabled && ctx.normal_array.pointer) std::copy(v.normal, v.normal + 3, ctx.current_normal);
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
     TextureUnitState& unit = ctx.texture_units[u];

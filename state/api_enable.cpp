@@ -1,6 +1,7 @@
 // glEnable/glDisable/glIsEnabled and the client-array switches.
 #include "glapi/gl_entry_points.h"
 #include "state/capabilities.h"
+#include "state/color_material.h"
 #include "state/context.h"
 
 namespace pineda {
@@ -75,6 +76,7 @@ void set_capability(Context& ctx, GLenum cap, bool value) {
   bool* flag = server_capability(ctx, cap);
   if (!flag) return ctx.record_error(GL_INVALID_ENUM);
   *flag = value;
+  if (cap == GL_COLOR_MATERIAL) track_color_material(ctx);
 }
 
 void set_client_capability(Context& ctx, GLenum array, bool value) {

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "glapi/gl_entry_points.h"
+#include "state/color_material.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
@@ -42,6 +43,7 @@ void set_color(Context& ctx, float r, float g, float b, float a) {
   ctx.current_color[1] = g;
   ctx.current_color[2] = b;
   ctx.current_color[3] = a;
+  track_color_material(ctx);
 }
 
 void set_texcoord(Context& ctx, GLuint unit, float s, float t, float r, float q) {

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "glapi/gl_entry_points.h"
+#include "state/color_material.h"
 #include "state/context.h"
 
 namespace pineda::gl {
@@ -154,6 +155,7 @@ void ColorMaterial(Context& ctx, GLenum face, GLenum mode) {
   cm.diffuse = mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE;
   cm.specular = mode == GL_SPECULAR;
   cm.emission = mode == GL_EMISSION;
+  track_color_material(ctx);
 }
 
 void GetLightfv(Context& ctx, GLenum which, GLenum pname, GLfloat* params) {

@@ -20,16 +20,17 @@ T get(const uint8_t* src) {
   return v;
 }
 
-// GL's float -> normalized integer conversions, rounding to nearest.
-void store_component(float c, GLenum type, uint8_t* dst) {
+// GL's float -> normalized integer conversions, rounding to nearest; in double precision so
+// that 32-bit types (depth read as GL_UNSIGNED_INT) keep every bit.
+void store_component(double c, GLenum type, uint8_t* dst) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(std::lround(c * 255.f))); break;
-    case GL_BYTE: put<GLbyte>(dst, GLbyte(std::lround(c * 127.f))); break;
-    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(std::lround(c * 65535.f))); break;
-    case GL_SHORT: put<GLshort>(dst, GLshort(std::lround(c * 32767.f))); break;
-    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(std::llround(double(c) * 4294967295.0))); break;
-    case GL_INT: put<GLint>(dst, GLint(std::llround(double(c) * 2147483647.0))); break;
-    case GL_FLOAT: put<GLfloat>(dst, c); break;
+    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(std::lround(c * 255.0))); break;
+    case GL_BYTE: put<GLbyte>(dst, GLbyte(std::lround(c * 127.0))); break;
+    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(std::lround(c * 65535.0))); break;
+    case GL_SHORT: put<GLshort>(dst, GLshort(std::lround(c * 32767.0))); break;
+    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(std::llround(c * 4294967295.0))); break;
+    case GL_INT: put<GLint>(dst, GLint(std::llround(c * 2147483647.0))); break;
+    case GL_FLOAT: put<GLfloat>(dst, GLfloat(c)); break;
   }
 }
 
@@ -121,7 +122,7 @@ void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]) {
 }
 
 void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst) {
-  if (normalized) return store_component(float(value), type, dst);
+  if (normalized) return store_component(value, type, dst);
   switch (type) {
     case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(value)); break;
     case GL_BYTE: put<GLbyte>(dst, GLbyte(value)); break;

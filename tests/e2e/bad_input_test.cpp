@@ -22,7 +22,8 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 TEST_F(BadInputTest, NonFiniteVerticesDrawNothing) {
   const float bad[] = {kNaN, kInf, -kInf};
   for (float b : bad) {
-    for (GLenum mode : {GL_TRIANGLES, GL_LINES, GL_POINTS, GL_QUADS}) {
+    // Every primitive has a non-finite vertex.
+    for (GLenum mode : {GL_TRIANGLES, GL_LINES, GL_QUADS, GL_TRIANGLE_FAN, GL_POLYGON}) {
       glBegin(mode);
       glVertex2f(b, 2);
       glVertex2f(20, 2);
@@ -30,6 +31,12 @@ TEST_F(BadInputTest, NonFiniteVerticesDrawNothing) {
       glVertex4f(10, 10, 0, b);
       glEnd();
     }
+    glBegin(GL_POINTS);
+    glVertex2f(b, 2);
+    glVertex2f(20, b);
+    glVertex4f(10, 10, 0, b);
+    glVertex4f(10, 10, b, 1);
+    glEnd();
     glRectf(b, 0, 10, 10);
   }
   EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());

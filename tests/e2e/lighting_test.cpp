@@ -141,7 +141,7 @@ TEST_F(LightingTest, TwoSidedLightingUsesTheBackMaterialForBackFaces) {
   glVertex2f(1, -1);
   glEnd();
   const int a = to_byte(0.04);
-  EXPECT_TRUE(near_rgba(pixel(8, 8), {a, to_byte(0.04 + 1.0), a, 255}, 1));
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {a, 255, a, 255}, 1));  // green 0.04 + 1, clamped
 }
 
 TEST_F(LightingTest, DisabledLightContributesNothing) {
@@ -161,6 +161,25 @@ TEST_F(LightingTest, NormalizeRescalesScaledNormals) {
   quad({0, 0, 1});
   const int c = to_byte(0.04 + 0.8);
   EXPECT_TRUE(near_rgba(pixel(8, 8), {c, c, c, 255}, 1));
+}
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(LightingTest, MaterialKeepsTheColourAfterColorMaterialIsDisabled) {
+  glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor3f(0, 1, 0);
+  quad({0, 0, 1});
+  glDisable(GL_COLOR_MATERIAL);
+  glColor3f(1, 0, 0);  // no longer tracked
+  clear_to(0, 0, 0, 0);
+  quad({0, 0, 1});
+  const int a = to_byte(0.04);
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {a, 255, a, 255}, 1));  // diffuse (0, 1, 0) stays
 }
 
 }  // namespace

@@ -188,3 +188,28 @@ TEST_F(ReadPixelsWithoutDepthTest, DepthAndStencilReadsAreInvalidOperation) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+class DepthReadPrecisionTest : public GlTest, public ::testing::WithParamInterface<int> {
+ protected:
+  SurfaceSpec spec() const override { return {8, 8, GetParam(), 0}; }
+};
+
+// A stored depth value d of b bits reads as the unsigned integer d * (2^32 - 1) / (2^b - 1).
+TEST_P(DepthReadPrecisionTest, UnsignedIntDepthIsExact) {
+  const int bits = GetParam();
+  const double max = bits == 32 ? 4294967295.0 : double((1ull << bits) - 1);
+  glClearDepth(0.25);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  const double stored = std::round(0.25 * max);
+  GLuint u = 0;
+  glReadPixels(1, 1, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &u);
+  EXPECT_NEAR(double(u), std::round(stored / max * 4294967295.0), 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bits, DepthReadPrecisionTest, ::testing::Values(16, 24, 32));
+
+}  // namespace
+}  // namespace pineda::test

@@ -193,3 +193,31 @@ TEST_F(LightingStateTest, MaterialInsideBeginEndIsAllowed) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// GL 1.1 spec 2.13.3: with COLOR_MATERIAL enabled the selected material properties take the
+// current colour whenever it changes, and keep it after COLOR_MATERIAL is disabled.
+TEST_F(LightingStateTest, ColorMaterialUpdatesTheStoredMaterial) {
+  glColorMaterial(GL_FRONT, GL_DIFFUSE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColor4f(0.25f, 0.5f, 0.75f, 1.f);
+  EXPECT_EQ(material(GL_FRONT, GL_DIFFUSE, 4), (Floats{0.25f, 0.5f, 0.75f, 1.f}));
+  EXPECT_EQ(material(GL_BACK, GL_DIFFUSE, 4), (Floats{0.8f, 0.8f, 0.8f, 1}));
+  EXPECT_EQ(material(GL_FRONT, GL_AMBIENT, 4), (Floats{0.2f, 0.2f, 0.2f, 1}));
+  glDisable(GL_COLOR_MATERIAL);
+  glColor4f(1, 0, 0, 1);
+  EXPECT_EQ(material(GL_FRONT, GL_DIFFUSE, 4), (Floats{0.25f, 0.5f, 0.75f, 1.f}));
+}
+
+TEST_F(LightingStateTest, EnablingColorMaterialAppliesTheCurrentColour) {
+  glColor4f(0.5f, 0.25f, 0.125f, 0.5f);
+  glColorMaterial(GL_BACK, GL_EMISSION);
+  glEnable(GL_COLOR_MATERIAL);
+  EXPECT_EQ(material(GL_BACK, GL_EMISSION, 4), (Floats{0.5f, 0.25f, 0.125f, 0.5f}));
+  EXPECT_EQ(material(GL_FRONT, GL_EMISSION, 4), (Floats{0, 0, 0, 1}));
+}
+
+}  // namespace
+}  // namespace pineda::test
