@@ -6,19 +6,19 @@
 
 #include "driver/egl_registry.h"
 #include "driver/egl_thread.h"
+#include "driver/gl_version.h"
 #include "glapi/egl_entry_points.h"
 
 namespace pineda::egl {
 namespace {
 
-// RGBA8888 with each depth/stencil combination the rasterizer stores. OpenGL only: the ES
-// bits join once ES 2.0 is implemented.
-constexpr EGLint kGL = EGL_OPENGL_BIT;
+// RGBA8888 with each depth/stencil combination the rasterizer stores.
+constexpr EGLint kRenderable = EGL_OPENGL_BIT | (driver::kHasGLES2 ? EGL_OPENGL_ES2_BIT : 0);
 constexpr Config kConfigs[] = {
-    {1, 8, 8, 8, 8, 0, 0, EGL_PBUFFER_BIT, kGL},  {2, 8, 8, 8, 8, 0, 8, EGL_PBUFFER_BIT, kGL},
-    {3, 8, 8, 8, 8, 16, 0, EGL_PBUFFER_BIT, kGL}, {4, 8, 8, 8, 8, 24, 0, EGL_PBUFFER_BIT, kGL},
-    {5, 8, 8, 8, 8, 24, 8, EGL_PBUFFER_BIT, kGL}, {6, 8, 8, 8, 8, 32, 0, EGL_PBUFFER_BIT, kGL},
-    {7, 8, 8, 8, 8, 32, 8, EGL_PBUFFER_BIT, kGL},
+    {1, 8, 8, 8, 8, 0, 0, EGL_PBUFFER_BIT, kRenderable},  {2, 8, 8, 8, 8, 0, 8, EGL_PBUFFER_BIT, kRenderable},
+    {3, 8, 8, 8, 8, 16, 0, EGL_PBUFFER_BIT, kRenderable}, {4, 8, 8, 8, 8, 24, 0, EGL_PBUFFER_BIT, kRenderable},
+    {5, 8, 8, 8, 8, 24, 8, EGL_PBUFFER_BIT, kRenderable}, {6, 8, 8, 8, 8, 32, 0, EGL_PBUFFER_BIT, kRenderable},
+    {7, 8, 8, 8, 8, 32, 8, EGL_PBUFFER_BIT, kRenderable},
 };
 
 enum class Match { AtLeast, Exact, Mask, Ignore };

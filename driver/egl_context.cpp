@@ -16,15 +16,16 @@ struct Request {
   EGLint reset_strategy = EGL_NO_RESET_NOTIFICATION;
 };
 
-// Returns EGL_SUCCESS or the error for the attribute list.
-EGLint parse_attributes(const EGLint* attribs, Request* r) {
+// Returns EGL_SUCCESS or the error for the attribute list. The OpenGL-only attributes are
+// errors for OpenGL ES (EGL 1.5, 3.7.1.1).
+EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
   constexpr EGLint kKnownFlags = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR |
                                  EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE_BIT_KHR |
                                  EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR;
   for (const EGLint* a = attribs; a && a[0] != EGL_NONE; a += 2) {
     EGLint value = a[1];
     switch (a[0]) {
-      case EGL_CONTEXT_MAJOR_VERSION: r->major = value; break;
+      case EGL_CONTEXT_MAJOR_VERSION: r->major = value; break;  // = EGL_CONTEXT_CLIENT_VERSION
       case EGL_CONTEXT_MINOR_VERSION: r->minor = value; break;
       case EGL_CONTEXT_FLAGS_KHR:
         if (value & ~kKnownFlags) return EGL_BAD_ATTRIBUTE;
@@ -32,12 +33,15 @@ EGLint parse_attributes(const EGLint* attribs, Request* r) {
         if (value & EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR) r->robust = true;
         break;
       case EGL_CONTEXT_OPENGL_PROFILE_MASK:
+        if (gles) return EGL_BAD_ATTRIBUTE;
         if (!(value & (EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT |
                        EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT)))
           return EGL_BAD_ATTRIBUTE;
-        break;  // below GL 3.2 the profile is ignored (EGL 1.5, 3.7.1.1)
-      case EGL_CONTEXT_OPENGL_DEBUG:
+        break;  // below GL 3.2 the profile is ignored
       case EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE:
+        if (gles) return EGL_BAD_ATTRIBUTE;
+        [[fallthrough]];
+      case EGL_CONTEXT_OPENGL_DEBUG:
         if (value != EGL_TRUE && value != EGL_FALSE) return EGL_BAD_ATTRIBUTE;
         break;
       case EGL_CONTEXT_OPENGL_ROBUST_ACCESS:
@@ -58,8 +62,8 @@ EGLint parse_attributes(const EGLint* attribs, Request* r) {
 }  // namespace
 
 EGLBoolean BindAPI(EGLenum api) {
-  // Only desktop OpenGL is implemented; EGL_OPENGL_ES_API joins with ES 2.0.
-  if (api != EGL_OPENGL_API) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
+  const bool supported = api == EGL_OPENGL_API || (api == EGL_OPENGL_ES_API && driver::kHasGLES2);
+  if (!supported) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
   thread_state().api = api;
   return succeed(EGL_TRUE);
 }
@@ -71,21 +75,25 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   auto lock = Registry::instance().lock();
   Display* display = initialized_display(dpy);
   if (!display) return EGL_NO_CONTEXT;
-  EGLenum api = thread_state().api;
+  const EGLenum api = thread_state().api;
   if (api == EGL_NONE) return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+  const bool gles = api == EGL_OPENGL_ES_API;
   const Config* c = find_config(config);
   if (!c) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
-  if (!(c->renderable_type & EGL_OPENGL_BIT)) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
   if (share_context != EGL_NO_CONTEXT) {
     if (!display->find_context(share_context)) return fail(EGL_BAD_CONTEXT, EGL_NO_CONTEXT);
     // Share groups are not implemented yet: the two contexts cannot share objects.
     return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
   }
   Request request;
-  if (EGLint error = parse_attributes(attrib_list, &request); error != EGL_SUCCESS)
+  if (EGLint error = parse_attributes(attrib_list, gles, &request); error != EGL_SUCCESS)
     return fail(error, EGL_NO_CONTEXT);
-  if (!driver::gl_version_supported(request.major, request.minor))
-    return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+  const bool version_ok = gles ? driver::gles_version_supported(request.major, request.minor)
+                               : driver::gl_version_supported(request.major, request.minor);
+  if (!version_ok) return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+  // A config that cannot render the API: EGL 1.5, 3.7.1.
+  const EGLint needed = gles ? EGL_OPENGL_ES2_BIT : EGL_OPENGL_BIT;
+  if (!(c->renderable_type & needed)) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
   // No robust buffer access, no reset notification.
   if (request.robust || request.reset_strategy != EGL_NO_RESET_NOTIFICATION)
     return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
@@ -93,12 +101,17 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   auto object = std::make_shared<ContextObject>();
   object->config = c;
   object->api = api;
-  // GL may return a later version compatible with the one asked for: the highest one.
-  object->major = driver::kMaxGLMajor;
-  object->minor = driver::kMaxGLMinor;
+  if (gles) {
+    object->major = request.major;
+    object->minor = request.minor;
+  } else {
+    // GL may return a later version compatible with the one asked for: the highest one.
+    object->major = driver::kMaxGLMajor;
+    object->minor = driver::kMaxGLMinor;
+  }
   try {
     object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = object->major, .minor = object->minor, .gles = false});
+        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles});
   } catch (const std::bad_alloc&) {
     return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
   }

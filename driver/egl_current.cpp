@@ -99,7 +99,7 @@ EGLSurface GetCurrentSurface(EGLint readdraw) {
 
 EGLBoolean ReleaseThread() {
   release_current_binding();
-  thread_state().api = EGL_NONE;
+  thread_state().api = kInitialApi;
   return succeed(EGL_TRUE);
 }
 

@@ -1,6 +1,7 @@
 // eglQueryString: the client extensions (EGL_NO_DISPLAY) and a display's strings.
 #include "driver/egl_registry.h"
 #include "driver/egl_thread.h"
+#include "driver/gl_version.h"
 #include "glapi/egl_entry_points.h"
 
 namespace pineda::egl {
@@ -26,7 +27,7 @@ const char* QueryString(EGLDisplay dpy, EGLint name) {
   switch (name) {
     case EGL_VENDOR: return succeed("Pineda");
     case EGL_VERSION: return succeed("1.5 Pineda");
-    case EGL_CLIENT_APIS: return succeed("OpenGL");
+    case EGL_CLIENT_APIS: return succeed(driver::kHasGLES2 ? "OpenGL OpenGL_ES" : "OpenGL");
     case EGL_EXTENSIONS: return succeed(kDisplayExtensions);
     default: return fail<const char*>(EGL_BAD_PARAMETER, nullptr);
   }

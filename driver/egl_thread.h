@@ -3,12 +3,16 @@
 #include <memory>
 
 #include "driver/egl_objects.h"
+#include "driver/gl_version.h"
 
 namespace pineda::egl {
 
+// EGL 1.5, 3.7: OpenGL ES when it is supported, otherwise none.
+inline constexpr EGLenum kInitialApi = driver::kHasGLES2 ? EGL_OPENGL_ES_API : EGL_NONE;
+
 struct ThreadState {
   EGLint error = EGL_SUCCESS;
-  EGLenum api = EGL_NONE;  // EGL_OPENGL_ES_API once ES is implemented
+  EGLenum api = kInitialApi;
   Display* display = nullptr;
   EGLContext context_handle = EGL_NO_CONTEXT;
   EGLSurface draw_handle = EGL_NO_SURFACE, read_handle = EGL_NO_SURFACE;

@@ -9,10 +9,16 @@ namespace {
 using pineda_test::EglTest;
 using EglContext = EglTest;
 
-TEST_F(EglContext, OnlyOpenGLCanBeBound) {
+TEST_F(EglContext, BindApi) {
   EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_API);
-  EXPECT_FALSE(eglBindAPI(EGL_OPENGL_ES_API));
-  EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  if (offers_gles()) {
+    EXPECT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
+    EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_ES_API);
+    EXPECT_TRUE(eglBindAPI(EGL_OPENGL_API));
+  } else {
+    EXPECT_FALSE(eglBindAPI(EGL_OPENGL_ES_API));
+    EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
+  }
   EXPECT_FALSE(eglBindAPI(EGL_OPENVG_API));
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
   EXPECT_FALSE(eglBindAPI(0x1234));
@@ -20,18 +26,55 @@ TEST_F(EglContext, OnlyOpenGLCanBeBound) {
   EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_API);
 }
 
-TEST_F(EglContext, NoBoundApiIsBadMatch) {
+TEST_F(EglContext, InitialApiIsESOrNone) {
   EGLConfig cfg = config();
   EGLint api = 0, error = 0;
   EGLContext ctx = nullptr;
   std::thread([&] {
-    api = eglQueryAPI();  // ES is not offered: no API is bound initially
-    ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, nullptr);
+    api = eglQueryAPI();
+    const EGLint attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+    ctx = eglCreateContext(dpy, cfg, EGL_NO_CONTEXT, attribs);
     error = eglGetError();
+    if (ctx) eglDestroyContext(dpy, ctx);
   }).join();
-  EXPECT_EQ(api, EGL_NONE);
-  EXPECT_EQ(ctx, EGL_NO_CONTEXT);
-  EXPECT_EQ(error, EGL_BAD_MATCH);
+  if (offers_gles()) {
+    EXPECT_EQ(api, EGL_OPENGL_ES_API);
+    EXPECT_NE(ctx, EGL_NO_CONTEXT);
+    EXPECT_EQ(error, EGL_SUCCESS);
+  } else {
+    // No API is bound: creating a context is EGL_BAD_MATCH.
+    EXPECT_EQ(api, EGL_NONE);
+    EXPECT_EQ(ctx, EGL_NO_CONTEXT);
+    EXPECT_EQ(error, EGL_BAD_MATCH);
+  }
+}
+
+TEST_F(EglContext, ES20Contexts) {
+  if (!offers_gles()) GTEST_SKIP() << "OpenGL ES is not offered yet";
+  ASSERT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
+  EGLConfig cfg = config();
+  const EGLint es2[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
+  EGLContext ctx = context(cfg, es2);
+  ASSERT_NE(ctx, EGL_NO_CONTEXT);
+  EGLint value = 0;
+  EXPECT_TRUE(eglQueryContext(dpy, ctx, EGL_CONTEXT_CLIENT_TYPE, &value));
+  EXPECT_EQ(value, EGL_OPENGL_ES_API);
+  EXPECT_TRUE(eglQueryContext(dpy, ctx, EGL_CONTEXT_CLIENT_VERSION, &value));
+  EXPECT_EQ(value, 2);
+  EGLSurface s = pbuffer(cfg, 8, 8);
+  EXPECT_TRUE(eglMakeCurrent(dpy, s, s, ctx));
+  // ES 1.x (the default version) and ES 3 are not offered.
+  EXPECT_EQ(context(cfg), EGL_NO_CONTEXT);
+  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
+  const EGLint es3[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
+  EXPECT_EQ(context(cfg, es3), EGL_NO_CONTEXT);
+  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
+  // OpenGL-only attributes.
+  const EGLint profile[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+  EXPECT_EQ(context(cfg, profile), EGL_NO_CONTEXT);
+  EXPECT_EQ(eglGetError(), EGL_BAD_ATTRIBUTE);
+  EXPECT_TRUE(eglBindAPI(EGL_OPENGL_API));
 }
 
 TEST_F(EglContext, VersionsUpTo11Succeed) {

@@ -5,6 +5,8 @@
 #include <EGL/eglext.h>
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <string>
 #include <vector>
 
 namespace pineda_test {
@@ -53,6 +55,12 @@ class EglTest : public ::testing::Test {
     EGLSurface s = eglCreatePbufferSurface(dpy, cfg, attribs);
     if (s != EGL_NO_SURFACE) surfaces.push_back(s);
     return s;
+  }
+
+  // Whether the display offers OpenGL ES (2.0): the ES tests run only then.
+  bool offers_gles() {
+    const char* apis = eglQueryString(dpy, EGL_CLIENT_APIS);
+    return apis && std::string(apis).find("OpenGL_ES") != std::string::npos;
   }
 
   EGLDisplay dpy = EGL_NO_DISPLAY;
