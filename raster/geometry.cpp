@@ -115,7 +115,9 @@ void GeometryStage::emit(const PrimSetup& prim) {
 }
 
 void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
-  if (!clip_line(a, b, volume_)) return;
+  // Lines are clipped to the view volume itself (not the guard band) before they are widened,
+  // as GL specifies: a wide line never reaches into the viewport from a clipped-off part.
+  if (!clip_line(a, b, ClipVolume{})) return;
   const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
   PrimSetup prim;
   if (setup_line(wa, wb, line_width_, params(style), prim)) emit(prim);

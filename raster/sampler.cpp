@@ -112,8 +112,14 @@ float quad_lambda(const TextureLevel& base, const float s[4], const float t[4]) 
   const float w = static_cast<float>(base.width), h = static_cast<float>(base.height);
   const float dudx = (s[1] - s[0]) * w, dvdx = (t[1] - t[0]) * h;
   const float dudy = (s[2] - s[0]) * w, dvdy = (t[2] - t[0]) * h;
-  const float rho = std::max(std::sqrt(dudx * dudx + dvdx * dvdx), std::sqrt(dudy * dudy + dvdy * dvdy));
-  return std::log2(rho);
+  const float rho2 = std::max(dudx * dudx + dvdx * dvdx, dudy * dudy + dvdy * dvdy);
+  // lambda = log2(rho) = log2(rho^2) / 2, with log2 taken piecewise linear between powers of
+  // two (exact at them). GL allows approximating lambda; this is the approximation llvmpipe
+  // uses, so that mipmap blends match it.
+  if (!(rho2 > 0.f)) return rho2 == 0.f ? -INFINITY : NAN;
+  int e;
+  const float m = std::frexp(rho2, &e);  // rho2 = m * 2^e, m in [0.5, 1)
+  return 0.5f * (static_cast<float>(e - 1) + (2.f * m - 1.f));
 }
 
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],

@@ -11,7 +11,8 @@ namespace pineda::raster {
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
                  float out[4][4]);
 
-// The level of detail for a quad, before clamping to the sampler's range.
+// The level of detail for a quad, before clamping to the sampler's range (-inf when the
+// coordinates do not change across the quad).
 float quad_lambda(const TextureLevel& base, const float s[4], const float t[4]);
 
 }  // namespace pineda::raster

@@ -53,6 +53,13 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
   out.dzdy = gy;
 }
 
+// Whether a point (in sub-pixels) lies strictly inside the diamond |x - xc| + |y - yc| < 1/2
+// of the pixel whose square holds it.
+bool in_diamond(int64_t x, int64_t y) {
+  const int64_t fx = x & (kSubpixelOne - 1), fy = y & (kSubpixelOne - 1);
+  return std::llabs(2 * fx - kSubpixelOne) + std::llabs(2 * fy - kSubpixelOne) < kSubpixelOne;
+}
+
 }  // namespace
 
 int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c) {
@@ -122,16 +129,20 @@ bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams
   if (dx == 0 && dy == 0) return false;
   LineCoverage& l = out.line;
   l = {a.x, a.y, b.x, b.y, width, std::llabs(dx) >= std::llabs(dy), 0, -1};
-  // Along the major axis the pixels whose centre lies in the half-open range from the first
-  // vertex (included) to the last (excluded): the diamond-exit rule's outcome.
+  // GL's diamond-exit rule along the major axis: the columns (rows) whose centre line the
+  // segment crosses, plus the pixel whose diamond holds the first vertex (the segment leaves
+  // it), minus the pixel whose diamond holds the last vertex (the segment never leaves it).
   const int64_t s0 = l.x_major ? a.x : a.y, s1 = l.x_major ? b.x : b.y;
-  int64_t lo, hi;
+  const bool a_in_diamond = in_diamond(a.x, a.y), b_in_diamond = in_diamond(b.x, b.y);
+  const int64_t a_column = floor_div(s0, kSubpixelOne), b_column = floor_div(s1, kSubpixelOne);
+  int64_t lo = ceil_div(std::min(s0, s1) - kSubpixelHalf, kSubpixelOne);
+  int64_t hi = floor_div(std::max(s0, s1) - kSubpixelHalf, kSubpixelOne);
   if (s1 > s0) {
-    lo = ceil_div(s0 - kSubpixelHalf, kSubpixelOne);
-    hi = ceil_div(s1 - kSubpixelHalf, kSubpixelOne) - 1;
+    if (a_in_diamond) lo = std::min(lo, a_column);
+    if (b_in_diamond && b_column == hi) --hi;
   } else {
-    lo = floor_div(s1 - kSubpixelHalf, kSubpixelOne) + 1;
-    hi = floor_div(s0 - kSubpixelHalf, kSubpixelOne);
+    if (a_in_diamond) hi = std::max(hi, a_column);
+    if (b_in_diamond && b_column == lo) ++lo;
   }
   if (lo > hi) return false;
   l.major_min = static_cast<int>(lo);
@@ -148,15 +159,16 @@ bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams
   out.kind = CoverageKind::Line;
   copy_common(params, out);
 
-  // Attributes vary with the position's projection onto the segment.
-  const double ddx = static_cast<double>(dx) / kSubpixelOne, ddy = static_cast<double>(dy) / kSubpixelOne;
-  const double len2 = ddx * ddx + ddy * ddy;
+  // Attributes vary along the major axis only: every fragment of a column (row) of a wide
+  // line gets the value of the line's centre there, as for a width-1 line.
+  const double major = static_cast<double>(l.x_major ? dx : dy) / kSubpixelOne;
   const WinVert* v[2] = {&a, &b};
   interpolation_planes(
       v, 2, params,
       [&](const double* f, double& gx, double& gy) {
-        gx = (f[1] - f[0]) * ddx / len2;
-        gy = (f[1] - f[0]) * ddy / len2;
+        const double g = (f[1] - f[0]) / major;
+        gx = l.x_major ? g : 0.0;
+        gy = l.x_major ? 0.0 : g;
       },
       out);
   return true;

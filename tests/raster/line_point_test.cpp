@@ -46,6 +46,31 @@ TEST(Lines, HalfOpenAlongTheMajorAxis) {
   for (int x = 2; x < 12; ++x) EXPECT_EQ(c.at(x, 5), 1) << x;
 }
 
+TEST(Lines, DiamondExitRuleAtTheEndpoints) {
+  // Starts inside pixel 6's diamond, past its centre: the line leaves that diamond, so pixel 6
+  // is drawn. Ends inside pixel 20's diamond, past its centre: never leaves it, not drawn.
+  Counter c;
+  c.draw(Primitive::Lines, {wv(6.7, 5.6), wv(20.6, 5.6)});
+  EXPECT_EQ(c.total(), 14);
+  EXPECT_EQ(c.at(6, 5), 1);
+  EXPECT_EQ(c.at(19, 5), 1);
+  EXPECT_EQ(c.at(20, 5), 0);
+  // The same span outside the diamonds (near the pixel corners): half-open by centres.
+  Counter d;
+  d.draw(Primitive::Lines, {wv(6.7, 5.05), wv(20.6, 5.05)});
+  EXPECT_EQ(d.total(), 14);
+  EXPECT_EQ(d.at(6, 5), 0);
+  EXPECT_EQ(d.at(20, 5), 1);
+}
+
+TEST(Lines, WideLinesAreClippedBeforeWidening) {
+  // A y-major line running just right of the window: clipped away before it is widened, so its
+  // 5-pixel span never reaches into the last column.
+  Counter c;
+  c.draw(Primitive::Lines, {wv(33.2, 2), wv(33.4, 30)}, 5.f);
+  EXPECT_EQ(c.total(), 0);
+}
+
 TEST(Lines, ClosedLoopDrawsEveryPixelOnce) {
   Counter c;
   c.draw(Primitive::LineLoop, {wv(2.5, 2.5), wv(12.5, 2.5), wv(12.5, 12.5), wv(2.5, 12.5)});
