@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-namespace pineda::demo {
+namespace pineda::tools {
 namespace {
 
 std::string eglError(const char* what) {
@@ -90,4 +90,4 @@ void EglSession::destroyContext() {
   context_ = EGL_NO_CONTEXT;
 }
 
-}  // namespace pineda::demo
+}  // namespace pineda::tools

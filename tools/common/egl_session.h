@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace pineda::demo {
+namespace pineda::tools {
 
 class EglSession {
  public:
@@ -28,4 +28,4 @@ class EglSession {
   EGLContext context_ = EGL_NO_CONTEXT;
 };
 
-}  // namespace pineda::demo
+}  // namespace pineda::tools

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "egl_session.h"
+#include "gl_readback.h"
 #include "png_io.h"
 #include "scene.h"
 
@@ -86,33 +87,14 @@ double drawTimed(Scene& scene, int frame) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-tools::Image readFramebuffer(int width, int height) {
-  tools::Image image;
-  image.width = width;
-  image.height = height;
-  image.rgba.resize(std::size_t(width) * height * 4);
-  std::vector<std::uint8_t> bottomUp(image.rgba.size());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
-  const std::size_t rowBytes = std::size_t(width) * 4;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(bottomUp.data() + rowBytes * (height - 1 - y), rowBytes, image.rgba.data() + rowBytes * y);
-  return image;
-}
-
-const char* glString(GLenum name) {
-  const GLubyte* value = glGetString(name);
-  return value ? reinterpret_cast<const char*>(value) : "(null)";
-}
-
 int run(const Options& options) {
   std::string error;
-  EglSession session;
+  tools::EglSession session;
   if (!session.open(options.width, options.height, error)) {
     std::fprintf(stderr, "pineda-demo: %s\n", error.c_str());
     return 1;
   }
-  std::printf("GL_RENDERER: %s\nGL_VERSION: %s\n", glString(GL_RENDERER), glString(GL_VERSION));
+  std::printf("GL_RENDERER: %s\nGL_VERSION: %s\n", tools::glString(GL_RENDERER), tools::glString(GL_VERSION));
   std::filesystem::create_directories(options.outDir);
   std::printf("%-14s %-40s %16s %10s\n", "scene", "png", "median ms/frame", "first ms");
 
@@ -131,7 +113,7 @@ int run(const Options& options) {
     auto scene = entry.create(options.width, options.height);
 
     double firstMs = drawTimed(*scene, 0);
-    tools::Image image = readFramebuffer(options.width, options.height);
+    tools::Image image = tools::readFramebuffer(options.width, options.height);
     std::string path = (std::filesystem::path(options.outDir) / (std::string(entry.name) + ".png")).string();
     if (!tools::writePng(path, image, error)) {
       std::fprintf(stderr, "pineda-demo: %s\n", error.c_str());

@@ -25,6 +25,7 @@ std::unique_ptr<Scene> createTriangles(int width, int height);
 std::unique_ptr<Scene> createCube(int width, int height);
 std::unique_ptr<Scene> createTextured(int width, int height);
 std::unique_ptr<Scene> createGears(int width, int height);
+int gearsTrianglesPerFrame();  // for pineda-bench, which draws the same gears
 std::unique_ptr<Scene> createBlend(int width, int height);
 std::unique_ptr<Scene> createLinesPoints(int width, int height);
 

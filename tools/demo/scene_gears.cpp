@@ -86,6 +86,8 @@ void gearBore(const GearShape& g) {
   glShadeModel(GL_FLAT);
 }
 
+constexpr GearShape kGears[3] = {{1.0f, 4.0f, 1.0f, 20, 0.7f}, {0.5f, 2.0f, 2.0f, 10, 0.7f}, {1.3f, 2.0f, 0.5f, 10, 0.7f}};
+
 GLuint buildGear(const GearShape& shape, const GLfloat colour[4]) {
   GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);
@@ -111,12 +113,8 @@ class Gears final : public Scene {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_NORMALIZE);
 
-    const GLfloat red[4] = {0.8f, 0.1f, 0.0f, 1.0f};
-    const GLfloat green[4] = {0.0f, 0.8f, 0.2f, 1.0f};
-    const GLfloat blue[4] = {0.2f, 0.2f, 1.0f, 1.0f};
-    lists_[0] = buildGear({1.0f, 4.0f, 1.0f, 20, 0.7f}, red);
-    lists_[1] = buildGear({0.5f, 2.0f, 2.0f, 10, 0.7f}, green);
-    lists_[2] = buildGear({1.3f, 2.0f, 0.5f, 10, 0.7f}, blue);
+    const GLfloat colours[3][4] = {{0.8f, 0.1f, 0.0f, 1.0f}, {0.0f, 0.8f, 0.2f, 1.0f}, {0.2f, 0.2f, 1.0f, 1.0f}};
+    for (int i = 0; i < 3; ++i) lists_[i] = buildGear(kGears[i], colours[i]);
 
     glMatrixMode(GL_PROJECTION);
     double aspect = double(height) / width;
@@ -151,6 +149,13 @@ class Gears final : public Scene {
 };
 
 }  // namespace
+
+int gearsTrianglesPerFrame() {
+  // Per tooth: each face's ring 4 and tooth 2, the rim 8, the bore 4.
+  int triangles = 0;
+  for (const GearShape& gear : kGears) triangles += 24 * gear.teeth;
+  return triangles;
+}
 
 std::unique_ptr<Scene> createGears(int width, int height) { return std::make_unique<Gears>(width, height); }
 

@@ -1,0 +1,37 @@
+#pragma once
+// A benchmark scene: GL 1.1 calls only. Each scene runs in a fresh context, so it sets up
+// everything it needs in its constructor and assumes GL's initial state. Scenes must leave
+// the stencil buffer alone: the bench counts rasterized fragments with it.
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace pineda::bench {
+
+class BenchScene {
+ public:
+  virtual ~BenchScene() = default;
+  // Draws frame `frame` (clear included); animation depends only on the frame index.
+  virtual void draw(int frame) = 0;
+  // Triangles submitted per frame, quads and strips counted as the triangles they make.
+  virtual long trianglesPerFrame() const = 0;
+};
+
+struct BenchSceneEntry {
+  std::string_view name;
+  std::string_view description;
+  std::unique_ptr<BenchScene> (*create)(int width, int height);
+};
+
+const std::vector<BenchSceneEntry>& allBenchScenes();
+const BenchSceneEntry* findBenchScene(std::string_view name);
+
+std::unique_ptr<BenchScene> createOverdraw(int width, int height);
+std::unique_ptr<BenchScene> createBlend(int width, int height);
+std::unique_ptr<BenchScene> createSmallTris(int width, int height);
+std::unique_ptr<BenchScene> createTextured(int width, int height);
+std::unique_ptr<BenchScene> createLitMesh(int width, int height);
+std::unique_ptr<BenchScene> createGears(int width, int height);
+std::unique_ptr<BenchScene> createStateChanges(int width, int height);
+
+}  // namespace pineda::bench

@@ -1,0 +1,24 @@
+#include "bench_scene.h"
+
+namespace pineda::bench {
+
+const std::vector<BenchSceneEntry>& allBenchScenes() {
+  static const std::vector<BenchSceneEntry> scenes = {
+      {"overdraw", "64 full-screen depth-tested layers: 32 front-to-back, then 32 back-to-front", createOverdraw},
+      {"blend", "32 full-screen alpha-blended smooth-shaded layers", createBlend},
+      {"small_tris", "500k small triangles, glDrawElements with client arrays, depth test", createSmallTris},
+      {"textured", "perspective corridor, trilinear mipmapped 256x256 textures", createTextured},
+      {"lit_mesh", "smooth-shaded torus and sphere, GL_LIGHTING with 2 lights, specular", createLitMesh},
+      {"gears", "pineda-demo's glxgears-like gears (display lists, lighting)", createGears},
+      {"state_changes", "6144 one-quad draw calls changing colour, blend, depth func, texture", createStateChanges},
+  };
+  return scenes;
+}
+
+const BenchSceneEntry* findBenchScene(std::string_view name) {
+  for (const BenchSceneEntry& entry : allBenchScenes())
+    if (entry.name == name) return &entry;
+  return nullptr;
+}
+
+}  // namespace pineda::bench

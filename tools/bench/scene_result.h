@@ -1,0 +1,29 @@
+#pragma once
+// What one scene's run measured, and the one-line form a --child prints it in.
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace pineda::bench {
+
+struct SceneResult {
+  std::string scene;
+  double medianMs = 0;  // median of the timed frames (frame 0's time when there are none)
+  double firstMs = 0;   // frame 0, the warm-up frame
+  long triangles = 0;   // submitted per frame
+  long fragments = -1;  // rasterized in frame 0; -1 when they could not be counted
+  bool fragmentsSaturated = false;  // some pixel took 255+ fragments: a lower bound
+};
+
+double megaTrianglesPerSecond(const SceneResult& result);
+double megaPixelsPerSecond(const SceneResult& result);  // 0 when fragments are unknown
+
+constexpr std::string_view kResultTag = "pineda-bench-result";
+constexpr std::string_view kRendererTag = "pineda-bench-renderer";
+
+std::string formatResultLine(const SceneResult& result);
+// Finds the result line in a child's output.
+std::optional<SceneResult> parseResultLine(std::string_view output);
+std::string parseRenderer(std::string_view output);
+
+}  // namespace pineda::bench
