@@ -1,0 +1,55 @@
+#include "driver/glx_registry.h"
+
+
+#include "driver/glx_config.h"
+
+// Last: Xlib's internal header (for XESetCloseDisplay) defines min and max macros.
+#include <X11/Xlibint.h>
+
+namespace pineda::glx {
+namespace {
+
+int on_close_display(Display* dpy, XExtCodes*) {
+  Registry& registry = Registry::instance();
+  auto lock = registry.lock();
+  registry.forget(dpy);
+  return 0;
+}
+
+}  // namespace
+
+Registry& Registry::instance() {
+  // Never destroyed: threads that end after main() returns may still release through it.
+  static Registry* registry = new Registry;
+  return *registry;
+}
+
+DisplayState* Registry::get(Display* dpy) {
+  if (!dpy) return nullptr;
+  for (auto& d : displays_)
+    if (d->dpy == dpy) return d.get();
+  auto d = std::make_unique<DisplayState>();
+  d->dpy = dpy;
+  d->server_glx = XQueryExtension(dpy, "GLX", &d->major_opcode, &d->event_base, &d->error_base);
+  d->configs = build_configs(dpy);
+  // A client-side extension record, only to hear XCloseDisplay.
+  if (XExtCodes* codes = XAddExtension(dpy)) XESetCloseDisplay(dpy, codes->extension, on_close_display);
+  displays_.push_back(std::move(d));
+  return displays_.back().get();
+}
+
+void Registry::forget(Display* dpy) {
+  for (auto it = displays_.begin(); it != displays_.end(); ++it) {
+    if ((*it)->dpy != dpy) continue;
+    // The connection is going away with its GCs; drawables still current elsewhere keep
+    // their memory but must not touch the server again.
+    for (auto& [id, drawable] : (*it)->drawables) {
+      drawable->gc = nullptr;
+      drawable->dpy = nullptr;
+    }
+    displays_.erase(it);
+    return;
+  }
+}
+
+}  // namespace pineda::glx
