@@ -183,7 +183,7 @@ int runComparison(const Options& options) {
         std::printf(" %7s", "-");
     }
     if (pineda.result)
-      std::printf(" %8.2f %8.1f%s", megaTrianglesPerSecond(*pineda.result), megaPixelsPerSecond(*pineda.result),
+      std::printf(" %8.3f %8.1f%s", megaTrianglesPerSecond(*pineda.result), megaPixelsPerSecond(*pineda.result),
                   pineda.result->fragmentsSaturated ? "+" : "");
     else
       std::printf(" %8s %8s", "-", "-");

@@ -69,7 +69,7 @@ int runLocal(const Options& options) {
       std::fprintf(stderr, "pineda-bench: %s\n", error.c_str());
       ++failures;
     }
-    std::printf("%-14s %10.3f %10.3f %9.2f %9.1f %11ld%s  %s\n", result.scene.c_str(), result.medianMs,
+    std::printf("%-14s %10.3f %10.3f %9.3f %9.1f %11ld%s  %s\n", result.scene.c_str(), result.medianMs,
                 result.firstMs, megaTrianglesPerSecond(result), megaPixelsPerSecond(result), result.fragments,
                 result.fragmentsSaturated ? "+" : " ", path.c_str());
     std::fflush(stdout);

@@ -29,17 +29,15 @@ class Overdraw final : public BenchScene {
   long trianglesPerFrame() const override { return 2L * 2 * kLayersPerPass; }
 
  private:
-  // Layer i lies around depth -0.9 + 1.8 i / (n - 1) (nearer for smaller i), tilted by up to
-  // +-0.1 so that it crosses its neighbours.
+  // Layer i lies around depth -0.8 + 1.6 i / (n - 1) (nearer for smaller i), tilted so that it
+  // crosses its neighbours but stays inside the clip volume.
   static void layer(int i, float shift, bool secondPass) {
-    const float base = -0.9f + 1.8f * float(i) / float(kLayersPerPass - 1);
+    const float base = -0.8f + 1.6f * float(i) / float(kLayersPerPass - 1);
     const float tiltX = (i % 3 - 1) * 0.1f, tiltY = (i % 2 ? 0.08f : -0.08f);
     const auto z = [&](float x, float y) { return base + tiltX * (x + shift) + tiltY * y; };
-    const float hue = float(i) / kLayersPerPass;
-    if (secondPass)
-      glColor3f(0.2f + 0.8f * hue, 0.3f, 1.0f - hue);
-    else
-      glColor3f(1.0f - hue, 0.2f + 0.8f * hue, 0.3f);
+    const int tint = secondPass ? 0 : 100;
+    glColor3ub(GLubyte(55 + (i * 97 + tint) % 200), GLubyte(55 + (i * 57 + tint) % 200),
+               GLubyte(55 + (i * 29 + tint) % 200));
     glBegin(GL_QUADS);
     glVertex3f(-1.0f, -1.0f, z(-1.0f, -1.0f));
     glVertex3f(1.0f, -1.0f, z(1.0f, -1.0f));
