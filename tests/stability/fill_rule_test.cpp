@@ -18,9 +18,9 @@ void draw_centre_mesh(std::mt19937& rng, int w, int h, int step, double origin_x
     for (int i = -2; i * step <= w + 2 * step; ++i) {
       const double x0 = origin_x + i * step + 0.5, y0 = origin_y + j * step + 0.5;
       const double x1 = x0 + step, y1 = y0 + step;
-      const double tri[2][3][2] = (rng() & 1) ? {{{x0, y0}, {x1, y0}, {x1, y1}}, {{x0, y0}, {x1, y1}, {x0, y1}}}
-                                              : {{{x0, y0}, {x1, y0}, {x0, y1}}, {{x1, y0}, {x1, y1}, {x0, y1}}};
-      for (const auto& t : tri) {
+      const double split_a[2][3][2] = {{{x0, y0}, {x1, y0}, {x1, y1}}, {{x0, y0}, {x1, y1}, {x0, y1}}};
+      const double split_b[2][3][2] = {{{x0, y0}, {x1, y0}, {x0, y1}}, {{x1, y0}, {x1, y1}, {x0, y1}}};
+      for (const auto& t : (rng() & 1) ? split_a : split_b) {
         const bool reverse = rng() & 1;
         for (int k = 0; k < 3; ++k) {
           const auto& v = t[reverse ? 2 - k : k];
