@@ -72,8 +72,10 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   const DrawRecord& d = scene_.current_draw();
   WinVert w;
   w.inv_w = 1.0 / v.pos[3];
-  w.x = snap((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_);
-  w.y = snap((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_);
+  w.fx = std::clamp((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
+  w.fy = std::clamp((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
+  w.x = snap(w.fx);
+  w.y = snap(w.fy);
   double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
   z = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
   w.z = z * d.depth_max;

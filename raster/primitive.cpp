@@ -1,7 +1,7 @@
 #include "raster/primitive.h"
 
-#include <memory>
-#include <vector>
+#include <cmath>
+#include <cstdlib>
 
 namespace pineda::raster {
 namespace {
@@ -22,30 +22,75 @@ class VertexSource {
   std::span<const uint32_t> indices_;
 };
 
-void emit_polygon(PrimitiveSink& sink, std::span<const ClipVertex* const> v, bool use_edge_flags,
-                  size_t provoking) {
-  bool flags[4];
-  for (const ClipVertex* p : v)
-    if (!p) return;
-  for (size_t i = 0; i < v.size(); ++i) flags[i] = use_edge_flags ? v[i]->edge_flag : true;
-  sink.polygon(v, std::span<const bool>(flags, v.size()), *v[provoking]);
+bool inside_view_volume(const ClipVertex& v) {
+  const float w = v.clip[3];
+  return std::fabs(v.clip[0]) <= w && std::fabs(v.clip[1]) <= w && std::fabs(v.clip[2]) <= w;
 }
 
-void assemble_polygon(const VertexSource& src, PrimitiveSink& sink) {
-  const size_t n = src.count();
-  if (n < 3) return;
-  std::vector<const ClipVertex*> v(n);
-  for (size_t i = 0; i < n; ++i) {
-    v[i] = src.at(i);
-    if (!v[i]) return;
+// Whether any vertex the draw uses lies outside the view volume. Mesa's draw module then
+// takes its clipping path, which splits quads along the other diagonal; following it keeps
+// the interpolated colours of quads identical to llvmpipe's.
+bool draw_needs_clipping(const VertexSource& src) {
+  for (size_t i = 0; i < src.count(); ++i) {
+    const ClipVertex* v = src.at(i);
+    if (v && !inside_view_volume(*v)) return true;
   }
-  std::unique_ptr<bool[]> flags(new bool[n]);
-  for (size_t i = 0; i < n; ++i) flags[i] = v[i]->edge_flag;
-  sink.polygon(v, std::span<const bool>(flags.get(), n), *v[0]);
+  return false;
+}
+
+// flags[i] marks the edge from v[i] to v[i + 1] as a boundary edge.
+void triangle(PrimitiveSink& sink, const ClipVertex* a, const ClipVertex* b, const ClipVertex* c, bool ab, bool bc,
+              bool ca, const ClipVertex* provoking) {
+  if (!a || !b || !c) return;
+  const ClipVertex* v[3] = {a, b, c};
+  const bool flags[3] = {ab, bc, ca};
+  sink.polygon(v, flags, *provoking);
 }
 
 void line_if_valid(PrimitiveSink& sink, const ClipVertex* a, const ClipVertex* b) {
   if (a && b) sink.line(*a, *b, *b);
+}
+
+void assemble_quads(const VertexSource& src, bool clipping, PrimitiveSink& sink) {
+  for (size_t i = 0; i + 3 < src.count(); i += 4) {
+    const ClipVertex *q0 = src.at(i), *q1 = src.at(i + 1), *q2 = src.at(i + 2), *q3 = src.at(i + 3);
+    if (!q0 || !q1 || !q2 || !q3) continue;
+    if (clipping) {
+      triangle(sink, q0, q1, q3, q0->edge_flag, false, q3->edge_flag, q3);
+      triangle(sink, q1, q2, q3, q1->edge_flag, q2->edge_flag, false, q3);
+    } else {
+      triangle(sink, q0, q1, q2, q0->edge_flag, q1->edge_flag, false, q3);
+      triangle(sink, q0, q2, q3, false, q2->edge_flag, q3->edge_flag, q3);
+    }
+  }
+}
+
+// Quad q is s[2q], s[2q+1], s[2q+3], s[2q+2]; its provoking vertex is s[2q+3].
+void assemble_quad_strip(const VertexSource& src, bool clipping, PrimitiveSink& sink) {
+  for (size_t i = 0; i + 3 < src.count(); i += 2) {
+    const ClipVertex *s0 = src.at(i), *s1 = src.at(i + 1), *s2 = src.at(i + 2), *s3 = src.at(i + 3);
+    if (!s0 || !s1 || !s2 || !s3) continue;
+    if (clipping) {
+      triangle(sink, s2, s0, s3, true, false, true, s3);
+      triangle(sink, s0, s1, s3, true, true, false, s3);
+    } else {
+      triangle(sink, s0, s1, s3, true, true, false, s3);
+      triangle(sink, s2, s0, s3, true, false, true, s3);
+    }
+  }
+}
+
+// A fan around the first vertex, which is also the provoking one.
+void assemble_polygon(const VertexSource& src, PrimitiveSink& sink) {
+  const size_t n = src.count();
+  if (n < 3) return;
+  for (size_t i = 0; i < n; ++i)
+    if (!src.at(i)) return;
+  const ClipVertex* v0 = src.at(0);
+  for (size_t i = 1; i + 1 < n; ++i) {
+    const ClipVertex *a = src.at(i), *b = src.at(i + 1);
+    triangle(sink, v0, a, b, i == 1 && v0->edge_flag, a->edge_flag, i + 2 == n && b->edge_flag, v0);
+  }
 }
 
 }  // namespace
@@ -70,35 +115,28 @@ void assemble_primitives(Primitive mode, std::span<const ClipVertex> vertices,
       break;
     case Primitive::Triangles:
       for (size_t i = 0; i + 2 < n; i += 3) {
-        const ClipVertex* v[3] = {src.at(i), src.at(i + 1), src.at(i + 2)};
-        emit_polygon(sink, v, true, 2);
+        const ClipVertex *a = src.at(i), *b = src.at(i + 1), *c = src.at(i + 2);
+        if (a && b && c) triangle(sink, a, b, c, a->edge_flag, b->edge_flag, c->edge_flag, c);
       }
       break;
     case Primitive::TriangleStrip:
       for (size_t i = 0; i + 2 < n; ++i) {
         // Odd triangles swap their first two vertices to keep a consistent winding.
-        const ClipVertex* v[3] = {src.at(i + (i & 1)), src.at(i + 1 - (i & 1)), src.at(i + 2)};
-        emit_polygon(sink, v, false, 2);
+        const ClipVertex* c = src.at(i + 2);
+        triangle(sink, src.at(i + (i & 1)), src.at(i + 1 - (i & 1)), c, true, true, true, c);
       }
       break;
     case Primitive::TriangleFan:
       for (size_t i = 1; i + 1 < n; ++i) {
-        const ClipVertex* v[3] = {src.at(0), src.at(i), src.at(i + 1)};
-        emit_polygon(sink, v, false, 2);
+        const ClipVertex* c = src.at(i + 1);
+        triangle(sink, src.at(0), src.at(i), c, true, true, true, c);
       }
       break;
     case Primitive::Quads:
-      for (size_t i = 0; i + 3 < n; i += 4) {
-        const ClipVertex* v[4] = {src.at(i), src.at(i + 1), src.at(i + 2), src.at(i + 3)};
-        emit_polygon(sink, v, true, 3);
-      }
+      assemble_quads(src, draw_needs_clipping(src), sink);
       break;
     case Primitive::QuadStrip:
-      for (size_t i = 0; i + 3 < n; i += 2) {
-        // Quad q is v[2q], v[2q+1], v[2q+3], v[2q+2]; its provoking vertex is v[2q+3].
-        const ClipVertex* v[4] = {src.at(i), src.at(i + 1), src.at(i + 3), src.at(i + 2)};
-        emit_polygon(sink, v, false, 2);
-      }
+      assemble_quad_strip(src, draw_needs_clipping(src), sink);
       break;
     case Primitive::Polygon:
       assemble_polygon(src, sink);

@@ -1,6 +1,7 @@
 #include "raster/setup.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <utility>
 
@@ -17,8 +18,8 @@ void copy_common(const SetupParams& params, PrimSetup& out) {
 
 void constant_planes(const WinVert& v, const SetupParams& params, PrimSetup& out) {
   out.perspective = false;
-  out.ref_x = static_cast<float>(static_cast<double>(v.x) / kSubpixelOne);
-  out.ref_y = static_cast<float>(static_cast<double>(v.y) / kSubpixelOne);
+  out.ref_x = static_cast<float>(v.fx);
+  out.ref_y = static_cast<float>(v.fy);
   out.inv_w = {1.f, 0.f, 0.f};
   for (int k = 0; k < params.planes; ++k) out.planes[k] = {v.attr[k], 0.f, 0.f};
   out.z0 = v.z + params.depth_offset;
@@ -33,8 +34,10 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
   bool same_w = true;
   for (int i = 1; i < count; ++i) same_w &= v[i]->inv_w == v[0]->inv_w;
   out.perspective = !same_w;
-  out.ref_x = static_cast<float>(static_cast<double>(v[0]->x) / kSubpixelOne);
-  out.ref_y = static_cast<float>(static_cast<double>(v[0]->y) / kSubpixelOne);
+  // Planes go through the exact (unsnapped) vertex positions, as llvmpipe's do; only coverage
+  // uses the snapped ones.
+  out.ref_x = static_cast<float>(v[0]->fx);
+  out.ref_y = static_cast<float>(v[0]->fy);
   double f[3], gx, gy;
   auto make_plane = [&]() {
     gradient(f, gx, gy);
@@ -67,8 +70,8 @@ int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c) {
 }
 
 bool depth_slopes(const WinVert& a, const WinVert& b, const WinVert& c, double& dzdx, double& dzdy) {
-  const double dx1 = static_cast<double>(b.x - a.x) / kSubpixelOne, dy1 = static_cast<double>(b.y - a.y) / kSubpixelOne;
-  const double dx2 = static_cast<double>(c.x - a.x) / kSubpixelOne, dy2 = static_cast<double>(c.y - a.y) / kSubpixelOne;
+  const double dx1 = b.fx - a.fx, dy1 = b.fy - a.fy;
+  const double dx2 = c.fx - a.fx, dy2 = c.fy - a.fy;
   const double area = dx1 * dy2 - dx2 * dy1;
   if (area == 0.0) return false;
   dzdx = ((b.z - a.z) * dy2 - (c.z - a.z) * dy1) / area;
@@ -109,10 +112,14 @@ bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const 
     if (!owns_boundary) e.c -= 1;
   }
 
-  const double dx1 = static_cast<double>(v[1]->x - v[0]->x) / kSubpixelOne;
-  const double dy1 = static_cast<double>(v[1]->y - v[0]->y) / kSubpixelOne;
-  const double dx2 = static_cast<double>(v[2]->x - v[0]->x) / kSubpixelOne;
-  const double dy2 = static_cast<double>(v[2]->y - v[0]->y) / kSubpixelOne;
+  double dx1 = v[1]->fx - v[0]->fx, dy1 = v[1]->fy - v[0]->fy;
+  double dx2 = v[2]->fx - v[0]->fx, dy2 = v[2]->fy - v[0]->fy;
+  if (!(std::fabs(dx1 * dy2 - dx2 * dy1) > 1e-12)) {  // degenerate before snapping: use the snapped shape
+    dx1 = static_cast<double>(v[1]->x - v[0]->x) / kSubpixelOne;
+    dy1 = static_cast<double>(v[1]->y - v[0]->y) / kSubpixelOne;
+    dx2 = static_cast<double>(v[2]->x - v[0]->x) / kSubpixelOne;
+    dy2 = static_cast<double>(v[2]->y - v[0]->y) / kSubpixelOne;
+  }
   const double inv_area = 1.0 / (dx1 * dy2 - dx2 * dy1);
   interpolation_planes(
       v, 3, params,
@@ -161,7 +168,8 @@ bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams
 
   // Attributes vary along the major axis only: every fragment of a column (row) of a wide
   // line gets the value of the line's centre there, as for a width-1 line.
-  const double major = static_cast<double>(l.x_major ? dx : dy) / kSubpixelOne;
+  double major = l.x_major ? b.fx - a.fx : b.fy - a.fy;
+  if (!(std::fabs(major) > 1e-9)) major = static_cast<double>(l.x_major ? dx : dy) / kSubpixelOne;
   const WinVert* v[2] = {&a, &b};
   interpolation_planes(
       v, 2, params,

@@ -8,7 +8,8 @@ namespace pineda::raster {
 
 // A vertex in window space, snapped to sub-pixels; attributes in PrimSetup plane order.
 struct WinVert {
-  int64_t x = 0, y = 0;  // sub-pixels
+  int64_t x = 0, y = 0;  // sub-pixels: decide coverage
+  double fx = 0, fy = 0;  // pixels, before snapping: anchor the interpolation planes
   double z = 0.0;        // window depth in depth-buffer units
   double inv_w = 1.0;
   float attr[kMaxPlanes] = {};

@@ -88,6 +88,26 @@ TEST(Shading, FlatShadingUsesTheProvokingVertex) {
   EXPECT_EQ(flat_reds(Primitive::LineLoop, 4), (std::set<int>{0, 1, 2, 3}));
 }
 
+// A quad whose only lit corner is v1 (lower right): split along v0-v2 (Mesa's choice for draws
+// that need no clipping) the upper-left half stays black; split along v1-v3 (its choice once a
+// vertex of the draw leaves the view volume) v1 reaches into that half.
+TEST(Shading, QuadsSplitLikeMesa) {
+  for (const bool clipped_draw : {false, true}) {
+    OwnedFramebuffer fb(16, 16);
+    Renderer r(1);
+    r.set_framebuffer(fb.fb);
+    clear_all(r);
+    std::vector<ClipVertex> v{coloured(-1, -1, 0), coloured(1, -1, 1), coloured(1, 1, 0), coloured(-1, 1, 0)};
+    if (clipped_draw) {  // a second, invisible quad outside the view volume
+      for (int i = 0; i < 4; ++i) v.push_back(coloured(5.f + i % 2, 5.f + i / 2, 0));
+    }
+    r.draw(state_for(16, 16), Primitive::Quads, v);
+    r.flush();
+    EXPECT_EQ(fb.pixel(2, 12)[0] != 0, clipped_draw);
+    EXPECT_NE(fb.pixel(12, 2)[0], 0);
+  }
+}
+
 struct FaceResult {
   int covered;
   uint8_t red;
