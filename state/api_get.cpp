@@ -87,8 +87,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
     case GL_MAX_LIGHTS: out = ints({raster::kMaxLights}); return true;
     case GL_MAX_CLIP_PLANES: out = ints({6}); return true;
-    case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({16}); return true;
-    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({16}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({double(kMaxAttribStackDepth)}); return true;
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(kMaxClientAttribStackDepth)}); return true;
+    case GL_ATTRIB_STACK_DEPTH: out = ints({double(ctx.attrib_stack.size())}); return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(ctx.client_attrib_stack.size())}); return true;
     case GL_MAX_NAME_STACK_DEPTH: out = ints({64}); return true;
     case GL_MAX_LIST_NESTING: out = ints({64}); return true;
     case GL_MAX_EVAL_ORDER: out = ints({30}); return true;

@@ -101,6 +101,7 @@ void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, 
   l.height = inner_h;
   l.border = border;
   l.internal_format = internal_format;
+  l.base = base;
   l.texels.assign(size_t(inner_w) * inner_h, 0u);
   if (level == 0) tex->base_format = base;
   unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, format, type, pixels);

@@ -16,6 +16,7 @@
 #include "raster/renderer.h"
 #include "raster/vertex.h"
 #include "raster/vertex_transform.h"
+#include "state/attrib_stack.h"
 #include "state/display_list.h"
 #include "state/drawable.h"
 #include "state/texture_object.h"
@@ -46,6 +47,15 @@ struct ClientArray {
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
   GLboolean swap_bytes = GL_FALSE, lsb_first = GL_FALSE;
+};
+
+// What glPushClientAttrib saves; glPopClientAttrib restores the groups of `mask` only.
+struct ClientAttribFrame {
+  GLbitfield mask = 0;
+  PixelStore pack, unpack;
+  ClientArray vertex_array, color_array, normal_array;
+  std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
+  bool index_array = false, edge_flag_array_enabled = false;
 };
 
 struct TextureUnitState {
@@ -159,6 +169,10 @@ class Context {
   ListCompilation compilation;
   GLuint list_base = 0;
   int list_depth = 0;  // nesting of glCallList
+
+  // glPushAttrib / glPushClientAttrib
+  std::vector<AttribFrame> attrib_stack;
+  std::vector<ClientAttribFrame> client_attrib_stack;
   std::string version_string;  // storage for glGetString(GL_VERSION)
 
  private:

@@ -15,6 +15,7 @@ namespace pineda {
 struct TextureLevelData {
   GLint width = 0, height = 0, border = 0;
   GLint internal_format = 0;  // as the application gave it (for glGetTexLevelParameter)
+  raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;  // what `texels` were reduced to
   std::vector<uint32_t> texels;
 };
 

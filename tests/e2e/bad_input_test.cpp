@@ -143,3 +143,25 @@ TEST_F(BadInputTest, IndicesPastTheArrayAreNotReadOutsideTheIndexRange) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(BadInputTest, ViewportAndScissorFarAwayDrawNothing) {
+  glViewport(2147483000, -2147483000, 16384, 16384);
+  glRecti(0, 0, 32, 32);
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  glViewport(0, 0, width(), height());
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(2147483000, 2147483000, 2147483647, 2147483647);
+  glRecti(0, 0, 32, 32);
+  clear_to(1, 1, 1, 1);
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  glScissor(-2147483647, -2147483647, 2147483647, 2147483647);  // ends just below 0
+  glRecti(0, 0, 32, 32);
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace pineda::test

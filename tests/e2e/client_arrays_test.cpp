@@ -210,3 +210,51 @@ TEST_F(ClientArraysTest, ArrayElementUpdatesTheCurrentAttributes) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(ClientArraysTest, SparseIndicesEqualImmediateMode) {
+  glDisable(GL_TEXTURE_2D);
+  std::vector<float> positions(2 * 200, 0.f);
+  std::vector<float> colours(4 * 200, 0.f);
+  const unsigned used[] = {0, 97, 199, 150};
+  const float xy[4][2] = {{2, 2}, {30, 3}, {29, 30}, {4, 28}};
+  const float rgba[4][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {1, 1, 0, 1}};
+  for (int i = 0; i < 4; ++i) {
+    positions[2 * used[i]] = xy[i][0];
+    positions[2 * used[i] + 1] = xy[i][1];
+    std::copy(rgba[i], rgba[i] + 4, &colours[4 * used[i]]);
+  }
+  clear_to(0, 0, 0, 0);
+  glBegin(GL_LINE_LOOP);
+  for (int i = 0; i < 4; ++i) {
+    glColor4fv(rgba[i]);
+    glVertex2fv(xy[i]);
+  }
+  glEnd();
+  glBegin(GL_QUADS);
+  for (int i = 0; i < 4; ++i) {
+    glColor4fv(rgba[i]);
+    glVertex2f(xy[i][0] / 2 + 8, xy[i][1] / 2 + 8);
+  }
+  glEnd();
+  const auto reference = read_all();
+
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, positions.data());
+  glColorPointer(4, GL_FLOAT, 0, colours.data());
+  clear_to(0, 0, 0, 0);
+  const GLuint indices[4] = {used[0], used[1], used[2], used[3]};
+  glDrawElements(GL_LINE_LOOP, 4, GL_UNSIGNED_INT, indices);
+  glMatrixMode(GL_MODELVIEW);
+  glTranslatef(8, 8, 0);
+  glScalef(0.5f, 0.5f, 1);
+  glDrawElements(GL_QUADS, 4, GL_UNSIGNED_INT, indices);
+  glLoadIdentity();
+  EXPECT_EQ(read_all(), reference);
+}
+
+}  // namespace
+}  // namespace pineda::test

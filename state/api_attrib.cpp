@@ -1,0 +1,322 @@
+// glPushAttrib/glPopAttrib, glPushClientAttrib/glPopClientAttrib.
+#include <algorithm>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+
+namespace pineda::gl {
+namespace {
+
+// The unrendered capabilities of one attribute group (GL 1.1 Table 6.x).
+bool cap_in_group(GLenum cap, GLbitfield group) {
+  switch (group) {
+    case GL_POINT_BIT: return cap == GL_POINT_SMOOTH;
+    case GL_LINE_BIT: return cap == GL_LINE_SMOOTH || cap == GL_LINE_STIPPLE;
+    case GL_POLYGON_BIT: return cap == GL_POLYGON_SMOOTH || cap == GL_POLYGON_STIPPLE;
+    case GL_FOG_BIT: return cap == GL_FOG;
+    case GL_TRANSFORM_BIT: return cap >= GL_CLIP_PLANE0 && cap <= GL_CLIP_PLANE5;
+    case GL_EVAL_BIT: return (cap >= GL_MAP1_COLOR_4 && cap <= GL_MAP2_VERTEX_4) || cap == GL_AUTO_NORMAL;
+    case GL_TEXTURE_BIT: return cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q;
+    case GL_COLOR_BUFFER_BIT: return cap == GL_INDEX_LOGIC_OP;
+    case GL_ENABLE_BIT: return true;  // every capability is also an enable bit
+    default: return false;
+  }
+}
+
+void restore_caps(Context& ctx, const AttribFrame& f, GLbitfield group) {
+  for (auto& [cap, on] : ctx.unrendered_caps)
+    if (cap_in_group(cap, group)) on = false;
+  for (const auto& [cap, on] : f.unrendered_caps)
+    if (cap_in_group(cap, group)) ctx.unrendered_caps[cap] = on;
+}
+
+SavedTextureParams save_params(Context& ctx, GLuint name, GLenum target) {
+  const TextureObject& t = ctx.textures.get_or_create(name, target);
+  SavedTextureParams p{name, target, t.min_filter, t.mag_filter, t.wrap_s, t.wrap_t, {}, t.priority};
+  std::copy(t.border_color, t.border_color + 4, p.border_color);
+  return p;
+}
+
+void restore_params(Context& ctx, const SavedTextureParams& p) {
+  // A texture deleted since the push is not brought back.
+  if (p.name != 0 && !ctx.textures.find(p.name)) return;
+  TextureObject& t = ctx.textures.get_or_create(p.name, p.target);
+  t.min_filter = p.min_filter;
+  t.mag_filter = p.mag_filter;
+  t.wrap_s = p.wrap_s;
+  t.wrap_t = p.wrap_t;
+  std::copy(p.border_color, p.border_color + 4, t.border_color);
+  t.priority = p.priority;
+  t.changed();
+}
+
+AttribFrame save(Context& ctx, GLbitfield mask) {
+  AttribFrame f;
+  f.mask = mask;
+  std::copy(ctx.current_color, ctx.current_color + 4, f.current_color);
+  std::copy(ctx.current_normal, ctx.current_normal + 3, f.current_normal);
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u)
+    std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4,
+              f.current_texcoord[u].begin());
+  f.current_edge_flag = ctx.current_edge_flag;
+  f.draw_state = ctx.draw_state;
+  for (raster::TextureUnit& unit : f.draw_state.texture_units) unit.image.reset();  // rebuilt per draw
+  f.enable_cull = ctx.enable_cull;
+  f.normalize = ctx.normalize;
+  f.rescale_normal = ctx.rescale_normal;
+  f.cull_face_mode = ctx.cull_face_mode;
+  f.front_face = ctx.front_face;
+  f.polygon_mode_front = ctx.polygon_mode_front;
+  f.polygon_mode_back = ctx.polygon_mode_back;
+  f.shade_model = ctx.shade_model;
+  f.matrix_mode = ctx.matrix_mode;
+  f.lighting = ctx.lighting;
+  f.color_material_face = ctx.color_material_face;
+  f.color_material_mode = ctx.color_material_mode;
+  f.unrendered_caps = ctx.unrendered_caps;
+  f.depth_func = ctx.depth_func;
+  f.alpha_func = ctx.alpha_func;
+  f.stencil_func = ctx.stencil_func;
+  f.stencil_fail = ctx.stencil_fail;
+  f.stencil_zfail = ctx.stencil_zfail;
+  f.stencil_zpass = ctx.stencil_zpass;
+  f.blend_src_rgb = ctx.blend_src_rgb;
+  f.blend_dst_rgb = ctx.blend_dst_rgb;
+  f.blend_src_alpha = ctx.blend_src_alpha;
+  f.blend_dst_alpha = ctx.blend_dst_alpha;
+  f.blend_eq_rgb = ctx.blend_eq_rgb;
+  f.blend_eq_alpha = ctx.blend_eq_alpha;
+  f.logic_op = ctx.logic_op;
+  f.stencil_value_mask = ctx.stencil_value_mask;
+  f.stencil_write_mask = ctx.stencil_write_mask;
+  std::copy(ctx.clear_color, ctx.clear_color + 4, f.clear_color);
+  f.clear_depth = ctx.clear_depth;
+  f.clear_stencil = ctx.clear_stencil;
+  f.hints[0] = ctx.hint_perspective;
+  f.hints[1] = ctx.hint_point;
+  f.hints[2] = ctx.hint_line;
+  f.hints[3] = ctx.hint_polygon;
+  f.hints[4] = ctx.hint_fog;
+  f.viewport = ctx.viewport;
+  f.draw_buffer = ctx.draw_buffer;
+  f.read_buffer = ctx.read_buffer;
+  f.list_base = ctx.list_base;
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
+    f.units[u].enabled_1d = ctx.texture_units[u].enabled_1d;
+    f.units[u].enabled_2d = ctx.texture_units[u].enabled_2d;
+  }
+  if (mask & GL_TEXTURE_BIT) {
+    for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+      const TextureUnitState& unit = ctx.texture_units[u];
+      AttribFrame::Unit& s = f.units[u];
+      s.bound_1d = unit.bound_1d;
+      s.bound_2d = unit.bound_2d;
+      s.env_mode = unit.env_mode;
+      std::copy(unit.env_color, unit.env_color + 4, s.env_color);
+      s.params_1d = save_params(ctx, unit.bound_1d, GL_TEXTURE_1D);
+      s.params_2d = save_params(ctx, unit.bound_2d, GL_TEXTURE_2D);
+    }
+  }
+  return f;
+}
+
+void restore_enables(Context& ctx, const AttribFrame& f) {
+  raster::DrawState& s = ctx.draw_state;
+  const raster::DrawState& o = f.draw_state;
+  s.alpha_test = o.alpha_test;
+  s.blend = o.blend;
+  s.logic_op_enabled = o.logic_op_enabled;
+  s.depth_test = o.depth_test;
+  s.dither = o.dither;
+  s.scissor_test = o.scissor_test;
+  s.stencil_test = o.stencil_test;
+  s.offset_fill = o.offset_fill;
+  s.offset_line = o.offset_line;
+  s.offset_point = o.offset_point;
+  ctx.enable_cull = f.enable_cull;
+  ctx.lighting.enabled = f.lighting.enabled;
+  for (int i = 0; i < raster::kMaxLights; ++i) ctx.lighting.lights[i].enabled = f.lighting.lights[i].enabled;
+  ctx.lighting.color_material.enabled = f.lighting.color_material.enabled;
+  ctx.normalize = f.normalize;
+  ctx.rescale_normal = f.rescale_normal;
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+    ctx.texture_units[u].enabled_1d = f.units[u].enabled_1d;
+    ctx.texture_units[u].enabled_2d = f.units[u].enabled_2d;
+  }
+  restore_caps(ctx, f, GL_ENABLE_BIT);
+}
+
+void restore(Context& ctx, const AttribFrame& f) {
+  raster::DrawState& s = ctx.draw_state;
+  const raster::DrawState& o = f.draw_state;
+  const GLbitfield m = f.mask;
+  if (m & GL_CURRENT_BIT) {
+    std::copy(f.current_color, f.current_color + 4, ctx.current_color);
+    std::copy(f.current_normal, f.current_normal + 3, ctx.current_normal);
+    for (int u = 0; u < raster::kMaxTextureUnits; ++u)
+      std::copy(f.current_texcoord[u].begin(), f.current_texcoord[u].end(), ctx.texture_units[u].current_texcoord);
+    ctx.current_edge_flag = f.current_edge_flag;
+  }
+  if (m & GL_POINT_BIT) {
+    s.point_size = o.point_size;
+    restore_caps(ctx, f, GL_POINT_BIT);
+  }
+  if (m & GL_LINE_BIT) {
+    s.line_width = o.line_width;
+    restore_caps(ctx, f, GL_LINE_BIT);
+  }
+  if (m & GL_POLYGON_BIT) {
+    ctx.enable_cull = f.enable_cull;
+    ctx.cull_face_mode = f.cull_face_mode;
+    s.cull_front = o.cull_front;
+    s.cull_back = o.cull_back;
+    ctx.front_face = f.front_face;
+    s.front_ccw = o.front_ccw;
+    ctx.polygon_mode_front = f.polygon_mode_front;
+    ctx.polygon_mode_back = f.polygon_mode_back;
+    s.polygon_front = o.polygon_front;
+    s.polygon_back = o.polygon_back;
+    s.offset_factor = o.offset_factor;
+    s.offset_units = o.offset_units;
+    s.offset_fill = o.offset_fill;
+    s.offset_line = o.offset_line;
+    s.offset_point = o.offset_point;
+    restore_caps(ctx, f, GL_POLYGON_BIT);
+  }
+  if (m & GL_PIXEL_MODE_BIT) ctx.read_buffer = f.read_buffer;
+  if (m & GL_LIGHTING_BIT) {
+    ctx.lighting = f.lighting;
+    ctx.color_material_face = f.color_material_face;
+    ctx.color_material_mode = f.color_material_mode;
+    ctx.shade_model = f.shade_model;
+    s.flat_shading = o.flat_shading;
+  }
+  if (m & GL_FOG_BIT) restore_caps(ctx, f, GL_FOG_BIT);
+  if (m & GL_DEPTH_BUFFER_BIT) {
+    s.depth_test = o.depth_test;
+    ctx.depth_func = f.depth_func;
+    s.depth_func = o.depth_func;
+    ctx.clear_depth = f.clear_depth;
+    s.depth_write = o.depth_write;
+  }
+  if (m & GL_STENCIL_BUFFER_BIT) {
+    s.stencil_test = o.stencil_test;
+    ctx.stencil_func = f.stencil_func;
+    ctx.stencil_value_mask = f.stencil_value_mask;
+    ctx.stencil_write_mask = f.stencil_write_mask;
+    ctx.stencil_fail = f.stencil_fail;
+    ctx.stencil_zfail = f.stencil_zfail;
+    ctx.stencil_zpass = f.stencil_zpass;
+    s.stencil_front = o.stencil_front;
+    s.stencil_back = o.stencil_back;
+    ctx.clear_stencil = f.clear_stencil;
+  }
+  if (m & GL_VIEWPORT_BIT) ctx.viewport = f.viewport;
+  if (m & GL_TRANSFORM_BIT) {
+    ctx.matrix_mode = f.matrix_mode;
+    ctx.normalize = f.normalize;
+    ctx.rescale_normal = f.rescale_normal;
+    restore_caps(ctx, f, GL_TRANSFORM_BIT);
+  }
+  if (m & GL_ENABLE_BIT) restore_enables(ctx, f);
+  if (m & GL_COLOR_BUFFER_BIT) {
+    s.alpha_test = o.alpha_test;
+    ctx.alpha_func = f.alpha_func;
+    s.alpha_func = o.alpha_func;
+    s.alpha_ref = o.alpha_ref;
+    s.blend = o.blend;
+    ctx.blend_src_rgb = f.blend_src_rgb;
+    ctx.blend_dst_rgb = f.blend_dst_rgb;
+    ctx.blend_src_alpha = f.blend_src_alpha;
+    ctx.blend_dst_alpha = f.blend_dst_alpha;
+    ctx.blend_eq_rgb = f.blend_eq_rgb;
+    ctx.blend_eq_alpha = f.blend_eq_alpha;
+    s.blend_state = o.blend_state;
+    s.dither = o.dither;
+    s.logic_op_enabled = o.logic_op_enabled;
+    ctx.logic_op = f.logic_op;
+    s.logic_op = o.logic_op;
+    ctx.draw_buffer = f.draw_buffer;
+    s.color_write = o.color_write;
+    std::copy(f.clear_color, f.clear_color + 4, ctx.clear_color);
+    restore_caps(ctx, f, GL_COLOR_BUFFER_BIT);
+  }
+  if (m & GL_HINT_BIT) {
+    ctx.hint_perspective = f.hints[0];
+    ctx.hint_point = f.hints[1];
+    ctx.hint_line = f.hints[2];
+    ctx.hint_polygon = f.hints[3];
+    ctx.hint_fog = f.hints[4];
+  }
+  if (m & GL_EVAL_BIT) restore_caps(ctx, f, GL_EVAL_BIT);
+  if (m & GL_LIST_BIT) ctx.list_base = f.list_base;
+  if (m & GL_TEXTURE_BIT) {
+    for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+      TextureUnitState& unit = ctx.texture_units[u];
+      const AttribFrame::Unit& saved = f.units[u];
+      unit.enabled_1d = saved.enabled_1d;
+      unit.enabled_2d = saved.enabled_2d;
+      unit.env_mode = saved.env_mode;
+      std::copy(saved.env_color, saved.env_color + 4, unit.env_color);
+      // Bindings to textures deleted since the push fall back to the default texture.
+      unit.bound_1d = saved.bound_1d == 0 || ctx.textures.find(saved.bound_1d) ? saved.bound_1d : 0;
+      unit.bound_2d = saved.bound_2d == 0 || ctx.textures.find(saved.bound_2d) ? saved.bound_2d : 0;
+      restore_params(ctx, saved.params_1d);
+      restore_params(ctx, saved.params_2d);
+    }
+    restore_caps(ctx, f, GL_TEXTURE_BIT);
+  }
+  if (m & GL_SCISSOR_BIT) {
+    s.scissor_test = o.scissor_test;
+    s.scissor = o.scissor;
+  }
+}
+
+}  // namespace
+
+void PushAttrib(Context& ctx, GLbitfield mask) {
+  if (ctx.attrib_stack.size() >= kMaxAttribStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
+  ctx.attrib_stack.push_back(save(ctx, mask));
+}
+
+void PopAttrib(Context& ctx) {
+  if (ctx.attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
+  const AttribFrame frame = std::move(ctx.attrib_stack.back());
+  ctx.attrib_stack.pop_back();
+  restore(ctx, frame);
+}
+
+void PushClientAttrib(Context& ctx, GLbitfield mask) {
+  if (ctx.client_attrib_stack.size() >= kMaxClientAttribStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
+  ClientAttribFrame f;
+  f.mask = mask;
+  f.pack = ctx.pack;
+  f.unpack = ctx.unpack;
+  f.vertex_array = ctx.vertex_array;
+  f.color_array = ctx.color_array;
+  f.normal_array = ctx.normal_array;
+  for (int u = 0; u < raster::kMaxTextureUnits; ++u) f.texcoord_arrays[u] = ctx.texture_units[u].texcoord_array;
+  f.index_array = ctx.index_array;
+  f.edge_flag_array_enabled = ctx.edge_flag_array_enabled;
+  ctx.client_attrib_stack.push_back(f);
+}
+
+void PopClientAttrib(Context& ctx) {
+  if (ctx.client_attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
+  const ClientAttribFrame f = ctx.client_attrib_stack.back();
+  ctx.client_attrib_stack.pop_back();
+  if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {
+    ctx.pack = f.pack;
+    ctx.unpack = f.unpack;
+  }
+  if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
+    ctx.vertex_array = f.vertex_array;
+    ctx.color_array = f.color_array;
+    ctx.normal_array = f.normal_array;
+    for (int u = 0; u < raster::kMaxTextureUnits; ++u) ctx.texture_units[u].texcoord_array = f.texcoord_arrays[u];
+    ctx.index_array = f.index_array;
+    ctx.edge_flag_array_enabled = f.edge_flag_array_enabled;
+  }
+}
+
+}  // namespace pineda::gl

@@ -1,0 +1,46 @@
+// glGetTexImage: a texture level read back through the pack pixel store.
+#include <bit>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/limits.h"
+#include "state/pixel_format.h"
+
+namespace pineda::gl {
+namespace {
+
+// GL 1.1 spec 6.1.4: the texel as RGBA before packing; luminance and intensity land in R only.
+void texel_rgba(uint32_t texel, raster::TexBaseFormat base, float rgba[4]) {
+  for (int c = 0; c < 4; ++c) rgba[c] = float((texel >> (8 * c)) & 0xff) / 255.f;
+  using raster::TexBaseFormat;
+  switch (base) {
+    case TexBaseFormat::Luminance: case TexBaseFormat::LuminanceAlpha: rgba[1] = rgba[2] = 0.f; break;
+    case TexBaseFormat::Intensity: rgba[1] = rgba[2] = 0.f; rgba[3] = 1.f; break;
+    default: break;
+  }
+}
+
+}  // namespace
+
+void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
+  if (color_format_components(format) == 0 || pixel_type_size(type) == 0) return ctx.record_error(GL_INVALID_ENUM);
+  constexpr int kMaxLevel = std::bit_width(unsigned(kMaxTextureSize)) - 1;
+  if (level < 0 || level > kMaxLevel) return ctx.record_error(GL_INVALID_VALUE);
+  const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  TextureObject& tex =
+      ctx.textures.get_or_create(target == GL_TEXTURE_2D ? unit.bound_2d : unit.bound_1d, target);
+  if (size_t(level) >= tex.levels.size() || tex.levels[level].width == 0 || !pixels) return;  // nothing defined
+  // The border texels of a bordered level are not kept: only the inner image is written.
+  const TextureLevelData& l = tex.levels[level];
+  const ImageLayout layout = image_layout(ctx.pack, l.width, format, type);
+  auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
+  for (int y = 0; y < l.height; ++y)
+    for (int x = 0; x < l.width; ++x) {
+      float rgba[4];
+      texel_rgba(l.texels[size_t(y) * l.width + x], l.base, rgba);
+      store_color(rgba, format, type, out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x));
+    }
+}
+
+}  // namespace pineda::gl

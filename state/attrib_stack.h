@@ -1,0 +1,63 @@
+// glPushAttrib/glPopAttrib and glPushClientAttrib/glPopClientAttrib: saved copies of the
+// state groups of GL 1.1 spec Table 6.x.
+#pragma once
+#include <GL/gl.h>
+
+#include <array>
+#include <map>
+#include <unordered_map>
+#include <vector>
+
+#include "raster/draw_state.h"
+#include "raster/vertex_transform.h"
+
+namespace pineda {
+
+constexpr size_t kMaxAttribStackDepth = 16;
+constexpr size_t kMaxClientAttribStackDepth = 16;
+
+struct SavedTextureParams {
+  GLuint name = 0;
+  GLenum target = 0;
+  GLenum min_filter = 0, mag_filter = 0, wrap_s = 0, wrap_t = 0;
+  float border_color[4] = {};
+  float priority = 1.f;
+};
+
+// Everything a glPushAttrib may save; glPopAttrib restores the groups of `mask` only.
+struct AttribFrame {
+  GLbitfield mask = 0;
+  // current
+  float current_color[4], current_normal[3];
+  std::array<std::array<float, 4>, raster::kMaxTextureUnits> current_texcoord;
+  bool current_edge_flag;
+  // rasterization, fragment, enables (kept whole; restored field by field)
+  raster::DrawState draw_state;
+  bool enable_cull, normalize, rescale_normal;
+  GLenum cull_face_mode, front_face, polygon_mode_front, polygon_mode_back, shade_model, matrix_mode;
+  raster::Lighting lighting;
+  GLenum color_material_face, color_material_mode;
+  std::unordered_map<GLenum, bool> unrendered_caps;
+  GLenum depth_func, alpha_func, stencil_func, stencil_fail, stencil_zfail, stencil_zpass;
+  GLenum blend_src_rgb, blend_dst_rgb, blend_src_alpha, blend_dst_alpha, blend_eq_rgb, blend_eq_alpha;
+  GLenum logic_op;
+  GLuint stencil_value_mask, stencil_write_mask;
+  float clear_color[4];
+  double clear_depth;
+  GLint clear_stencil;
+  GLenum hints[5];
+  raster::Viewport viewport;
+  GLenum draw_buffer, read_buffer;
+  GLuint list_base;
+  // texture
+  struct Unit {
+    bool enabled_1d, enabled_2d;
+    GLuint bound_1d, bound_2d;
+    GLenum env_mode;
+    float env_color[4];
+    SavedTextureParams params_1d, params_2d;
+  };
+  std::array<Unit, raster::kMaxTextureUnits> units;
+};
+
+}  // namespace pineda
