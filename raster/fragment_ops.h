@@ -1,6 +1,7 @@
 // The per-fragment operations on single values: comparisons, stencil ops, blending, logic ops.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "raster/draw_state.h"
@@ -39,7 +40,8 @@ inline uint8_t stencil_op(StencilOp op, uint8_t value, uint8_t ref) {
 // NaN-safe clamp to [0, 1] (NaN becomes 0).
 inline float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }
 
-inline uint8_t to_unorm8(float v) { return static_cast<uint8_t>(clamp01(v) * 255.f + 0.5f); }
+// Nearest, ties to even (as llvmpipe converts).
+inline uint8_t to_unorm8(float v) { return static_cast<uint8_t>(std::nearbyint(clamp01(v) * 255.f)); }
 
 inline float blend_factor(BlendFactor f, int channel, const float src[4], const float dst[4], const float constant[4]) {
   switch (f) {

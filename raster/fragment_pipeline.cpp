@@ -144,7 +144,10 @@ void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsign
     } else {
       QuadColor dst;
       for (int c = 0; c < 4; ++c) dst.c[c] = from_unorm8(old >> shift.at[c]);
-      const QuadColor out = blend_quad(d, col, dst);
+      // The source is converted to the buffer's precision first, as llvmpipe does for unorm8.
+      QuadColor src;
+      for (int c = 0; c < 4; ++c) src.c[c] = from_unorm8(to_unorm8(col.c[c]));
+      const QuadColor out = blend_quad(d, src, dst);
       for (int c = 0; c < 4; ++c) packed |= to_unorm8(out.c[c]) << shift.at[c];
     }
   } else {

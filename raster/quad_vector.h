@@ -2,7 +2,11 @@
 // x86-64). Lane i is pixel (x + (i & 1), y + (i >> 1)).
 #pragma once
 #include <cstdint>
+#include <cmath>
 #include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace pineda::raster {
 
@@ -19,9 +23,17 @@ inline F4 clamp01(F4 v) {
   return v > zero ? upper : zero;
 }
 
-// Round to nearest unorm8 (v * 255 + 0.5, truncated) in the low byte of each lane.
-// (Converted as signed: one instruction, and the values fit.)
-inline U4 to_unorm8(F4 v) { return reinterpret_cast<U4>(__builtin_convertvector(clamp01(v) * 255.f + 0.5f, I4)); }
+// Round to the nearest unorm8, ties to even (as llvmpipe's conversions do), in the low byte
+// of each lane.
+inline U4 to_unorm8(F4 v) {
+#if defined(__SSE2__)
+  return reinterpret_cast<U4>(_mm_cvtps_epi32(reinterpret_cast<__m128>(clamp01(v) * 255.f)));
+#else
+  const F4 s = clamp01(v) * 255.f;
+  return U4{static_cast<uint32_t>(std::nearbyint(s[0])), static_cast<uint32_t>(std::nearbyint(s[1])),
+            static_cast<uint32_t>(std::nearbyint(s[2])), static_cast<uint32_t>(std::nearbyint(s[3]))};
+#endif
+}
 
 inline F4 from_unorm8(U4 v) { return __builtin_convertvector(reinterpret_cast<I4>(v & 0xffu), F4) * (1.f / 255.f); }
 

@@ -42,12 +42,12 @@ DrawState base() { return state_for(kS, kS); }
 
 TEST(Fragment, ColourIsRoundedToNearest) {
   Target t;
-  const float c[4] = {0.5f, 1.f / 255.f * 0.49f, 0.998f, 0.2f};
+  const float c[4] = {0.5f, 1.f / 255.f * 0.49f, 0.998f, 0.3f};
   t.quad(base(), c);
-  EXPECT_EQ(t.px()[0], 128);  // 127.5 -> 128
+  EXPECT_EQ(t.px()[0], 128);  // 127.5: ties go to even
   EXPECT_EQ(t.px()[1], 0);
   EXPECT_EQ(t.px()[2], 254);  // 254.49
-  EXPECT_EQ(t.px()[3], 51);
+  EXPECT_EQ(t.px()[3], 76);   // 76.5: ties go to even
 }
 
 TEST(Fragment, Bgra8StoresBlueFirst) {
@@ -206,25 +206,26 @@ struct BlendCase {
 };
 
 TEST(Fragment, BlendFactorsAndEquations) {
-  // src = (0.6, 0.2, 0.4, 0.3), dst = (0.4, 0.8, 0.2, 0.5) as stored unorm8 (102, 204, 51, 128 /255),
-  // constant = (0.1, 0.2, 0.3, 0.4).
+  // src = (0.6, 0.2, 0.4, 0.3) is converted to unorm8 before blending (153, 51, 102, 76: ties
+  // go to even); dst = (0.4, 0.8, 0.2, 0.5) is stored as (102, 204, 51, 128); constant =
+  // (0.1, 0.2, 0.3, 0.4).
   const float src[4] = {0.6f, 0.2f, 0.4f, 0.3f};
   const float dst_in[4] = {0.4f, 0.8f, 0.2f, 0.5f};
-  const float d_r = 102 / 255.f, d_a = 128 / 255.f;
+  const float s_r = 153 / 255.f, s_a = 76 / 255.f, d_r = 102 / 255.f, d_a = 128 / 255.f;
   const BlendCase cases[] = {
-      {BlendFactor::One, BlendFactor::Zero, BlendEquation::Add, 0.6f},
+      {BlendFactor::One, BlendFactor::Zero, BlendEquation::Add, s_r},
       {BlendFactor::Zero, BlendFactor::One, BlendEquation::Add, d_r},
-      {BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha, BlendEquation::Add, 0.6f * 0.3f + d_r * 0.7f},
-      {BlendFactor::SrcColor, BlendFactor::OneMinusSrcColor, BlendEquation::Add, 0.6f * 0.6f + d_r * 0.4f},
-      {BlendFactor::DstColor, BlendFactor::OneMinusDstColor, BlendEquation::Add, 0.6f * d_r + d_r * (1 - d_r)},
-      {BlendFactor::DstAlpha, BlendFactor::OneMinusDstAlpha, BlendEquation::Add, 0.6f * d_a + d_r * (1 - d_a)},
-      {BlendFactor::ConstantColor, BlendFactor::OneMinusConstantColor, BlendEquation::Add, 0.6f * 0.1f + d_r * 0.9f},
-      {BlendFactor::ConstantAlpha, BlendFactor::OneMinusConstantAlpha, BlendEquation::Add, 0.6f * 0.4f + d_r * 0.6f},
-      {BlendFactor::SrcAlphaSaturate, BlendFactor::One, BlendEquation::Add, 0.6f * std::min(0.3f, 1 - d_a) + d_r},
-      {BlendFactor::One, BlendFactor::One, BlendEquation::Subtract, 0.6f - d_r},
+      {BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha, BlendEquation::Add, s_r * s_a + d_r * (1 - s_a)},
+      {BlendFactor::SrcColor, BlendFactor::OneMinusSrcColor, BlendEquation::Add, s_r * s_r + d_r * (1 - s_r)},
+      {BlendFactor::DstColor, BlendFactor::OneMinusDstColor, BlendEquation::Add, s_r * d_r + d_r * (1 - d_r)},
+      {BlendFactor::DstAlpha, BlendFactor::OneMinusDstAlpha, BlendEquation::Add, s_r * d_a + d_r * (1 - d_a)},
+      {BlendFactor::ConstantColor, BlendFactor::OneMinusConstantColor, BlendEquation::Add, s_r * 0.1f + d_r * 0.9f},
+      {BlendFactor::ConstantAlpha, BlendFactor::OneMinusConstantAlpha, BlendEquation::Add, s_r * 0.4f + d_r * 0.6f},
+      {BlendFactor::SrcAlphaSaturate, BlendFactor::One, BlendEquation::Add, s_r * std::min(s_a, 1 - d_a) + d_r},
+      {BlendFactor::One, BlendFactor::One, BlendEquation::Subtract, s_r - d_r},
       {BlendFactor::One, BlendFactor::One, BlendEquation::ReverseSubtract, 0.f},
       {BlendFactor::Zero, BlendFactor::Zero, BlendEquation::Min, d_r},
-      {BlendFactor::Zero, BlendFactor::Zero, BlendEquation::Max, 0.6f},
+      {BlendFactor::Zero, BlendFactor::Zero, BlendEquation::Max, s_r},
       {BlendFactor::One, BlendFactor::One, BlendEquation::Add, 1.f},
   };
   for (const BlendCase& c : cases) {
@@ -238,9 +239,9 @@ TEST(Fragment, BlendFactorsAndEquations) {
     const float k[4] = {0.1f, 0.2f, 0.3f, 0.4f};
     for (int i = 0; i < 4; ++i) s.blend_state.color[i] = k[i];
     t.quad(s, src);
-    EXPECT_EQ(t.px()[0], static_cast<int>(c.expect_r * 255 + 0.5f)) << static_cast<int>(c.src) << " "
-                                                                        << static_cast<int>(c.dst);
-    EXPECT_EQ(t.px()[3], 77);  // alpha: One, Zero, Add -> 0.3
+    EXPECT_EQ(t.px()[0], static_cast<int>(std::nearbyint(c.expect_r * 255))) << static_cast<int>(c.src) << " "
+                                                                                << static_cast<int>(c.dst);
+    EXPECT_EQ(t.px()[3], 76);  // alpha: One, Zero, Add -> 0.3
   }
 }
 
