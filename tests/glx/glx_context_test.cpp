@@ -1,0 +1,204 @@
+// Contexts: glXCreateContextAttribsARB's versions and profiles, queries, glXCopyContext,
+// and make-current errors (bad context, context current in another thread, bad drawables).
+#include "glx_fixture.h"
+
+#include <thread>
+
+namespace pineda_test {
+namespace {
+
+using GlxContextTest = GlxTest;
+
+GLXContext create_attribs(Display* dpy, GLXFBConfig config, std::vector<int> attribs) {
+  attribs.push_back(None);
+  return glXCreateContextAttribsARB(dpy, config, nullptr, True, attribs.data());
+}
+
+TEST_F(GlxContextTest, CreateContextAttribsVersions) {
+  GLXFBConfig config = rgba8(true, true);
+  for (auto [major, minor] : {std::pair{1, 0}, {1, 1}}) {
+    GLXContext ctx = create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major,
+                                                  GLX_CONTEXT_MINOR_VERSION_ARB, minor});
+    EXPECT_NE(ctx, nullptr) << major << "." << minor;
+    if (ctx) glXDestroyContext(dpy, ctx);
+  }
+  GLXContext plain = create_attribs(dpy, config, {});
+  ASSERT_NE(plain, nullptr);
+  glXDestroyContext(dpy, plain);
+  EXPECT_TRUE(take_errors().empty());
+
+  // Versions above the implemented one (and ones GL never had) are BadMatch.
+  for (auto [major, minor] : {std::pair{2, 0}, {3, 3}, {1, 6}, {4, 7}}) {
+    EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major,
+                                           GLX_CONTEXT_MINOR_VERSION_ARB, minor}),
+              nullptr);
+    auto errors = take_errors();
+    ASSERT_EQ(errors.size(), 1u) << major << "." << minor;
+    EXPECT_EQ(errors[0].error_code, BadMatch);
+  }
+  EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_PROFILE_MASK_ARB, 0x10}), nullptr);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadProfileARB);
+  EXPECT_EQ(create_attribs(dpy, config, {0x7777, 1}), nullptr);
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadValue);
+  EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB}),
+            nullptr);
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadMatch);
+  GLXContext debug = create_attribs(dpy, config, {GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_DEBUG_BIT_ARB,
+                                                  GLX_CONTEXT_PROFILE_MASK_ARB,
+                                                  GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB});
+  EXPECT_NE(debug, nullptr);
+  if (debug) glXDestroyContext(dpy, debug);
+  EXPECT_EQ(glXCreateContextAttribsARB(dpy, nullptr, nullptr, True, nullptr), nullptr);
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadFBConfig);
+}
+
+TEST_F(GlxContextTest, QueryContext) {
+  GLXFBConfig config = rgba8(true, true);
+  GLXContext ctx = context(config);
+  int id = 0, value = 0;
+  glXGetFBConfigAttrib(dpy, config, GLX_FBCONFIG_ID, &id);
+  EXPECT_EQ(glXQueryContext(dpy, ctx, GLX_FBCONFIG_ID, &value), Success);
+  EXPECT_EQ(value, id);
+  EXPECT_EQ(glXQueryContext(dpy, ctx, GLX_RENDER_TYPE, &value), Success);
+  EXPECT_EQ(value, GLX_RGBA_TYPE);
+  EXPECT_EQ(glXQueryContext(dpy, ctx, GLX_SCREEN, &value), Success);
+  EXPECT_EQ(value, screen);
+  EXPECT_EQ(glXQueryContext(dpy, ctx, 0x7777, &value), GLX_BAD_ATTRIBUTE);
+  EXPECT_TRUE(take_errors().empty());
+}
+
+TEST_F(GlxContextTest, CopyContext) {
+  GLXFBConfig config = rgba8(true, false);
+  GLXContext a = context(config), b = context(config);
+  Window w = window(config, 8, 8);
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, a));
+  glClearColor(0.5f, 0.25f, 1, 1);
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  glXCopyContext(dpy, a, b, GL_COLOR_BUFFER_BIT);
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, b));
+  GLfloat clear[4] = {};
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+  EXPECT_EQ(clear[0], 0.5f);
+  EXPECT_EQ(clear[1], 0.25f);
+  EXPECT_TRUE(take_errors().empty());
+  // The destination may not be current.
+  glXCopyContext(dpy, a, b, GL_COLOR_BUFFER_BIT);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadAccess);
+}
+
+TEST_F(GlxContextTest, MakeCurrentErrors) {
+  GLXFBConfig config = rgba8(true, true);
+  Window w = window(config, 8, 8);
+  GLXContext ctx = context(config);
+
+  int bogus = 0;
+  EXPECT_FALSE(glXMakeCurrent(dpy, w, reinterpret_cast<GLXContext>(&bogus)));
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadContext);
+
+  // A drawable without a context.
+  EXPECT_FALSE(glXMakeCurrent(dpy, w, nullptr));
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadMatch);
+
+  // Not a drawable at all.
+  EXPECT_FALSE(glXMakeCurrent(dpy, 0x7ffffff, ctx));
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadDrawable);
+
+  // A destroyed GLX window.
+  GLXWindow gw = glXCreateWindow(dpy, config, w, nullptr);
+  glXDestroyWindow(dpy, gw);
+  EXPECT_FALSE(glXMakeContextCurrent(dpy, gw, gw, ctx));
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadDrawable);
+  glXDestroyWindow(dpy, gw);
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadWindow);
+
+  // A config with other buffers than the drawable's.
+  GLXContext other = context(rgba8(true, false));
+  GLXWindow gw2 = glXCreateWindow(dpy, config, w, nullptr);
+  EXPECT_FALSE(glXMakeContextCurrent(dpy, gw2, gw2, other));
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadMatch);
+  // One GLXWindow per window.
+  EXPECT_EQ(glXCreateWindow(dpy, config, w, nullptr), None);
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadAlloc);
+  glXDestroyWindow(dpy, gw2);
+
+  glXDestroyContext(dpy, reinterpret_cast<GLXContext>(&bogus));
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadContext);
+}
+
+TEST_F(GlxContextTest, ContextCurrentInAnotherThreadIsBadAccess) {
+  GLXFBConfig config = rgba8(true, true);
+  Window w = window(config, 8, 8);
+  GLXContext ctx = context(config);
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+  Bool other_thread = True;
+  std::thread([&] { other_thread = glXMakeCurrent(dpy, w, ctx); }).join();
+  EXPECT_FALSE(other_thread);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadAccess);
+
+  // Released here, it can be bound there; a thread that ends lets go of its context.
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  std::thread([&] {
+    other_thread = glXMakeCurrent(dpy, w, ctx);
+    glClearColor(0, 0, 1, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glXSwapBuffers(dpy, w);
+  }).join();
+  EXPECT_TRUE(other_thread);
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+  EXPECT_EQ(gl_pixel(1, 1), 0x0000ffu);
+  EXPECT_TRUE(take_errors().empty());
+}
+
+TEST_F(GlxContextTest, DestroyedCurrentContextLivesUntilReleased) {
+  GLXFBConfig config = rgba8(true, true);
+  Window w = window(config, 8, 8);
+  GLXContext ctx = glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+  glXDestroyContext(dpy, ctx);
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_EQ(gl_pixel(0, 0), 0xff0000u);
+  EXPECT_EQ(glXGetCurrentContext(), ctx);
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  EXPECT_TRUE(take_errors().empty());
+}
+
+TEST_F(GlxContextTest, ShareListsAreNotImplemented) {
+  GLXFBConfig config = rgba8(true, true);
+  GLXContext a = context(config);
+  EXPECT_EQ(glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, a, True), nullptr);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadMatch);
+}
+
+}  // namespace
+}  // namespace pineda_test
