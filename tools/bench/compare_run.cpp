@@ -1,5 +1,6 @@
 #include "compare_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -128,6 +129,16 @@ void printError(const std::optional<tools::ImageDifference>& difference) {
   std::printf(" %8d %9.4f %8s", difference->maxDiff, 100.0 * difference->differShare, psnr);
 }
 
+// Both drivers rasterize the same geometry, so their fragment counts should agree closely;
+// a gap points at coverage (fill rule, clipping) rather than at shading.
+void noteFragmentCounts(const SceneResult& pineda, const SceneResult& llvmpipe) {
+  if (pineda.fragments < 0 || llvmpipe.fragments < 0) return;
+  const double gap = std::abs(double(pineda.fragments - llvmpipe.fragments));
+  if (gap > 0.001 * double(std::max(pineda.fragments, llvmpipe.fragments)))
+    std::printf("  note: fragments per frame differ: Pineda %ld, llvmpipe %ld\n", pineda.fragments,
+                llvmpipe.fragments);
+}
+
 void printHeader(const Options& options) {
   std::printf("size %dx%d; ms = median of %d frames after a warm-up frame 0 (frame = draw + glFinish); "
               "first = frame 0's ms\n",
@@ -193,6 +204,7 @@ int runComparison(const Options& options) {
       printError(imageError(options, pineda, reference, "diff-reference", *entry));
     }
     std::printf("\n");
+    if (pineda.result && llvmpipe.result) noteFragmentCounts(*pineda.result, *llvmpipe.result);
     std::fflush(stdout);
   }
   std::printf("Pineda:   %s (LD_LIBRARY_PATH=%s)\n", pinedaRenderer.empty() ? "?" : pinedaRenderer.c_str(),

@@ -1,5 +1,5 @@
 // Alpha-blended fill: full-screen smooth-shaded quads with translucent corner colours,
-// SRC_ALPHA / ONE_MINUS_SRC_ALPHA, no depth test.
+// SRC_ALPHA / ONE_MINUS_SRC_ALPHA, no depth test, alpha writes masked.
 #include <GL/gl.h>
 
 #include <cmath>
@@ -21,7 +21,9 @@ class Blend final : public BenchScene {
   }
 
   void draw(int frame) override {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // alpha stays 1, so the PNG shows the colours
     glBegin(GL_QUADS);
     for (int i = 0; i < kLayers; ++i) {
       const float phase = 0.4f * float(i) + 0.05f * float(frame);

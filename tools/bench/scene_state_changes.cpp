@@ -59,7 +59,9 @@ class StateChanges final : public BenchScene {
   ~StateChanges() override { glDeleteTextures(kTextures, textures_); }
 
   void draw(int frame) override {
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_FALSE);  // alpha stays 1, so the PNG shows the colours
     static constexpr GLenum kDepthFuncs[3] = {GL_LESS, GL_LEQUAL, GL_ALWAYS};
     for (int k = 0; k < quadCount(); ++k) {
       const int hue = (k * 37 + frame * 5) % 256;
