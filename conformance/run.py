@@ -59,9 +59,9 @@ def group_regex(groups):
     return ["^" + re.escape(g) + "@" for g in groups]
 
 
-def load_results(results_dir):
+def load_results(results_dir, final=True):
     path = os.path.join(results_dir, "results.json.bz2")
-    if os.path.exists(path):
+    if final and os.path.exists(path):
         with bz2.open(path, "rt") as f:
             return json.load(f)["tests"]
     tests = {}  # an interrupted run: piglit keeps one file per finished test
@@ -96,7 +96,7 @@ def run_piglit(driver, platform, groups, args, lib_dir):
     last_count, last_print = -1, 0.0
     while proc.poll() is None:
         time.sleep(2)
-        done = load_results(results_dir)
+        done = load_results(results_dir, final=False)
         passes = sum(1 for t in done.values() if t["result"] == "pass")
         elapsed = time.time() - start
         eta = f", about {elapsed / len(done) * (total - len(done)):.0f}s left" if total and done else ""
@@ -123,7 +123,7 @@ def whole_test_counts(tests, groups):
 
 
 def read_list(name):
-    """Lines 'test name,result' or 'test name # reason'; '#' starts a comment line."""
+    """Lines 'test name,result' (fails) or 'regex # reason' (skips, flakes); '#' starts a comment line."""
     path = os.path.join(EXPECTATIONS, name)
     entries = {}
     if not os.path.exists(path):
@@ -143,14 +143,17 @@ def read_list(name):
 
 def check_expectations(tests, platform):
     fails = read_list(f"{platform}-fails.txt")
-    skips = read_list(f"{platform}-skips.txt")
-    flakes = read_list(f"{platform}-flakes.txt")
+    skips = [re.compile(p) for p in read_list(f"{platform}-skips.txt")]    # regexes, as in Mesa's CI
+    flakes = [re.compile(p) for p in read_list(f"{platform}-flakes.txt")]
     regressions, unexpected_passes, changed = [], [], []
     for name, t in sorted(tests.items()):
         result = t["result"]
-        if name in flakes or name in skips and result == "skip":
+        if any(f.match(name) for f in flakes):
             continue
-        expected = fails.get(name, "skip" if name in skips else "pass")
+        expected_skip = any(s.match(name) for s in skips)
+        if expected_skip and result == "skip":
+            continue
+        expected = fails.get(name, "skip" if expected_skip else "pass")
         if result == expected:
             continue
         if result == "pass":
