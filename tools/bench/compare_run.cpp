@@ -150,14 +150,14 @@ void printHeader(const Options& options) {
                 "max/differ%%/PSNR: Pineda's frame 0 against llvmpipe's\n");
   if (options.reference)
     std::printf("ref: Pineda with PINEDA_REFERENCE=1; ref max/differ%%/PSNR: Pineda against it\n");
+  if (options.threads > 0)
+    std::printf("threads: PINEDA_THREADS=%d, LP_NUM_THREADS=%d\n", options.threads, options.threads);
   std::printf("%-14s %9s %9s", "scene", "Pineda ms", "first");
   if (options.compareLlvmpipe) std::printf(" %11s %9s %7s", "llvmpipe ms", "first", "ratio");
   std::printf(" %8s %8s", "Mtri/s", "Mpix/s");
   if (options.compareLlvmpipe) std::printf(" %8s %9s %8s", "max diff", "differ %", "PSNR dB");
   if (options.reference) std::printf(" %9s %8s %9s %8s", "ref ms", "ref max", "ref dif %", "ref PSNR");
   std::printf("\n");
-  if (options.threads > 0)
-    std::printf("(PINEDA_THREADS=%d, LP_NUM_THREADS=%d)\n", options.threads, options.threads);
 }
 
 }  // namespace
