@@ -22,8 +22,13 @@ int clamp_to_int(int64_t v) { return static_cast<int>(std::clamp<int64_t>(v, INT
 
 int64_t snap(double window) {
   // Beyond the guard band only by clipping's rounding; the clamp keeps llround defined.
+  if (std::isnan(window)) return 0;
   return std::llround(std::clamp(window, -4.0 * kGuardBand, 4.0 * kGuardBand) * kSubpixelOne);
 }
+
+// Clipping keeps w >= 1e-30, but cancellation in an intersection can still produce w = 0;
+// such a vertex has no window position and drops its primitive.
+bool has_window_position(const WinVert& v) { return std::isfinite(v.inv_w) && std::isfinite(v.fx) && std::isfinite(v.fy); }
 
 }  // namespace
 
@@ -72,8 +77,8 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   const DrawRecord& d = scene_.current_draw();
   WinVert w;
   w.inv_w = 1.0 / v.pos[3];
-  w.fx = std::clamp((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
-  w.fy = std::clamp((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
+  w.fx = std::clamp<double>((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
+  w.fy = std::clamp<double>((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
   w.x = snap(w.fx);
   w.y = snap(w.fy);
   double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
@@ -121,6 +126,7 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   // as GL specifies: a wide line never reaches into the viewport from a clipped-off part.
   if (!clip_line(a, b, ClipVolume{})) return;
   const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
+  if (!has_window_position(wa) || !has_window_position(wb)) return;
   PrimSetup prim;
   if (setup_line(wa, wb, line_width_, params(style), prim)) emit(prim);
 }
@@ -130,6 +136,7 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
   // A point is drawn when its centre is inside the clip volume.
   if (!(w > 0.0 && -w <= x && x <= w && -w <= y && y <= w && -w <= z && z <= w)) return;
   const WinVert wv = to_window(v, style.back_facing);
+  if (!has_window_position(wv)) return;
   PrimSetup prim;
   if (setup_point(wv, point_size_, params(style), prim)) emit(prim);
 }
@@ -167,7 +174,10 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
 
   // Facing from the snapped window positions of the visible part.
   window_.clear();
-  for (const ClipVert& c : clipped_) window_.push_back(to_window(c, false));
+  for (const ClipVert& c : clipped_) {
+    window_.push_back(to_window(c, false));
+    if (!has_window_position(window_.back())) return;
+  }
   int64_t area = 0;
   for (size_t i = 1; i + 1 < window_.size(); ++i) area += signed_area2(window_[0], window_[i], window_[i + 1]);
   const DrawState& s = scene_.current_draw().state;
