@@ -59,7 +59,9 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
   if (profile_given && (r->profile == 0 || (r->profile & ~known) || r->profile == known))
     return glx_failure(GlxError::GlxProfileARB);
   if ((r->flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) && r->major < 3) return x_failure(BadMatch);
-  if (!driver::gl_version_supported(r->major, r->minor)) return x_failure(BadMatch);
+  // GLX_ARB_create_context: a defined version the config cannot provide is GLXBadFBConfig
+  // (BadMatch is for versions GL does not define).
+  if (!driver::gl_version_supported(r->major, r->minor)) return glx_failure(GlxError::GlxFBConfig);
   return std::nullopt;
 }
 

@@ -31,20 +31,32 @@ struct Failure {
   XID resource = 0;
 };
 
-// The GLX drawable named `id`; a plain X window becomes one on first use. Caller holds the
+// The GLX drawable named `id`; a plain X window becomes one on first use. A window's
+// existence is checked: destroying an X window destroys its GLX drawable. Caller holds the
 // registry lock.
 std::shared_ptr<DrawableObject> resolve(DisplayState& d, XID id, const ContextObject& context,
                                         std::optional<Failure>* failure) {
-  if (auto found = d.find_drawable(id)) return found;
-  XWindowAttributes attributes;
-  if (d.retired.contains(id) || !x_window_attributes(d.dpy, id, &attributes)) {
+  auto bad_drawable = [&] {
     *failure = Failure{static_cast<unsigned char>(GlxError::GlxDrawable), true, id};
     return nullptr;
+  };
+  std::shared_ptr<DrawableObject> found = Registry::instance().find_drawable(d.dpy, id);
+  if (found && found->kind != DrawableKind::Window) return found;
+  if (!found && d.retired.contains(id)) return bad_drawable();
+  XWindowAttributes attributes;
+  if (!x_window_attributes(d.dpy, found ? found->x_drawable : id, &attributes)) {
+    if (found && d.drawables.erase(id) && !found->implicit) d.retired.insert(id);
+    return bad_drawable();
   }
   if (attributes.depth != context.config->visual_depth ||
       XScreenNumberOfScreen(attributes.screen) != context.config->screen) {
     *failure = Failure{BadMatch, false, id};
     return nullptr;
+  }
+  if (found) {
+    // The id of a destroyed window may have been given to a new one.
+    if (found->implicit) found->visual = attributes.visual;
+    return found;
   }
   auto object = std::make_shared<DrawableObject>();
   object->dpy = d.dpy;
@@ -54,6 +66,7 @@ std::shared_ptr<DrawableObject> resolve(DisplayState& d, XID id, const ContextOb
   object->config = context.config;
   object->visual = attributes.visual;
   object->x_depth = attributes.depth;
+  object->gc = XCreateGC(d.dpy, id, 0, nullptr);
   d.drawables.emplace(id, object);
   return object;
 }
@@ -89,7 +102,7 @@ void bind_drawables(const std::shared_ptr<DrawableObject>& draw,
 // Ends the thread's binding. `flush`: GL's implicit glFlush, which shows front drawing.
 void release(ThreadState& t, bool flush) {
   if (!t.context) return;
-  if (flush) flush_front(t);
+  if (flush) flush_front(t, true);
   std::shared_ptr<ContextObject> context = std::move(t.context);
   std::shared_ptr<DrawableObject> draw = std::move(t.draw), read = std::move(t.read);
   t.dpy = nullptr;
@@ -113,12 +126,12 @@ ThreadState& thread_state() {
 
 ThreadState::~ThreadState() { release(*this, false); }
 
-void ThreadState::flushed() { flush_front(*this); }
+void ThreadState::flushed() { flush_front(*this, false); }
 
-void flush_front(ThreadState& t) {
+void flush_front(ThreadState& t, bool checked) {
   if (!t.context) return;
   t.context->gl->finish();
-  if (t.draw && draws_to_front(*t.context, *t.draw)) present(*t.draw);
+  if (t.draw && draws_to_front(*t.context, *t.draw)) present(*t.draw, checked);
 }
 
 Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx,
@@ -141,6 +154,8 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
     auto lock = registry.lock();
     DisplayState* d = registry.get(dpy);
     context = d ? d->find_context(ctx) : nullptr;
+    // A destroyed context lives on while it is current, and can be made current again.
+    if (!context && ctx == t.context_handle && dpy == t.dpy) context = t.context;
     if (!context) {
       failure = Failure{static_cast<unsigned char>(GlxError::GlxContext), true};
     } else if (draw == None || read == None) {
@@ -172,7 +187,7 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   std::shared_ptr<ContextObject> old_context = t.context;
   std::shared_ptr<DrawableObject> old_draw = t.draw, old_read = t.read;
   if (old_context) {
-    flush_front(t);
+    flush_front(t, true);
     if (old_context != context) old_context->gl->release_current();
   }
   try {

@@ -22,7 +22,9 @@ ThreadState& thread_state();
 
 // Completes the current context's rendering and shows front-buffer drawing: the buffer of a
 // single-buffered window or pixmap, or a double-buffered window drawn with GL_FRONT.
-void flush_front(ThreadState& t);
+// `checked`: for the implicit flush of glXMakeCurrent, when the application may already have
+// destroyed the window (X errors are caught, at the cost of a round trip).
+void flush_front(ThreadState& t, bool checked);
 
 // glXMakeContextCurrent (and glXMakeCurrent with draw == read). Reports errors through
 // the X error path with `minor_opcode`.

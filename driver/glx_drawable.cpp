@@ -96,14 +96,22 @@ void unwrap(XImage* image) {
 
 }  // namespace
 
-void present(DrawableObject& d) {
+void present(DrawableObject& d, bool checked) {
   if (!d.dpy || d.kind == DrawableKind::Pbuffer || d.width == 0 || d.height == 0) return;
-  if (!d.gc) d.gc = XCreateGC(d.dpy, d.x_drawable, 0, nullptr);
-  XImage* image = wrap_color(d);
-  if (!image) return;
-  XPutImage(d.dpy, d.x_drawable, d.gc, image, 0, 0, 0, 0, d.width, d.height);
-  unwrap(image);
-  XFlush(d.dpy);
+  if (!d.gc) return;
+  auto put = [&] {
+    XImage* image = wrap_color(d);
+    if (!image) return 0;
+    XPutImage(d.dpy, d.x_drawable, d.gc, image, 0, 0, 0, 0, d.width, d.height);
+    unwrap(image);
+    return 1;
+  };
+  if (checked) {
+    trapped(d.dpy, put);
+  } else {
+    put();
+    XFlush(d.dpy);
+  }
 }
 
 void load_from_x(DrawableObject& d) {
@@ -114,6 +122,9 @@ void load_from_x(DrawableObject& d) {
     for (int y = 0; y < d.height; ++y)
       std::memcpy(d.color.data() + static_cast<size_t>(y) * d.width * 4,
                   image->data + static_cast<ptrdiff_t>(y) * image->bytes_per_line, d.width * 4);
+    // X leaves the byte above a 24-bit pixel undefined; GL's alpha starts opaque.
+    if (d.x_depth == 24)
+      for (size_t i = 3; i < d.color.size(); i += 4) d.color[i] = 0xff;
   }
   XDestroyImage(image);
 }

@@ -21,7 +21,8 @@ void allocate_buffers(DrawableObject& d, int width, int height);
 bool x_drawable_size(Display* dpy, ::Drawable x, int* width, int* height, int* x_depth = nullptr);
 
 // Copies the colour buffer to the X window or pixmap (pbuffers have nothing to copy to).
-void present(DrawableObject& d);
+// `checked`: X errors (a window destroyed meanwhile) are caught instead of reported.
+void present(DrawableObject& d, bool checked = false);
 
 // Pixmaps start with the X pixmap's contents.
 void load_from_x(DrawableObject& d);

@@ -49,7 +49,7 @@ XID with_display(Display* dpy, GlxRequest minor_opcode, Body body) {
 }
 
 XID add(DisplayState& d, std::shared_ptr<DrawableObject> object) {
-  object->id = XAllocID(d.dpy);
+  object->id = allocate_xid(d.dpy);
   XID id = object->id;
   d.drawables.emplace(id, std::move(object));
   return id;
@@ -73,6 +73,7 @@ XID create_pixmap(DisplayState& d, const Config* config, Pixmap pixmap,
   object->config = config;
   object->visual = find_visual(d.dpy, config->screen, config->visual_id);
   object->x_depth = depth;
+  object->gc = XCreateGC(d.dpy, pixmap, 0, nullptr);
   try {
     allocate_buffers(*object, width, height);
   } catch (const std::bad_alloc&) {
@@ -97,6 +98,12 @@ void destroy(Display* dpy, XID id, DrawableKind kind, GlxError bad, GlxRequest m
     doomed = std::move(it->second);
     d.drawables.erase(it);
     d.retired.insert(id);
+    // Destroying an X window destroyed its GLX window already.
+    XWindowAttributes attributes;
+    if (kind == DrawableKind::Window && !x_window_attributes(dpy, doomed->x_drawable, &attributes)) {
+      *f = glx_failure(bad, id);
+      return None;
+    }
     return id;
   });
 }
@@ -136,6 +143,7 @@ PINEDA_GLX_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig fbconfig, 
     object->config = config;
     object->visual = attributes.visual;
     object->x_depth = attributes.depth;
+    object->gc = XCreateGC(dpy, win, 0, nullptr);
     return add(d, std::move(object));
   });
 }
@@ -230,7 +238,7 @@ PINEDA_GLX_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attr
   std::shared_ptr<DrawableObject> object;
   {
     auto lock = Registry::instance().lock();
-    if (DisplayState* d = Registry::instance().get(dpy)) object = d->find_drawable(draw);
+    object = Registry::instance().find_drawable(dpy, draw);
   }
   if (!object || !value) {
     send_glx_error(dpy, GlxError::GlxDrawable, GlxRequest::GetDrawableAttributes, draw);
@@ -255,7 +263,7 @@ PINEDA_GLX_EXPORT void glXSelectEvent(Display* dpy, GLXDrawable draw, unsigned l
   std::shared_ptr<DrawableObject> object;
   {
     auto lock = Registry::instance().lock();
-    if (DisplayState* d = Registry::instance().get(dpy)) object = d->find_drawable(draw);
+    object = Registry::instance().find_drawable(dpy, draw);
     // Pineda's buffers are never clobbered: GLX_PBUFFER_CLOBBER_MASK is kept, never sent.
     if (object) object->event_mask = mask;
   }
@@ -266,7 +274,7 @@ PINEDA_GLX_EXPORT void glXGetSelectedEvent(Display* dpy, GLXDrawable draw, unsig
   std::shared_ptr<DrawableObject> object;
   {
     auto lock = Registry::instance().lock();
-    if (DisplayState* d = Registry::instance().get(dpy)) object = d->find_drawable(draw);
+    object = Registry::instance().find_drawable(dpy, draw);
     if (object && mask) *mask = object->event_mask;
   }
   if (!object) send_glx_error(dpy, GlxError::GlxDrawable, GlxRequest::GetDrawableAttributes, draw);

@@ -55,7 +55,7 @@ struct DrawableObject {
   const Config* config = nullptr;
   Visual* visual = nullptr;
   int x_depth = 24;
-  GC gc = nullptr;
+  GC gc = nullptr;  // made with the drawable, while it surely exists (GCs outlive windows)
   unsigned long event_mask = 0;
   bool preserved_contents = true, largest_pbuffer = false;
   int swap_interval = 1;

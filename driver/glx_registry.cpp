@@ -1,6 +1,8 @@
 #include "driver/glx_registry.h"
 
 
+#include <string>
+
 #include "driver/glx_config.h"
 
 // Last: Xlib's internal header (for XESetCloseDisplay) defines min and max macros.
@@ -38,6 +40,17 @@ DisplayState* Registry::get(Display* dpy) {
   return displays_.back().get();
 }
 
+std::shared_ptr<DrawableObject> Registry::find_drawable(Display* dpy, XID id) {
+  DisplayState* own = get(dpy);
+  if (!own) return nullptr;
+  if (auto found = own->find_drawable(id)) return found;
+  const std::string server = XDisplayString(dpy);
+  for (auto& d : displays_)
+    if (d.get() != own && server == XDisplayString(d->dpy))
+      if (auto found = d->find_drawable(id)) return found;
+  return nullptr;
+}
+
 void Registry::forget(Display* dpy) {
   for (auto it = displays_.begin(); it != displays_.end(); ++it) {
     if ((*it)->dpy != dpy) continue;
@@ -50,6 +63,14 @@ void Registry::forget(Display* dpy) {
     displays_.erase(it);
     return;
   }
+}
+
+XID allocate_xid(Display* dpy) {
+  // Xlib refills its next id while the display is locked, as its own requests do.
+  LockDisplay(dpy);
+  XID id = XAllocID(dpy);
+  UnlockDisplay(dpy);
+  return id;
 }
 
 }  // namespace pineda::glx

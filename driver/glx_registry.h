@@ -19,10 +19,16 @@ class Registry {
   DisplayState* get(Display* dpy);
   // Caller holds the lock.
   void forget(Display* dpy);
+  // Caller holds the lock. The GLX drawable `id` of `dpy`'s server: GLX drawables are
+  // server resources, usable through every connection to that server.
+  std::shared_ptr<DrawableObject> find_drawable(Display* dpy, XID id);
 
  private:
   std::mutex mutex_;
   std::vector<std::unique_ptr<DisplayState>> displays_;
 };
+
+// A new XID from the client's range, for a GLX drawable that exists only in this library.
+XID allocate_xid(Display* dpy);
 
 }  // namespace pineda::glx

@@ -14,8 +14,7 @@ namespace {
 
 std::shared_ptr<DrawableObject> find(Display* dpy, GLXDrawable id, int* bindings) {
   auto lock = Registry::instance().lock();
-  DisplayState* d = Registry::instance().get(dpy);
-  auto object = d ? d->find_drawable(id) : nullptr;
+  auto object = Registry::instance().find_drawable(dpy, id);
   if (object && bindings) *bindings = object->bindings;
   return object;
 }
@@ -54,7 +53,7 @@ PINEDA_GLX_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   if (mine) t.context->gl->finish();  // the implicit glFlush
   // Single-buffered drawables and pixmaps are unaffected.
   if (d->kind == DrawableKind::Window && d->config->double_buffered) present(*d);
-  else if (mine) flush_front(t);
+  else if (mine) flush_front(t, false);
   follow_resize(t, *d, bindings);
 }
 
@@ -88,7 +87,7 @@ PINEDA_GLX_EXPORT int glXGetSwapIntervalMESA(void) {
   return t.draw->swap_interval;
 }
 
-PINEDA_GLX_EXPORT void glXWaitGL(void) { flush_front(thread_state()); }
+PINEDA_GLX_EXPORT void glXWaitGL(void) { flush_front(thread_state(), false); }
 
 PINEDA_GLX_EXPORT void glXWaitX(void) {
   ThreadState& t = thread_state();

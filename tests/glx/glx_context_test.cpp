@@ -3,6 +3,7 @@
 #include "glx_fixture.h"
 
 #include <thread>
+#include <tuple>
 
 namespace pineda_test {
 namespace {
@@ -27,14 +28,16 @@ TEST_F(GlxContextTest, CreateContextAttribsVersions) {
   glXDestroyContext(dpy, plain);
   EXPECT_TRUE(take_errors().empty());
 
-  // Versions above the implemented one (and ones GL never had) are BadMatch.
-  for (auto [major, minor] : {std::pair{2, 0}, {3, 3}, {1, 6}, {4, 7}}) {
+  // Versions above the implemented one are GLXBadFBConfig; ones GL never had BadMatch.
+  for (auto [major, minor, error] : {std::tuple{2, 0, glx_error_base() + GLXBadFBConfig},
+                                     {3, 3, glx_error_base() + GLXBadFBConfig},
+                                     {1, 6, int{BadMatch}}, {4, 7, int{BadMatch}}}) {
     EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major,
                                            GLX_CONTEXT_MINOR_VERSION_ARB, minor}),
               nullptr);
     auto errors = take_errors();
     ASSERT_EQ(errors.size(), 1u) << major << "." << minor;
-    EXPECT_EQ(errors[0].error_code, BadMatch);
+    EXPECT_EQ(errors[0].error_code, error) << major << "." << minor;
   }
   EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_PROFILE_MASK_ARB, 0x10}), nullptr);
   auto errors = take_errors();
@@ -44,6 +47,7 @@ TEST_F(GlxContextTest, CreateContextAttribsVersions) {
   errors = take_errors();
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].error_code, BadValue);
+  // Forward-compatible contexts exist from GL 3.0.
   EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB}),
             nullptr);
   errors = take_errors();
@@ -187,7 +191,59 @@ TEST_F(GlxContextTest, DestroyedCurrentContextLivesUntilReleased) {
   glClear(GL_COLOR_BUFFER_BIT);
   EXPECT_EQ(gl_pixel(0, 0), 0xff0000u);
   EXPECT_EQ(glXGetCurrentContext(), ctx);
+  // Still current, it can be made current again.
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+  EXPECT_EQ(gl_pixel(0, 0), 0xff0000u);
   ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  // Released, it is gone.
+  EXPECT_FALSE(glXMakeCurrent(dpy, w, ctx));
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadContext);
+  EXPECT_TRUE(take_errors().empty());
+}
+
+TEST_F(GlxContextTest, DestroyingTheXWindowDestroysTheGlxWindow) {
+  GLXFBConfig config = rgba8(false, false);
+  Window w = window(config, 8, 8);
+  GLXWindow gw = glXCreateWindow(dpy, config, w, nullptr);
+  GLXContext ctx = context(config);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy, gw, gw, ctx));
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  XDestroyWindow(dpy, w);
+  windows.clear();
+  XSync(dpy, False);
+  // The implicit flush of a single-buffered window that is gone raises nothing.
+  ASSERT_TRUE(glXMakeContextCurrent(dpy, None, None, nullptr));
+  EXPECT_TRUE(take_errors().empty());
+  glXDestroyWindow(dpy, gw);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadWindow);
+}
+
+TEST_F(GlxContextTest, PbufferOfAnotherConnectionToTheSameServer) {
+  Display* other = XOpenDisplay(DisplayString(dpy));
+  ASSERT_NE(other, nullptr);
+  GLXFBConfig config = rgba8(true, true);
+  const int attribs[] = {GLX_PBUFFER_WIDTH, 16, GLX_PBUFFER_HEIGHT, 16, None};
+  GLXPbuffer pb = glXCreatePbuffer(dpy, config, attribs);
+  int n = 0, id = 0;
+  glXGetFBConfigAttrib(dpy, config, GLX_FBCONFIG_ID, &id);
+  const int by_id[] = {GLX_FBCONFIG_ID, id, None};
+  GLXFBConfig* other_configs = glXChooseFBConfig(other, DefaultScreen(other), by_id, &n);
+  ASSERT_EQ(n, 1);
+  GLXContext ctx = glXCreateNewContext(other, other_configs[0], GLX_RGBA_TYPE, nullptr, True);
+  XFree(other_configs);
+  ASSERT_TRUE(glXMakeContextCurrent(other, pb, pb, ctx));
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_EQ(gl_pixel(15, 15), 0x00ff00u);
+  ASSERT_TRUE(glXMakeContextCurrent(other, None, None, nullptr));
+  glXDestroyContext(other, ctx);
+  glXDestroyPbuffer(dpy, pb);
+  XCloseDisplay(other);
   EXPECT_TRUE(take_errors().empty());
 }
 

@@ -56,6 +56,9 @@ TEST_F(GlxOffscreenTest, Glx12PixmapStartsWithThePixmapContents) {
   XFree(vi);
   ASSERT_TRUE(glXMakeCurrent(dpy, gp, ctx));
   EXPECT_EQ(gl_pixel(8, 8), 0x00ff00u);
+  uint8_t rgba[4] = {};
+  glReadPixels(8, 8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  EXPECT_EQ(rgba[3], 255) << "a 24-bit pixmap's pixels are opaque";
   glClearColor(1, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   glFlush();
