@@ -66,15 +66,16 @@ bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
 int max_level() { return int(std::log2(kMaxTextureSize)); }
 
 // Copies a width x height client image into texels at (xoffset, yoffset) of `level`; the
-// source's border texels (when border == 1) are skipped.
+// source's border texels are skipped: `border_x` columns on each side, `border_y` rows
+// (a 1D texture has a border in width only).
 void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int xoffset, int yoffset, int width,
-                 int height, int border, GLenum format, GLenum type, const void* pixels) {
+                 int height, int border_x, int border_y, GLenum format, GLenum type, const void* pixels) {
   if (!pixels) return;
-  const int full_width = width + 2 * border;
+  const int full_width = width + 2 * border_x;
   const ImageLayout layout = image_layout(ctx.unpack, full_width, format, type);
   const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
   for (int y = 0; y < height; ++y) {
-    const uint8_t* row = src + layout.row_stride * size_t(y + border) + layout.pixel_bytes * border;
+    const uint8_t* row = src + layout.row_stride * size_t(y + border_y) + layout.pixel_bytes * border_x;
     uint32_t* dst = level.texels.data() + size_t(yoffset + y) * level.width + xoffset;
     for (int x = 0; x < width; ++x) {
       float rgba[4];
@@ -104,7 +105,8 @@ void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, 
   l.base = base;
   l.texels.assign(size_t(inner_w) * inner_h, 0u);
   if (level == 0) tex->base_format = base;
-  unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, format, type, pixels);
+  unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, target == GL_TEXTURE_1D ? 0 : border, format, type,
+              pixels);
   tex->changed();
 }
 
@@ -121,7 +123,7 @@ void tex_sub_image(Context& ctx, GLenum target, GLint level, GLint xoffset, GLin
     return ctx.record_error(GL_INVALID_VALUE);
   TexBaseFormat base;
   base_format_of(l.internal_format, base);
-  unpack_into(ctx, l, base, xoffset, yoffset, width, height, 0, format, type, pixels);
+  unpack_into(ctx, l, base, xoffset, yoffset, width, height, 0, 0, format, type, pixels);
   tex->changed();
 }
 

@@ -133,3 +133,34 @@ TEST_F(FlatRectTest, ColorMaskAppliesToDrawing) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// GL 1.1 Table 2.8: the provoking vertex of flat shading per primitive type.
+TEST_F(FlatRectTest, FlatShadingProvokingVertexPerPrimitive) {
+  glShadeModel(GL_FLAT);
+  const GLubyte colours[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 0}};
+  const int square[4][2] = {{0, 0}, {8, 0}, {8, 8}, {0, 8}};
+  struct Case {
+    GLenum mode;
+    int provoking;
+  };
+  for (const Case& c : {Case{GL_POLYGON, 0}, Case{GL_QUADS, 3}, Case{GL_QUAD_STRIP, 3}}) {
+    clear_to(0, 0, 0, 0);
+    glBegin(c.mode);
+    // Quad strips take their vertices in zig-zag order: 0, 3, 1, 2 of the square.
+    const int order_strip[4] = {0, 3, 1, 2}, order_plain[4] = {0, 1, 2, 3};
+    const int* order = c.mode == GL_QUAD_STRIP ? order_strip : order_plain;
+    for (int i = 0; i < 4; ++i) {
+      glColor3ubv(colours[i]);
+      glVertex2iv(square[order[i]]);
+    }
+    glEnd();
+    const GLubyte* e = colours[c.provoking];  // index in submission order
+    EXPECT_TRUE(near_rgba(pixel(4, 4), {e[0], e[1], e[2], 255})) << std::hex << c.mode;
+  }
+}
+
+}  // namespace
+}  // namespace pineda::test

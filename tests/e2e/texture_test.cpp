@@ -275,3 +275,24 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// A 1D texture with a border: the client image is width + 2 texels in one row.
+TEST_F(TextureTest, OneDimensionalTextureWithBorderSkipsTheBorderTexels) {
+  glDisable(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_1D, 4);
+  const uint8_t texels[6 * 3] = {9, 9, 9, 255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255, 9, 9, 9};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGB, 6, 1, GL_RGB, GL_UNSIGNED_BYTE, texels);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glEnable(GL_TEXTURE_1D);
+  textured_rect(0, 0, 8, 2, 0, 0, 1, 0);
+  const Rgba expected[4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 255, 255}};
+  for (int x = 0; x < 8; ++x) EXPECT_TRUE(near_rgba(pixel(x, 1), expected[x / 2])) << x;
+}
+
+}  // namespace
+}  // namespace pineda::test

@@ -103,6 +103,8 @@ TEST_F(InitialStateTest, PixelOperations) {
   EXPECT_EQ(glIsEnabled(GL_DITHER), GL_TRUE);
   EXPECT_EQ(glIsEnabled(GL_COLOR_LOGIC_OP), GL_FALSE);
   EXPECT_EQ(get_int(GL_LOGIC_OP_MODE), GL_COPY);
+  EXPECT_EQ(get_int(GL_BLEND_EQUATION), GL_FUNC_ADD);
+  EXPECT_EQ(get_floats(GL_BLEND_COLOR, 4), (Floats{0, 0, 0, 0}));
 }
 
 TEST_F(InitialStateTest, FramebufferControl) {
@@ -166,6 +168,14 @@ TEST_F(InitialStateTest, ImplementationLimits) {
   const Floats points = get_floats(GL_POINT_SIZE_RANGE, 2);
   EXPECT_LE(points[0], 1.f);
   EXPECT_GE(points[1], 1.f);
+  EXPECT_GE(get_int(GL_MAX_ATTRIB_STACK_DEPTH), 16);
+  EXPECT_GE(get_int(GL_MAX_CLIENT_ATTRIB_STACK_DEPTH), 16);
+  EXPECT_GE(get_int(GL_MAX_NAME_STACK_DEPTH), 64);
+  EXPECT_GE(get_int(GL_MAX_LIST_NESTING), 64);
+  EXPECT_GE(get_int(GL_MAX_EVAL_ORDER), 8);
+  EXPECT_GE(get_int(GL_MAX_PIXEL_MAP_TABLE), 32);
+  EXPECT_GT(get_float(GL_POINT_SIZE_GRANULARITY), 0.f);
+  EXPECT_GT(get_float(GL_LINE_WIDTH_GRANULARITY), 0.f);
   const Floats lines = get_floats(GL_LINE_WIDTH_RANGE, 2);
   EXPECT_LE(lines[0], 1.f);
   EXPECT_GE(lines[1], 1.f);
@@ -181,6 +191,9 @@ TEST_F(InitialStateTest, FramebufferBits) {
   EXPECT_EQ(get_bool(GL_RGBA_MODE), GL_TRUE);
   EXPECT_EQ(get_bool(GL_INDEX_MODE), GL_FALSE);
   EXPECT_EQ(get_bool(GL_STEREO), GL_FALSE);
+  for (GLenum p : {GL_ACCUM_RED_BITS, GL_ACCUM_GREEN_BITS, GL_ACCUM_BLUE_BITS, GL_ACCUM_ALPHA_BITS, GL_INDEX_BITS,
+                   GL_AUX_BUFFERS})
+    EXPECT_EQ(get_int(p), 0) << std::hex << p;
 }
 
 }  // namespace
