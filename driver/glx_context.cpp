@@ -166,7 +166,11 @@ PINEDA_GLX_EXPORT void glXDestroyContext(Display* dpy, GLXContext ctx) {
       d->contexts.erase(it);
     }
   }
-  if (!doomed && dpy) send_glx_error(dpy, GlxError::GlxContext, GlxRequest::DestroyContext);
+  // Destroying the calling thread's current context again is harmless: it is still alive.
+  const ThreadState& t = thread_state();
+  const bool current_here = ctx && ctx == t.context_handle && dpy == t.dpy;
+  if (!doomed && dpy && !current_here)
+    send_glx_error(dpy, GlxError::GlxContext, GlxRequest::DestroyContext);
 }
 
 PINEDA_GLX_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int* value) {

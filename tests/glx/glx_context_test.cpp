@@ -191,8 +191,10 @@ TEST_F(GlxContextTest, DestroyedCurrentContextLivesUntilReleased) {
   glClear(GL_COLOR_BUFFER_BIT);
   EXPECT_EQ(gl_pixel(0, 0), 0xff0000u);
   EXPECT_EQ(glXGetCurrentContext(), ctx);
-  // Still current, it can be made current again.
+  // Still current, it can be made current again, and destroying it again is harmless.
   ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+  glXDestroyContext(dpy, ctx);
+  EXPECT_TRUE(take_errors().empty());
   EXPECT_EQ(gl_pixel(0, 0), 0xff0000u);
   ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
   // Released, it is gone.
