@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# Builds Pineda and runs every test: the unit and end-to-end tests (ctest), then the same
-# tests built with AddressSanitizer and UndefinedBehaviorSanitizer.
+# Builds Pineda and runs every test: the unit and end-to-end tests (ctest), the piglit
+# groups Pineda claims against conformance/expectations/, then the unit tests again built
+# with AddressSanitizer and UndefinedBehaviorSanitizer.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
 
 "$root/scripts/build.sh" "$root/build"
 ctest --test-dir "$root/build" -j"$jobs" --output-on-failure
+
+timeout 600 python3 "$root/conformance/run.py" --platform glx --lib-dir "$root/build/lib" \
+  --group 'spec@!opengl 1.0' --group 'spec@!opengl 1.1' --expected-total 311
 
 "$root/scripts/build.sh" "$root/build-asan" -DPINEDA_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
