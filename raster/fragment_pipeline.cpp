@@ -27,7 +27,7 @@ inline F4 eval(const Plane& p, F4 ox, F4 oy) { return p.a0 + p.dx * ox + p.dy * 
 
 // Interpolated fragment colours of the quad, textured.
 template <bool kTex, bool kFlat>
-QuadColor quad_colors(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy) {
+[[gnu::always_inline]] inline QuadColor quad_colors(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy) {
   QuadColor col;
   if constexpr (kFlat) {
     for (int c = 0; c < 4; ++c) col.c[c] = splat(p.flat_color[c]);
@@ -125,12 +125,13 @@ U4 load_pixels(uint8_t* const px[4], unsigned mask) {
 }
 
 template <bool kBlend>
-void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
+[[gnu::always_inline]] inline void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
   const DrawState& s = d.state;
   const ChannelShift& shift = fb.color.format == ColorFormat::BGRA8 ? kBgraShift : kRgbaShift;
-  uint8_t* px[4] = {};
-  for (int i = 0; i < 4; ++i)
-    if (mask & (1u << i)) px[i] = color_address(fb, x + (i & 1), y + (i >> 1));
+  uint8_t* const row0 = color_address(fb, x, y);
+  uint8_t* const row1 = (mask & 0xc) ? color_address(fb, x, y + 1) : nullptr;
+  uint8_t* const px[4] = {(mask & 1) ? row0 : nullptr, (mask & 2) ? row0 + 4 : nullptr, (mask & 4) ? row1 : nullptr,
+                          (mask & 8) ? row1 + 4 : nullptr};
   U4 packed = {0, 0, 0, 0};
   if constexpr (kBlend) {
     const U4 old = load_pixels(px, mask);
@@ -216,7 +217,7 @@ unsigned depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffe
 }
 
 // Depth test and write without stencil: the four lanes at once.
-unsigned depth_only(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
+[[gnu::always_inline]] inline unsigned depth_only(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
                     F4 ox, F4 oy) {
   uint32_t zi[4], stored[4];
   uint32_t* row[2] = {fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x, nullptr};
