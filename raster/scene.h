@@ -2,6 +2,7 @@
 // 64x64 tiles; executed tile by tile, in command order within each tile.
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 #include "raster/clear.h"
@@ -43,7 +44,9 @@ class Scene {
   Framebuffer fb_;
   int render_w_ = 0, render_h_ = 0;
   int tiles_x_ = 0, tiles_y_ = 0;
-  std::vector<DrawRecord> draws_;
+  // A deque: dropping executed draws from the front keeps references to the current one valid
+  // while a draw that filled the scene is still adding primitives.
+  std::deque<DrawRecord> draws_;
   std::vector<PrimSetup> prims_;
   std::vector<ClearRecord> clears_;
   std::vector<std::vector<uint32_t>> bins_;

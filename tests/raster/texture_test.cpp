@@ -176,6 +176,44 @@ TEST(Texture, EnvironmentModesAndBaseFormats) {
   }
 }
 
+TEST(Texture, UnitsChainInOrderAndSkipDisabledOnes) {
+  auto red = std::make_shared<TextureImage>();
+  red->levels.push_back({1, 1, {rgba(255, 0, 0, 255)}});
+  auto grey = std::make_shared<TextureImage>();
+  grey->levels.push_back({1, 1, {rgba(128, 128, 128, 128)}});
+  DrawState s = state_for(2, 2);
+  s.texture_units[0] = unit_with(red, TexFilter::Nearest, TexFilter::Nearest, TexWrap::Repeat);  // Replace
+  s.texture_units[2] = unit_with(grey, TexFilter::Nearest, TexFilter::Nearest, TexWrap::Repeat);
+  s.texture_units[2].env_mode = TexEnvMode::Modulate;
+  OwnedFramebuffer fb(2, 2);
+  Renderer r(1);
+  r.set_framebuffer(fb.fb);
+  r.draw(s, Primitive::Quads, std::vector<ClipVertex>{vertex(-1, -1), vertex(1, -1), vertex(1, 1), vertex(-1, 1)});
+  r.flush();
+  EXPECT_EQ(fb.pixel(0, 0)[0], 128);
+  EXPECT_EQ(fb.pixel(0, 0)[1], 0);
+  EXPECT_EQ(fb.pixel(0, 0)[3], 128);
+}
+
+TEST(Texture, ProjectiveCoordinatesDivideByQ) {
+  // (s, q) = (0.75 q, q) with q varying: s/q = 0.75 everywhere, the second texel of a 2x1 row.
+  Textured q(4, 4);
+  TextureUnit u = unit_with(black_white_row(), TexFilter::Nearest, TexFilter::Nearest, TexWrap::Repeat);
+  DrawState s = state_for(4, 4);
+  s.texture_units[0] = u;
+  std::vector<ClipVertex> v{vertex(-1, -1), vertex(1, -1), vertex(1, 1), vertex(-1, 1)};
+  const float qs[4] = {1.f, 3.f, 0.5f, 2.f};
+  for (int i = 0; i < 4; ++i) {
+    v[i].texcoord[0][0] = 0.75f * qs[i];
+    v[i].texcoord[0][1] = 0.25f * qs[i];
+    v[i].texcoord[0][3] = qs[i];
+  }
+  q.r.draw(s, Primitive::Quads, v);
+  q.r.flush();
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) EXPECT_EQ(q.px(x, y)[0], 255) << x << "," << y;
+}
+
 TEST(Texture, IncompleteImagesDisableTheUnit) {
   auto t = std::make_shared<TextureImage>();
   t->levels.push_back({4, 4, std::vector<uint32_t>(3, 0)});  // too few texels
