@@ -92,7 +92,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_ATTRIB_STACK_DEPTH: out = ints({double(ctx.attrib_stack.size())}); return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(ctx.client_attrib_stack.size())}); return true;
     case GL_MAX_NAME_STACK_DEPTH: out = ints({64}); return true;
-    case GL_MAX_LIST_NESTING: out = ints({64}); return true;
+    case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
+    case GL_LIST_BASE: out = ints({double(ctx.list_base)}); return true;
+    case GL_LIST_INDEX: out = ints({double(ctx.compilation.name)}); return true;
+    case GL_LIST_MODE: out = enums({double(ctx.compiling_list() ? ctx.compilation.mode : 0)}); return true;
     case GL_MAX_EVAL_ORDER: out = ints({30}); return true;
     case GL_MAX_PIXEL_MAP_TABLE: out = ints({256}); return true;
     case GL_SUBPIXEL_BITS: out = ints({kSubpixelBits}); return true;
