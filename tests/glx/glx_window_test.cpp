@@ -192,6 +192,25 @@ TEST_F(GlxWindowTest, TwoWindowsTwoContexts) {
   EXPECT_TRUE(take_errors().empty());
 }
 
+TEST_F(GlxWindowTest, FrontBufferAfterSwapHoldsTheFrame) {
+  GLXFBConfig config = rgba8(true, false);
+  Window w = window(config, 16, 16);
+  GLXContext ctx = context(config);
+  ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+  glDrawBuffer(GL_BACK);
+  glClearColor(0, 1, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glXSwapBuffers(dpy, w);
+  glReadBuffer(GL_FRONT);
+  float rgba[4] = {};
+  glReadPixels(8, 8, 1, 1, GL_RGBA, GL_FLOAT, rgba);
+  EXPECT_EQ(rgba[0], 0.0f);
+  EXPECT_EQ(rgba[1], 1.0f);
+  EXPECT_EQ(rgba[2], 0.0f);
+  EXPECT_EQ(x_pixel(w, 8, 8), kGreen);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 TEST_F(GlxWindowTest, SwapInterval) {
   GLXFBConfig config = rgba8(true, false);
   Window w = window(config, 8, 8);
