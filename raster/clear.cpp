@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "raster/fragment_ops.h"
 #include "raster/raster_limits.h"
@@ -36,6 +37,38 @@ bool make_clear_record(const ClearState& clear, const Framebuffer& fb, ClearReco
   return out.color || out.depth || out.stencil;
 }
 
+namespace {
+
+// Stores the 32-bit `value` into [x0, x1) of every row of `r`: one row pattern, copied per row
+// (byte copies, so the buffer needs no particular alignment).
+void fill_rows32(uint8_t* base, ptrdiff_t stride_bytes, const PixelRect& r, uint32_t value) {
+  constexpr int kChunk = 64;
+  uint32_t pattern[kChunk];
+  std::fill_n(pattern, kChunk, value);
+  const int width = r.x1 - r.x0;
+  for (int y = r.y0; y < r.y1; ++y) {
+    uint8_t* row = base + static_cast<ptrdiff_t>(y) * stride_bytes + static_cast<ptrdiff_t>(r.x0) * 4;
+    for (int x = 0; x < width; x += kChunk)
+      std::memcpy(row + static_cast<ptrdiff_t>(x) * 4, pattern, static_cast<size_t>(std::min(kChunk, width - x)) * 4);
+  }
+}
+
+// As fill_rows32, but only the bits of `write` change.
+void fill_rows32_masked(uint8_t* base, ptrdiff_t stride_bytes, const PixelRect& r, uint32_t value, uint32_t write) {
+  const uint32_t v = value & write;
+  for (int y = r.y0; y < r.y1; ++y) {
+    uint8_t* row = base + static_cast<ptrdiff_t>(y) * stride_bytes;
+    for (int x = r.x0; x < r.x1; ++x) {
+      uint32_t old;
+      std::memcpy(&old, row + static_cast<ptrdiff_t>(x) * 4, 4);
+      old = (old & ~write) | v;
+      std::memcpy(row + static_cast<ptrdiff_t>(x) * 4, &old, 4);
+    }
+  }
+}
+
+}  // namespace
+
 void apply_clear(const ClearRecord& clear, const Framebuffer& fb, const PixelRect& tile) {
   const PixelRect r = intersect(clear.rect, tile);
   if (r.empty()) return;
@@ -47,23 +80,26 @@ void apply_clear(const ClearRecord& clear, const Framebuffer& fb, const PixelRec
       std::swap(bytes[0], bytes[2]);
       std::swap(write[0], write[2]);
     }
-    for (int y = r.y0; y < r.y1; ++y) {
-      uint8_t* row = fb.color.base + static_cast<ptrdiff_t>(y) * fb.color.stride;
-      for (int x = r.x0; x < r.x1; ++x)
-        for (int c = 0; c < 4; ++c)
-          if (write[c]) row[x * 4 + c] = bytes[c];
+    uint32_t value = 0, write_bits = 0;
+    for (int c = 0; c < 4; ++c) {
+      value |= uint32_t{bytes[c]} << (8 * c);
+      if (write[c]) write_bits |= 0xffu << (8 * c);
     }
+    if (write_bits == 0xffffffffu) fill_rows32(fb.color.base, fb.color.stride, r, value);
+    else fill_rows32_masked(fb.color.base, fb.color.stride, r, value, write_bits);
   }
   if (clear.depth) {
-    for (int y = r.y0; y < r.y1; ++y) {
-      uint32_t* row = fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride;
-      std::fill(row + r.x0, row + r.x1, clear.depth_value);
-    }
+    const ptrdiff_t stride_bytes = fb.depth.stride * static_cast<ptrdiff_t>(sizeof(uint32_t));
+    fill_rows32(reinterpret_cast<uint8_t*>(fb.depth.base), stride_bytes, r, clear.depth_value);
   }
   if (clear.stencil) {
     const uint8_t m = clear.stencil_write_mask;
     for (int y = r.y0; y < r.y1; ++y) {
       uint8_t* row = fb.stencil.base + static_cast<ptrdiff_t>(y) * fb.stencil.stride;
+      if (m == 0xff) {
+        std::memset(row + r.x0, clear.stencil_value, static_cast<size_t>(r.x1 - r.x0));
+        continue;
+      }
       for (int x = r.x0; x < r.x1; ++x) row[x] = static_cast<uint8_t>((row[x] & ~m) | (clear.stencil_value & m));
     }
   }

@@ -82,21 +82,25 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
   uint8_t masks[kMaxQuadsPerRow];
+  int64_t step_x[3], step_y[3], row[3];
+  for (int e = 0; e < 3; ++e) {
+    step_x[e] = p.edges[e].a * kSubpixelOne;
+    step_y[e] = p.edges[e].b * kSubpixelOne;
+    row[e] = edge_at(p.edges[e], x0, block.y0 & ~1);
+  }
   for (int y = block.y0 & ~1; y < block.y1; y += 2) {
+    int64_t v[3] = {row[0], row[1], row[2]};  // the edges at the quad's first pixel
     for (int q = 0; q < count; ++q) {
-      const int x = x0 + 2 * q;
-      unsigned m = rect_mask(x, y, clip);
-      for (int i = 0; i < 4 && m; ++i) {
-        if (!(m & (1u << i))) continue;
-        for (const EdgeFunction& e : p.edges)
-          if (edge_at(e, x + (i & 1), y + (i >> 1)) < 0) {
-            m &= ~(1u << i);
-            break;
-          }
+      unsigned m = 0xf;
+      for (int e = 0; e < 3; ++e) {
+        m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
+             (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
+        v[e] += 2 * step_x[e];
       }
-      masks[q] = static_cast<uint8_t>(m);
+      masks[q] = static_cast<uint8_t>(m ? m & rect_mask(x0 + 2 * q, y, clip) : 0);
     }
     sink.row(x0, y, count, masks);
+    for (int e = 0; e < 3; ++e) row[e] += 2 * step_y[e];
   }
 }
 
