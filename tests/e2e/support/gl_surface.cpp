@@ -5,6 +5,8 @@
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 
+#include <cstdlib>
+
 namespace pineda::test {
 namespace {
 
@@ -39,7 +41,10 @@ EGLDisplay egl_display() {
 }  // namespace
 
 GlSurface::GlSurface(const SurfaceSpec& spec) : spec_(spec) {
-  ok_ = osmesa().create ? create_osmesa() : create_egl();
+  // PINEDA_TEST_SURFACE=egl runs every test on EGL pbuffers.
+  const char* env = std::getenv("PINEDA_TEST_SURFACE");
+  const bool egl = spec.force_egl || (env && std::string(env) == "egl");
+  ok_ = osmesa().create && !egl ? create_osmesa() : create_egl();
 }
 
 GlSurface::~GlSurface() {

@@ -13,6 +13,7 @@ namespace pineda::test {
 struct SurfaceSpec {
   int width = 32, height = 32;
   int depth_bits = 24, stencil_bits = 8;
+  bool force_egl = false;  // use an EGL pbuffer even when OSMesa is available
 };
 
 class GlSurface {
