@@ -78,7 +78,7 @@ void track_window_size(DrawableObject& d, const ThreadState& t, int other_bindin
   int width = 0, height = 0;
   if (!x_drawable_size(d.dpy, d.x_drawable, &width, &height)) return;
   if (width == d.width && height == d.height) return;
-  if (other_bindings > 0 && !d.color.empty()) return;
+  if (other_bindings > 0 && d.allocated) return;
   allocate_buffers(d, width, height);
 }
 
@@ -194,7 +194,7 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
     for (const auto& object : {draw_object, read_object}) {
       const int others = object->bindings - 1 - bindings_of(t, object.get());
       track_window_size(*object, t, others);
-      if (object->color.empty()) allocate_buffers(*object, std::max(object->width, 1), std::max(object->height, 1));
+      if (!object->allocated) allocate_buffers(*object, std::max(object->width, 1), std::max(object->height, 1));
     }
   } catch (const std::bad_alloc&) {
     // Keep the thread's old binding bookkeeping consistent: release everything.

@@ -25,7 +25,18 @@ int quiet_handler(Display*, XErrorEvent*) {
 
 void allocate_buffers(DrawableObject& d, int width, int height) {
   const size_t count = static_cast<size_t>(width) * height;
-  d.color.assign(count * 4, 0);
+  d.shm.reset();
+  d.color.clear();
+  if (d.kind != DrawableKind::Pbuffer && d.dpy)
+    d.shm = SharedImage::create(d.dpy, d.visual, d.x_depth, width, height);
+  if (d.shm) {
+    d.pixels = d.shm->pixels();
+    std::memset(d.pixels, 0, count * 4);
+  } else {
+    d.color.assign(count * 4, 0);
+    d.pixels = d.color.data();
+  }
+  d.allocated = true;
   d.depth.assign(d.config->depth ? count : 0, 0);
   d.stencil.assign(d.config->stencil ? count : 0, 0);
   d.width = width;
@@ -36,7 +47,7 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   fb.height = height;
   const ptrdiff_t row_bytes = static_cast<ptrdiff_t>(width) * 4;
   // Framebuffer row 0 (the bottom) is the last row in memory.
-  uint8_t* bottom_row = count ? d.color.data() + (height - 1) * row_bytes : nullptr;
+  uint8_t* bottom_row = count ? d.pixels + (height - 1) * row_bytes : nullptr;
   fb.color = {bottom_row, -row_bytes, raster::ColorFormat::BGRA8};
   fb.depth = {d.depth.empty() ? nullptr : d.depth.data(), width, d.config->depth};
   fb.stencil = {d.stencil.empty() ? nullptr : d.stencil.data(), width, d.config->stencil};
@@ -84,7 +95,7 @@ namespace {
 
 XImage* wrap_color(DrawableObject& d) {
   XImage* image = XCreateImage(d.dpy, d.visual, d.x_depth, ZPixmap, 0,
-                               reinterpret_cast<char*>(d.color.data()), d.width, d.height, 32,
+                               reinterpret_cast<char*>(d.pixels), d.width, d.height, 32,
                                d.width * 4);
   return image;
 }
@@ -100,6 +111,10 @@ void present(DrawableObject& d, bool checked) {
   if (!d.dpy || d.kind == DrawableKind::Pbuffer || d.width == 0 || d.height == 0) return;
   if (!d.gc) return;
   auto put = [&] {
+    if (d.shm) {
+      d.shm->put(d.x_drawable, d.gc);
+      return 1;
+    }
     XImage* image = wrap_color(d);
     if (!image) return 0;
     XPutImage(d.dpy, d.x_drawable, d.gc, image, 0, 0, 0, 0, d.width, d.height);
@@ -110,7 +125,7 @@ void present(DrawableObject& d, bool checked) {
     trapped(d.dpy, put);
   } else {
     put();
-    XFlush(d.dpy);
+    if (!d.shm) XFlush(d.dpy);  // a shared image put has already waited for the server
   }
 }
 
@@ -120,11 +135,11 @@ void load_from_x(DrawableObject& d) {
   if (!image) return;
   if (image->bits_per_pixel == 32) {
     for (int y = 0; y < d.height; ++y)
-      std::memcpy(d.color.data() + static_cast<size_t>(y) * d.width * 4,
+      std::memcpy(d.pixels + static_cast<size_t>(y) * d.width * 4,
                   image->data + static_cast<ptrdiff_t>(y) * image->bytes_per_line, d.width * 4);
     // X leaves the byte above a 24-bit pixel undefined; GL's alpha starts opaque.
     if (d.x_depth == 24)
-      for (size_t i = 3; i < d.color.size(); i += 4) d.color[i] = 0xff;
+      for (size_t i = 3; i < static_cast<size_t>(d.width) * d.height * 4; i += 4) d.pixels[i] = 0xff;
   }
   XDestroyImage(image);
 }

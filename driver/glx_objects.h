@@ -17,6 +17,8 @@
 #include <GL/glx.h>
 #include <GL/glxext.h>
 
+#include "driver/glx_shm.h"
+
 #define PINEDA_GLX_EXPORT extern "C" __attribute__((visibility("default")))
 
 namespace pineda::glx {
@@ -60,8 +62,12 @@ struct DrawableObject {
   bool preserved_contents = true, largest_pbuffer = false;
   int swap_interval = 1;
 
-  // Pineda's buffers; colour rows top-down in memory, so an XImage can point at them.
+  // Pineda's buffers; colour rows top-down in memory, so an XImage can point at them. The
+  // colour is in `shm` when the server offers MIT-SHM, otherwise in `color`.
   int width = 0, height = 0;
+  bool allocated = false;
+  uint8_t* pixels = nullptr;
+  std::unique_ptr<SharedImage> shm;
   std::vector<uint8_t> color;
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;

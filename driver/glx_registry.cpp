@@ -59,6 +59,7 @@ void Registry::forget(Display* dpy) {
     for (auto& [id, drawable] : (*it)->drawables) {
       drawable->gc = nullptr;
       drawable->dpy = nullptr;
+      if (drawable->shm) drawable->shm->forget_display();
     }
     displays_.erase(it);
     return;

@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3 git
   khronos-api librust-khronos-api-dev   # gl.xml (khronos-api) and egl.xml (the registry crate's copy)
-  libegl-dev libgl-dev libgles-dev mesa-common-dev libosmesa6-dev libx11-dev xvfb mesa-utils
+  libegl-dev libgl-dev libgles-dev mesa-common-dev libosmesa6-dev libx11-dev libxext-dev xvfb mesa-utils
   libglm-dev libpng-dev libgtest-dev googletest
 )
 missing=()
