@@ -5,6 +5,8 @@
 #include <sys/ipc.h>
 #include <sys/shm.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <mutex>
 
 namespace pineda::glx {
@@ -43,7 +45,13 @@ struct SharedImage::Segment {
 
 std::unique_ptr<SharedImage> SharedImage::create(Display* dpy, Visual* visual, int depth,
                                                  int width, int height) {
-  if (!dpy || !visual || width <= 0 || height <= 0 || !XShmQueryExtension(dpy)) return nullptr;
+  // PINEDA_GLX_NO_SHM=1 forces the XPutImage path (tests, remote-like behaviour).
+  static const bool disabled = [] {
+    const char* v = std::getenv("PINEDA_GLX_NO_SHM");
+    return v && *v && std::strcmp(v, "0") != 0;
+  }();
+  if (disabled || !dpy || !visual || width <= 0 || height <= 0 || !XShmQueryExtension(dpy))
+    return nullptr;
   std::unique_ptr<SharedImage> result(new SharedImage);
   result->dpy_ = dpy;
   result->segment_ = std::make_unique<Segment>();
