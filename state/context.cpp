@@ -16,15 +16,16 @@ void Context::make_current(Drawable* draw, Drawable* read) {
   draw_ = draw;
   read_ = read;
   bind_framebuffer();
-  // GL: the viewport and scissor take the drawable's size when the context is first bound.
+  // GL: the viewport, scissor and draw/read buffers take their initial values from the
+  // drawable the context is first bound to; later bindings keep what the application set.
   if (!ever_bound_ && draw) {
     ever_bound_ = true;
     viewport.x = viewport.y = 0;
     viewport.width = draw->framebuffer.width;
     viewport.height = draw->framebuffer.height;
     draw_state.scissor = {0, 0, draw->framebuffer.width, draw->framebuffer.height};
+    draw_buffer = read_buffer = draw->double_buffered ? GL_BACK : GL_FRONT;
   }
-  draw_buffer = read_buffer = (draw && draw->double_buffered) ? GL_BACK : GL_FRONT;
 }
 
 void Context::release_current() {
