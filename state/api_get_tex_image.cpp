@@ -10,12 +10,12 @@ namespace pineda::gl {
 namespace {
 
 // GL 1.1 spec 6.1.4: the texel as RGBA before packing; luminance and intensity land in R only.
-void texel_rgba(uint32_t texel, raster::TexBaseFormat base, float rgba[4]) {
-  for (int c = 0; c < 4; ++c) rgba[c] = float((texel >> (8 * c)) & 0xff) / 255.f;
+void texel_rgba(uint32_t texel, raster::TexBaseFormat base, double rgba[4]) {
+  for (int c = 0; c < 4; ++c) rgba[c] = double((texel >> (8 * c)) & 0xff) / 255.0;
   using raster::TexBaseFormat;
   switch (base) {
-    case TexBaseFormat::Luminance: case TexBaseFormat::LuminanceAlpha: rgba[1] = rgba[2] = 0.f; break;
-    case TexBaseFormat::Intensity: rgba[1] = rgba[2] = 0.f; rgba[3] = 1.f; break;
+    case TexBaseFormat::Luminance: case TexBaseFormat::LuminanceAlpha: rgba[1] = rgba[2] = 0.0; break;
+    case TexBaseFormat::Intensity: rgba[1] = rgba[2] = 0.0; rgba[3] = 1.0; break;
     default: break;
   }
 }
@@ -37,7 +37,7 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
   auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
   for (int y = 0; y < l.height; ++y)
     for (int x = 0; x < l.width; ++x) {
-      float rgba[4];
+      double rgba[4];
       texel_rgba(l.texels[size_t(y) * l.width + x], l.base, rgba);
       store_color(rgba, format, type, out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x));
     }

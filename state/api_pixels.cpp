@@ -37,13 +37,13 @@ bool valid_read_format(GLenum format) {
 }
 
 // Reads a framebuffer pixel in RGBA floats.
-void read_color(const raster::ColorBuffer& cb, int x, int y, float rgba[4]) {
+void read_color(const raster::ColorBuffer& cb, int x, int y, double rgba[4]) {
   const uint8_t* p = cb.base + cb.stride * y + 4 * x;
   const bool bgra = cb.format == raster::ColorFormat::BGRA8;
-  rgba[0] = p[bgra ? 2 : 0] / 255.f;
-  rgba[1] = p[1] / 255.f;
-  rgba[2] = p[bgra ? 0 : 2] / 255.f;
-  rgba[3] = p[3] / 255.f;
+  rgba[0] = p[bgra ? 2 : 0] / 255.0;
+  rgba[1] = p[1] / 255.0;
+  rgba[2] = p[bgra ? 0 : 2] / 255.0;
+  rgba[3] = p[3] / 255.0;
 }
 
 }  // namespace
@@ -67,6 +67,7 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   const int x0 = std::max(x, 0), x1 = std::min<int64_t>(int64_t(x) + width, fb.width);
   const int y0 = std::max(y, 0), y1 = std::min<int64_t>(int64_t(y) + height, fb.height);
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
+  const int components = std::max(color_format_components(format), 1);
   for (int fy = y0; fy < y1; ++fy) {
     uint8_t* row = out + layout.row_stride * size_t(fy - y);
     for (int fx = x0; fx < x1; ++fx) {
@@ -76,10 +77,11 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
       } else if (format == GL_STENCIL_INDEX) {
         store_scalar(fb.stencil.base[fb.stencil.stride * fy + fx], false, type, dst);
       } else {
-        float rgba[4];
+        double rgba[4];
         read_color(fb.color, fx, fy, rgba);
         store_color(rgba, format, type, dst);
       }
+      if (ctx.pack.swap_bytes) swap_component_bytes(dst, components, pixel_type_size(type));
     }
   }
 }

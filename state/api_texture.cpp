@@ -79,7 +79,14 @@ void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int 
     uint32_t* dst = level.texels.data() + size_t(yoffset + y) * level.width + xoffset;
     for (int x = 0; x < width; ++x) {
       float rgba[4];
-      load_color(row + layout.pixel_bytes * x, format, type, rgba);
+      const uint8_t* src_pixel = row + layout.pixel_bytes * x;
+      uint8_t swapped[16];  // at most 4 components of 4 bytes
+      if (ctx.unpack.swap_bytes) {
+        std::copy(src_pixel, src_pixel + layout.pixel_bytes, swapped);
+        swap_component_bytes(swapped, color_format_components(format), pixel_type_size(type));
+        src_pixel = swapped;
+      }
+      load_color(src_pixel, format, type, rgba);
       dst[x] = to_texel(rgba, base);
     }
   }

@@ -96,12 +96,12 @@ ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLen
   return l;
 }
 
-void store_color(const float rgba[4], GLenum format, GLenum type, uint8_t* dst) {
+void store_color(const double rgba[4], GLenum format, GLenum type, uint8_t* dst) {
   const int n = color_format_components(format);
   const int size = pixel_type_size(type);
   for (int c = 0; c < n; ++c) {
     const int ch = channel_of(format, c);
-    const float v = ch < 0 ? std::min(rgba[0] + rgba[1] + rgba[2], 1.f) : rgba[ch];
+    const double v = ch < 0 ? std::min(rgba[0] + rgba[1] + rgba[2], 1.0) : rgba[ch];
     store_component(v, type, dst + c * size);
   }
 }
@@ -119,6 +119,11 @@ void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]) {
     else
       rgba[ch] = v;
   }
+}
+
+void swap_component_bytes(uint8_t* p, int count, int size) {
+  if (size < 2) return;
+  for (int c = 0; c < count; ++c) std::reverse(p + c * size, p + (c + 1) * size);
 }
 
 void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst) {

@@ -27,9 +27,12 @@ struct ImageLayout {
 ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type);
 
 // One pixel of a colour format, converted from RGBA (already clamped to [0, 1]).
-void store_color(const float rgba[4], GLenum format, GLenum type, uint8_t* dst);
+// Double precision, so that 32-bit integer types receive exact values.
+void store_color(const double rgba[4], GLenum format, GLenum type, uint8_t* dst);
 // One pixel of a colour format, converted to RGBA with GL's defaults for missing components.
 void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]);
+// Reverses the bytes of each of `count` components of `size` bytes (GL_*_SWAP_BYTES).
+void swap_component_bytes(uint8_t* p, int count, int size);
 // One value of a single-component image (depth, stencil), as the type's storage.
 void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst);
 

@@ -76,7 +76,7 @@ TEST_F(ReadPixelsTest, EveryFormatAndType) {
         for (int c = 0; c < n; ++c) {
           const double got = read_component(&out[size_t((p * n + c) * size)], type);
           const double want = expected_component(f.components[c], type);
-          const double tolerance = type == GL_FLOAT ? 1e-6 : (type == GL_INT || type == GL_UNSIGNED_INT) ? 256 : 1;
+          const double tolerance = type == GL_FLOAT ? 1e-6 : 1;
           EXPECT_NEAR(got, want, tolerance) << std::hex << "format " << f.format << " type " << type << std::dec
                                             << " pixel " << p << " component " << c;
         }
@@ -210,6 +210,28 @@ TEST_P(DepthReadPrecisionTest, UnsignedIntDepthIsExact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bits, DepthReadPrecisionTest, ::testing::Values(16, 24, 32));
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(ReadPixelsTest, PackSwapBytes) {
+  glPixelStorei(GL_PACK_SWAP_BYTES, GL_TRUE);
+  GLushort rg[2] = {0, 0};
+  glReadPixels(0, 0, 1, 1, GL_LUMINANCE_ALPHA, GL_UNSIGNED_SHORT, rg);
+  const GLushort lum = GLushort(std::min(kR + kG + kB, 255) * 257), alpha = GLushort(kA * 257);
+  EXPECT_EQ(rg[0], GLushort((lum >> 8) | (lum << 8)));
+  EXPECT_EQ(rg[1], GLushort((alpha >> 8) | (alpha << 8)));
+  GLuint red = 0;
+  glReadPixels(0, 0, 1, 1, GL_RED, GL_UNSIGNED_INT, &red);
+  EXPECT_EQ(red, __builtin_bswap32(GLuint(kR) * 16843009u));
+  GLubyte bytes[4];
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, bytes);  // single bytes: unchanged
+  EXPECT_EQ(bytes[0], kR);
+  EXPECT_EQ(bytes[3], kA);
+}
 
 }  // namespace
 }  // namespace pineda::test

@@ -98,3 +98,22 @@ TEST_F(GetTexImageTest, OneDimensionalAndErrors) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(GetTexImageTest, UnpackSwapBytes) {
+  // 0x1234 is stored byte-swapped as 0x3412 in client memory.
+  const GLushort rgba[4] = {0x3412, 0xFFFF, 0x0000, 0x00FF};
+  glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_TRUE);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_SHORT, rgba);
+  GLushort out[4];
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, out);
+  EXPECT_EQ(out[0], 0x1212);  // 0x1234 / 65535 kept as the byte 0x12, read back as 0x12 * 257
+  EXPECT_EQ(out[1], 0xFFFF);
+  EXPECT_EQ(out[2], 0);
+  EXPECT_EQ(out[3], 254 * 257);  // 0xFF00 / 65535 * 255 = 254.01: kept as the byte 254
+}
+
+}  // namespace
+}  // namespace pineda::test
