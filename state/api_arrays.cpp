@@ -75,6 +75,12 @@ void TexCoordPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, cons
               {1, 2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
+void EdgeFlagPointer(Context& ctx, GLsizei stride, const void* ptr) {
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
+  ctx.edge_flag_array.stride = stride;
+  ctx.edge_flag_array.pointer = ptr;
+}
+
 void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (!valid_mode(ctx, mode)) return;
   if (count < 0 || first < 0) return ctx.record_error(GL_INVALID_VALUE);
@@ -107,6 +113,7 @@ void ArrayElement(Context& ctx, GLint i) {
     track_color_material(ctx);
   }
   if (ctx.normal_array.enabled && ctx.normal_array.pointer) std::copy(v.normal, v.normal + 3, ctx.current_normal);
+  if (ctx.edge_flag_array.enabled && ctx.edge_flag_array.pointer) ctx.current_edge_flag = v.edge_flag;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
     TextureUnitState& unit = ctx.texture_units[u];
     if (unit.texcoord_array.enabled && unit.texcoord_array.pointer)
@@ -156,7 +163,7 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
   ctx.normal_array.enabled = layout->normal;
   if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, base + layout->pn * f};
   ctx.index_array = false;
-  ctx.edge_flag_array_enabled = false;
+  ctx.edge_flag_array.enabled = false;
   ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, base + layout->pv * f};
 }
 
@@ -166,6 +173,7 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
     case GL_VERTEX_ARRAY_POINTER: *params = const_cast<void*>(ctx.vertex_array.pointer); break;
     case GL_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.color_array.pointer); break;
     case GL_NORMAL_ARRAY_POINTER: *params = const_cast<void*>(ctx.normal_array.pointer); break;
+    case GL_EDGE_FLAG_ARRAY_POINTER: *params = const_cast<void*>(ctx.edge_flag_array.pointer); break;
     case GL_TEXTURE_COORD_ARRAY_POINTER:
       *params = const_cast<void*>(ctx.texture_units[ctx.client_active_texture].texcoord_array.pointer);
       break;

@@ -297,7 +297,7 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   f.normal_array = ctx.normal_array;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) f.texcoord_arrays[u] = ctx.texture_units[u].texcoord_array;
   f.index_array = ctx.index_array;
-  f.edge_flag_array_enabled = ctx.edge_flag_array_enabled;
+  f.edge_flag_array = ctx.edge_flag_array;
   ctx.client_attrib_stack.push_back(f);
 }
 
@@ -315,7 +315,7 @@ void PopClientAttrib(Context& ctx) {
     ctx.normal_array = f.normal_array;
     for (int u = 0; u < raster::kMaxTextureUnits; ++u) ctx.texture_units[u].texcoord_array = f.texcoord_arrays[u];
     ctx.index_array = f.index_array;
-    ctx.edge_flag_array_enabled = f.edge_flag_array_enabled;
+    ctx.edge_flag_array = f.edge_flag_array;
   }
 }
 

@@ -167,6 +167,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_UNPACK_SKIP_PIXELS: out = ints({double(ctx.unpack.skip_pixels)}); return true;
     case GL_UNPACK_SWAP_BYTES: out = bools({double(ctx.unpack.swap_bytes)}); return true;
     case GL_UNPACK_LSB_FIRST: out = bools({double(ctx.unpack.lsb_first)}); return true;
+    case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(ctx.edge_flag_array.stride)}); return true;
     case GL_TEXTURE_BINDING_1D: out = ints({double(unit.bound_1d)}); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(unit.bound_2d)}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = enums({double(ctx.hint_perspective)}); return true;

@@ -55,7 +55,8 @@ struct ClientAttribFrame {
   PixelStore pack, unpack;
   ClientArray vertex_array, color_array, normal_array;
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
-  bool index_array = false, edge_flag_array_enabled = false;
+  ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
+  bool index_array = false;
 };
 
 struct TextureUnitState {
@@ -155,7 +156,8 @@ class Context {
 
   // Client arrays and pixel storage
   ClientArray vertex_array, color_array, normal_array;
-  bool index_array = false, edge_flag_array_enabled = false;
+  ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};  // GLboolean flags
+  bool index_array = false;
   PixelStore pack, unpack;
 
   // Textures

@@ -71,7 +71,13 @@ void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
     } else
       std::copy(unit.current_texcoord, unit.current_texcoord + 4, out.texcoord[u]);
   }
-  out.edge_flag = ctx.current_edge_flag;
+  if (ctx.edge_flag_array.enabled && ctx.edge_flag_array.pointer) {
+    const ClientArray& a = ctx.edge_flag_array;
+    const size_t stride = a.stride ? size_t(a.stride) : sizeof(GLboolean);
+    out.edge_flag = *(static_cast<const GLboolean*>(a.pointer) + stride * index) != GL_FALSE;
+  } else {
+    out.edge_flag = ctx.current_edge_flag;
+  }
 }
 
 }  // namespace pineda

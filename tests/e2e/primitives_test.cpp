@@ -242,3 +242,78 @@ TEST_F(PrimitivesTest, IncompletePrimitivesDrawNothing) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// GL 1.1 2.6.2: in GL_LINE mode, an edge whose starting vertex has the edge flag false is
+// not drawn.
+TEST_F(PrimitivesTest, EdgeFlagsHideEdgesInLineMode) {
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glBegin(GL_QUADS);
+  glEdgeFlag(GL_TRUE);
+  glVertex2f(2.5f, 2.5f);  // bottom edge: drawn
+  glEdgeFlag(GL_FALSE);
+  glVertex2f(12.5f, 2.5f);  // right edge: hidden
+  glEdgeFlag(GL_TRUE);
+  glVertex2f(12.5f, 12.5f);  // top edge: drawn
+  glEdgeFlag(GL_FALSE);
+  glVertex2f(2.5f, 12.5f);  // left edge: hidden
+  glEnd();
+  EXPECT_TRUE(lit(7, 2));
+  EXPECT_TRUE(lit(7, 12));
+  EXPECT_FALSE(lit(12, 7));
+  EXPECT_FALSE(lit(2, 7));
+}
+
+TEST_F(PrimitivesTest, EdgeFlagsHideVerticesInPointMode) {
+  glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+  glBegin(GL_TRIANGLES);
+  glEdgeFlag(GL_FALSE);
+  glVertex2f(2.5f, 2.5f);
+  glEdgeFlag(GL_TRUE);
+  glVertex2f(12.5f, 2.5f);
+  glVertex2f(2.5f, 12.5f);
+  glEnd();
+  EXPECT_FALSE(lit(2, 2));
+  EXPECT_TRUE(lit(12, 2));
+  EXPECT_TRUE(lit(2, 12));
+}
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(PrimitivesTest, EdgeFlagArrayEqualsImmediateEdgeFlags) {
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  const GLfloat vertices[] = {2.5f, 2.5f, 12.5f, 2.5f, 12.5f, 12.5f, 2.5f, 12.5f};
+  struct Flag {
+    GLboolean flag;
+    GLubyte padding[3];
+  };
+  const Flag flags[4] = {{GL_TRUE, {}}, {GL_FALSE, {}}, {GL_TRUE, {}}, {GL_FALSE, {}}};
+  glBegin(GL_QUADS);
+  for (int i = 0; i < 4; ++i) {
+    glEdgeFlag(flags[i].flag);
+    glVertex2fv(vertices + 2 * i);
+  }
+  glEnd();
+  glEdgeFlag(GL_TRUE);
+  const auto reference = read_all();
+  EXPECT_FALSE(lit(12, 7));
+  clear_to(0, 0, 0, 0);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_EDGE_FLAG_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, vertices);
+  glEdgeFlagPointer(sizeof(Flag), &flags[0].flag);
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(read_all(), reference);
+  GLboolean current = GL_FALSE;
+  glGetBooleanv(GL_EDGE_FLAG, &current);
+  EXPECT_EQ(current, GL_TRUE);  // DrawArrays leaves the current edge flag alone
+}
+
+}  // namespace
+}  // namespace pineda::test

@@ -264,3 +264,22 @@ TEST_F(GetConversionTest, ClientArrayPointerErrorsChangeNothing) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(GetConversionTest, EdgeFlagPointer) {
+  const GLboolean flags[4] = {};
+  EXPECT_EQ(get_int(GL_EDGE_FLAG_ARRAY_STRIDE), 0);
+  glEdgeFlagPointer(4, flags);
+  EXPECT_EQ(get_int(GL_EDGE_FLAG_ARRAY_STRIDE), 4);
+  void* p = nullptr;
+  glGetPointerv(GL_EDGE_FLAG_ARRAY_POINTER, &p);
+  EXPECT_EQ(p, flags);
+  glEdgeFlagPointer(-1, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(get_int(GL_EDGE_FLAG_ARRAY_STRIDE), 4);
+}
+
+}  // namespace
+}  // namespace pineda::test
