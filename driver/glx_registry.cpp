@@ -54,9 +54,10 @@ std::shared_ptr<DrawableObject> Registry::find_drawable(Display* dpy, XID id) {
 void Registry::forget(Display* dpy) {
   for (auto it = displays_.begin(); it != displays_.end(); ++it) {
     if ((*it)->dpy != dpy) continue;
-    // The connection is going away with its GCs; drawables still current elsewhere keep
-    // their memory but must not touch the server again.
+    // The connection is going away (it is still usable in this hook); drawables still
+    // current elsewhere keep their memory but must not touch the server again.
     for (auto& [id, drawable] : (*it)->drawables) {
+      if (drawable->gc) XFreeGC(dpy, drawable->gc);
       drawable->gc = nullptr;
       drawable->dpy = nullptr;
       if (drawable->shm) drawable->shm->forget_display();
