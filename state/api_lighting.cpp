@@ -1,5 +1,6 @@
 // glLight, glLightModel, glMaterial, glColorMaterial and their queries.
 #include <algorithm>
+#include <cmath>
 
 #include "glapi/gl_entry_points.h"
 #include "state/color_material.h"
@@ -158,10 +159,16 @@ void ColorMaterial(Context& ctx, GLenum face, GLenum mode) {
   track_color_material(ctx);
 }
 
-void GetLightfv(Context& ctx, GLenum which, GLenum pname, GLfloat* params) {
-  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights) return ctx.record_error(GL_INVALID_ENUM);
+namespace {
+
+// The value of a light parameter; false (with GL_INVALID_ENUM recorded) when there is none.
+bool light_value(Context& ctx, GLenum which, GLenum pname, glm::vec4& v) {
+  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights) {
+    ctx.record_error(GL_INVALID_ENUM);
+    return false;
+  }
   const raster::Light& l = ctx.lighting.lights[which - GL_LIGHT0];
-  glm::vec4 v(0);
+  v = glm::vec4(0);
   switch (pname) {
     case GL_AMBIENT: v = l.ambient; break;
     case GL_DIFFUSE: v = l.diffuse; break;
@@ -173,16 +180,19 @@ void GetLightfv(Context& ctx, GLenum which, GLenum pname, GLfloat* params) {
     case GL_CONSTANT_ATTENUATION: v.x = l.constant_attenuation; break;
     case GL_LINEAR_ATTENUATION: v.x = l.linear_attenuation; break;
     case GL_QUADRATIC_ATTENUATION: v.x = l.quadratic_attenuation; break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: ctx.record_error(GL_INVALID_ENUM); return false;
   }
-  if (params)
-    for (int i = 0; i < param_count(pname); ++i) params[i] = v[i];
+  return true;
 }
 
-void GetMaterialfv(Context& ctx, GLenum face, GLenum pname, GLfloat* params) {
-  if (face != GL_FRONT && face != GL_BACK) return ctx.record_error(GL_INVALID_ENUM);
+// The value of a material parameter; false (with GL_INVALID_ENUM recorded) when there is none.
+bool material_value(Context& ctx, GLenum face, GLenum pname, glm::vec4& v) {
+  if (face != GL_FRONT && face != GL_BACK) {
+    ctx.record_error(GL_INVALID_ENUM);
+    return false;
+  }
   const raster::Material& m = face == GL_FRONT ? ctx.lighting.front : ctx.lighting.back;
-  glm::vec4 v(0);
+  v = glm::vec4(0);
   switch (pname) {
     case GL_AMBIENT: v = m.ambient; break;
     case GL_DIFFUSE: v = m.diffuse; break;
@@ -190,10 +200,42 @@ void GetMaterialfv(Context& ctx, GLenum face, GLenum pname, GLfloat* params) {
     case GL_EMISSION: v = m.emission; break;
     case GL_SHININESS: v.x = m.shininess; break;
     case GL_COLOR_INDEXES: break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: ctx.record_error(GL_INVALID_ENUM); return false;
   }
-  if (params)
-    for (int i = 0; i < param_count(pname); ++i) params[i] = v[i];
+  return true;
+}
+
+// GL 1.1 spec 6.1.2: colours map [-1, 1] onto the integer range; other values round.
+void to_ints(GLenum pname, const glm::vec4& v, GLint* out) {
+  const bool colour = is_colour_param(pname);
+  for (int i = 0; i < param_count(pname); ++i)
+    out[i] = colour ? GLint(std::clamp(double(v[i]), -1.0, 1.0) * 2147483647.0)
+                    : GLint(std::clamp(std::round(double(v[i])), -2147483648.0, 2147483647.0));
+}
+
+}  // namespace
+
+void GetLightfv(Context& ctx, GLenum which, GLenum pname, GLfloat* params) {
+  glm::vec4 v;
+  if (!light_value(ctx, which, pname, v) || !params) return;
+  for (int i = 0; i < param_count(pname); ++i) params[i] = v[i];
+}
+
+void GetLightiv(Context& ctx, GLenum which, GLenum pname, GLint* params) {
+  glm::vec4 v;
+  if (light_value(ctx, which, pname, v) && params) to_ints(pname, v, params);
+}
+
+void GetMaterialfv(Context& ctx, GLenum face, GLenum pname, GLfloat* params) {
+  glm::vec4 v;
+  if (!material_value(ctx, face, pname, v) || !params) return;
+  for (int i = 0; i < param_count(pname); ++i) params[i] = v[i];
+}
+
+void GetMaterialiv(Context& ctx, GLenum face, GLenum pname, GLint* params) {
+  glm::vec4 v;
+  if (material_value(ctx, face, pname, v) && params) to_ints(pname, v, params);
 }
 
 }  // namespace pineda::gl
+

@@ -221,3 +221,42 @@ TEST_F(LightingStateTest, EnablingColorMaterialAppliesTheCurrentColour) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(LightingStateTest, IntegerQueriesMapColoursAndRoundTheRest) {
+  const GLfloat diffuse[4] = {0.5f, 1.f, 0.f, 2.f};
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, diffuse);
+  const GLfloat position[4] = {1.4f, -2.6f, 3.f, 1.f};
+  glLightfv(GL_LIGHT1, GL_POSITION, position);
+  glLightf(GL_LIGHT1, GL_SPOT_CUTOFF, 44.5f);
+  GLint v[4] = {7, 7, 7, 7};
+  glGetLightiv(GL_LIGHT1, GL_DIFFUSE, v);
+  EXPECT_NEAR(double(v[0]), 0.5 * kIntColorScale, 1.0);
+  EXPECT_EQ(v[1], 2147483647);
+  EXPECT_EQ(v[2], 0);
+  EXPECT_EQ(v[3], 2147483647);  // clamped to 1 before mapping
+  glGetLightiv(GL_LIGHT1, GL_POSITION, v);
+  EXPECT_EQ(v[0], 1);
+  EXPECT_EQ(v[1], -3);
+  EXPECT_EQ(v[2], 3);
+  EXPECT_EQ(v[3], 1);
+  glGetLightiv(GL_LIGHT1, GL_SPOT_CUTOFF, v);
+  EXPECT_EQ(v[0], 45);  // rounded half away from zero
+  glMaterialf(GL_BACK, GL_SHININESS, 10.4f);
+  glGetMaterialiv(GL_BACK, GL_SHININESS, v);
+  EXPECT_EQ(v[0], 10);
+  glGetMaterialiv(GL_FRONT, GL_AMBIENT, v);
+  EXPECT_NEAR(double(v[0]), 0.2 * kIntColorScale, 512.0);
+  EXPECT_EQ(v[3], 2147483647);
+  GLint untouched[4] = {5, 5, 5, 5};
+  glGetLightiv(GL_LIGHT0, 0x1234, untouched);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glGetMaterialiv(GL_FRONT_AND_BACK, GL_AMBIENT, untouched);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  EXPECT_EQ(untouched[0], 5);
+}
+
+}  // namespace
+}  // namespace pineda::test
