@@ -1,0 +1,93 @@
+// glCopyTexImage1D/2D and glCopyTexSubImage1D/2D: texture images from the read buffer.
+#include <algorithm>
+#include <vector>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/limits.h"
+
+namespace pineda::gl {
+namespace {
+
+// The read drawable's pixels in [x, x + width) x [y, y + height) as tight RGBA8 rows, bottom
+// row first; pixels outside the drawable read as zero (GL leaves them undefined).
+std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
+  std::vector<uint8_t> out(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 4, 0);
+  const Drawable* d = ctx.read_drawable();
+  if (!d || width <= 0 || height <= 0) return out;
+  ctx.finish();
+  const raster::Framebuffer& fb = d->framebuffer;
+  const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
+  for (GLsizei row = 0; row < height; ++row) {
+    const int64_t fy = int64_t(y) + row;
+    if (fy < 0 || fy >= fb.height) continue;
+    for (GLsizei col = 0; col < width; ++col) {
+      const int64_t fx = int64_t(x) + col;
+      if (fx < 0 || fx >= fb.width) continue;
+      const uint8_t* p = fb.color.base + fb.color.stride * fy + 4 * fx;
+      uint8_t* o = &out[(size_t(row) * width + col) * 4];
+      o[0] = p[bgra ? 2 : 0];
+      o[1] = p[1];
+      o[2] = p[bgra ? 0 : 2];
+      o[3] = p[3];
+    }
+  }
+  return out;
+}
+
+// Sizes no texture can have are rejected before any pixel is read.
+bool valid_copy_size(Context& ctx, GLsizei width, GLsizei height) {
+  if (width >= 0 && height >= 0 && width <= kMaxTextureSize + 2 && height <= kMaxTextureSize + 2) return true;
+  ctx.record_error(GL_INVALID_VALUE);
+  return false;
+}
+
+// Runs `upload` with a tightly packed unpack state, then restores the application's.
+template <typename Upload>
+void with_tight_unpack(Context& ctx, Upload upload) {
+  const PixelStore saved = ctx.unpack;
+  ctx.unpack = PixelStore{};
+  ctx.unpack.alignment = 1;
+  upload();
+  ctx.unpack = saved;
+}
+
+}  // namespace
+
+void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
+                    GLsizei width, GLsizei height, GLint border) {
+  if (!valid_copy_size(ctx, width, height)) return;
+  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
+  with_tight_unpack(ctx, [&] {
+    TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
+               pixels.data());
+  });
+}
+
+void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
+                    GLsizei width, GLint border) {
+  if (!valid_copy_size(ctx, width, 1)) return;
+  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
+  with_tight_unpack(ctx, [&] {
+    TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  });
+}
+
+void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
+                       GLsizei width, GLsizei height) {
+  if (!valid_copy_size(ctx, width, height)) return;
+  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
+  with_tight_unpack(ctx, [&] {
+    TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  });
+}
+
+void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
+  if (!valid_copy_size(ctx, width, 1)) return;
+  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
+  with_tight_unpack(ctx, [&] {
+    TexSubImage1D(ctx, target, level, xoffset, width, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  });
+}
+
+}  // namespace pineda::gl

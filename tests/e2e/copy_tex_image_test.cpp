@@ -1,0 +1,127 @@
+// glCopyTexImage and glCopyTexSubImage: texels from the framebuffer.
+#include "tests/e2e/support/gl_test.h"
+
+namespace pineda::test {
+namespace {
+
+class CopyTexImageTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    pixel_projection();
+    clear_to(0, 0, 0, 1);
+    // Four quadrants of distinct colours around (16, 16).
+    const GLubyte colours[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}};
+    for (int q = 0; q < 4; ++q) {
+      glColor3ubv(colours[q]);
+      glRecti(16 * (q % 2), 16 * (q / 2), 16 * (q % 2) + 16, 16 * (q / 2) + 16);
+    }
+    glBindTexture(GL_TEXTURE_2D, 1);
+  }
+  std::vector<uint8_t> read(int x, int y, int w, int h) {
+    std::vector<uint8_t> out(size_t(w) * h * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(x, y, w, h, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+    return out;
+  }
+  std::vector<uint8_t> texture_image(int w, int h, GLenum target = GL_TEXTURE_2D) {
+    std::vector<uint8_t> out(size_t(w) * h * 4, 0xEE);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(target, 0, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+    return out;
+  }
+};
+
+TEST_F(CopyTexImageTest, CopiesTheRegionAcrossQuadrants) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 12, 10, 8, 12, 0);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLint w = 0, h = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+  EXPECT_EQ(w, 8);
+  EXPECT_EQ(h, 12);
+  EXPECT_EQ(texture_image(8, 12), read(12, 10, 8, 12));
+}
+
+TEST_F(CopyTexImageTest, CopiedTextureDrawsTheSamePixels) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 8, 8, 16, 16, 0);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  const auto source = read(8, 8, 16, 16);
+  clear_to(0, 0, 0, 0);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0);
+  glVertex2i(0, 0);
+  glTexCoord2f(1, 0);
+  glVertex2i(16, 0);
+  glTexCoord2f(1, 1);
+  glVertex2i(16, 16);
+  glTexCoord2f(0, 1);
+  glVertex2i(0, 16);
+  glEnd();
+  EXPECT_EQ(read(0, 0, 16, 16), source);
+}
+
+TEST_F(CopyTexImageTest, SubImageReplacesARegion) {
+  const std::vector<uint8_t> grey(4 * 4 * 4, 128);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, grey.data());
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 1, 2, 15, 15, 2, 2);  // straddles all four quadrants
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  const auto tex = texture_image(4, 4);
+  const auto src = read(15, 15, 2, 2);
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const bool copied = x >= 1 && x < 3 && y >= 2;
+        const int expected = copied ? src[((y - 2) * 2 + (x - 1)) * 4 + c] : 128;
+        EXPECT_EQ(tex[(y * 4 + x) * 4 + c], expected) << x << "," << y << "," << c;
+      }
+}
+
+TEST_F(CopyTexImageTest, OneDimensional) {
+  glBindTexture(GL_TEXTURE_1D, 2);
+  glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 12, 3, 8, 0);
+  EXPECT_EQ(texture_image(8, 1, GL_TEXTURE_1D), read(12, 3, 8, 1));
+  glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 0, 0, 20, 2);
+  const auto tex = texture_image(8, 1, GL_TEXTURE_1D);
+  const auto src = read(0, 20, 2, 1);
+  EXPECT_TRUE(std::equal(src.begin(), src.end(), tex.begin()));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(CopyTexImageTest, Errors) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, -1, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glCopyTexImage2D(GL_TEXTURE_2D, -1, GL_RGBA, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, 0x1234, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glCopyTexImage2D(GL_TEXTURE_1D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 100000, 100000, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 2, 2);  // no image defined
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  GLint w = -1;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  EXPECT_EQ(w, 0);
+  glBegin(GL_POINTS);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+}
+
+TEST_F(CopyTexImageTest, KeepsTheApplicationsUnpackState) {
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 50);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 3);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 12, 10, 8, 12, 0);
+  EXPECT_EQ(texture_image(8, 12), read(12, 10, 8, 12));
+  GLint row_length = 0;
+  glGetIntegerv(GL_UNPACK_ROW_LENGTH, &row_length);
+  EXPECT_EQ(row_length, 50);
+}
+
+}  // namespace
+}  // namespace pineda::test
