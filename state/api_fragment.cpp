@@ -1,4 +1,6 @@
 // Per-fragment operation state: alpha, stencil, depth, blend, logic op, masks, scissor.
+#include <algorithm>
+
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/enum_translate.h"
@@ -30,9 +32,11 @@ void StencilFunc(Context& ctx, GLenum func, GLint ref, GLuint mask) {
   if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
   ctx.stencil_func = func;
   ctx.stencil_value_mask = mask;
+  // GL 1.1 4.1.4: ref is clamped to [0, 2^s - 1]; Pineda's stencil buffers have 8 bits.
+  const int clamped_ref = std::clamp(ref, 0, 255);
   for (raster::StencilFace* face : {&ctx.draw_state.stencil_front, &ctx.draw_state.stencil_back}) {
     face->func = f;
-    face->ref = ref;
+    face->ref = clamped_ref;
     face->value_mask = static_cast<uint8_t>(mask);
   }
 }

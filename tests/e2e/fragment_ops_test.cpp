@@ -252,3 +252,30 @@ TEST_F(FragmentOpsTest, LogicOps) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(FragmentOpsTest, StencilReferenceIsClampedToTheStencilRange) {
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 300, 0xff);
+  GLint ref = 0;
+  glGetIntegerv(GL_STENCIL_REF, &ref);
+  EXPECT_EQ(ref, 255);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glRecti(0, 0, 2, 2);
+  EXPECT_EQ(stencil_at(1, 1), 255);
+  glStencilFunc(GL_ALWAYS, -5, 0xff);
+  glRecti(0, 0, 2, 2);
+  EXPECT_EQ(stencil_at(1, 1), 0);
+  clear_to(0, 0, 0, 0);
+  glStencilFunc(GL_EQUAL, 1000, 0xff);  // compares 255 with the stored 0: fails
+  glColor3f(1, 1, 1);
+  glRecti(0, 0, 2, 2);
+  EXPECT_TRUE(near_rgba(pixel(1, 1), {0, 0, 0, 0}));
+}
+
+}  // namespace
+}  // namespace pineda::test
