@@ -165,3 +165,31 @@ TEST_F(BadInputTest, ViewportAndScissorFarAwayDrawNothing) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// Sizes beyond the reported ranges are clamped to the range when rasterized.
+TEST_F(BadInputTest, HugePointSizeAndLineWidthAreClampedToTheirRanges) {
+  GLfloat point_range[2], line_range[2];
+  glGetFloatv(GL_POINT_SIZE_RANGE, point_range);
+  glGetFloatv(GL_LINE_WIDTH_RANGE, line_range);
+  ASSERT_GE(point_range[1], 32.f);
+  ASSERT_GE(line_range[1], 32.f);
+  glPointSize(1e30f);
+  glBegin(GL_POINTS);
+  glVertex2f(16, 16);
+  glEnd();
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), width() * height());
+  clear_to(0, 0, 0, 0);
+  glLineWidth(1e30f);
+  glBegin(GL_LINES);
+  glVertex2f(0, 16);
+  glVertex2f(32, 16);
+  glEnd();
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace pineda::test
