@@ -81,3 +81,36 @@ TEST_F(SmoothShadingTest, ColoursOutsideZeroOneAreClamped) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// Under glFrustum, colours interpolate perspective-correctly: a quad receding from z = -2
+// (black) to z = -4 (white) has, at window row y, the parameter s of the point the pixel
+// sees: y_ndc = (2s - 1) / (2 + 2s), so s = (2 y_ndc + 1) / (2 - 2 y_ndc).
+TEST_F(SmoothShadingTest, PerspectiveCorrectInterpolation) {
+  glViewport(0, 0, 32, 32);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-1, 1, -1, 1, 1, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glBegin(GL_QUADS);
+  glColor3f(0, 0, 0);
+  glVertex3f(-2, -1, -2);
+  glVertex3f(2, -1, -2);
+  glColor3f(1, 1, 1);
+  glVertex3f(2, 1, -4);
+  glVertex3f(-2, 1, -4);
+  glEnd();
+  for (int y = 9; y < 20; ++y) {
+    const double y_ndc = (y + 0.5) / 16 - 1;
+    const double s = (2 * y_ndc + 1) / (2 - 2 * y_ndc);
+    EXPECT_NEAR(pixel(16, y)[0], s * 255, 1.0) << y;
+  }
+  EXPECT_TRUE(near_rgba(pixel(16, 7), {0, 0, 0, 0}));   // below the quad
+  EXPECT_TRUE(near_rgba(pixel(16, 20), {0, 0, 0, 0}));  // above it
+}
+
+}  // namespace
+}  // namespace pineda::test
