@@ -296,3 +296,20 @@ TEST_F(TextureTest, OneDimensionalTextureWithBorderSkipsTheBorderTexels) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(TextureTest, DeletingATextureAfterADrawKeepsThatDrawsTexels) {
+  textured_rect(0, 0, 8, 8, 0, 0, 1, 1);
+  GLuint name = 1;
+  glDeleteTextures(1, &name);  // before the queued draw is rasterized
+  const std::vector<uint8_t> junk(64 * 64 * 4, 0x55);
+  glBindTexture(GL_TEXTURE_2D, 1);  // a new texture under the same name
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 64, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, junk.data());
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x) EXPECT_TRUE(near_rgba(pixel(x, y), grid_texel(x / 2, y / 2))) << x << "," << y;
+}
+
+}  // namespace
+}  // namespace pineda::test
