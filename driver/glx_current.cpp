@@ -73,7 +73,7 @@ std::shared_ptr<DrawableObject> resolve(DisplayState& d, XID id, const ContextOb
 
 // Follows the X window's size; other drawables keep theirs. A drawable that another thread
 // renders to keeps its buffers until that thread lets go.
-void track_window_size(DrawableObject& d, const ThreadState& t, int other_bindings) {
+void track_window_size(DrawableObject& d, int other_bindings) {
   if (d.kind != DrawableKind::Window || !d.dpy) return;
   int width = 0, height = 0;
   if (!x_drawable_size(d.dpy, d.x_drawable, &width, &height)) return;
@@ -193,7 +193,7 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext c
   try {
     for (const auto& object : {draw_object, read_object}) {
       const int others = object->bindings - 1 - bindings_of(t, object.get());
-      track_window_size(*object, t, others);
+      track_window_size(*object, others);
       if (!object->allocated) allocate_buffers(*object, std::max(object->width, 1), std::max(object->height, 1));
     }
   } catch (const std::bad_alloc&) {
