@@ -184,3 +184,66 @@ TEST_F(LightingTest, MaterialKeepsTheColourAfterColorMaterialIsDisabled) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(LightingTest, SpotlightExponentAndCutoff) {
+  const GLfloat position[4] = {0, 0, 2, 1};
+  const GLfloat direction[3] = {0, 0, -1};
+  glLightfv(GL_LIGHT0, GL_POSITION, position);
+  glLightfv(GL_LIGHT0, GL_SPOT_DIRECTION, direction);
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 30);
+  glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 2);
+  const GLfloat no_ambient[4] = {0, 0, 0, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, no_ambient);
+  const double v = 0.0625;  // the centre of pixel (8, 8)
+  glBegin(GL_POINTS);
+  glNormal3f(0, 0, 1);
+  glVertex3d(v, v, 0);
+  glVertex3d(0.9375, 0.0625, 0);  // pixel (15, 8): about 25 degrees off the axis, inside
+  glEnd();
+  const double d = std::sqrt(2 * v * v + 4), cos_axis = 2 / d;
+  const int c = to_byte(std::pow(cos_axis, 2) * 0.8 * cos_axis);  // spot * diffuse * (n.l = cos)
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {c, c, c, 255}, 1));
+  const double x = 0.9375, y = 0.0625, d2 = std::sqrt(x * x + y * y + 4), cos2 = 2 / d2;
+  const int c2 = to_byte(std::pow(cos2, 2) * 0.8 * cos2);
+  EXPECT_TRUE(near_rgba(pixel(15, 8), {c2, c2, c2, 255}, 1));
+  // Outside the cone: nothing but the (zero) ambient.
+  clear_to(0, 0, 0, 0);
+  glLightf(GL_LIGHT0, GL_SPOT_CUTOFF, 20);
+  glBegin(GL_POINTS);
+  glVertex3d(0.9375, 0.0625, 0);
+  glEnd();
+  EXPECT_TRUE(near_rgba(pixel(15, 8), {0, 0, 0, 255}, 1));
+}
+
+TEST_F(LightingTest, LocalViewerSpecular) {
+  const GLfloat specular[4] = {1, 1, 1, 1};
+  glMaterialfv(GL_FRONT, GL_SPECULAR, specular);
+  glMaterialf(GL_FRONT, GL_SHININESS, 8);
+  const GLfloat zero[4] = {0, 0, 0, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, zero);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, zero);
+  glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
+  const GLfloat position[4] = {1, 0, 1, 0};  // directional, 45 degrees
+  glLightfv(GL_LIGHT0, GL_POSITION, position);
+  const double v = 0.0625;
+  glBegin(GL_POINTS);
+  glNormal3f(0, 0, 1);
+  glVertex3d(v, v, 0);
+  glEnd();
+  // h = normalize(l + normalize(eye - p)), eye at the origin, p = (v, v, 0).
+  const double lx = 1 / std::sqrt(2.0), lz = lx;
+  const double el = std::sqrt(2 * v * v);
+  double hx = lx - v / el, hy = -v / el, hz = lz;
+  const double hl = std::sqrt(hx * hx + hy * hy + hz * hz);
+  hx /= hl;
+  hy /= hl;
+  hz /= hl;
+  const int c = to_byte(std::pow(hz, 8));
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {c, c, c, 255}, 1));
+}
+
+}  // namespace
+}  // namespace pineda::test
