@@ -1,5 +1,5 @@
-// glXSwapBuffers, the swap-interval extensions (GLX_EXT_swap_control, GLX_MESA_swap_control),
-// glXWaitGL and glXWaitX.
+// glXSwapBuffers, the swap-interval extensions (GLX_EXT_swap_control, GLX_MESA_swap_control,
+// GLX_SGI_swap_control), glXWaitGL and glXWaitX.
 //
 // The swap interval is recorded and reported; swaps are not paced, because an X server
 // tells a plain Xlib client nothing of vertical retrace.
@@ -77,6 +77,15 @@ PINEDA_GLX_EXPORT int glXSwapIntervalMESA(unsigned int interval) {
   if (interval > 0x7fffffff) return GLX_BAD_VALUE;
   auto lock = Registry::instance().lock();
   t.draw->swap_interval = static_cast<int>(interval);
+  return 0;
+}
+
+PINEDA_GLX_EXPORT int glXSwapIntervalSGI(int interval) {
+  ThreadState& t = thread_state();
+  if (interval <= 0) return GLX_BAD_VALUE;
+  if (!t.context || !t.draw) return GLX_BAD_CONTEXT;
+  auto lock = Registry::instance().lock();
+  t.draw->swap_interval = interval;
   return 0;
 }
 

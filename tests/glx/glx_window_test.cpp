@@ -225,6 +225,9 @@ TEST_F(GlxWindowTest, SwapInterval) {
   EXPECT_EQ(value, 0u);
   EXPECT_EQ(glXSwapIntervalMESA(3), 0);
   EXPECT_EQ(glXGetSwapIntervalMESA(), 3);
+  EXPECT_EQ(glXSwapIntervalSGI(2), 0);
+  EXPECT_EQ(glXGetSwapIntervalMESA(), 2);
+  EXPECT_EQ(glXSwapIntervalSGI(0), GLX_BAD_VALUE);
   glXQueryDrawable(dpy, gw, GLX_MAX_SWAP_INTERVAL_EXT, &value);
   EXPECT_GE(value, 1u);
   EXPECT_TRUE(take_errors().empty());
