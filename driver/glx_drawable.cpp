@@ -55,7 +55,8 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   d.drawable.green_bits = d.config->green;
   d.drawable.blue_bits = d.config->blue;
   d.drawable.alpha_bits = d.config->alpha;
-  d.drawable.double_buffered = d.config->double_buffered;
+  // A pixmap has one colour buffer, which is its contents.
+  d.drawable.double_buffered = d.config->double_buffered && d.kind != DrawableKind::Pixmap;
 }
 
 namespace {

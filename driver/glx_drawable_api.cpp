@@ -80,8 +80,6 @@ XID create_pixmap(DisplayState& d, const Config* config, Pixmap pixmap,
     *failure = Failure{BadAlloc, false};
     return None;
   }
-  // A pixmap has one colour buffer, which is its contents.
-  object->drawable.double_buffered = false;
   load_from_x(*object);
   return add(d, std::move(object));
 }
