@@ -62,13 +62,15 @@ void Begin(Context& ctx, GLenum mode) {
   ctx.in_begin_end = true;
   ctx.begin_mode = mode;
   ctx.immediate.clear();
+  ctx.immediate_materials.clear();
 }
 
 void End(Context& ctx) {
   if (!ctx.in_begin_end) return ctx.record_error(GL_INVALID_OPERATION);
   ctx.in_begin_end = false;
-  draw_vertices(ctx, ctx.begin_mode, ctx.immediate, {});
+  draw_vertices(ctx, ctx.begin_mode, ctx.immediate, {}, ctx.immediate_materials);
   ctx.immediate.clear();
+  ctx.immediate_materials.clear();
 }
 
 // Vertex: 2, 3, 4 components; d f i s; scalar and vector forms.

@@ -57,9 +57,28 @@ void light_model(Context& ctx, GLenum pname, const GLfloat* v) {
   }
 }
 
+// Inside glBegin/glEnd the vertices so far keep the material they were specified with.
+void note_material_before_change(Context& ctx) {
+  if (!ctx.in_begin_end || !ctx.immediate_materials.empty()) return;
+  ctx.immediate_materials.push_back({0, ctx.lighting.front, ctx.lighting.back});
+}
+
+void note_material_after_change(Context& ctx) {
+  if (!ctx.in_begin_end) return;
+  auto& changes = ctx.immediate_materials;
+  if (changes.back().first == ctx.immediate.size())
+    changes.back() = {ctx.immediate.size(), ctx.lighting.front, ctx.lighting.back};
+  else
+    changes.push_back({ctx.immediate.size(), ctx.lighting.front, ctx.lighting.back});
+}
+
 void material(Context& ctx, GLenum face, GLenum pname, const GLfloat* v) {
   if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return ctx.record_error(GL_INVALID_ENUM);
   if (pname == GL_SHININESS && (v[0] < 0.f || v[0] > 128.f)) return ctx.record_error(GL_INVALID_VALUE);
+  if (pname != GL_AMBIENT && pname != GL_DIFFUSE && pname != GL_SPECULAR && pname != GL_EMISSION &&
+      pname != GL_AMBIENT_AND_DIFFUSE && pname != GL_SHININESS && pname != GL_COLOR_INDEXES)
+    return ctx.record_error(GL_INVALID_ENUM);
+  note_material_before_change(ctx);
   for (raster::Material* m : {&ctx.lighting.front, &ctx.lighting.back}) {
     if ((m == &ctx.lighting.front && face == GL_BACK) || (m == &ctx.lighting.back && face == GL_FRONT)) continue;
     switch (pname) {
@@ -70,9 +89,10 @@ void material(Context& ctx, GLenum face, GLenum pname, const GLfloat* v) {
       case GL_AMBIENT_AND_DIFFUSE: m->ambient = m->diffuse = vec4_of(v); break;
       case GL_SHININESS: m->shininess = v[0]; break;
       case GL_COLOR_INDEXES: break;  // colour-index lighting: Pineda is RGBA only
-      default: return ctx.record_error(GL_INVALID_ENUM);
+      default: break;                // rejected above
     }
   }
+  note_material_after_change(ctx);
 }
 
 template <typename T>

@@ -108,6 +108,13 @@ class Context {
   std::vector<raster::VertexInput> immediate;
   std::vector<raster::VertexInput> fetched;   // client-array vertices of the current draw
   std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
+  // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
+  // (empty when the material did not change inside the primitive).
+  struct MaterialChange {
+    size_t first;
+    raster::Material front, back;
+  };
+  std::vector<MaterialChange> immediate_materials;
 
   // Current vertex attributes
   float current_color[4] = {1, 1, 1, 1};

@@ -1,5 +1,7 @@
 #include "state/draw.h"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "state/context.h"
@@ -66,12 +68,28 @@ int snapshot_textures(Context& ctx) {
 }  // namespace
 
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
-                   std::span<const uint32_t> indices) {
+                   std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials) {
   if (!ctx.draw_drawable() || vertices.empty()) return;
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
   const int texture_units = snapshot_textures(ctx);
-  raster::transform_vertices(build_transform(ctx, texture_units), vertices, ctx.transformed);
+  raster::Transform transform = build_transform(ctx, texture_units);
+  if (materials.empty() || !ctx.lighting.enabled) {
+    raster::transform_vertices(transform, vertices, ctx.transformed);
+  } else {
+    // Each run of vertices is lit with the material in effect when they were specified.
+    ctx.transformed.resize(vertices.size());
+    std::vector<raster::ClipVertex> run_out;
+    for (size_t i = 0; i < materials.size(); ++i) {
+      const size_t first = std::min(materials[i].first, vertices.size());
+      const size_t end = i + 1 < materials.size() ? std::min(materials[i + 1].first, vertices.size()) : vertices.size();
+      if (first >= end) continue;
+      transform.lighting.front = materials[i].front;
+      transform.lighting.back = materials[i].back;
+      raster::transform_vertices(transform, vertices.subspan(first, end - first), run_out);
+      std::copy(run_out.begin(), run_out.end(), ctx.transformed.begin() + first);
+    }
+  }
   raster::DrawState& state = ctx.draw_state;
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;

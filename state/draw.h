@@ -7,13 +7,17 @@
 #include <span>
 
 #include "raster/vertex.h"
+#include "state/context.h"
 
 namespace pineda {
 
 class Context;
 
 // `mode` must already be a valid primitive enum.
+// `materials`, when not empty, gives the materials of runs of vertices (glMaterial inside
+// glBegin/glEnd); its first entry starts at vertex 0.
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
-                   std::span<const uint32_t> indices);
+                   std::span<const uint32_t> indices,
+                   std::span<const Context::MaterialChange> materials = {});
 
 }  // namespace pineda

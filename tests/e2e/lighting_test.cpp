@@ -247,3 +247,38 @@ TEST_F(LightingTest, LocalViewerSpecular) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// GL 1.1 2.13.2: glMaterial between glBegin and glEnd applies to the vertices after it.
+TEST_F(LightingTest, MaterialChangesInsideBeginEndApplyPerVertex) {
+  glDisable(GL_LIGHT0);
+  const GLfloat no_ambient[4] = {0, 0, 0, 1};
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, no_ambient);
+  const GLfloat red[4] = {1, 0, 0, 1}, green[4] = {0, 1, 0, 1}, blue[4] = {0, 0, 1, 1};
+  glMaterialfv(GL_FRONT, GL_EMISSION, red);
+  glBegin(GL_POINTS);
+  glVertex2f(-0.9375f, -0.9375f);  // pixel (0, 0)
+  glMaterialfv(GL_FRONT, GL_EMISSION, green);
+  glVertex2f(0.0625f, 0.0625f);  // pixel (8, 8)
+  glMaterialfv(GL_FRONT, GL_EMISSION, red);
+  glMaterialfv(GL_FRONT, GL_EMISSION, blue);  // two changes before one vertex: the last counts
+  glVertex2f(0.9375f, 0.9375f);  // pixel (15, 15)
+  glEnd();
+  EXPECT_TRUE(near_rgba(pixel(0, 0), {255, 0, 0, 255}));
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {0, 255, 0, 255}));
+  EXPECT_TRUE(near_rgba(pixel(15, 15), {0, 0, 255, 255}));
+  GLfloat emission[4];
+  glGetMaterialfv(GL_FRONT, GL_EMISSION, emission);
+  EXPECT_EQ(emission[2], 1.f);  // the last material stays
+  // The next primitive starts with it.
+  clear_to(0, 0, 0, 0);
+  glBegin(GL_POINTS);
+  glVertex2f(0.0625f, 0.0625f);
+  glEnd();
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {0, 0, 255, 255}));
+}
+
+}  // namespace
+}  // namespace pineda::test
