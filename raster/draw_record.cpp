@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "raster/blend_over.h"
 #include "raster/fragment_pipeline.h"
 
 namespace pineda::raster {
@@ -51,6 +52,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.key.depth = state.depth_test && has_depth;
   d.key.stencil = state.stencil_test && has_stencil;
   d.key.blend = state.blend || state.logic_op_enabled;
+  d.key.blend_over = state.blend && !state.logic_op_enabled && is_blend_over(state.blend_state);
   d.key.flat = state.flat_shading;
   d.routine = select_quad_routine(d.key);
   return d;

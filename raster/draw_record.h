@@ -23,6 +23,7 @@ struct FragmentKey {
   bool depth = false;
   bool stencil = false;
   bool blend = false;  // blending or logic op: the destination colour is read
+  bool blend_over = false;  // blending is SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD (no logic op)
   bool flat = false;
 };
 

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <utility>
 
+#include "raster/blend_over.h"
 #include "raster/fragment_ops.h"
 #include "raster/quad_vector.h"
 #include "raster/sampler.h"
@@ -124,7 +125,7 @@ U4 load_pixels(uint8_t* const px[4], unsigned mask) {
   return U4{v[0], v[1], v[2], v[3]};
 }
 
-template <bool kBlend>
+template <bool kBlend, bool kOver>
 [[gnu::always_inline]] inline void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
   const DrawState& s = d.state;
   const ChannelShift& shift = fb.color.format == ColorFormat::BGRA8 ? kBgraShift : kRgbaShift;
@@ -133,7 +134,10 @@ template <bool kBlend>
   uint8_t* const px[4] = {(mask & 1) ? row0 : nullptr, (mask & 2) ? row0 + 4 : nullptr, (mask & 4) ? row1 : nullptr,
                           (mask & 8) ? row1 + 4 : nullptr};
   U4 packed = {0, 0, 0, 0};
-  if constexpr (kBlend) {
+  if constexpr (kBlend && kOver) {
+    for (int c = 0; c < 4; ++c) packed |= to_unorm8(col.c[c]) << shift.at[c];
+    packed = blend_over8(packed, load_pixels(px, mask));
+  } else if constexpr (kBlend) {
     const U4 old = load_pixels(px, mask);
     if (s.logic_op_enabled) {
       for (int c = 0; c < 4; ++c) {
@@ -216,37 +220,78 @@ unsigned depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffe
   return mask;
 }
 
+using D4 = double __attribute__((vector_size(32)));
+
+// The quad's depth values: the same double expression per lane as the stencil path.
+[[gnu::always_inline]] inline U4 quad_depth(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy) {
+  const D4 dx = __builtin_convertvector(ox, D4), dy = __builtin_convertvector(oy, D4);
+  D4 z = p.z0 + p.dzdx * dx + p.dzdy * dy;
+  const D4 zero = {0.0, 0.0, 0.0, 0.0};
+  const D4 max = zero + d.depth_max;
+  z = z > zero ? (z < max ? z : max) : zero;
+  z += 0.5;
+  // Below 2^31 the signed conversion truncates exactly as the unsigned one does.
+  if (d.depth_max < 2147483647.0) return reinterpret_cast<U4>(__builtin_convertvector(z, I4));
+  return U4{static_cast<uint32_t>(z[0]), static_cast<uint32_t>(z[1]), static_cast<uint32_t>(z[2]),
+            static_cast<uint32_t>(z[3])};
+}
+
+inline unsigned lane_mask(I4 v) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(v)));
+#else
+  return (v[0] ? 1u : 0u) | (v[1] ? 2u : 0u) | (v[2] ? 4u : 0u) | (v[3] ? 8u : 0u);
+#endif
+}
+
+inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
+  switch (f) {
+    case CompareFunc::Never: return 0;
+    case CompareFunc::Less: return lane_mask(z < stored);
+    case CompareFunc::Equal: return lane_mask(z == stored);
+    case CompareFunc::LessEqual: return lane_mask(z <= stored);
+    case CompareFunc::Greater: return lane_mask(z > stored);
+    case CompareFunc::NotEqual: return lane_mask(z != stored);
+    case CompareFunc::GreaterEqual: return lane_mask(z >= stored);
+    case CompareFunc::Always: return 0xf;
+  }
+  return 0xf;
+}
+
 // Depth test and write without stencil: the four lanes at once.
 [[gnu::always_inline]] inline unsigned depth_only(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
                     F4 ox, F4 oy) {
-  uint32_t zi[4], stored[4];
-  uint32_t* row[2] = {fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x, nullptr};
-  if (mask & 0xc) row[1] = fb.depth.base + static_cast<ptrdiff_t>(y + 1) * fb.depth.stride + x;
-  for (int i = 0; i < 4; ++i) {
-    double z = p.z0 + p.dzdx * ox[i] + p.dzdy * oy[i];
-    z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
-    zi[i] = static_cast<uint32_t>(z + 0.5);
-    stored[i] = (mask & (1u << i)) ? row[i >> 1][i & 1] : 0;
+  uint32_t* const row0 = fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x;
+  const U4 zi = quad_depth(d, p, ox, oy);
+  if (mask == 0xf) {
+    uint32_t* const row1 = row0 + fb.depth.stride;
+    uint32_t v[4];
+    std::memcpy(&v[0], row0, 8);
+    std::memcpy(&v[2], row1, 8);
+    const U4 stored = {v[0], v[1], v[2], v[3]};
+    const unsigned pass = depth_pass(d.state.depth_func, zi, stored);
+    if (pass && d.state.depth_write) {
+      const I4 passed = (I4{1, 2, 4, 8} & static_cast<int>(pass)) != 0;
+      const U4 out = passed ? zi : stored;
+      const uint32_t o[4] = {out[0], out[1], out[2], out[3]};
+      std::memcpy(row0, &o[0], 8);
+      std::memcpy(row1, &o[2], 8);
+    }
+    return pass;
   }
-  unsigned pass = 0;
-  switch (d.state.depth_func) {
-    case CompareFunc::Never: break;
-    case CompareFunc::Less: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] < stored[i]} << i; break;
-    case CompareFunc::Equal: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] == stored[i]} << i; break;
-    case CompareFunc::LessEqual: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] <= stored[i]} << i; break;
-    case CompareFunc::Greater: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] > stored[i]} << i; break;
-    case CompareFunc::NotEqual: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] != stored[i]} << i; break;
-    case CompareFunc::GreaterEqual: for (int i = 0; i < 4; ++i) pass |= unsigned{zi[i] >= stored[i]} << i; break;
-    case CompareFunc::Always: pass = 0xf; break;
-  }
-  mask &= pass;
+  uint32_t* row[2] = {row0, nullptr};
+  if (mask & 0xc) row[1] = row0 + fb.depth.stride;
+  U4 stored = {0, 0, 0, 0};
+  for (int i = 0; i < 4; ++i)
+    if (mask & (1u << i)) stored[i] = row[i >> 1][i & 1];
+  mask &= depth_pass(d.state.depth_func, zi, stored);
   if (d.state.depth_write)
     for (int i = 0; i < 4; ++i)
       if (mask & (1u << i)) row[i >> 1][i & 1] = zi[i];
   return mask;
 }
 
-template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat>
+template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver>
 void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
@@ -266,13 +311,14 @@ void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
     }
     if constexpr (kDepth && !kStencil) mask = depth_only(d, p, fb, qx, y, mask, ox, oy);
     else if constexpr (kStencil) mask = depth_stencil<kDepth, kStencil>(d, p, fb, qx, y, mask, ox, oy);
-    if (mask && write_color) write_quad<kBlend>(d, fb, qx, y, mask, col);
+    if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, col);
   }
 }
 
 template <int kBits>
 constexpr QuadRoutine routine_for() {
-  return &shade_quads<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0>;
+  return &shade_quads<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0,
+                      (kBits & 32) != 0>;
 }
 
 template <int... kBits>
@@ -280,13 +326,13 @@ constexpr auto make_table(std::integer_sequence<int, kBits...>) {
   return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits>()...};
 }
 
-constexpr auto kRoutines = make_table(std::make_integer_sequence<int, 32>{});
+constexpr auto kRoutines = make_table(std::make_integer_sequence<int, 64>{});
 
 }  // namespace
 
 QuadRoutine select_quad_routine(const FragmentKey& key) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
-                   (key.flat ? 16 : 0);
+                   (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0);
   return kRoutines[bits];
 }
 
