@@ -3,30 +3,41 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/quad_vector.h"
+
 namespace pineda::raster {
 namespace {
 
 // Keeps coordinates where float-to-int conversions are defined; NaN becomes 0.
 float sane(float v) { return v > -1e6f ? (v < 1e6f ? v : 1e6f) : (v <= -1e6f ? -1e6f : 0.f); }
 
-int floor_int(float v) { return static_cast<int>(std::floor(v)); }
+// floor() for |v| < 2^31 without a libm call (the x86-64 baseline has no round instruction).
+inline float floor_fast(float v) {
+  const float t = static_cast<float>(static_cast<int>(v));
+  return t > v ? t - 1.f : t;
+}
+
+inline int floor_int(float v) {
+  const int i = static_cast<int>(v);
+  return static_cast<float>(i) > v ? i - 1 : i;
+}
 
 float mirror(float s) {
-  const float f = std::floor(s);
+  const float f = floor_fast(s);
   const float frac = s - f;
   return (static_cast<int>(f) & 1) ? 1.f - frac : frac;
 }
 
-void fetch(const TextureLevel& level, int i, int j, float out[4]) {
+F4 fetch(const TextureLevel& level, int i, int j) {
   const uint32_t texel = level.texels[static_cast<size_t>(j) * level.width + i];
-  for (int c = 0; c < 4; ++c) out[c] = static_cast<float>((texel >> (8 * c)) & 0xff) * (1.f / 255.f);
+  return from_unorm8(U4{texel, texel >> 8, texel >> 16, texel >> 24});
 }
 
 // Texel index along one axis for nearest filtering; -1 means the border colour.
 int nearest_index(TexWrap wrap, float s, int size) {
   switch (wrap) {
     case TexWrap::Repeat: {
-      const int i = floor_int((s - std::floor(s)) * size);
+      const int i = floor_int((s - floor_fast(s)) * size);
       return std::min(i, size - 1);
     }
     case TexWrap::MirroredRepeat:
@@ -46,20 +57,22 @@ int nearest_index(TexWrap wrap, float s, int size) {
 void linear_indices(TexWrap wrap, float s, int size, int& i0, int& i1, float& frac) {
   float u = 0.f;
   switch (wrap) {
-    case TexWrap::Repeat: u = (s - std::floor(s)) * size - 0.5f; break;
+    case TexWrap::Repeat: u = (s - floor_fast(s)) * size - 0.5f; break;
     case TexWrap::MirroredRepeat: u = mirror(s) * size - 0.5f; break;
     case TexWrap::Clamp: u = std::clamp(s, 0.f, 1.f) * size - 0.5f; break;
     case TexWrap::ClampToEdge: u = std::clamp(s * size, 0.5f, size - 0.5f) - 0.5f; break;
     case TexWrap::ClampToBorder: u = std::clamp(s, -1.f, 2.f) * size - 0.5f; break;
   }
-  const float f = std::floor(u);
+  const float f = floor_fast(u);
   frac = u - f;
   i0 = static_cast<int>(f);
   i1 = i0 + 1;
   switch (wrap) {
     case TexWrap::Repeat:
-      i0 = ((i0 % size) + size) % size;
-      i1 = ((i1 % size) + size) % size;
+      // s - floor(s) lies in [0, 1] (1 when rounding a tiny negative s), so i0 >= -1 and
+      // i1 <= size: one step wraps them.
+      i0 = i0 < 0 ? i0 + size : i0;
+      i1 = i1 >= size ? i1 - size : i1;
       break;
     case TexWrap::MirroredRepeat:
     case TexWrap::ClampToEdge:
@@ -74,32 +87,33 @@ void linear_indices(TexWrap wrap, float s, int size, int& i0, int& i1, float& fr
   }
 }
 
-void texel_or_border(const TextureLevel& level, const Sampler& sampler, int i, int j, float out[4]) {
+F4 texel_or_border(const TextureLevel& level, const Sampler& sampler, int i, int j) {
   if (i < 0 || j < 0) {
-    for (int c = 0; c < 4; ++c) out[c] = std::clamp(sampler.border_color[c], 0.f, 1.f);
-    return;
+    const F4 c = load4(sampler.border_color), zero = splat(0.f), one = splat(1.f);
+    return c < zero ? zero : (one < c ? one : c);  // std::clamp's order: NaN stays NaN
   }
-  fetch(level, i, j, out);
+  return fetch(level, i, j);
 }
 
-void sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s, float t, float out[4]) {
+F4 sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s, float t) {
   if (!linear) {
     const int i = nearest_index(sampler.wrap_s, s, level.width);
     const int j = nearest_index(sampler.wrap_t, t, level.height);
-    texel_or_border(level, sampler, i, j, out);
-    return;
+    return texel_or_border(level, sampler, i, j);
   }
   int i0, i1, j0, j1;
   float a, b;
   linear_indices(sampler.wrap_s, s, level.width, i0, i1, a);
   linear_indices(sampler.wrap_t, t, level.height, j0, j1, b);
-  float t00[4], t10[4], t01[4], t11[4];
-  texel_or_border(level, sampler, i0, j0, t00);
-  texel_or_border(level, sampler, i1, j0, t10);
-  texel_or_border(level, sampler, i0, j1, t01);
-  texel_or_border(level, sampler, i1, j1, t11);
-  for (int c = 0; c < 4; ++c)
-    out[c] = (1 - a) * (1 - b) * t00[c] + a * (1 - b) * t10[c] + (1 - a) * b * t01[c] + a * b * t11[c];
+  const F4 t00 = texel_or_border(level, sampler, i0, j0);
+  const F4 t10 = texel_or_border(level, sampler, i1, j0);
+  const F4 t01 = texel_or_border(level, sampler, i0, j1);
+  const F4 t11 = texel_or_border(level, sampler, i1, j1);
+  return splat((1 - a) * (1 - b)) * t00 + splat(a * (1 - b)) * t10 + splat((1 - a) * b) * t01 + splat(a * b) * t11;
+}
+
+void sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s, float t, float out[4]) {
+  store4(out, sample_level(level, sampler, linear, s, t));
 }
 
 bool is_linear(TexFilter f) {
@@ -158,10 +172,9 @@ void sample_quad(const TextureImage& image, const Sampler& sampler, const float 
   const int d1 = static_cast<int>(std::floor(lambda));
   const float f = lambda - static_cast<float>(d1);
   for (int i = 0; i < 4; ++i) {
-    float a[4], b[4];
-    sample_level(image.levels[d1], sampler, linear, s[i], t[i], a);
-    sample_level(image.levels[d1 + 1], sampler, linear, s[i], t[i], b);
-    for (int k = 0; k < 4; ++k) out[i][k] = (1 - f) * a[k] + f * b[k];
+    const F4 a = sample_level(image.levels[d1], sampler, linear, s[i], t[i]);
+    const F4 b = sample_level(image.levels[d1 + 1], sampler, linear, s[i], t[i]);
+    store4(out[i], splat(1 - f) * a + splat(f) * b);
   }
 }
 
