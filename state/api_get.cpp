@@ -232,7 +232,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
   static const std::string kRenderer = "Pineda (software rasterizer)";
   static const std::string kExtensions =
       "GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract "
-      "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add";
+      "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
+      "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat";
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

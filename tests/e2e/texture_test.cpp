@@ -313,3 +313,26 @@ TEST_F(TextureTest, DeletingATextureAfterADrawKeepsThatDrawsTexels) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+TEST_F(TextureTest, MirroredRepeatReflectsEveryOtherPeriod) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_MIRRORED_REPEAT);
+  textured_rect(0, 0, 16, 2, 0, 0.1f, 2, 0.1f);  // s from 0 to 2: texels 0 1 2 3 3 2 1 0; t in row 0
+  const int expected[8] = {0, 1, 2, 3, 3, 2, 1, 0};
+  for (int x = 0; x < 16; ++x) EXPECT_TRUE(near_rgba(pixel(x, 0), grid_texel(expected[x / 2], 0))) << x;
+}
+
+TEST_F(TextureTest, ClampToBorderGivesTheBorderColourOutside) {
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  const GLfloat border[4] = {1, 0, 1, 1};
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  textured_rect(0, 0, 16, 2, -1, 0.1f, 1, 0.1f);  // left half outside the texture; t in row 0
+  EXPECT_TRUE(near_rgba(pixel(3, 0), {255, 0, 255, 255}));
+  EXPECT_TRUE(near_rgba(pixel(9, 0), grid_texel(0, 0)));
+  EXPECT_TRUE(near_rgba(pixel(15, 0), grid_texel(3, 0)));
+}
+
+}  // namespace
+}  // namespace pineda::test

@@ -47,3 +47,18 @@ TEST_F(StringTest, StringsStayValid) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// Every extension whose behaviour the e2e tests check is advertised.
+TEST_F(StringTest, AdvertisesTheImplementedExtensions) {
+  const std::string ext = " " + get_string(GL_EXTENSIONS) + " ";
+  for (const char* name : {"GL_EXT_blend_color", "GL_EXT_blend_minmax", "GL_EXT_blend_subtract",
+                           "GL_EXT_blend_func_separate", "GL_EXT_texture_edge_clamp", "GL_EXT_texture_env_add",
+                           "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat"})
+    EXPECT_NE(ext.find(std::string(" ") + name + " "), std::string::npos) << name;
+}
+
+}  // namespace
+}  // namespace pineda::test
