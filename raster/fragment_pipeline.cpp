@@ -298,19 +298,28 @@ void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
   const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
   const bool write_color = fb.color.base && d.color_write_any;
+  // Without an alpha test no stage before depth and stencil reads the colour, so they run first
+  // and only the surviving quads are coloured (the colour has no side effects).
+  const bool early_tests = !s.alpha_test;
   for (int q = 0; q < count; ++q) {
     unsigned mask = masks[q];
     if (!mask) continue;
     const int qx = x + 2 * q;
     // Offsets from the reference point (exact while the primitive stays near the framebuffer).
     const F4 ox = ox0 + splat(static_cast<float>(2 * q));
-    const QuadColor col = quad_colors<kTex, kFlat>(d, p, ox, oy);
-    if (s.alpha_test) {
-      for (int i = 0; i < 4; ++i)
-        if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
+    auto depth_and_stencil = [&] {
+      if constexpr (kDepth && !kStencil) mask = depth_only(d, p, fb, qx, y, mask, ox, oy);
+      else if constexpr (kStencil) mask = depth_stencil<kDepth, kStencil>(d, p, fb, qx, y, mask, ox, oy);
+    };
+    if (early_tests) {
+      depth_and_stencil();
+      if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, quad_colors<kTex, kFlat>(d, p, ox, oy));
+      continue;
     }
-    if constexpr (kDepth && !kStencil) mask = depth_only(d, p, fb, qx, y, mask, ox, oy);
-    else if constexpr (kStencil) mask = depth_stencil<kDepth, kStencil>(d, p, fb, qx, y, mask, ox, oy);
+    const QuadColor col = quad_colors<kTex, kFlat>(d, p, ox, oy);
+    for (int i = 0; i < 4; ++i)
+      if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
+    depth_and_stencil();
     if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, col);
   }
 }
