@@ -95,7 +95,21 @@ F4 texel_or_border(const TextureLevel& level, const Sampler& sampler, int i, int
   return fetch(level, i, j);
 }
 
-F4 sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s, float t) {
+// linear_indices for REPEAT, with nothing left to choose at run time.
+[[gnu::always_inline]] inline void repeat_indices(float s, int size, int& i0, int& i1, float& frac) {
+  const float u = (s - floor_fast(s)) * size - 0.5f;
+  const float f = floor_fast(u);
+  frac = u - f;
+  i0 = static_cast<int>(f);
+  i1 = i0 + 1;
+  i0 = i0 < 0 ? i0 + size : i0;
+  i1 = i1 >= size ? i1 - size : i1;
+}
+
+// kRepeat: both wrap modes are REPEAT, so no index can select the border colour.
+template <bool kRepeat>
+[[gnu::always_inline]] inline F4 sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s,
+                                              float t) {
   if (!linear) {
     const int i = nearest_index(sampler.wrap_s, s, level.width);
     const int j = nearest_index(sampler.wrap_t, t, level.height);
@@ -103,17 +117,31 @@ F4 sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, 
   }
   int i0, i1, j0, j1;
   float a, b;
-  linear_indices(sampler.wrap_s, s, level.width, i0, i1, a);
-  linear_indices(sampler.wrap_t, t, level.height, j0, j1, b);
-  const F4 t00 = texel_or_border(level, sampler, i0, j0);
-  const F4 t10 = texel_or_border(level, sampler, i1, j0);
-  const F4 t01 = texel_or_border(level, sampler, i0, j1);
-  const F4 t11 = texel_or_border(level, sampler, i1, j1);
+  F4 t00, t10, t01, t11;
+  if constexpr (kRepeat) {
+    repeat_indices(s, level.width, i0, i1, a);
+    repeat_indices(t, level.height, j0, j1, b);
+    const uint32_t* row0 = level.texels.data() + static_cast<size_t>(j0) * level.width;
+    const uint32_t* row1 = level.texels.data() + static_cast<size_t>(j1) * level.width;
+    auto unpack = [](uint32_t texel) { return from_unorm8(U4{texel, texel >> 8, texel >> 16, texel >> 24}); };
+    t00 = unpack(row0[i0]);
+    t10 = unpack(row0[i1]);
+    t01 = unpack(row1[i0]);
+    t11 = unpack(row1[i1]);
+  } else {
+    linear_indices(sampler.wrap_s, s, level.width, i0, i1, a);
+    linear_indices(sampler.wrap_t, t, level.height, j0, j1, b);
+    t00 = texel_or_border(level, sampler, i0, j0);
+    t10 = texel_or_border(level, sampler, i1, j0);
+    t01 = texel_or_border(level, sampler, i0, j1);
+    t11 = texel_or_border(level, sampler, i1, j1);
+  }
   return splat((1 - a) * (1 - b)) * t00 + splat(a * (1 - b)) * t10 + splat((1 - a) * b) * t01 + splat(a * b) * t11;
 }
 
+template <bool kRepeat>
 void sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s, float t, float out[4]) {
-  store4(out, sample_level(level, sampler, linear, s, t));
+  store4(out, sample_level<kRepeat>(level, sampler, linear, s, t));
 }
 
 bool is_linear(TexFilter f) {
@@ -136,8 +164,11 @@ float quad_lambda(const TextureLevel& base, const float s[4], const float t[4]) 
   return 0.5f * (static_cast<float>(e - 1) + (2.f * m - 1.f));
 }
 
-void sample_quad(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],
-                 float out[4][4]) {
+namespace {
+
+template <bool kRepeat>
+void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],
+                         float out[4][4]) {
   float s[4], t[4];
   for (int i = 0; i < 4; ++i) {
     s[i] = sane(s_in[i]);
@@ -156,26 +187,36 @@ void sample_quad(const TextureImage& image, const Sampler& sampler, const float 
                       : 0.f;
   if (lambda <= c || min == TexFilter::Nearest || min == TexFilter::Linear) {
     const bool linear = lambda <= c ? mag_linear : min == TexFilter::Linear;
-    for (int i = 0; i < 4; ++i) sample_level(image.levels[0], sampler, linear, s[i], t[i], out[i]);
+    for (int i = 0; i < 4; ++i) sample_level<kRepeat>(image.levels[0], sampler, linear, s[i], t[i], out[i]);
     return;
   }
   const bool linear = is_linear(min);
   if (min == TexFilter::NearestMipmapNearest || min == TexFilter::LinearMipmapNearest) {
     const int d = lambda <= 0.5f ? 0 : std::min(static_cast<int>(std::ceil(std::min(lambda, 1e6f) + 0.5f)) - 1, max_level);
-    for (int i = 0; i < 4; ++i) sample_level(image.levels[d], sampler, linear, s[i], t[i], out[i]);
+    for (int i = 0; i < 4; ++i) sample_level<kRepeat>(image.levels[d], sampler, linear, s[i], t[i], out[i]);
     return;
   }
   if (lambda >= static_cast<float>(max_level)) {
-    for (int i = 0; i < 4; ++i) sample_level(image.levels[max_level], sampler, linear, s[i], t[i], out[i]);
+    for (int i = 0; i < 4; ++i) sample_level<kRepeat>(image.levels[max_level], sampler, linear, s[i], t[i], out[i]);
     return;
   }
   const int d1 = static_cast<int>(std::floor(lambda));
   const float f = lambda - static_cast<float>(d1);
   for (int i = 0; i < 4; ++i) {
-    const F4 a = sample_level(image.levels[d1], sampler, linear, s[i], t[i]);
-    const F4 b = sample_level(image.levels[d1 + 1], sampler, linear, s[i], t[i]);
+    const F4 a = sample_level<kRepeat>(image.levels[d1], sampler, linear, s[i], t[i]);
+    const F4 b = sample_level<kRepeat>(image.levels[d1 + 1], sampler, linear, s[i], t[i]);
     store4(out[i], splat(1 - f) * a + splat(f) * b);
   }
+}
+
+}  // namespace
+
+void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
+                 float out[4][4]) {
+  if (sampler.wrap_s == TexWrap::Repeat && sampler.wrap_t == TexWrap::Repeat)
+    sample_quad_wrapped<true>(image, sampler, s, t, out);
+  else
+    sample_quad_wrapped<false>(image, sampler, s, t, out);
 }
 
 }  // namespace pineda::raster
