@@ -184,6 +184,7 @@ PINEDA_GLX_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribut
     send_glx_error(dpy, GlxError::GlxContext, GlxRequest::QueryContext);
     return GLX_BAD_CONTEXT;
   }
+  if (!value) return GLX_BAD_VALUE;
   switch (attribute) {
     case GLX_FBCONFIG_ID: *value = object->config->id; return Success;
     case GLX_RENDER_TYPE: *value = GLX_RGBA_TYPE; return Success;

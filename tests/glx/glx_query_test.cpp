@@ -52,5 +52,40 @@ TEST_F(GlxQueryTest, NothingIsCurrentAtFirst) {
   EXPECT_EQ(glXGetCurrentDisplay(), nullptr);
 }
 
+// Null displays and pointers are refused without crashing.
+TEST_F(GlxQueryTest, NullArguments) {
+  EXPECT_FALSE(glXQueryVersion(nullptr, nullptr, nullptr));
+  EXPECT_FALSE(glXQueryExtension(nullptr, nullptr, nullptr));
+  EXPECT_TRUE(glXQueryVersion(dpy, nullptr, nullptr));
+  EXPECT_EQ(glXQueryExtensionsString(nullptr, 0), nullptr);
+  EXPECT_EQ(glXQueryServerString(nullptr, 0, GLX_VENDOR), nullptr);
+  EXPECT_EQ(glXGetFBConfigs(nullptr, 0, nullptr), nullptr);
+  EXPECT_EQ(glXGetFBConfigs(dpy, 42, nullptr), nullptr);
+  EXPECT_EQ(glXChooseFBConfig(nullptr, 0, nullptr, nullptr), nullptr);
+  EXPECT_EQ(glXChooseVisual(nullptr, 0, nullptr), nullptr);
+  EXPECT_EQ(glXChooseVisual(dpy, screen, nullptr), nullptr);  // no GLX_RGBA: colour index
+  int value = 0;
+  EXPECT_NE(glXGetConfig(dpy, nullptr, GLX_RGBA, &value), 0);
+  EXPECT_NE(glXGetFBConfigAttrib(dpy, nullptr, GLX_RED_SIZE, &value), 0);
+  EXPECT_EQ(glXGetVisualFromFBConfig(dpy, nullptr), nullptr);
+  EXPECT_EQ(glXCreateContext(dpy, nullptr, nullptr, True), nullptr);
+  EXPECT_EQ(glXCreateNewContext(dpy, nullptr, GLX_RGBA_TYPE, nullptr, True), nullptr);
+  glXMakeCurrent(nullptr, None, nullptr);  // releasing nothing
+  EXPECT_FALSE(glXMakeContextCurrent(nullptr, 1, 1, reinterpret_cast<GLXContext>(&value)));
+  glXSwapBuffers(nullptr, 1);
+  glXDestroyContext(nullptr, nullptr);
+  glXWaitGL();
+  glXWaitX();
+  int n = 0;
+  GLXFBConfig* configs = glXGetFBConfigs(dpy, screen, &n);
+  ASSERT_GT(n, 0);
+  GLXContext ctx = glXCreateNewContext(dpy, configs[0], GLX_RGBA_TYPE, nullptr, True);
+  XFree(configs);
+  EXPECT_EQ(glXQueryContext(dpy, ctx, GLX_FBCONFIG_ID, nullptr), GLX_BAD_VALUE);
+  glXQueryDrawable(dpy, None, GLX_WIDTH, nullptr);
+  glXDestroyContext(dpy, ctx);
+  take_errors();
+}
+
 }  // namespace
 }  // namespace pineda_test
