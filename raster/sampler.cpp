@@ -166,6 +166,38 @@ float quad_lambda(const TextureLevel& base, const float s[4], const float t[4]) 
 
 namespace {
 
+inline F4 floor_fast4(F4 v) {
+  const F4 t = __builtin_convertvector(__builtin_convertvector(v, I4), F4);
+  return t > v ? t - 1.f : t;
+}
+
+// repeat_indices for the four pixels at once (the same operations per lane).
+inline void repeat_indices4(F4 s, int size, I4& i0, I4& i1, F4& frac) {
+  const F4 u = (s - floor_fast4(s)) * static_cast<float>(size) - 0.5f;
+  const F4 f = floor_fast4(u);
+  frac = u - f;
+  i0 = __builtin_convertvector(f, I4);
+  i1 = i0 + 1;
+  i0 = i0 < 0 ? i0 + size : i0;
+  i1 = i1 >= size ? i1 - size : i1;
+}
+
+// Bilinear REPEAT/REPEAT samples of one level for the four pixels.
+void bilinear_repeat_quad(const TextureLevel& level, F4 s, F4 t, F4 out[4]) {
+  I4 i0, i1, j0, j1;
+  F4 fa, fb;
+  repeat_indices4(s, level.width, i0, i1, fa);
+  repeat_indices4(t, level.height, j0, j1, fb);
+  auto unpack = [](uint32_t texel) { return from_unorm8(U4{texel, texel >> 8, texel >> 16, texel >> 24}); };
+  for (int i = 0; i < 4; ++i) {
+    const uint32_t* row0 = level.texels.data() + static_cast<size_t>(j0[i]) * level.width;
+    const uint32_t* row1 = level.texels.data() + static_cast<size_t>(j1[i]) * level.width;
+    const float a = fa[i], b = fb[i];
+    out[i] = splat((1 - a) * (1 - b)) * unpack(row0[i0[i]]) + splat(a * (1 - b)) * unpack(row0[i1[i]]) +
+             splat((1 - a) * b) * unpack(row1[i0[i]]) + splat(a * b) * unpack(row1[i1[i]]);
+  }
+}
+
 template <bool kRepeat>
 void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],
                          float out[4][4]) {
@@ -202,6 +234,13 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
   }
   const int d1 = static_cast<int>(std::floor(lambda));
   const float f = lambda - static_cast<float>(d1);
+  if (kRepeat && linear) {
+    F4 a[4], b[4];
+    bilinear_repeat_quad(image.levels[d1], load4(s), load4(t), a);
+    bilinear_repeat_quad(image.levels[d1 + 1], load4(s), load4(t), b);
+    for (int i = 0; i < 4; ++i) store4(out[i], splat(1 - f) * a[i] + splat(f) * b[i]);
+    return;
+  }
   for (int i = 0; i < 4; ++i) {
     const F4 a = sample_level<kRepeat>(image.levels[d1], sampler, linear, s[i], t[i]);
     const F4 b = sample_level<kRepeat>(image.levels[d1 + 1], sampler, linear, s[i], t[i]);
