@@ -291,8 +291,10 @@ inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
   return mask;
 }
 
+// An AVX2 copy is chosen at load time where the CPU has it: the same operations (no FMA, no
+// contraction), so the same results, with 256-bit doubles and three-operand instructions.
 template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver>
-void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+[[gnu::target_clones("avx2", "default")]] void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
