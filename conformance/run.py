@@ -88,7 +88,7 @@ def run_piglit(driver, platform, groups, args, lib_dir):
         cmd += ["-x", x]
     cmd.append(results_dir)
     if platform != "surfaceless_egl":
-        cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"] + cmd
+        cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"] + cmd
     print(f"[{driver}] {' '.join(cmd)}", flush=True)
     start = time.time()
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
@@ -147,7 +147,7 @@ def passes_on_retry(test, platform, env):
     if not cmd:
         return False
     if platform != "surfaceless_egl":
-        cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"] + cmd
+        cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"] + cmd
     env = dict(env, PIGLIT_PLATFORM=platform)
     try:
         out = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=120).stdout

@@ -20,11 +20,29 @@ double plane_distance(const ClipVert& v, const ClipVolume& vol, int plane) {
   }
 }
 
+// Puts the coordinate that plane `plane` constrains exactly onto the plane. Interpolating it
+// instead loses everything at huge coordinates (1e30 - 1e30 + ...), leaving the new vertex
+// far from the plane and two triangles sharing an edge with different cut vertices.
+void snap_onto_plane(ClipVert& v, const ClipVolume& vol, int plane) {
+  double* p = v.pos;
+  switch (plane) {
+    case 0: p[2] = -p[3]; break;
+    case 1: p[2] = p[3]; break;
+    case 2: p[3] = kMinW; break;
+    case 3: p[0] = vol.x_min * p[3]; break;
+    case 4: p[0] = vol.x_max * p[3]; break;
+    case 5: p[1] = vol.y_min * p[3]; break;
+    default: p[1] = vol.y_max * p[3]; break;
+  }
+}
+
 // The point where the segment from `in` (inside) to `out` (outside) meets the plane.
-ClipVert intersect(const ClipVert& in, const ClipVert& out, double d_in, double d_out) {
+ClipVert intersect(const ClipVert& in, const ClipVert& out, double d_in, double d_out, const ClipVolume& vol,
+                   int plane) {
   const double t = d_in / (d_in - d_out);
   ClipVert r;
   for (int i = 0; i < 4; ++i) r.pos[i] = in.pos[i] + t * (out.pos[i] - in.pos[i]);
+  snap_onto_plane(r, vol, plane);
   const float tf = static_cast<float>(t);
   for (int i = 0; i < kClipAttrs; ++i) r.attr[i] = in.attr[i] + tf * (out.attr[i] - in.attr[i]);
   return r;
@@ -62,8 +80,8 @@ void clip_polygon(const std::vector<ClipVert>& in, const ClipVolume& vol, std::v
       const double da = plane_distance(a, vol, p), db = plane_distance(b, vol, p);
       const bool a_in = da >= 0.0, b_in = db >= 0.0;
       if (a_in) scratch.push_back(a);
-      if (a_in && !b_in) scratch.push_back(intersect(a, b, da, db));
-      if (!a_in && b_in) scratch.push_back(intersect(b, a, db, da));
+      if (a_in && !b_in) scratch.push_back(intersect(a, b, da, db, vol, p));
+      if (!a_in && b_in) scratch.push_back(intersect(b, a, db, da, vol, p));
     }
     out.swap(scratch);
     if (out.size() < 3) out.clear();
@@ -79,8 +97,8 @@ bool clip_line(ClipVert& a, ClipVert& b, const ClipVolume& vol) {
     const double da = plane_distance(a, vol, p), db = plane_distance(b, vol, p);
     const bool a_in = da >= 0.0, b_in = db >= 0.0;
     if (!a_in && !b_in) return false;
-    if (a_in && !b_in) b = intersect(a, b, da, db);
-    else if (!a_in && b_in) a = intersect(b, a, db, da);
+    if (a_in && !b_in) b = intersect(a, b, da, db, vol, p);
+    else if (!a_in && b_in) a = intersect(b, a, db, da, vol, p);
   }
   return true;
 }
