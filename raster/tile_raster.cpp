@@ -147,9 +147,9 @@ int64_t span_start(const LineCoverage& l, int m) {
     num = -num;
     den = -den;
   }
-  const int64_t minor = floor_div(num, den);  // floor of the line's minor coordinate there
-  // Pixels whose centre lies in (minor - width/2, minor + width/2].
-  return floor_div(minor - kSubpixelHalf * l.width - kSubpixelHalf, kSubpixelOne) + 1;
+  const int64_t minor = ceil_div(num, den);  // ceiling of the line's minor coordinate there
+  // Pixels whose centre lies in [minor - width/2, minor + width/2), as llvmpipe's line quads.
+  return ceil_div(minor - kSubpixelHalf * l.width - kSubpixelHalf, kSubpixelOne);
 }
 
 void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {

@@ -193,6 +193,32 @@ TEST_F(PrimitivesTest, WideLine) {
   EXPECT_FALSE(lit(5, 12));
 }
 
+// A line exactly on a pixel boundary takes the pixels below (left of) it, and a wide line
+// the pixels whose centres lie in [centre - width/2, centre + width/2): llvmpipe's choice.
+TEST_F(PrimitivesTest, LinesOnPixelBoundariesTakeTheLowerSide) {
+  for (float width : {1.0f, 2.0f, 3.0f}) {
+    clear_to(0, 0, 0, 0);
+    glLineWidth(width);
+    glBegin(GL_LINES);
+    glVertex2f(20, 3);
+    glVertex2f(20, 9);  // vertical, on the boundary between columns 19 and 20
+    glVertex2f(2, 14);
+    glVertex2f(12, 14);  // horizontal, between rows 13 and 14
+    glEnd();
+    const int w = static_cast<int>(width);
+    const int first = -((w + 1) / 2);  // offset of the first column (row) from the boundary
+    EXPECT_EQ(count_pixels({255, 255, 255, 255}), 6 * w + 10 * w) << width;
+    EXPECT_TRUE(lit(20 + first, 5)) << width;
+    EXPECT_FALSE(lit(20 + first - 1, 5)) << width;
+    EXPECT_TRUE(lit(20 + first + w - 1, 5)) << width;
+    EXPECT_FALSE(lit(20 + first + w, 5)) << width;
+    EXPECT_TRUE(lit(6, 14 + first)) << width;
+    EXPECT_FALSE(lit(6, 14 + first - 1)) << width;
+    EXPECT_TRUE(lit(6, 14 + first + w - 1)) << width;
+    EXPECT_FALSE(lit(6, 14 + first + w)) << width;
+  }
+}
+
 TEST_F(PrimitivesTest, StripsAndFans) {
   glBegin(GL_TRIANGLE_STRIP);
   glVertex2i(0, 0);
