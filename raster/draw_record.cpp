@@ -54,6 +54,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.key.blend = state.blend || state.logic_op_enabled;
   d.key.blend_over = state.blend && !state.logic_op_enabled && is_blend_over(state.blend_state);
   d.key.flat = state.flat_shading;
+  d.key.count_samples = state.sample_counter != nullptr;
   d.routine = select_quad_routine(d.key);
   return d;
 }

@@ -13,8 +13,9 @@ namespace pineda::raster {
 struct DrawRecord;
 
 // Shades a row of `count` 2x2 quads, quad k at (x + 2k, y) (even coordinates); bit i of
-// masks[k] is pixel (x + 2k + (i & 1), y + (i >> 1)).
-using QuadRoutine = void (*)(const DrawRecord&, const PrimSetup&, const Framebuffer&, int x, int y, int count,
+// masks[k] is pixel (x + 2k + (i & 1), y + (i >> 1)). Returns the number of pixels that
+// passed the depth test when the key counts samples, 0 otherwise.
+using QuadRoutine = uint32_t (*)(const DrawRecord&, const PrimSetup&, const Framebuffer&, int x, int y, int count,
                              const uint8_t* masks);
 
 // The compile-time part of the fragment pipeline: each combination has its own routine.
@@ -25,6 +26,7 @@ struct FragmentKey {
   bool blend = false;  // blending or logic op: the destination colour is read
   bool blend_over = false;  // blending is SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD (no logic op)
   bool flat = false;
+  bool count_samples = false;  // an occlusion query is active
 };
 
 struct DrawRecord {

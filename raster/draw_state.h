@@ -3,7 +3,9 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 
+#include "raster/sample_counter.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -83,6 +85,9 @@ struct DrawState {
 
   // Texturing (fixed function); a unit is enabled when its image is non-null.
   std::array<TextureUnit, kMaxTextureUnits> texture_units;
+
+  // Set while an occlusion query is active: the draw counts its passing samples here.
+  std::shared_ptr<SampleCounter> sample_counter;
 };
 
 // What glClear needs.

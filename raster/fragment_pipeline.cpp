@@ -293,8 +293,8 @@ inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
 
 // An AVX2 copy is chosen at load time where the CPU has it: the same operations (no FMA, no
 // contraction), so the same results, with 256-bit doubles and three-operand instructions.
-template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver>
-[[gnu::target_clones("avx2", "default")]] void shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver, bool kCount>
+[[gnu::target_clones("avx2", "default")]] uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
@@ -303,6 +303,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
   // Without an alpha test no stage before depth and stencil reads the colour, so they run first
   // and only the surviving quads are coloured (the colour has no side effects).
   const bool early_tests = !s.alpha_test;
+  uint32_t passed = 0;
   for (int q = 0; q < count; ++q) {
     unsigned mask = masks[q];
     if (!mask) continue;
@@ -315,6 +316,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     };
     if (early_tests) {
       depth_and_stencil();
+      if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
       if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, quad_colors<kTex, kFlat>(d, p, ox, oy));
       continue;
     }
@@ -322,14 +324,16 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     for (int i = 0; i < 4; ++i)
       if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
     depth_and_stencil();
+    if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
     if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, col);
   }
+  return passed;
 }
 
 template <int kBits>
 constexpr QuadRoutine routine_for() {
   return &shade_quads<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0,
-                      (kBits & 32) != 0>;
+                      (kBits & 32) != 0, (kBits & 64) != 0>;
 }
 
 template <int... kBits>
@@ -337,13 +341,13 @@ constexpr auto make_table(std::integer_sequence<int, kBits...>) {
   return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits>()...};
 }
 
-constexpr auto kRoutines = make_table(std::make_integer_sequence<int, 64>{});
+constexpr auto kRoutines = make_table(std::make_integer_sequence<int, 128>{});
 
 }  // namespace
 
 QuadRoutine select_quad_routine(const FragmentKey& key) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
-                   (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0);
+                   (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0) | (key.count_samples ? 64 : 0);
   return kRoutines[bits];
 }
 

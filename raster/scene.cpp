@@ -83,7 +83,9 @@ void Scene::run_tile(int tile) const {
       apply_clear(clears_[cmd & ~kClearBit], fb_, rect);
     } else {
       const PrimSetup& prim = prims_[cmd];
-      rasterize_in_tile(prim, draws_[prim.draw], fb_, rect);
+      const DrawRecord& draw = draws_[prim.draw];
+      const uint64_t passed = rasterize_in_tile(prim, draw, fb_, rect);
+      if (passed) draw.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);
     }
   }
 }

@@ -49,6 +49,7 @@ struct QuadSink {
   const PrimSetup& p;
   const DrawRecord& d;
   const Framebuffer& fb;
+  mutable uint64_t samples_passed = 0;
   void row(int x, int y, int count, const uint8_t* masks) const {
     // Skip empty quads at both ends.
     while (count > 0 && !masks[0]) {
@@ -57,7 +58,7 @@ struct QuadSink {
       --count;
     }
     while (count > 0 && !masks[count - 1]) --count;
-    if (count > 0) d.routine(d, p, fb, x, y, count, masks);
+    if (count > 0) samples_passed += d.routine(d, p, fb, x, y, count, masks);
   }
 };
 
@@ -186,15 +187,16 @@ bool triangle_may_touch(const PrimSetup& prim, const PixelRect& rect) {
   return classify(prim, rect) != BlockCover::None;
 }
 
-void rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile) {
+uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile) {
   const PixelRect area = intersect(prim.bounds, tile);
-  if (area.empty()) return;
+  if (area.empty()) return 0;
   const QuadSink sink{prim, draw, fb};
   switch (prim.kind) {
     case CoverageKind::Triangle: rasterize_triangle(prim, area, sink); break;
     case CoverageKind::Line: rasterize_line(prim, area, sink); break;
     case CoverageKind::Point: emit_full(area, area, sink); break;
   }
+  return sink.samples_passed;
 }
 
 }  // namespace pineda::raster

@@ -8,7 +8,8 @@
 
 namespace pineda::raster {
 
-void rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile);
+// Returns the samples that passed the depth test when the draw counts them, 0 otherwise.
+uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile);
 
 // Conservative: false only when no pixel centre of `rect` is inside all three edges.
 bool triangle_may_touch(const PrimSetup& prim, const PixelRect& rect);
