@@ -125,10 +125,10 @@ EGLBoolean copy_out(const std::vector<const Config*>& list, EGLConfig* configs, 
 
 }  // namespace
 
-std::span<const Config> all_configs() { return kConfigs; }
+std::vector<Config> surfaceless_configs() { return {std::begin(kConfigs), std::end(kConfigs)}; }
 
-const Config* find_config(EGLConfig handle) {
-  for (const Config& c : kConfigs)
+const Config* find_config(const Display& display, EGLConfig handle) {
+  for (const Config& c : display.configs)
     if (&c == handle) return &c;
   return nullptr;
 }
@@ -149,7 +149,8 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
     case EGL_COLOR_BUFFER_TYPE: *value = EGL_RGB_BUFFER; return true;
     case EGL_CONFIG_CAVEAT: *value = EGL_NONE; return true;
     case EGL_TRANSPARENT_TYPE: *value = EGL_NONE; return true;
-    case EGL_NATIVE_VISUAL_TYPE: *value = EGL_NONE; return true;
+    case EGL_NATIVE_VISUAL_TYPE: *value = c.native_visual_type; return true;
+    case EGL_NATIVE_VISUAL_ID: *value = c.native_visual_id; return true;
     case EGL_BIND_TO_TEXTURE_RGB:
     case EGL_BIND_TO_TEXTURE_RGBA:
     case EGL_NATIVE_RENDERABLE: *value = EGL_FALSE; return true;
@@ -161,7 +162,6 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
     case EGL_ALPHA_MASK_SIZE:
     case EGL_LUMINANCE_SIZE:
     case EGL_LEVEL:
-    case EGL_NATIVE_VISUAL_ID:
     case EGL_SAMPLE_BUFFERS:
     case EGL_SAMPLES:
     case EGL_TRANSPARENT_RED_VALUE:
@@ -173,17 +173,19 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
 
 EGLBoolean GetConfigs(EGLDisplay dpy, EGLConfig* configs, EGLint config_size, EGLint* num_config) {
   auto lock = Registry::instance().lock();
-  if (!initialized_display(dpy)) return EGL_FALSE;
+  Display* display = initialized_display(dpy);
+  if (!display) return EGL_FALSE;
   if (!num_config) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
   std::vector<const Config*> list;
-  for (const Config& c : kConfigs) list.push_back(&c);
+  for (const Config& c : display->configs) list.push_back(&c);
   return copy_out(list, configs, config_size, num_config);
 }
 
 EGLBoolean ChooseConfig(EGLDisplay dpy, const EGLint* attrib_list, EGLConfig* configs,
                         EGLint config_size, EGLint* num_config) {
   auto lock = Registry::instance().lock();
-  if (!initialized_display(dpy)) return EGL_FALSE;
+  Display* display = initialized_display(dpy);
+  if (!display) return EGL_FALSE;
   if (!num_config) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
 
   std::vector<EGLint> wanted(kCriteriaCount);
@@ -196,7 +198,7 @@ EGLBoolean ChooseConfig(EGLDisplay dpy, const EGLint* attrib_list, EGLConfig* co
   // A given config ID overrides every other attribute.
   EGLint id = wanted[criterion_index(EGL_CONFIG_ID)];
   std::vector<const Config*> list;
-  for (const Config& c : kConfigs) {
+  for (const Config& c : display->configs) {
     if (id != EGL_DONT_CARE ? c.id == id : matches(c, wanted)) list.push_back(&c);
   }
   std::stable_sort(list.begin(), list.end(), [&](const Config* a, const Config* b) {
@@ -207,8 +209,9 @@ EGLBoolean ChooseConfig(EGLDisplay dpy, const EGLint* attrib_list, EGLConfig* co
 
 EGLBoolean GetConfigAttrib(EGLDisplay dpy, EGLConfig config, EGLint attribute, EGLint* value) {
   auto lock = Registry::instance().lock();
-  if (!initialized_display(dpy)) return EGL_FALSE;
-  const Config* c = find_config(config);
+  Display* display = initialized_display(dpy);
+  if (!display) return EGL_FALSE;
+  const Config* c = find_config(*display, config);
   if (!c) return fail(EGL_BAD_CONFIG, EGL_FALSE);
   EGLint result = 0;
   if (!config_attribute(*c, attribute, &result)) return fail(EGL_BAD_ATTRIBUTE, EGL_FALSE);

@@ -78,7 +78,7 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   const EGLenum api = thread_state().api;
   if (api == EGL_NONE) return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
   const bool gles = api == EGL_OPENGL_ES_API;
-  const Config* c = find_config(config);
+  const Config* c = find_config(*display, config);
   if (!c) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
   if (share_context != EGL_NO_CONTEXT) {
     if (!display->find_context(share_context)) return fail(EGL_BAD_CONTEXT, EGL_NO_CONTEXT);

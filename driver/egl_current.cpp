@@ -4,6 +4,7 @@
 
 #include "driver/egl_registry.h"
 #include "driver/egl_thread.h"
+#include "driver/egl_x11.h"
 #include "glapi/current.h"
 #include "glapi/egl_entry_points.h"
 
@@ -49,6 +50,7 @@ EGLBoolean MakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLCont
     if (!s) continue;
     if (bound_elsewhere(s->bound_thread, t)) return fail(EGL_BAD_ACCESS, EGL_FALSE);
     if (!compatible(*s->config, *context->config)) return fail(EGL_BAD_MATCH, EGL_FALSE);
+    if (!follow_native_size(*s)) return fail(EGL_BAD_NATIVE_WINDOW, EGL_FALSE);
   }
 
   // Claim the new binding. The old one stays this thread's until its GL side has let go,
@@ -68,8 +70,8 @@ EGLBoolean MakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLCont
   t.read_handle = read;
   if (old_context && old_context != context) old_context->gl->release_current();
   set_current_context(context->gl.get());
-  context->gl->make_current(draw_surface ? &draw_surface->drawable : nullptr,
-                            read_surface ? &read_surface->drawable : nullptr);
+  context->gl->make_current(draw_surface ? draw_surface->gl_drawable() : nullptr,
+                            read_surface ? read_surface->gl_drawable() : nullptr);
 
   // Hand back what the new binding does not use.
   lock.lock();
@@ -106,6 +108,7 @@ EGLBoolean ReleaseThread() {
 EGLBoolean WaitClient() {
   ThreadState& t = thread_state();
   if (t.context) t.context->gl->finish();
+  if (t.context && t.draw) show_single_buffered(*t.draw);
   return succeed(EGL_TRUE);
 }
 

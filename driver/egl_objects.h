@@ -12,6 +12,11 @@
 #include "state/context.h"
 #include "state/drawable.h"
 
+namespace pineda::glx {
+struct Config;
+struct DrawableObject;
+}  // namespace pineda::glx
+
 namespace pineda::egl {
 
 struct Config {
@@ -20,6 +25,9 @@ struct Config {
   EGLint depth, stencil;
   EGLint surface_type;
   EGLint renderable_type;
+  // On the X11 platform: the X visual that windows and pixmaps of this config use.
+  EGLint native_visual_id = 0;
+  EGLint native_visual_type = EGL_NONE;
 };
 
 struct Surface;
@@ -44,6 +52,12 @@ struct Surface {
   std::vector<uint8_t> stencil;
   pineda::Drawable drawable;
   const ThreadState* bound_thread = nullptr;  // guarded by the registry mutex
+  // A window or pixmap surface (X11 platform): its buffers and presentation are GLX's
+  // (egl_x11.h); `drawable` above is then unused.
+  std::shared_ptr<glx::DrawableObject> native;
+  std::shared_ptr<glx::Config> native_config;
+
+  pineda::Drawable* gl_drawable();
 };
 
 // A fence: Pineda completes the rendering when the fence is created, so it is born signaled.
@@ -53,8 +67,12 @@ struct Sync {
 
 struct Display {
   EGLenum platform = 0;
-  void* native = nullptr;
+  void* native = nullptr;  // EGL_PLATFORM_X11_KHR: the Display* (null: the default display)
+  void* x11 = nullptr;     // the Display* in use, once initialized
+  int screen = 0;
   bool initialized = false;
+  // Made at the first eglInitialize; a config handle is the address of one of them.
+  std::vector<Config> configs;
   std::unordered_map<EGLContext, std::shared_ptr<ContextObject>> contexts;
   std::unordered_map<EGLSurface, std::shared_ptr<Surface>> surfaces;
   std::unordered_map<EGLSync, std::unique_ptr<Sync>> syncs;

@@ -8,8 +8,8 @@ namespace pineda::egl {
 namespace {
 
 constexpr const char* kClientExtensions =
-    "EGL_EXT_client_extensions EGL_EXT_platform_base EGL_KHR_client_get_all_proc_addresses "
-    "EGL_MESA_platform_surfaceless";
+    "EGL_EXT_client_extensions EGL_EXT_platform_base EGL_EXT_platform_x11 "
+    "EGL_KHR_client_get_all_proc_addresses EGL_KHR_platform_x11 EGL_MESA_platform_surfaceless";
 constexpr const char* kDisplayExtensions =
     "EGL_KHR_create_context EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context";
 

@@ -1,11 +1,13 @@
 // eglCreatePbufferSurface, eglDestroySurface, eglQuerySurface, eglSwapBuffers,
 // eglSwapInterval. A pbuffer is memory the driver owns: RGBA8 colour, uint32 depth, uint8
-// stencil, row 0 at the bottom.
+// stencil, row 0 at the bottom. Window and pixmap surfaces are egl_x11_surface.cpp's.
 #include <algorithm>
 
 #include "driver/egl_config.h"
+#include "driver/frame_capture.h"
 #include "driver/egl_registry.h"
 #include "driver/egl_thread.h"
+#include "driver/egl_x11.h"
 #include "glapi/egl_entry_points.h"
 
 namespace pineda::egl {
@@ -37,7 +39,7 @@ EGLSurface CreatePbufferSurface(EGLDisplay dpy, EGLConfig config, const EGLint* 
   auto lock = Registry::instance().lock();
   Display* display = initialized_display(dpy);
   if (!display) return EGL_NO_SURFACE;
-  const Config* c = find_config(config);
+  const Config* c = find_config(*display, config);
   if (!c) return fail(EGL_BAD_CONFIG, EGL_NO_SURFACE);
 
   EGLint width = 0, height = 0;
@@ -114,7 +116,7 @@ EGLBoolean QuerySurface(EGLDisplay dpy, EGLSurface surface, EGLint attribute, EG
     case EGL_TEXTURE_TARGET: result = EGL_NO_TEXTURE; break;
     case EGL_MIPMAP_TEXTURE:
     case EGL_MIPMAP_LEVEL: result = 0; break;
-    case EGL_RENDER_BUFFER: result = EGL_BACK_BUFFER; break;
+    case EGL_RENDER_BUFFER: result = render_buffer(*s); break;
     case EGL_SWAP_BEHAVIOR: result = EGL_BUFFER_PRESERVED; break;
     case EGL_MULTISAMPLE_RESOLVE: result = EGL_MULTISAMPLE_RESOLVE_DEFAULT; break;
     case EGL_HORIZONTAL_RESOLUTION:
@@ -140,8 +142,14 @@ EGLBoolean SwapBuffers(EGLDisplay dpy, EGLSurface surface) {
   if (!t.context) return fail(EGL_BAD_CONTEXT, EGL_FALSE);
   if (t.draw != s) return fail(EGL_BAD_SURFACE, EGL_FALSE);
   lock.unlock();
-  // A pbuffer has nothing to present; swapping only completes the rendering.
+  if (s->native) {
+    const EGLint error = swap_native(*s, *t.context->gl);
+    return error == EGL_SUCCESS ? succeed(EGL_TRUE) : fail(error, EGL_FALSE);
+  }
+  // A pbuffer has nothing to present; swapping completes the rendering (and the frame can
+  // be captured).
   t.context->gl->finish();
+  driver::capture_frame(s->drawable.framebuffer.color, s->width, s->height);
   return succeed(EGL_TRUE);
 }
 

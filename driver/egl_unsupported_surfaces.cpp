@@ -1,5 +1,5 @@
-// The EGL 1.5 calls for what the surfaceless platform does not have: windows, pixmaps,
-// client-buffer pbuffers, textures from pbuffers, EGL images. Each validates its arguments
+// The EGL 1.5 calls for what Pineda does not have: client-buffer pbuffers, textures from
+// pbuffers, copies to native pixmaps, EGL images. Each validates its arguments
 // and fails with the error the spec gives for an unsupported request.
 #include "driver/egl_config.h"
 #include "driver/egl_registry.h"
@@ -7,38 +7,6 @@
 #include "glapi/egl_entry_points.h"
 
 namespace pineda::egl {
-namespace {
-
-// No config has EGL_WINDOW_BIT or EGL_PIXMAP_BIT: EGL_BAD_MATCH once the config is valid.
-template <class Handle>
-Handle no_native_surface(EGLDisplay dpy, EGLConfig config, Handle none) {
-  auto lock = Registry::instance().lock();
-  if (!initialized_display(dpy)) return none;
-  if (!find_config(config)) return fail(EGL_BAD_CONFIG, none);
-  return fail(EGL_BAD_MATCH, none);
-}
-
-}  // namespace
-
-EGLSurface CreateWindowSurface(EGLDisplay dpy, EGLConfig config, EGLNativeWindowType win,
-                               const EGLint* attrib_list) {
-  return no_native_surface(dpy, config, EGL_NO_SURFACE);
-}
-
-EGLSurface CreatePlatformWindowSurface(EGLDisplay dpy, EGLConfig config, void* native_window,
-                                       const EGLAttrib* attrib_list) {
-  return no_native_surface(dpy, config, EGL_NO_SURFACE);
-}
-
-EGLSurface CreatePixmapSurface(EGLDisplay dpy, EGLConfig config, EGLNativePixmapType pixmap,
-                               const EGLint* attrib_list) {
-  return no_native_surface(dpy, config, EGL_NO_SURFACE);
-}
-
-EGLSurface CreatePlatformPixmapSurface(EGLDisplay dpy, EGLConfig config, void* native_pixmap,
-                                       const EGLAttrib* attrib_list) {
-  return no_native_surface(dpy, config, EGL_NO_SURFACE);
-}
 
 EGLSurface CreatePbufferFromClientBuffer(EGLDisplay dpy, EGLenum buftype, EGLClientBuffer buffer,
                                          EGLConfig config, const EGLint* attrib_list) {

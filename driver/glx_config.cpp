@@ -14,8 +14,23 @@ struct Variant {
   int alpha;
 };
 
-// The visuals a config can present to: 8 bits per channel in X's native 32-bit pixel
-// layout, which is Pineda's BGRA8 in memory on a little-endian client.
+std::vector<Variant> variants_for_depth(int depth) {
+  std::vector<Variant> out;
+  for (bool db : {true, false})
+    for (bool ds : {true, false}) {
+      if (depth == 24) {
+        out.push_back({db, ds, 0});
+        out.push_back({db, ds, 8});
+      } else {
+        out.push_back({db, ds, 8});
+      }
+    }
+  return out;
+}
+
+}  // namespace
+
+// X's native 32-bit pixel layout is Pineda's BGRA8 in memory on a little-endian client.
 std::vector<XVisualInfo> usable_visuals(Display* dpy, int screen, int depth) {
   XVisualInfo tmpl{};
   tmpl.screen = screen;
@@ -40,22 +55,6 @@ std::vector<XVisualInfo> usable_visuals(Display* dpy, int screen, int depth) {
   });
   return result;
 }
-
-std::vector<Variant> variants_for_depth(int depth) {
-  std::vector<Variant> out;
-  for (bool db : {true, false})
-    for (bool ds : {true, false}) {
-      if (depth == 24) {
-        out.push_back({db, ds, 0});
-        out.push_back({db, ds, 8});
-      } else {
-        out.push_back({db, ds, 8});
-      }
-    }
-  return out;
-}
-
-}  // namespace
 
 std::vector<std::unique_ptr<Config>> build_configs(Display* dpy) {
   std::vector<std::unique_ptr<Config>> configs;

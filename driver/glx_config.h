@@ -3,10 +3,16 @@
 #pragma once
 #include "driver/glx_objects.h"
 
+#include <X11/Xutil.h>
+
 namespace pineda::glx {
 
 // Pbuffers (and window buffers) are limited to what the rasterizer addresses comfortably.
 inline constexpr int kMaxDrawableSize = 16384;
+
+// The TrueColor visuals of `depth` on `screen` that Pineda presents to: 8 bits per channel
+// in X's native 32-bit pixel layout, the screen's default visual first.
+std::vector<XVisualInfo> usable_visuals(Display* dpy, int screen, int depth);
 
 // The configs of every screen of `dpy`, best first per screen, with unique ids from 1.
 std::vector<std::unique_ptr<Config>> build_configs(Display* dpy);

@@ -11,14 +11,6 @@
 namespace pineda::glx {
 namespace {
 
-bool draws_to_front(const ContextObject& c, const DrawableObject& d) {
-  if (d.kind == DrawableKind::Pbuffer) return false;
-  if (d.kind == DrawableKind::Pixmap || !d.config->double_buffered) return true;
-  switch (c.gl->draw_buffer) {
-    case GL_FRONT: case GL_FRONT_LEFT: case GL_LEFT: case GL_FRONT_AND_BACK: return true;
-    default: return false;
-  }
-}
 
 bool compatible(const Config& a, const Config& b) {
   return a.red == b.red && a.green == b.green && a.blue == b.blue && a.alpha == b.alpha &&
@@ -131,7 +123,7 @@ void ThreadState::flushed() { flush_front(*this, false); }
 void flush_front(ThreadState& t, bool checked) {
   if (!t.context) return;
   t.context->gl->finish();
-  if (t.draw && draws_to_front(*t.context, *t.draw)) present(*t.draw, checked);
+  if (t.draw && t.draw->drawable.front_drawn) present(*t.draw, checked);
 }
 
 Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext ctx,

@@ -2,6 +2,8 @@
 
 #include <X11/Xutil.h>
 
+#include "driver/frame_capture.h"
+
 #include <cstring>
 #include <mutex>
 
@@ -27,6 +29,9 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   const size_t count = static_cast<size_t>(width) * height;
   d.shm.reset();
   d.color.clear();
+  d.back.clear();
+  // A pixmap has one colour buffer, which is its contents.
+  const bool double_buffered = d.config->double_buffered && d.kind != DrawableKind::Pixmap;
   if (d.kind != DrawableKind::Pbuffer && d.dpy)
     d.shm = SharedImage::create(d.dpy, d.visual, d.x_depth, width, height);
   if (d.shm) {
@@ -36,6 +41,7 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
     d.color.assign(count * 4, 0);
     d.pixels = d.color.data();
   }
+  if (double_buffered) d.back.assign(count * 4, 0);
   d.allocated = true;
   d.depth.assign(d.config->depth ? count : 0, 0);
   d.stencil.assign(d.config->stencil ? count : 0, 0);
@@ -47,16 +53,18 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   fb.height = height;
   const ptrdiff_t row_bytes = static_cast<ptrdiff_t>(width) * 4;
   // Framebuffer row 0 (the bottom) is the last row in memory.
-  uint8_t* bottom_row = count ? d.pixels + (height - 1) * row_bytes : nullptr;
-  fb.color = {bottom_row, -row_bytes, raster::ColorFormat::BGRA8};
+  auto bottom_up = [&](uint8_t* top_row) -> raster::ColorBuffer {
+    return {count ? top_row + (height - 1) * row_bytes : nullptr, -row_bytes, raster::ColorFormat::BGRA8};
+  };
+  fb.color = bottom_up(double_buffered ? d.back.data() : d.pixels);
+  d.drawable.front = double_buffered ? bottom_up(d.pixels) : raster::ColorBuffer{};
   fb.depth = {d.depth.empty() ? nullptr : d.depth.data(), width, d.config->depth};
   fb.stencil = {d.stencil.empty() ? nullptr : d.stencil.data(), width, d.config->stencil};
   d.drawable.red_bits = d.config->red;
   d.drawable.green_bits = d.config->green;
   d.drawable.blue_bits = d.config->blue;
   d.drawable.alpha_bits = d.config->alpha;
-  // A pixmap has one colour buffer, which is its contents.
-  d.drawable.double_buffered = d.config->double_buffered && d.kind != DrawableKind::Pixmap;
+  d.drawable.double_buffered = double_buffered;
 }
 
 namespace {
@@ -111,6 +119,8 @@ void unwrap(XImage* image) {
 void present(DrawableObject& d, bool checked) {
   if (!d.dpy || d.kind == DrawableKind::Pbuffer || d.width == 0 || d.height == 0) return;
   if (!d.gc) return;
+  d.drawable.front_drawn = false;
+  if (d.kind == DrawableKind::Window) driver::capture_frame(d.drawable.front_color(), d.width, d.height);
   auto put = [&] {
     if (d.shm) {
       d.shm->put(d.x_drawable, d.gc);
@@ -128,6 +138,11 @@ void present(DrawableObject& d, bool checked) {
     put();
     if (!d.shm) XFlush(d.dpy);  // a shared image put has already waited for the server
   }
+}
+
+void swap_and_present(DrawableObject& d) {
+  if (!d.back.empty()) std::memcpy(d.pixels, d.back.data(), d.back.size());
+  present(d);
 }
 
 void load_from_x(DrawableObject& d) {

@@ -2,11 +2,10 @@
 //
 // Colour is BGRA8, which is the pixel layout of X's 24- and 32-bit TrueColor visuals on a
 // little-endian client, stored top row first so that an XImage can point at it; the
-// framebuffer sees it bottom-up through a negative stride. A window has one colour buffer,
-// which is the back buffer of a double-buffered config (the front buffer is the window
-// itself): glXSwapBuffers copies it to the window. Drawing to GL_FRONT renders into the same
-// buffer and reaches the window at glFlush/glFinish, and reading GL_FRONT reads it too, which
-// is exact right after a swap and approximate after more drawing to the back buffer.
+// framebuffer sees it bottom-up through a negative stride. A double-buffered window has a
+// front buffer (what was last presented) and a back buffer; glXSwapBuffers copies the back
+// buffer to the front, as Mesa's llvmpipe does, and presents the front. Drawing to GL_FRONT
+// renders into the front buffer, which reaches the window at glFlush/glFinish.
 #pragma once
 #include "driver/glx_objects.h"
 
@@ -20,9 +19,12 @@ void allocate_buffers(DrawableObject& d, int width, int height);
 // reported).
 bool x_drawable_size(Display* dpy, ::Drawable x, int* width, int* height, int* x_depth = nullptr);
 
-// Copies the colour buffer to the X window or pixmap (pbuffers have nothing to copy to).
-// `checked`: X errors (a window destroyed meanwhile) are caught instead of reported.
+// Copies the front colour buffer to the X window or pixmap (pbuffers have nothing to copy
+// to). `checked`: X errors (a window destroyed meanwhile) are caught instead of reported.
 void present(DrawableObject& d, bool checked = false);
+
+// The swap of a double-buffered drawable: the back buffer becomes the front, and is presented.
+void swap_and_present(DrawableObject& d);
 
 // Pixmaps start with the X pixmap's contents.
 void load_from_x(DrawableObject& d);

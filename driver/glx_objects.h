@@ -63,12 +63,14 @@ struct DrawableObject {
   int swap_interval = 1;
 
   // Pineda's buffers; colour rows top-down in memory, so an XImage can point at them. The
-  // colour is in `shm` when the server offers MIT-SHM, otherwise in `color`.
+  // front colour buffer (what X shows) is in `shm` when the server offers MIT-SHM, otherwise
+  // in `color`; a double-buffered window or pbuffer also has `back`.
   int width = 0, height = 0;
   bool allocated = false;
-  uint8_t* pixels = nullptr;
+  uint8_t* pixels = nullptr;  // the front buffer
   std::unique_ptr<SharedImage> shm;
   std::vector<uint8_t> color;
+  std::vector<uint8_t> back;
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
   pineda::Drawable drawable;

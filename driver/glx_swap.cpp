@@ -52,7 +52,7 @@ PINEDA_GLX_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   const bool mine = t.draw == d || t.read == d;
   if (mine) t.context->gl->finish();  // the implicit glFlush
   // Single-buffered drawables and pixmaps are unaffected.
-  if (d->kind == DrawableKind::Window && d->config->double_buffered) present(*d);
+  if (d->drawable.double_buffered) swap_and_present(*d);
   else if (mine) flush_front(t, false);
   follow_resize(t, *d, bindings);
 }

@@ -27,7 +27,7 @@ void Clear(Context& ctx, GLbitfield mask) {
   clear.depth_write = ctx.draw_state.depth_write;
   clear.scissor_test = ctx.draw_state.scissor_test;
   clear.scissor = ctx.draw_state.scissor;
-  ctx.renderer().clear(clear);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().clear(clear); });
 }
 
 void ClearColor(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {

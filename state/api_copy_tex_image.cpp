@@ -16,7 +16,7 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
   const Drawable* d = ctx.read_drawable();
   if (!d || width <= 0 || height <= 0) return out;
   ctx.finish();
-  const raster::Framebuffer& fb = d->framebuffer;
+  const raster::Framebuffer fb = ctx.read_framebuffer();
   const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
   for (GLsizei row = 0; row < height; ++row) {
     const int64_t fy = int64_t(y) + row;
@@ -29,7 +29,7 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
       o[0] = p[bgra ? 2 : 0];
       o[1] = p[1];
       o[2] = p[bgra ? 0 : 2];
-      o[3] = p[3];
+      o[3] = d->alpha_bits ? p[3] : 255;
     }
   }
   return out;

@@ -60,7 +60,7 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0)) return ctx.record_error(GL_INVALID_OPERATION);
   if (!d || !pixels || width == 0 || height == 0) return;
   ctx.finish();
-  const raster::Framebuffer& fb = d->framebuffer;
+  const raster::Framebuffer fb = ctx.read_framebuffer();
   const ImageLayout layout = image_layout(ctx.pack, width, format, type);
   auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
   // Pixels outside the framebuffer are undefined in GL; Pineda leaves the memory untouched.
@@ -79,6 +79,7 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
       } else {
         double rgba[4];
         read_color(fb.color, fx, fy, rgba);
+        if (d->alpha_bits == 0) rgba[3] = 1.0;
         store_color(rgba, format, type, dst);
       }
       if (ctx.pack.swap_bytes) swap_component_bytes(dst, components, pixel_type_size(type));

@@ -15,7 +15,6 @@ Context::~Context() = default;
 void Context::make_current(Drawable* draw, Drawable* read) {
   draw_ = draw;
   read_ = read;
-  bind_framebuffer();
   // GL: the viewport, scissor and draw/read buffers take their initial values from the
   // drawable the context is first bound to; later bindings keep what the application set.
   if (!ever_bound_ && draw) {
@@ -26,6 +25,7 @@ void Context::make_current(Drawable* draw, Drawable* read) {
     draw_state.scissor = {0, 0, draw->framebuffer.width, draw->framebuffer.height};
     draw_buffer = read_buffer = draw->double_buffered ? GL_BACK : GL_FRONT;
   }
+  bind_framebuffer();
 }
 
 void Context::release_current() {
@@ -35,9 +35,5 @@ void Context::release_current() {
 }
 
 void Context::drawable_changed() { bind_framebuffer(); }
-
-void Context::bind_framebuffer() {
-  renderer_->set_framebuffer(draw_ ? draw_->framebuffer : raster::Framebuffer{});
-}
 
 }  // namespace pineda

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <unordered_map>
@@ -82,6 +83,11 @@ class Context {
   Drawable* read_drawable() const { return read_; }
   // The driver calls this when a bound drawable's buffers were replaced (resize, swap).
   void drawable_changed();
+  // Runs `render` (renderer calls) once per colour buffer that glDrawBuffer selects
+  // (draw_buffers.cpp).
+  void render_to_draw_buffers(const std::function<void()>& render);
+  // The read drawable's buffers with the colour buffer that glReadBuffer selects.
+  raster::Framebuffer read_framebuffer() const;
 
   // Errors: the first one is kept until glGetError reads it.
   void record_error(GLenum error) {
@@ -186,6 +192,7 @@ class Context {
 
  private:
   void bind_framebuffer();
+  void use_color_buffer(const raster::ColorBuffer& color);
 
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;

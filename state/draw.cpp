@@ -93,7 +93,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   raster::DrawState& state = ctx.draw_state;
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;
-  ctx.renderer().draw(state, primitive, ctx.transformed, indices);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
 }
 
 }  // namespace pineda

@@ -9,6 +9,15 @@ struct Drawable {
   raster::Framebuffer framebuffer;
   int red_bits = 8, green_bits = 8, blue_bits = 8, alpha_bits = 8;
   bool double_buffered = false;
+  // The front buffer of a double-buffered drawable whose driver keeps one (framebuffer.color
+  // is then the back buffer). Otherwise unset, and GL_FRONT names framebuffer.color.
+  raster::ColorBuffer front;
+
+  // Set by the context when it renders into the front buffer; the driver clears it when it
+  // has shown the front buffer (glFlush shows front-buffer drawing, as in Mesa).
+  bool front_drawn = false;
+
+  const raster::ColorBuffer& front_color() const { return front.base ? front : framebuffer.color; }
 };
 
 }  // namespace pineda

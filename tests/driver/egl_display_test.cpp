@@ -24,7 +24,7 @@ TEST(EglDisplay, DefaultDisplayIsTheSurfacelessDisplay) {
 }
 
 TEST(EglDisplay, UnknownPlatformIsBadParameter) {
-  EXPECT_EQ(eglGetPlatformDisplay(EGL_PLATFORM_X11_KHR, nullptr, nullptr), EGL_NO_DISPLAY);
+  EXPECT_EQ(eglGetPlatformDisplay(EGL_PLATFORM_WAYLAND_KHR, nullptr, nullptr), EGL_NO_DISPLAY);
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
   EXPECT_EQ(eglGetPlatformDisplayEXT(0x1234, nullptr, nullptr), EGL_NO_DISPLAY);
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
@@ -43,10 +43,23 @@ TEST(EglDisplay, DisplayAttributesAreBadAttribute) {
   EXPECT_EQ(eglGetError(), EGL_BAD_ATTRIBUTE);
 }
 
-TEST(EglDisplay, NonDefaultNativeDisplayIsNoDisplayWithoutError) {
+// As in Mesa, another native display is an Xlib Display*: the X11 platform's display for it
+// (tests/glx/egl_x11_test.cpp initializes one under Xvfb).
+TEST(EglDisplay, NonDefaultNativeDisplayIsAnX11Display) {
   int native = 0;
-  EXPECT_EQ(eglGetDisplay(reinterpret_cast<EGLNativeDisplayType>(&native)), EGL_NO_DISPLAY);
+  EGLDisplay dpy = eglGetDisplay(reinterpret_cast<EGLNativeDisplayType>(&native));
+  EXPECT_NE(dpy, EGL_NO_DISPLAY);
   EXPECT_EQ(eglGetError(), EGL_SUCCESS);
+  EXPECT_EQ(eglGetPlatformDisplay(EGL_PLATFORM_X11_KHR, &native, nullptr), dpy);
+  EXPECT_NE(eglGetDisplay(EGL_DEFAULT_DISPLAY), dpy);
+}
+
+TEST(EglDisplay, X11ScreenIsTheOnlyX11DisplayAttribute) {
+  const EGLAttrib screen[] = {EGL_PLATFORM_X11_SCREEN_KHR, 0, EGL_NONE};
+  EXPECT_NE(eglGetPlatformDisplay(EGL_PLATFORM_X11_KHR, nullptr, screen), EGL_NO_DISPLAY);
+  const EGLint bad[] = {EGL_WIDTH, 1, EGL_NONE};
+  EXPECT_EQ(eglGetPlatformDisplayEXT(EGL_PLATFORM_X11_EXT, nullptr, bad), EGL_NO_DISPLAY);
+  EXPECT_EQ(eglGetError(), EGL_BAD_ATTRIBUTE);
 }
 
 TEST(EglDisplay, InitializeReturnsVersion15) {

@@ -21,8 +21,8 @@ TEST(EglClientStrings, ClientExtensionsWithoutDisplay) {
   ASSERT_NE(ext, nullptr);
   EXPECT_EQ(eglGetError(), EGL_SUCCESS);
   for (const char* name : {"EGL_EXT_client_extensions", "EGL_EXT_platform_base",
-                           "EGL_MESA_platform_surfaceless",
-                           "EGL_KHR_client_get_all_proc_addresses"})
+                           "EGL_MESA_platform_surfaceless", "EGL_KHR_platform_x11",
+                           "EGL_EXT_platform_x11", "EGL_KHR_client_get_all_proc_addresses"})
     EXPECT_TRUE(has_extension(ext, name)) << name;
   EXPECT_FALSE(has_extension(ext, "EGL_KHR_create_context"));
   const char* version = eglQueryString(EGL_NO_DISPLAY, EGL_VERSION);

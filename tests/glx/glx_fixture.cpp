@@ -108,4 +108,14 @@ uint32_t gl_pixel(int x, int y) {
   return (uint32_t(rgba[0]) << 16) | (uint32_t(rgba[1]) << 8) | rgba[2];
 }
 
+void clear_with_corner(float br, float bg, float bb, float cr, float cg, float cb) {
+  glClearColor(br, bg, bb, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 10, 10);
+  glClearColor(cr, cg, cb, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+}
+
 }  // namespace pineda_test

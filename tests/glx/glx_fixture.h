@@ -53,4 +53,7 @@ class GlxTest : public ::testing::Test {
 // glReadPixels of one pixel as 0xRRGGBB.
 uint32_t gl_pixel(int x, int y);
 
+// Clears everything to `background` and the bottom-left 10x10 pixels to `corner`.
+void clear_with_corner(float br, float bg, float bb, float cr, float cg, float cb);
+
 }  // namespace pineda_test

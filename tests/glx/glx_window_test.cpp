@@ -9,17 +9,6 @@ using GlxWindowTest = GlxTest;
 
 constexpr uint32_t kRed = 0xff0000, kGreen = 0x00ff00, kBlue = 0x0000ff;
 
-// Clears everything to `background` and the bottom-left 10x10 pixels to `corner`.
-void clear_with_corner(float br, float bg, float bb, float cr, float cg, float cb) {
-  glClearColor(br, bg, bb, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(0, 0, 10, 10);
-  glClearColor(cr, cg, cb, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
-  glDisable(GL_SCISSOR_TEST);
-}
-
 TEST_F(GlxWindowTest, ClearReadPixelsAndSwap) {
   GLXFBConfig config = rgba8(true, true);
   ASSERT_NE(config, nullptr);

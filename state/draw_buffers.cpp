@@ -1,0 +1,107 @@
+// Which colour buffers of the drawables glDrawBuffer and glReadBuffer select.
+#include <cstring>
+#include <vector>
+
+#include "state/context.h"
+
+namespace pineda {
+namespace {
+
+enum class Target { None, Front, Back, Both };
+
+Target draw_target(GLenum buffer, const Drawable& d) {
+  const bool separate_front = d.double_buffered && d.front.base;
+  switch (buffer) {
+    case GL_FRONT: case GL_FRONT_LEFT: return Target::Front;
+    case GL_BACK: case GL_BACK_LEFT: return d.double_buffered ? Target::Back : Target::None;
+    case GL_LEFT: case GL_FRONT_AND_BACK: return separate_front ? Target::Both : Target::Front;
+    default: return Target::None;
+  }
+}
+
+bool reads_front(GLenum buffer) {
+  return buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT;
+}
+
+// A copy of the depth and stencil buffers, to render a second colour buffer from the same
+// depth and stencil values as the first.
+struct DepthStencilCopy {
+  std::vector<uint32_t> depth;
+  std::vector<uint8_t> stencil;
+
+  explicit DepthStencilCopy(const raster::Framebuffer& fb) {
+    for (int y = 0; y < fb.height; ++y) {
+      if (fb.depth.bits) {
+        const uint32_t* row = fb.depth.base + fb.depth.stride * y;
+        depth.insert(depth.end(), row, row + fb.width);
+      }
+      if (fb.stencil.bits) {
+        const uint8_t* row = fb.stencil.base + fb.stencil.stride * y;
+        stencil.insert(stencil.end(), row, row + fb.width);
+      }
+    }
+  }
+
+  void restore(const raster::Framebuffer& fb) const {
+    const size_t w = static_cast<size_t>(fb.width);
+    for (int y = 0; y < fb.height; ++y) {
+      if (fb.depth.bits) std::memcpy(fb.depth.base + fb.depth.stride * y, &depth[w * y], w * 4);
+      if (fb.stencil.bits) std::memcpy(fb.stencil.base + fb.stencil.stride * y, &stencil[w * y], w);
+    }
+  }
+};
+
+}  // namespace
+
+void Context::bind_framebuffer() {
+  if (!draw_) return renderer_->set_framebuffer(raster::Framebuffer{});
+  raster::Framebuffer fb = draw_->framebuffer;
+  switch (draw_target(draw_buffer, *draw_)) {
+    case Target::None: fb.color = {}; break;
+    case Target::Front: fb.color = draw_->front_color(); break;
+    case Target::Back: case Target::Both: break;
+  }
+  renderer_->set_framebuffer(fb);
+}
+
+void Context::use_color_buffer(const raster::ColorBuffer& color) {
+  const raster::ColorBuffer& bound = renderer_->framebuffer().color;
+  if (bound.base == color.base && bound.stride == color.stride) return;
+  raster::Framebuffer fb = draw_->framebuffer;
+  fb.color = color;
+  renderer_->set_framebuffer(fb);
+}
+
+void Context::render_to_draw_buffers(const std::function<void()>& render) {
+  if (!draw_) return render();
+  switch (draw_target(draw_buffer, *draw_)) {
+    case Target::None: use_color_buffer({}); return render();
+    case Target::Front:
+      draw_->front_drawn = true;
+      use_color_buffer(draw_->front_color());
+      return render();
+    case Target::Back: use_color_buffer(draw_->framebuffer.color); return render();
+    case Target::Both: draw_->front_drawn = true; break;
+  }
+  // Each fragment is tested once against depth and stencil, and written to both buffers:
+  // the second pass starts from the depth and stencil values the first one started from,
+  // and so ends with the same ones.
+  const raster::Framebuffer& fb = draw_->framebuffer;
+  use_color_buffer(fb.color);
+  renderer_->flush();
+  const DepthStencilCopy before(fb);
+  render();
+  renderer_->flush();
+  before.restore(fb);
+  use_color_buffer(draw_->front);
+  render();
+}
+
+raster::Framebuffer Context::read_framebuffer() const {
+  if (!read_) return raster::Framebuffer{};
+  raster::Framebuffer fb = read_->framebuffer;
+  if (reads_front(read_buffer)) fb.color = read_->front_color();
+  return fb;
+}
+
+}  // namespace pineda
