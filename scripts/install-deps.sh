@@ -6,6 +6,7 @@ packages=(
   khronos-api librust-khronos-api-dev   # gl.xml (khronos-api) and egl.xml (the registry crate's copy)
   libegl-dev libgl-dev libgles-dev mesa-common-dev libosmesa6-dev libx11-dev libxext-dev xvfb mesa-utils
   libglm-dev libpng-dev libgtest-dev googletest
+  freeglut3-dev libglfw3-dev libsdl2-dev   # the X program tests (tests/x11apps)
 )
 missing=()
 for p in "${packages[@]}"; do
