@@ -40,6 +40,8 @@ template <bool kTex, bool kFlat>
   }
 
   if constexpr (kTex) {
+    // Every unit is sampled before any environment runs: COMBINE may read any unit's texel.
+    float texel[kMaxTextureUnits][4][4];  // [unit][pixel][channel]
     for (int k = 0; k < d.num_units; ++k) {
       const TextureUnit& unit = d.state.texture_units[d.units[k]];
       const Plane* tp = &p.planes[kColorPlanes + kTexPlanesPerUnit * k];
@@ -48,13 +50,16 @@ template <bool kTex, bool kFlat>
       float s[4], t[4];
       store4(s, eval(tp[0], ox, oy) / q);
       store4(t, eval(tp[1], ox, oy) / q);
-      float texel[4][4];
-      sample_quad(*unit.image, unit.sampler, s, t, texel);
-      for (int i = 0; i < 4; ++i) {
-        float frag[4] = {col.c[0][i], col.c[1][i], col.c[2][i], col.c[3][i]};
-        apply_tex_env(unit.env_mode, unit.image->base_format, unit.env_color, texel[i], frag);
-        for (int c = 0; c < 4; ++c) col.c[c][i] = frag[c];
-      }
+      sample_quad(*unit.image, unit.sampler, s, t, texel[d.units[k]]);
+    }
+    for (int i = 0; i < 4; ++i) {
+      PixelTexels texels;
+      for (int k = 0; k < d.num_units; ++k) texels.unit[d.units[k]] = texel[d.units[k]][i];
+      const float primary[4] = {col.c[0][i], col.c[1][i], col.c[2][i], col.c[3][i]};
+      float frag[4] = {primary[0], primary[1], primary[2], primary[3]};
+      for (int k = 0; k < d.num_units; ++k)
+        apply_unit_env(d.state.texture_units[d.units[k]], d.units[k], texels, primary, frag);
+      for (int c = 0; c < 4; ++c) col.c[c][i] = frag[c];
     }
   }
   return col;

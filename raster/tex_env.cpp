@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "raster/tex_combine.h"
+
 namespace pineda::raster {
 namespace {
 
@@ -59,7 +61,18 @@ void apply_tex_env(TexEnvMode mode, TexBaseFormat format, const float env[4], co
       if (intensity) color[3] = std::min(color[3] + t.a, 1.f);
       else if (t.has_alpha) color[3] *= t.a;
       break;
+    case TexEnvMode::Combine:  // apply_tex_combine
+      break;
   }
+}
+
+void apply_unit_env(const TextureUnit& unit, int index, const PixelTexels& texels, const float primary[4],
+                    float color[4]) {
+  if (unit.env_mode == TexEnvMode::Combine) {
+    apply_tex_combine(unit.combine, index, unit.env_color, texels, primary, color);
+    return;
+  }
+  apply_tex_env(unit.env_mode, unit.image->base_format, unit.env_color, texels.unit[index], color);
 }
 
 }  // namespace pineda::raster

@@ -28,7 +28,21 @@ enum class TexFilter : uint8_t {
   NearestMipmapNearest, LinearMipmapNearest, NearestMipmapLinear, LinearMipmapLinear
 };
 enum class TexWrap : uint8_t { Repeat, Clamp, ClampToEdge, ClampToBorder, MirroredRepeat };
-enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add };
+enum class TexEnvMode : uint8_t { Modulate, Replace, Decal, Blend, Add, Combine };
+
+// GL_COMBINE (GL 1.3 3.8.13, ARB_texture_env_combine/_crossbar/_dot3).
+enum class CombineFunc : uint8_t { Replace, Modulate, Add, AddSigned, Interpolate, Subtract, Dot3Rgb, Dot3Rgba };
+enum class CombineSource : uint8_t { Texture, Constant, PrimaryColor, Previous, Texture0 };  // Texture0 + i: unit i
+enum class CombineOperand : uint8_t { SrcColor, OneMinusSrcColor, SrcAlpha, OneMinusSrcAlpha };
+
+struct CombineState {
+  CombineFunc rgb_func = CombineFunc::Modulate, alpha_func = CombineFunc::Modulate;
+  CombineSource rgb_source[3] = {CombineSource::Texture, CombineSource::Previous, CombineSource::Constant};
+  CombineSource alpha_source[3] = {CombineSource::Texture, CombineSource::Previous, CombineSource::Constant};
+  CombineOperand rgb_operand[3] = {CombineOperand::SrcColor, CombineOperand::SrcColor, CombineOperand::SrcAlpha};
+  CombineOperand alpha_operand[3] = {CombineOperand::SrcAlpha, CombineOperand::SrcAlpha, CombineOperand::SrcAlpha};
+  float rgb_scale = 1.f, alpha_scale = 1.f;
+};
 
 struct Sampler {
   TexFilter min_filter = TexFilter::NearestMipmapLinear;
@@ -44,6 +58,7 @@ struct TextureUnit {
   Sampler sampler;
   TexEnvMode env_mode = TexEnvMode::Modulate;
   float env_color[4] = {0, 0, 0, 0};
+  CombineState combine;  // read when env_mode is Combine
 };
 
 }  // namespace pineda::raster

@@ -106,13 +106,13 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
     f.units[u].enabled_2d = ctx.texture_units[u].enabled_2d;
   }
   if (mask & GL_TEXTURE_BIT) {
+    f.active_texture = ctx.active_texture;
     for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
       const TextureUnitState& unit = ctx.texture_units[u];
       AttribFrame::Unit& s = f.units[u];
       s.bound_1d = unit.bound_1d;
       s.bound_2d = unit.bound_2d;
-      s.env_mode = unit.env_mode;
-      std::copy(unit.env_color, unit.env_color + 4, s.env_color);
+      s.env = unit.env;
       s.params_1d = save_params(ctx, unit.bound_1d, GL_TEXTURE_1D);
       s.params_2d = save_params(ctx, unit.bound_2d, GL_TEXTURE_2D);
     }
@@ -256,14 +256,14 @@ void restore(Context& ctx, const AttribFrame& f) {
       const AttribFrame::Unit& saved = f.units[u];
       unit.enabled_1d = saved.enabled_1d;
       unit.enabled_2d = saved.enabled_2d;
-      unit.env_mode = saved.env_mode;
-      std::copy(saved.env_color, saved.env_color + 4, unit.env_color);
+      unit.env = saved.env;
       // Bindings to textures deleted since the push fall back to the default texture.
       unit.bound_1d = saved.bound_1d == 0 || ctx.textures.find(saved.bound_1d) ? saved.bound_1d : 0;
       unit.bound_2d = saved.bound_2d == 0 || ctx.textures.find(saved.bound_2d) ? saved.bound_2d : 0;
       restore_params(ctx, saved.params_1d);
       restore_params(ctx, saved.params_2d);
     }
+    ctx.active_texture = f.active_texture;
     restore_caps(ctx, f, GL_TEXTURE_BIT);
   }
   if (m & GL_SCISSOR_BIT) {
@@ -298,6 +298,7 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) f.texcoord_arrays[u] = ctx.texture_units[u].texcoord_array;
   f.index_array = ctx.index_array;
   f.edge_flag_array = ctx.edge_flag_array;
+  f.client_active_texture = ctx.client_active_texture;
   ctx.client_attrib_stack.push_back(f);
 }
 
@@ -316,6 +317,7 @@ void PopClientAttrib(Context& ctx) {
     for (int u = 0; u < raster::kMaxTextureUnits; ++u) ctx.texture_units[u].texcoord_array = f.texcoord_arrays[u];
     ctx.index_array = f.index_array;
     ctx.edge_flag_array = f.edge_flag_array;
+    ctx.client_active_texture = f.client_active_texture;
   }
 }
 

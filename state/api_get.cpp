@@ -86,6 +86,9 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_MAX_PROJECTION_STACK_DEPTH: out = ints({kMaxProjectionStackDepth}); return true;
     case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
     case GL_MAX_LIGHTS: out = ints({raster::kMaxLights}); return true;
+    case GL_MAX_TEXTURE_UNITS: out = ints({raster::kMaxTextureUnits}); return true;
+    case GL_ACTIVE_TEXTURE: out = enums({double(GL_TEXTURE0 + ctx.active_texture)}); return true;
+    case GL_CLIENT_ACTIVE_TEXTURE: out = enums({double(GL_TEXTURE0 + ctx.client_active_texture)}); return true;
     case GL_MAX_CLIP_PLANES: out = ints({6}); return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({double(kMaxAttribStackDepth)}); return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(kMaxClientAttribStackDepth)}); return true;
@@ -233,7 +236,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
   static const std::string kExtensions =
       "GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract "
       "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
-      "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat";
+      "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
+      "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3";
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

@@ -1,4 +1,4 @@
-// Texture objects, images, parameters and environment (GL 1.1: 1D and 2D textures).
+// Texture objects, images and parameters (GL 1.1: 1D and 2D textures).
 #include <algorithm>
 #include <cmath>
 
@@ -173,21 +173,6 @@ void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) 
 
 bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR; }
 
-void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
-  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
-  TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
-  if (pname == GL_TEXTURE_ENV_MODE) {
-    const GLenum mode = static_cast<GLenum>(v[0]);
-    if (mode != GL_MODULATE && mode != GL_REPLACE && mode != GL_DECAL && mode != GL_BLEND && mode != GL_ADD)
-      return ctx.record_error(GL_INVALID_ENUM);
-    unit.env_mode = mode;
-  } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    for (int i = 0; i < 4; ++i) unit.env_color[i] = std::clamp(v[i], 0.f, 1.f);
-  } else {
-    ctx.record_error(GL_INVALID_ENUM);
-  }
-}
-
 // The values of a texture parameter; `colour` tells whether integer queries map them as colours.
 bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], int& count, bool& colour) {
   TextureObject* tex = bound_texture(ctx, target);
@@ -336,53 +321,6 @@ void GetTexLevelParameterfv(Context& ctx, GLenum target, GLint level, GLenum pna
   GLint v;
   if (!get_tex_level_parameter(ctx, target, level, pname, v)) return ctx.record_error(GL_INVALID_ENUM);
   if (params) *params = GLfloat(v);
-}
-
-void TexEnvf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
-  if (pname == GL_TEXTURE_ENV_COLOR) return ctx.record_error(GL_INVALID_ENUM);
-  const GLfloat v[4] = {param, 0, 0, 0};
-  tex_env(ctx, target, pname, v);
-}
-void TexEnvi(Context& ctx, GLenum target, GLenum pname, GLint param) { TexEnvf(ctx, target, pname, GLfloat(param)); }
-void TexEnvfv(Context& ctx, GLenum target, GLenum pname, const GLfloat* params) {
-  if (params) tex_env(ctx, target, pname, params);
-}
-void TexEnviv(Context& ctx, GLenum target, GLenum pname, const GLint* params) {
-  if (!params) return;
-  GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
-  if (pname == GL_TEXTURE_ENV_COLOR)
-    for (int i = 0; i < 4; ++i) v[i] = GLfloat((2.0 * params[i] + 1.0) / 4294967295.0);
-  tex_env(ctx, target, pname, v);
-}
-
-namespace {
-// The values of a texture environment parameter; false (and an error) when it is not one.
-bool get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
-  const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
-  if (target != GL_TEXTURE_ENV || (pname != GL_TEXTURE_ENV_MODE && pname != GL_TEXTURE_ENV_COLOR)) {
-    ctx.record_error(GL_INVALID_ENUM);
-    return false;
-  }
-  if (pname == GL_TEXTURE_ENV_MODE)
-    v[0] = GLfloat(unit.env_mode);
-  else
-    std::copy(unit.env_color, unit.env_color + 4, v);
-  return true;
-}
-}  // namespace
-
-void GetTexEnvfv(Context& ctx, GLenum target, GLenum pname, GLfloat* params) {
-  GLfloat v[4];
-  if (!get_tex_env(ctx, target, pname, v) || !params) return;
-  std::copy(v, v + (pname == GL_TEXTURE_ENV_COLOR ? 4 : 1), params);
-}
-void GetTexEnviv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
-  GLfloat v[4];
-  if (!get_tex_env(ctx, target, pname, v) || !params) return;
-  if (pname == GL_TEXTURE_ENV_COLOR)
-    for (int i = 0; i < 4; ++i) params[i] = GLint(double(v[i]) * 2147483647.0);
-  else
-    params[0] = GLint(v[0]);
 }
 
 void PrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures, const GLfloat* priorities) {

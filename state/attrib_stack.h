@@ -10,6 +10,7 @@
 
 #include "raster/draw_state.h"
 #include "raster/vertex_transform.h"
+#include "state/tex_env_state.h"
 
 namespace pineda {
 
@@ -53,11 +54,11 @@ struct AttribFrame {
   struct Unit {
     bool enabled_1d, enabled_2d;
     GLuint bound_1d, bound_2d;
-    GLenum env_mode;
-    float env_color[4];
+    TexEnvState env;
     SavedTextureParams params_1d, params_2d;
   };
   std::array<Unit, raster::kMaxTextureUnits> units;
+  GLuint active_texture = 0;
 };
 
 }  // namespace pineda

@@ -20,6 +20,7 @@
 #include "state/attrib_stack.h"
 #include "state/display_list.h"
 #include "state/drawable.h"
+#include "state/tex_env_state.h"
 #include "state/texture_object.h"
 
 namespace pineda {
@@ -58,13 +59,13 @@ struct ClientAttribFrame {
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
   bool index_array = false;
+  GLuint client_active_texture = 0;
 };
 
 struct TextureUnitState {
   bool enabled_2d = false, enabled_1d = false;
   GLuint bound_2d = 0, bound_1d = 0;
-  GLenum env_mode = GL_MODULATE;
-  float env_color[4] = {0, 0, 0, 0};
+  TexEnvState env;
   float current_texcoord[4] = {0, 0, 0, 1};
   ClientArray texcoord_array;
 };

@@ -52,14 +52,9 @@ int snapshot_textures(Context& ctx) {
     out.image = tex->snapshot();
     if (!out.image) continue;
     out.sampler = tex->sampler();
-    switch (unit.env_mode) {
-      case GL_REPLACE: out.env_mode = raster::TexEnvMode::Replace; break;
-      case GL_DECAL: out.env_mode = raster::TexEnvMode::Decal; break;
-      case GL_BLEND: out.env_mode = raster::TexEnvMode::Blend; break;
-      case GL_ADD: out.env_mode = raster::TexEnvMode::Add; break;
-      default: out.env_mode = raster::TexEnvMode::Modulate; break;
-    }
-    std::copy(unit.env_color, unit.env_color + 4, out.env_color);
+    out.env_mode = raster_env_mode(unit.env);
+    if (out.env_mode == raster::TexEnvMode::Combine) out.combine = raster_combine(unit.env);
+    std::copy(unit.env.color, unit.env.color + 4, out.env_color);
     used = u + 1;
   }
   return used;

@@ -56,7 +56,9 @@ TEST_F(StringTest, AdvertisesTheImplementedExtensions) {
   const std::string ext = " " + get_string(GL_EXTENSIONS) + " ";
   for (const char* name : {"GL_EXT_blend_color", "GL_EXT_blend_minmax", "GL_EXT_blend_subtract",
                            "GL_EXT_blend_func_separate", "GL_EXT_texture_edge_clamp", "GL_EXT_texture_env_add",
-                           "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat"})
+                           "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
+                           "GL_ARB_multitexture", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
+                           "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3"})
     EXPECT_NE(ext.find(std::string(" ") + name + " "), std::string::npos) << name;
 }
 
