@@ -180,6 +180,41 @@ def check_expectations(tests, platform):
     return regressions, unexpected_passes, changed
 
 
+def cause_of(test):
+    """The line of a test's output that says why it did not pass."""
+    lines = [l.split("PIGLIT:")[0].strip() for l in (test.get("out", "") + "\n" + test.get("err", "")).splitlines()]
+    lines = [l for l in lines if l and not l.startswith("PIGLIT:") and "Failed to create any GL context" not in l]
+    for l in lines:  # piglit's own reasons first
+        if l.startswith(("piglit: error:", "Test requires", "Function \"")) or "GetProcAddress failed" in l:
+            return l
+    if test["result"] == "timeout":
+        return "time limit exceeded"
+    if test["result"] == "crash":
+        return f"crash (exit status {test.get('returncode')})"
+    return lines[-1][:160] if lines else f"{test['result']} without output"
+
+
+def write_expectations(tests, platform, groups):
+    """Rewrites the fails and skips lists from this run, each test under its cause."""
+    by_cause = {"fail": {}, "skip": {}}
+    for name, t in sorted(tests.items()):
+        if t["result"] in ("pass", "notrun"):
+            continue
+        kind = "skip" if t["result"] == "skip" else "fail"
+        by_cause[kind].setdefault(cause_of(t), []).append((name, t["result"]))
+    header = (f"# Written by conformance/run.py --update-expectations from a run of {', '.join(groups)}\n"
+              f"# on Pineda, platform {platform}; each test under the output line that says why.\n")
+    with open(os.path.join(EXPECTATIONS, f"{platform}-fails.txt"), "w") as f:
+        f.write("# Tests that do not pass, as 'test name,result' (Mesa CI convention).\n" + header)
+        for cause, names in sorted(by_cause["fail"].items()):
+            f.write(f"\n# {cause}\n" + "".join(f"{n},{r}\n" for n, r in names))
+    with open(os.path.join(EXPECTATIONS, f"{platform}-skips.txt"), "w") as f:
+        f.write("# Tests piglit skips, as regexes (Mesa CI convention).\n" + header)
+        for cause, names in sorted(by_cause["skip"].items()):
+            f.write(f"\n# {cause}\n" + "".join(f"^{re.escape(n)}$\n" for n, _ in names))
+    print(f"expectations rewritten: conformance/expectations/{platform}-{{fails,skips}}.txt")
+
+
 def print_table(columns, groups):
     kinds = ("pass", "fail", "crash", "timeout", "skip")
     header = f"{'group':32}" + "".join(f" | {name:>34}" for name, _ in columns)
@@ -207,6 +242,9 @@ def main():
     p.add_argument("--expected-total", type=int, default=0, help="test count, for the progress estimate")
     p.add_argument("--html", action="store_true", help="also write piglit's HTML summary")
     p.add_argument("--lib-dir", default=os.path.join(ROOT, "build", "lib"))
+    p.add_argument("--update-expectations", action="store_true",
+                   help="rewrite the fails and skips lists from this run (review the diff before committing)")
+    p.add_argument("--results", help="use this earlier results folder instead of running piglit")
     args = p.parse_args()
 
     ensure_installed()
@@ -215,7 +253,10 @@ def main():
         ensure_llvmpipe()
     results = {}
     for driver in runs:
-        tests, results_dir, elapsed = run_piglit(driver, args.platform, args.group, args, args.lib_dir)
+        if args.results and driver == args.driver:
+            tests, results_dir, elapsed = load_results(args.results), args.results, 0.0
+        else:
+            tests, results_dir, elapsed = run_piglit(driver, args.platform, args.group, args, args.lib_dir)
         results[driver] = tests
         print(f"[{driver}] {len(tests)} tests in {elapsed:.0f}s; results in {results_dir}")
         if args.html:
@@ -239,6 +280,8 @@ def main():
 
     if args.driver != "pineda":
         return 0
+    if args.update_expectations:
+        write_expectations(results["pineda"], args.platform, args.group)
     regressions, unexpected, changed = check_expectations(results["pineda"], args.platform)
     env = driver_env("pineda", args.platform, args.lib_dir)
     flaky = [(n, r) for n, r in regressions if passes_on_retry(results["pineda"][n], args.platform, env)]
