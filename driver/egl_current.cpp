@@ -6,6 +6,7 @@
 #include "driver/egl_thread.h"
 #include "driver/egl_x11.h"
 #include "glapi/current.h"
+#include "glapi/flush_listener.h"
 #include "glapi/egl_entry_points.h"
 
 namespace pineda::egl {
@@ -72,6 +73,7 @@ EGLBoolean MakeCurrent(EGLDisplay dpy, EGLSurface draw, EGLSurface read, EGLCont
   set_current_context(context->gl.get());
   context->gl->make_current(draw_surface ? draw_surface->gl_drawable() : nullptr,
                             read_surface ? read_surface->gl_drawable() : nullptr);
+  glapi::set_flush_listener(context->gl.get(), &t);
 
   // Hand back what the new binding does not use.
   lock.lock();
@@ -108,7 +110,7 @@ EGLBoolean ReleaseThread() {
 EGLBoolean WaitClient() {
   ThreadState& t = thread_state();
   if (t.context) t.context->gl->finish();
-  if (t.context && t.draw) show_single_buffered(*t.draw);
+  if (t.context && t.draw) show_front(*t.draw);
   return succeed(EGL_TRUE);
 }
 

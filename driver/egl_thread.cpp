@@ -1,6 +1,7 @@
 #include "driver/egl_thread.h"
 
 #include "driver/egl_registry.h"
+#include "driver/egl_x11.h"
 #include "glapi/current.h"
 
 namespace pineda::egl {
@@ -14,6 +15,10 @@ ThreadState::~ThreadState() {
   if (context) release_binding(*this);
 }
 
+void ThreadState::flushed() {
+  if (draw) show_front(*draw);
+}
+
 void release_current_binding() { release_binding(thread_state()); }
 
 void release_binding(ThreadState& t) {
@@ -25,6 +30,7 @@ void release_binding(ThreadState& t) {
   if (!context) return;
   // The GL side lets go first: until ownership is handed back no other thread can bind it.
   context->gl->release_current();
+  glapi::set_flush_listener(nullptr, nullptr);
   set_current_context(nullptr);
   {
     auto lock = Registry::instance().lock();

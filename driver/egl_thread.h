@@ -4,13 +4,14 @@
 
 #include "driver/egl_objects.h"
 #include "driver/gl_version.h"
+#include "glapi/flush_listener.h"
 
 namespace pineda::egl {
 
 // EGL 1.5, 3.7: OpenGL ES when it is supported, otherwise none.
 inline constexpr EGLenum kInitialApi = driver::kHasGLES2 ? EGL_OPENGL_ES_API : EGL_NONE;
 
-struct ThreadState {
+struct ThreadState final : glapi::FlushListener {
   EGLint error = EGL_SUCCESS;
   EGLenum api = kInitialApi;
   Display* display = nullptr;
@@ -19,6 +20,8 @@ struct ThreadState {
   std::shared_ptr<ContextObject> context;
   std::shared_ptr<Surface> draw, read;
 
+  // glFlush/glFinish: front-buffer drawing in a window or pixmap surface becomes visible.
+  void flushed() override;
   // A thread that ends with a current context releases it.
   ~ThreadState();
 };

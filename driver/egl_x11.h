@@ -19,8 +19,9 @@ EGLint swap_native(Surface& s, pineda::Context& gl);
 // when the window no longer exists. Caller holds the registry lock.
 bool follow_native_size(Surface& s);
 
-// eglWaitClient: a single-buffered window or pixmap surface shows what was rendered.
-void show_single_buffered(Surface& s);
+// glFlush, glFinish, eglWaitClient: what was rendered into the front buffer of a window or
+// pixmap surface (a single-buffered one's only buffer) reaches the X server.
+void show_front(Surface& s);
 
 // The EGL_RENDER_BUFFER of a surface.
 EGLint render_buffer(const Surface& s);

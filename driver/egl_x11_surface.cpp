@@ -156,8 +156,8 @@ bool follow_native_size(Surface& s) {
   return true;
 }
 
-void show_single_buffered(Surface& s) {
-  if (s.native && !s.native->drawable.double_buffered) glx::present(*s.native, true);
+void show_front(Surface& s) {
+  if (s.native && s.native->drawable.front_drawn) glx::present(*s.native, true);
 }
 
 EGLint swap_native(Surface& s, pineda::Context& gl) {
