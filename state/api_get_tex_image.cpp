@@ -24,7 +24,7 @@ void texel_rgba(uint32_t texel, raster::TexBaseFormat base, double rgba[4]) {
 
 void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
-  if (color_format_components(format) == 0 || pixel_type_size(type) == 0) return ctx.record_error(GL_INVALID_ENUM);
+  if (const GLenum error = color_format_type_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   constexpr int kMaxLevel = std::bit_width(unsigned(kMaxTextureSize)) - 1;
   if (level < 0 || level > kMaxLevel) return ctx.record_error(GL_INVALID_VALUE);
   const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
@@ -39,7 +39,9 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
     for (int x = 0; x < l.width; ++x) {
       double rgba[4];
       texel_rgba(l.texels[size_t(y) * l.width + x], l.base, rgba);
-      store_color(rgba, format, type, out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x));
+      uint8_t* dst = out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x);
+      store_color(rgba, format, type, dst);
+      if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);
     }
 }
 

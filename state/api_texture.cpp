@@ -56,11 +56,9 @@ TextureObject* bound_texture(Context& ctx, GLenum target) {
 }
 
 bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
-  if (color_format_components(format) == 0 || pixel_type_size(type) == 0) {
-    ctx.record_error(GL_INVALID_ENUM);
-    return false;
-  }
-  return true;
+  const GLenum error = color_format_type_error(format, type);
+  if (error != GL_NO_ERROR) ctx.record_error(error);
+  return error == GL_NO_ERROR;
 }
 
 int max_level() { return int(std::log2(kMaxTextureSize)); }
@@ -83,7 +81,7 @@ void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int 
       uint8_t swapped[16];  // at most 4 components of 4 bytes
       if (ctx.unpack.swap_bytes) {
         std::copy(src_pixel, src_pixel + layout.pixel_bytes, swapped);
-        swap_component_bytes(swapped, color_format_components(format), pixel_type_size(type));
+        swap_pixel_bytes(swapped, format, type);
         src_pixel = swapped;
       }
       load_color(src_pixel, format, type, rgba);

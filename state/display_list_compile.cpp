@@ -67,13 +67,15 @@ void fetch_indexed(const Context& ctx, GLsizei count, const Index* indices, std:
 std::vector<uint8_t> pack_image(const Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type,
                                 const void* pixels) {
   std::vector<uint8_t> out;
-  if (!pixels || width <= 0 || height <= 0 || color_format_components(format) == 0 || pixel_type_size(type) == 0)
+  if (!pixels || width <= 0 || height <= 0 || color_format_type_error(format, type) != GL_NO_ERROR)
     return out;
   const ImageLayout layout = image_layout(ctx.unpack, width, format, type);
   const size_t row = layout.pixel_bytes * size_t(width);
   out.resize(row * size_t(height));
   const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
   for (GLsizei y = 0; y < height; ++y) std::memcpy(out.data() + row * y, src + layout.row_stride * y, row);
+  if (ctx.unpack.swap_bytes)  // the copy is replayed without SWAP_BYTES
+    for (size_t at = 0; at < out.size(); at += layout.pixel_bytes) swap_pixel_bytes(out.data() + at, format, type);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "state/context.h"
+#include "state/packed_pixel.h"
 
 namespace pineda {
 namespace {
@@ -82,12 +83,28 @@ int pixel_type_size(GLenum type) {
   }
 }
 
-// GL 1.1 spec 3.6.4: rows start at multiples of the alignment when components are smaller.
+bool is_packed_pixel_type(GLenum type) { return packed_layout(type) != nullptr; }
+
+int pixel_element_size(GLenum type) {
+  const PackedLayout* packed = packed_layout(type);
+  return packed ? packed->bytes : pixel_type_size(type);
+}
+
+GLenum color_format_type_error(GLenum format, GLenum type) {
+  if (color_format_components(format) == 0 || pixel_element_size(type) == 0) return GL_INVALID_ENUM;
+  const PackedLayout* packed = packed_layout(type);
+  if (!packed) return GL_NO_ERROR;
+  const bool fits = packed->components == 3 ? format == GL_RGB : (format == GL_RGBA || format == GL_BGRA);
+  return fits ? GL_NO_ERROR : GL_INVALID_OPERATION;
+}
+
+// GL 1.1 spec 3.6.4: rows start at multiples of the alignment when elements are smaller.
 ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type) {
   ImageLayout l;
   const int components = std::max(color_format_components(format), 1);
-  const size_t size = pixel_type_size(type);
-  l.pixel_bytes = components * size;
+  const size_t size = pixel_element_size(type);
+  const PackedLayout* packed = packed_layout(type);
+  l.pixel_bytes = packed ? size : components * size;
   const size_t row_pixels = store.row_length > 0 ? size_t(store.row_length) : size_t(std::max(width, 0));
   const size_t row_bytes = row_pixels * l.pixel_bytes;
   const size_t align = size_t(store.alignment);
@@ -98,6 +115,11 @@ ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLen
 
 void store_color(const double rgba[4], GLenum format, GLenum type, uint8_t* dst) {
   const int n = color_format_components(format);
+  if (const PackedLayout* packed = packed_layout(type)) {
+    double components[4] = {0, 0, 0, 0};
+    for (int c = 0; c < n && c < 4; ++c) components[c] = rgba[channel_of(format, c)];
+    return pack_components(components, *packed, dst);
+  }
   const int size = pixel_type_size(type);
   for (int c = 0; c < n; ++c) {
     const int ch = channel_of(format, c);
@@ -111,8 +133,11 @@ void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]) {
   rgba[3] = 1.f;
   const int n = color_format_components(format);
   const int size = pixel_type_size(type);
+  float packed_values[4] = {0, 0, 0, 1};
+  const PackedLayout* packed = packed_layout(type);
+  if (packed) unpack_components(src, *packed, packed_values);
   for (int c = 0; c < n; ++c) {
-    const float v = load_component(src + c * size, type);
+    const float v = packed ? packed_values[c] : load_component(src + c * size, type);
     const int ch = channel_of(format, c);
     if (ch < 0)
       rgba[0] = rgba[1] = rgba[2] = v;
@@ -124,6 +149,11 @@ void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]) {
 void swap_component_bytes(uint8_t* p, int count, int size) {
   if (size < 2) return;
   for (int c = 0; c < count; ++c) std::reverse(p + c * size, p + (c + 1) * size);
+}
+
+void swap_pixel_bytes(uint8_t* p, GLenum format, GLenum type) {
+  if (const PackedLayout* packed = packed_layout(type)) return swap_component_bytes(p, 1, packed->bytes);
+  swap_component_bytes(p, color_format_components(format), pixel_type_size(type));
 }
 
 void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst) {

@@ -16,6 +16,16 @@ struct PixelStore;
 int color_format_components(GLenum format);
 // Bytes of one component of `type` (the unpacked types), or 0 when it is not one.
 int pixel_type_size(GLenum type);
+// Whether `type` packs a whole pixel into one byte, short or int (GL 1.2's *_3_3_2 ...
+// *_2_10_10_10_REV types).
+bool is_packed_pixel_type(GLenum type);
+// Bytes of one element: a component of an unpacked type, a pixel of a packed one; 0 when
+// `type` is not a colour pixel type. Alignment and byte swapping work on elements.
+int pixel_element_size(GLenum type);
+// GL_NO_ERROR when colour pixels of format/type can be read or written; GL_INVALID_ENUM for
+// an unknown format or type; GL_INVALID_OPERATION for a packed type the format does not fit
+// (3-component types need RGB, 4-component ones RGBA or BGRA).
+GLenum color_format_type_error(GLenum format, GLenum type);
 
 // The byte layout of a width x height image in client memory.
 struct ImageLayout {
@@ -26,13 +36,17 @@ struct ImageLayout {
 };
 ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type);
 
-// One pixel of a colour format, converted from RGBA (already clamped to [0, 1]).
+// One pixel of a colour format, converted from RGBA (already clamped to [0, 1]); packed
+// types included.
 // Double precision, so that 32-bit integer types receive exact values.
 void store_color(const double rgba[4], GLenum format, GLenum type, uint8_t* dst);
-// One pixel of a colour format, converted to RGBA with GL's defaults for missing components.
+// One pixel of a colour format, converted to RGBA with GL's defaults for missing components;
+// packed types included.
 void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]);
 // Reverses the bytes of each of `count` components of `size` bytes (GL_*_SWAP_BYTES).
 void swap_component_bytes(uint8_t* p, int count, int size);
+// Reverses the bytes of each element of one pixel of format/type (GL_*_SWAP_BYTES).
+void swap_pixel_bytes(uint8_t* p, GLenum format, GLenum type);
 // One value of a single-component image (depth, stencil), as the type's storage.
 void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst);
 
