@@ -35,13 +35,16 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
   for (int i = 1; i < count; ++i) same_w &= v[i]->inv_w == v[0]->inv_w;
   out.perspective = !same_w;
   // Planes go through the exact (unsnapped) vertex positions, as llvmpipe's do; only coverage
-  // uses the snapped ones.
-  out.ref_x = static_cast<float>(v[0]->fx);
-  out.ref_y = static_cast<float>(v[0]->fy);
+  // uses the snapped ones. The reference point is the snapped first vertex: on the 1/256 grid,
+  // a fragment's float offset x + 1/2 - ref_x is then exact inside the guard band (an
+  // unsnapped float reference costs up to 1e-5 px, ~100 units of 32-bit depth on steep planes).
+  out.ref_x = static_cast<float>(static_cast<double>(v[0]->x) / kSubpixelOne);
+  out.ref_y = static_cast<float>(static_cast<double>(v[0]->y) / kSubpixelOne);
+  const double shift_x = out.ref_x - v[0]->fx, shift_y = out.ref_y - v[0]->fy;
   double f[3], gx, gy;
   auto make_plane = [&]() {
     gradient(f, gx, gy);
-    return Plane{static_cast<float>(f[0]), static_cast<float>(gx), static_cast<float>(gy)};
+    return Plane{static_cast<float>(f[0] + gx * shift_x + gy * shift_y), static_cast<float>(gx), static_cast<float>(gy)};
   };
   for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->inv_w : 1.0;
   out.inv_w = make_plane();
@@ -51,7 +54,7 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
   }
   for (int i = 0; i < count; ++i) f[i] = v[i]->z;
   gradient(f, gx, gy);
-  out.z0 = f[0] + params.depth_offset;
+  out.z0 = f[0] + gx * shift_x + gy * shift_y + params.depth_offset;
   out.dzdx = gx;
   out.dzdy = gy;
 }

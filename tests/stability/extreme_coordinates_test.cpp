@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include "tests/stability/case_table.h"
 #include "tests/stability/coverage_count.h"
 
 namespace pineda::test {
@@ -29,14 +30,14 @@ TEST_F(ExtremeCoordinates, HugeTrianglesShareAnEdgeExactly) {
     glVertex2d(20.5, -far);
     glVertex2d(far, 0);
     glEnd();
-    EXPECT_EQ(count_not(1), 0) << "far " << far;
+    expect_case("shared edge, far " + case_text(far) + ": pixels not hit once", 0, count_not(1));
     int wrong = 0;
     for (int y = 0; y < height(); ++y)
       for (int x = 0; x < width(); ++x) {
         if (x == 20) continue;  // on the shared edge: the fill rule picks one side
         wrong += left[size_t(y) * width() + x] != (x < 20 ? 1 : 0);
       }
-    EXPECT_EQ(wrong, 0) << "far " << far;
+    expect_case("shared edge, far " + case_text(far) + ": pixels on the wrong side", 0, wrong);
   }
 }
 
@@ -87,9 +88,9 @@ TEST_F(ExtremeCoordinates, TrianglesCrossingWZeroMatchTheAnalyticCoverage) {
         ++checked;
         wrong += h[size_t(y) * width() + x] != (inside ? 1 : 0);
       }
-    EXPECT_EQ(wrong, 0) << "triangle " << t;
+    expect_case("crossing w = 0, triangle " + std::to_string(t) + ": pixels off the analytic coverage", 0, wrong);
   }
-  EXPECT_GT(checked, 40 * 1000);
+  EXPECT_GT(checked, 40 * 1000);  // the reference decided enough pixels
 }
 
 // w of 1e-30 and denormals: the vertex is at a huge distance; nothing crashes and the
@@ -111,7 +112,7 @@ TEST_F(ExtremeCoordinates, TinyWIsAFarAwayVertex) {
     for (int y = 0; y < height(); ++y)
       for (int x = 0; x < width(); ++x)
         if (x != 47 && x != 48) wrong += h[size_t(y) * width() + x] != (x < 47 ? 1 : 0);
-    EXPECT_EQ(wrong, 0) << "w " << w;
+    expect_case("w = " + case_text(w) + ": pixels off the half-plane", 0, wrong);
   }
 }
 
@@ -136,7 +137,7 @@ TEST_F(ExtremeCoordinates, NanOrInfinityDropsOnlyThatPrimitive) {
       for (uint8_t x : h) total += x;
       // The right isosceles triangle of legs 10: 45 centres strictly inside; the 10 centres on
       // its hypotenuse lie on a right edge, which the top-left rule leaves out.
-      EXPECT_EQ(total, 45) << "component " << component << " value " << b;
+      expect_case("position component " + std::to_string(component) + " = " + case_text(b) + ": fragments (only the good triangle)", 45, total);
       EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     }
 }

@@ -2,6 +2,7 @@
 // for horizontal, vertical and diagonal edges, both windings, in all four quadrants.
 #include <random>
 
+#include "tests/stability/case_table.h"
 #include "tests/stability/coverage_count.h"
 
 namespace pineda::test {
@@ -36,7 +37,7 @@ TEST_F(FillRule, EdgesThroughPixelCentresHitEveryPixelOnce) {
   for (int step : {1, 2, 5, 16}) {
     begin_counting();
     draw_centre_mesh(rng, width(), height(), step, -step, -step);
-    EXPECT_EQ(count_not(1), 0) << "step " << step;
+    expect_case("centre mesh, step " + std::to_string(step) + ": pixels not hit once", 0, count_not(1));
   }
 }
 
@@ -50,7 +51,7 @@ TEST_F(FillRule, AllFourQuadrants) {
   glOrtho(-width() / 2, width() / 2, -height() / 2, height() / 2, -1, 1);
   glMatrixMode(GL_MODELVIEW);
   draw_centre_mesh(rng, width(), height(), 3, -width() / 2 - 6, -height() / 2 - 6);
-  EXPECT_EQ(count_not(1), 0);
+  expect_case("centre mesh in four quadrants: pixels not hit once", 0, count_not(1));
 }
 
 // A lone pixel-aligned square from pixel corner to pixel corner covers exactly its pixels,
@@ -72,7 +73,7 @@ TEST_F(FillRule, PixelAlignedSquareCoversExactlyItsPixels) {
     for (int y = 0; y < height(); ++y)
       for (int x = 0; x < width(); ++x)
         wrong += h[size_t(y) * width() + x] != ((x >= 10 && x < 30 && y >= 20 && y < 35) ? 1 : 0);
-    EXPECT_EQ(wrong, 0);
+    expect_case(std::string("rectangle split ") + (other_diagonal ? "/" : "\\") + ": pixels off [10,30)x[20,35)", 0, wrong);
   }
 }
 
@@ -85,7 +86,7 @@ TEST_F(FillRule, DegenerateTrianglesHitNothing) {
   glVertex2d(1.5, 1.5); glVertex2d(40.5, 40.5); glVertex2d(20.5, 20.5);  // collinear through centres
   glVertex2d(0, 10.5); glVertex2d(90, 10.5); glVertex2d(45, 10.5);       // a horizontal line through centres
   glEnd();
-  EXPECT_EQ(count_not(0), 0);
+  expect_case("point, collinear and flat triangles: pixels hit", 0, count_not(0));
 }
 
 TEST_F(FillRule, SliverBelowOneSubpixelSquaredHitsAtMostALine) {
@@ -96,7 +97,7 @@ TEST_F(FillRule, SliverBelowOneSubpixelSquaredHitsAtMostALine) {
   const std::vector<uint8_t> h = hits();
   int total = 0;
   for (uint8_t x : h) total += x;
-  EXPECT_EQ(total, 0);  // after snapping to 1/256 the three vertices are collinear
+  expect_case("sliver collinear after snapping: fragments", 0, total);  // after snapping to 1/256 the three vertices are collinear
 }
 
 }  // namespace

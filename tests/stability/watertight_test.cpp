@@ -2,6 +2,7 @@
 #include <cmath>
 #include <random>
 
+#include "tests/stability/case_table.h"
 #include "tests/stability/coverage_count.h"
 
 namespace pineda::test {
@@ -27,7 +28,7 @@ TEST_F(Watertight, FanAroundSubpixelCentreHitsEveryPixelOnce) {
   for (const auto& [cx, cy] : {std::pair{40.37, 33.81}, {10.001, 70.999}, {48.0, 40.0}, {47.5, 39.5}}) {
     begin_counting();
     draw_fan(cx, cy, 1000);
-    EXPECT_EQ(count_not(1), 0) << "fan centre " << cx << "," << cy;
+    expect_case("fan of 1000 around (" + case_text(cx) + ", " + case_text(cy) + "): pixels not hit once", 0, count_not(1));
   }
 }
 
@@ -42,7 +43,7 @@ TEST_F(Watertight, FanBothWindingsHitsEveryPixelOnce) {
     glVertex2d(31.25 + 400 * std::cos(a0), 17.5 + 400 * std::sin(a0));
   }
   glEnd();
-  EXPECT_EQ(count_not(1), 0);
+  expect_case("clockwise fan of 1200: pixels not hit once", 0, count_not(1));
 }
 
 TEST_F(Watertight, JitteredGridWithBothDiagonalsHitsEveryPixelOnce) {
@@ -70,7 +71,7 @@ TEST_F(Watertight, JitteredGridWithBothDiagonalsHitsEveryPixelOnce) {
         }
       }
     glEnd();
-    EXPECT_EQ(count_not(1), 0) << "cell " << cell;
+    expect_case("jittered grid, cell " + case_text(cell) + ": pixels not hit once", 0, count_not(1));
   }
 }
 
@@ -98,7 +99,7 @@ TEST_F(Watertight, RotatedQuadInOneDegreeSteps) {
         const uint8_t got = h[size_t(y) * width() + x];
         if (got > 1 || (inside > 0.01 && got != 1) || (inside < -0.01 && got != 0)) ++wrong;
       }
-    EXPECT_EQ(wrong, 0) << degrees << " degrees";
+    expect_case("quad rotated " + std::to_string(degrees) + " degrees: pixels wrong", 0, wrong);
   }
 }
 
