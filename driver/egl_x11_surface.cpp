@@ -198,4 +198,15 @@ EGLSurface CreatePlatformPixmapSurface(EGLDisplay dpy, EGLConfig config, void* n
   return create_native(dpy, config, native_from_pointer(native_pixmap), attrib_list, false);
 }
 
+// EGL_EXT_platform_base's names: EGLint attributes.
+EGLSurface CreatePlatformWindowSurfaceEXT(EGLDisplay dpy, EGLConfig config, void* native_window,
+                                          const EGLint* attrib_list) {
+  return create_native(dpy, config, native_from_pointer(native_window), attrib_list, true);
+}
+
+EGLSurface CreatePlatformPixmapSurfaceEXT(EGLDisplay dpy, EGLConfig config, void* native_pixmap,
+                                          const EGLint* attrib_list) {
+  return create_native(dpy, config, native_from_pointer(native_pixmap), attrib_list, false);
+}
+
 }  // namespace pineda::egl

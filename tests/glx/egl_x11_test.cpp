@@ -152,6 +152,18 @@ TEST_F(EglX11Test, PlatformWindowSurfaceTakesAPointerToTheWindow) {
   glClear(GL_COLOR_BUFFER_BIT);
   ASSERT_TRUE(eglSwapBuffers(edpy, s));
   EXPECT_EQ(x_pixel(w, 10, 10), kGreen);
+  // The EXT entry point, as eglGetProcAddress gives it.
+  auto create_ext = reinterpret_cast<PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC>(
+      eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT"));
+  ASSERT_NE(create_ext, nullptr);
+  Window w3 = native_window(c, 8, 8);
+  const EGLint ext_attribs[] = {EGL_RENDER_BUFFER, EGL_SINGLE_BUFFER, EGL_NONE};
+  EGLSurface s3 = create_ext(edpy, c, &w3, ext_attribs);
+  ASSERT_NE(s3, EGL_NO_SURFACE);
+  EGLint render_buffer = 0;
+  eglQuerySurface(edpy, s3, EGL_RENDER_BUFFER, &render_buffer);
+  EXPECT_EQ(render_buffer, EGL_SINGLE_BUFFER);
+  EXPECT_NE(eglGetProcAddress("eglCreatePlatformPixmapSurfaceEXT"), nullptr);
   EXPECT_EQ(eglCreatePlatformWindowSurface(edpy, c, nullptr, nullptr), EGL_NO_SURFACE);
   EXPECT_EQ(eglGetError(), EGL_BAD_NATIVE_WINDOW);
   const EGLAttrib bad[] = {EGL_WIDTH, 5, EGL_NONE};
