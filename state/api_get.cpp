@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
+#include "state/buffer_get.h"
 #include "state/capabilities.h"
 #include "state/context.h"
 #include "state/limits.h"
@@ -189,6 +190,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_COLOR_MATERIAL_PARAMETER: out = enums({double(ctx.color_material_mode)}); return true;
     default: break;
   }
+  if (GLuint name; query_buffer_binding(ctx, pname, name)) {
+    out = ints({double(name)});
+    return true;
+  }
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);
@@ -236,6 +241,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
   static const std::string kExtensions =
       "GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract "
       "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
+      "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
+      "GL_EXT_stencil_wrap "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra";
   switch (name) {

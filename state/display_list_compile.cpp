@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "glapi/gl_entry_points.h"
+#include "state/buffer_draw.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
@@ -22,11 +23,11 @@ struct ArraySources {
 
 ArraySources array_sources(const Context& ctx) {
   ArraySources s;
-  s.vertex = ctx.vertex_array.enabled && ctx.vertex_array.pointer;
-  s.color = ctx.color_array.enabled && ctx.color_array.pointer;
-  s.normal = ctx.normal_array.enabled && ctx.normal_array.pointer;
+  s.vertex = ctx.vertex_array.active();
+  s.color = ctx.color_array.active();
+  s.normal = ctx.normal_array.active();
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
-    s.texcoord[u] = ctx.texture_units[u].texcoord_array.enabled && ctx.texture_units[u].texcoord_array.pointer;
+    s.texcoord[u] = ctx.texture_units[u].texcoord_array.active();
   return s;
 }
 
@@ -125,6 +126,8 @@ void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type,
   if (error == GL_NO_ERROR && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
     error = GL_INVALID_ENUM;
   std::vector<raster::VertexInput> vertices;
+  if (error == GL_NO_ERROR && count > 0 && array_sources(ctx).vertex)
+    indices = element_indices(ctx, indices, size_t(count) * gl_type_size(type));
   if (error == GL_NO_ERROR && indices && array_sources(ctx).vertex) {
     if (type == GL_UNSIGNED_BYTE) fetch_indexed(ctx, count, static_cast<const GLubyte*>(indices), vertices);
     else if (type == GL_UNSIGNED_SHORT) fetch_indexed(ctx, count, static_cast<const GLushort*>(indices), vertices);

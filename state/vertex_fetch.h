@@ -5,10 +5,15 @@
 namespace pineda {
 
 class Context;
+struct ClientArray;
 
 // Builds vertex `index` from the enabled client arrays, taking the current values for
 // disabled ones.
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out);
+
+// The `bytes` bytes of element `index` of `array`: in client memory, or in its buffer object
+// (null when they are not all inside the buffer's store).
+const uint8_t* array_element(const ClientArray& array, size_t index, size_t bytes);
 
 // Byte size of one component of a GL array type, 0 when the type is not one.
 int gl_type_size(unsigned type);

@@ -1,0 +1,197 @@
+// Vertex buffer objects (GL 1.5, GL_ARB_vertex_buffer_object): names, data, mapping, queries.
+#include <algorithm>
+#include <cstring>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+
+namespace pineda::gl {
+namespace {
+
+// The binding point of `target`, or null (GL_INVALID_ENUM recorded).
+std::shared_ptr<BufferObject>* binding(Context& ctx, GLenum target) {
+  switch (target) {
+    case GL_ARRAY_BUFFER: return &ctx.buffers.array;
+    case GL_ELEMENT_ARRAY_BUFFER: return &ctx.buffers.element_array;
+    default: ctx.record_error(GL_INVALID_ENUM); return nullptr;
+  }
+}
+
+// The buffer bound to `target`, or null with the error the spec names (no buffer bound:
+// GL_INVALID_OPERATION).
+BufferObject* bound_buffer(Context& ctx, GLenum target) {
+  std::shared_ptr<BufferObject>* b = binding(ctx, target);
+  if (!b) return nullptr;
+  if (!*b) ctx.record_error(GL_INVALID_OPERATION);
+  return b->get();
+}
+
+bool valid_usage(GLenum usage) {
+  switch (usage) {
+    case GL_STREAM_DRAW: case GL_STREAM_READ: case GL_STREAM_COPY:
+    case GL_STATIC_DRAW: case GL_STATIC_READ: case GL_STATIC_COPY:
+    case GL_DYNAMIC_DRAW: case GL_DYNAMIC_READ: case GL_DYNAMIC_COPY:
+      return true;
+    default: return false;
+  }
+}
+
+// Checks of Buffer/GetBufferSubData: a range inside the store of an unmapped buffer.
+BufferObject* sub_data_buffer(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size) {
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b) return nullptr;
+  if (offset < 0 || size < 0 || size_t(offset) > b->data.size() || size_t(size) > b->data.size() - size_t(offset)) {
+    ctx.record_error(GL_INVALID_VALUE);
+    return nullptr;
+  }
+  if (b->mapped) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  return b;
+}
+
+void unbind_everywhere(Context& ctx, GLuint name) {
+  auto drop = [name](std::shared_ptr<BufferObject>& b) {
+    if (b && b->name == name) b.reset();
+  };
+  drop(ctx.buffers.array);
+  drop(ctx.buffers.element_array);
+  for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array})
+    drop(a->buffer);
+  for (TextureUnitState& unit : ctx.texture_units) drop(unit.texcoord_array.buffer);
+}
+
+}  // namespace
+
+void GenBuffers(Context& ctx, GLsizei n, GLuint* buffers) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (buffers) ctx.buffers.names.generate(n, buffers);
+}
+
+void DeleteBuffers(Context& ctx, GLsizei n, const GLuint* buffers) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!buffers) return;
+  for (GLsizei i = 0; i < n; ++i) {
+    if (buffers[i] == 0) continue;
+    if (std::shared_ptr<BufferObject> b = ctx.buffers.names.find(buffers[i])) b->mapped = false;
+    unbind_everywhere(ctx, buffers[i]);
+    ctx.buffers.names.remove(buffers[i]);
+  }
+}
+
+GLboolean IsBuffer(Context& ctx, GLuint buffer) { return ctx.buffers.names.exists(buffer) ? GL_TRUE : GL_FALSE; }
+
+void BindBuffer(Context& ctx, GLenum target, GLuint buffer) {
+  std::shared_ptr<BufferObject>* b = binding(ctx, target);
+  if (!b) return;
+  if (buffer == 0) b->reset();
+  else *b = ctx.buffers.names.get_or_create(buffer);
+}
+
+void BufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data, GLenum usage) {
+  std::shared_ptr<BufferObject>* slot = binding(ctx, target);
+  if (!slot) return;
+  if (size < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!valid_usage(usage)) return ctx.record_error(GL_INVALID_ENUM);
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b) return;
+  std::vector<uint8_t> store;
+  try {
+    store.resize(size_t(size));
+  } catch (const std::bad_alloc&) {
+    return ctx.record_error(GL_OUT_OF_MEMORY);
+  } catch (const std::length_error&) {
+    return ctx.record_error(GL_OUT_OF_MEMORY);
+  }
+  if (data && size > 0) std::memcpy(store.data(), data, size_t(size));
+  b->data = std::move(store);  // a mapped buffer is unmapped by its new store (as Mesa does)
+  b->usage = usage;
+  b->mapped = false;
+  b->access = GL_READ_WRITE;
+}
+
+void BufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size, const void* data) {
+  BufferObject* b = sub_data_buffer(ctx, target, offset, size);
+  if (b && data && size > 0) std::memcpy(b->data.data() + offset, data, size_t(size));
+}
+
+void GetBufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size, void* data) {
+  const BufferObject* b = sub_data_buffer(ctx, target, offset, size);
+  if (b && data && size > 0) std::memcpy(data, b->data.data() + offset, size_t(size));
+}
+
+void* MapBuffer(Context& ctx, GLenum target, GLenum access) {
+  if (!binding(ctx, target)) return nullptr;
+  if (access != GL_READ_ONLY && access != GL_WRITE_ONLY && access != GL_READ_WRITE) {
+    ctx.record_error(GL_INVALID_ENUM);
+    return nullptr;
+  }
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b) return nullptr;
+  if (b->mapped) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  b->mapped = true;
+  b->access = access;
+  return b->data.data();
+}
+
+GLboolean UnmapBuffer(Context& ctx, GLenum target) {
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b) return GL_FALSE;
+  if (!b->mapped) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return GL_FALSE;
+  }
+  b->mapped = false;
+  return GL_TRUE;  // the store is never corrupted while mapped
+}
+
+void GetBufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
+  if (!binding(ctx, target)) return;
+  if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE && pname != GL_BUFFER_ACCESS && pname != GL_BUFFER_MAPPED)
+    return ctx.record_error(GL_INVALID_ENUM);
+  const BufferObject* b = bound_buffer(ctx, target);
+  if (!b || !params) return;
+  switch (pname) {
+    case GL_BUFFER_SIZE: *params = GLint(std::min<size_t>(b->data.size(), 0x7fffffff)); break;
+    case GL_BUFFER_USAGE: *params = GLint(b->usage); break;
+    case GL_BUFFER_ACCESS: *params = GLint(b->access); break;
+    default: *params = b->mapped ? GL_TRUE : GL_FALSE; break;
+  }
+}
+
+void GetBufferPointerv(Context& ctx, GLenum target, GLenum pname, void** params) {
+  if (!binding(ctx, target)) return;
+  if (pname != GL_BUFFER_MAP_POINTER) return ctx.record_error(GL_INVALID_ENUM);
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b || !params) return;
+  *params = b->mapped ? b->data.data() : nullptr;
+}
+
+// The ARB_vertex_buffer_object names.
+void GenBuffersARB(Context& ctx, GLsizei n, GLuint* buffers) { GenBuffers(ctx, n, buffers); }
+void DeleteBuffersARB(Context& ctx, GLsizei n, const GLuint* buffers) { DeleteBuffers(ctx, n, buffers); }
+GLboolean IsBufferARB(Context& ctx, GLuint buffer) { return IsBuffer(ctx, buffer); }
+void BindBufferARB(Context& ctx, GLenum target, GLuint buffer) { BindBuffer(ctx, target, buffer); }
+void BufferDataARB(Context& ctx, GLenum target, GLsizeiptrARB size, const void* data, GLenum usage) {
+  BufferData(ctx, target, size, data, usage);
+}
+void BufferSubDataARB(Context& ctx, GLenum target, GLintptrARB offset, GLsizeiptrARB size, const void* data) {
+  BufferSubData(ctx, target, offset, size, data);
+}
+void GetBufferSubDataARB(Context& ctx, GLenum target, GLintptrARB offset, GLsizeiptrARB size, void* data) {
+  GetBufferSubData(ctx, target, offset, size, data);
+}
+void* MapBufferARB(Context& ctx, GLenum target, GLenum access) { return MapBuffer(ctx, target, access); }
+GLboolean UnmapBufferARB(Context& ctx, GLenum target) { return UnmapBuffer(ctx, target); }
+void GetBufferParameterivARB(Context& ctx, GLenum target, GLenum pname, GLint* params) {
+  GetBufferParameteriv(ctx, target, pname, params);
+}
+void GetBufferPointervARB(Context& ctx, GLenum target, GLenum pname, void** params) {
+  GetBufferPointerv(ctx, target, pname, params);
+}
+
+}  // namespace pineda::gl

@@ -1,0 +1,26 @@
+#include "state/buffer_get.h"
+
+#include "state/context.h"
+
+namespace pineda {
+
+bool query_buffer_binding(const Context& ctx, GLenum pname, GLuint& name) {
+  const ClientArray* array = nullptr;
+  switch (pname) {
+    case GL_ARRAY_BUFFER_BINDING: name = buffer_name(ctx.buffers.array); return true;
+    case GL_ELEMENT_ARRAY_BUFFER_BINDING: name = buffer_name(ctx.buffers.element_array); return true;
+    case GL_INDEX_ARRAY_BUFFER_BINDING: name = 0; return true;  // colour-index arrays are not kept
+    case GL_VERTEX_ARRAY_BUFFER_BINDING: array = &ctx.vertex_array; break;
+    case GL_NORMAL_ARRAY_BUFFER_BINDING: array = &ctx.normal_array; break;
+    case GL_COLOR_ARRAY_BUFFER_BINDING: array = &ctx.color_array; break;
+    case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: array = &ctx.edge_flag_array; break;
+    case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING:
+      array = &ctx.texture_units[ctx.client_active_texture].texcoord_array;
+      break;
+    default: return false;
+  }
+  name = buffer_name(array->buffer);
+  return true;
+}
+
+}  // namespace pineda
