@@ -3,7 +3,8 @@
 namespace pineda::raster {
 namespace {
 
-constexpr int kPlaneCount = 7;
+constexpr int kFixedPlanes = 7;
+constexpr int kPlaneCount = kFixedPlanes + kMaxClipPlanes;
 // Points closer than this to w = 0 are clipped away: their projection is meaningless.
 constexpr double kMinW = 1e-30;
 
@@ -16,7 +17,8 @@ double plane_distance(const ClipVert& v, const ClipVolume& vol, int plane) {
     case 3: return x - vol.x_min * w;   // guard band, left
     case 4: return vol.x_max * w - x;   // right
     case 5: return y - vol.y_min * w;   // bottom
-    default: return vol.y_max * w - y;  // top
+    case 6: return vol.y_max * w - y;   // top
+    default: return v.user[plane - kFixedPlanes];
   }
 }
 
@@ -32,7 +34,8 @@ void snap_onto_plane(ClipVert& v, const ClipVolume& vol, int plane) {
     case 3: p[0] = vol.x_min * p[3]; break;
     case 4: p[0] = vol.x_max * p[3]; break;
     case 5: p[1] = vol.y_min * p[3]; break;
-    default: p[1] = vol.y_max * p[3]; break;
+    case 6: p[1] = vol.y_max * p[3]; break;
+    default: v.user[plane - kFixedPlanes] = 0.0; break;
   }
 }
 
@@ -42,6 +45,7 @@ ClipVert intersect(const ClipVert& in, const ClipVert& out, double d_in, double 
   const double t = d_in / (d_in - d_out);
   ClipVert r;
   for (int i = 0; i < 4; ++i) r.pos[i] = in.pos[i] + t * (out.pos[i] - in.pos[i]);
+  for (int i = 0; i < kMaxClipPlanes; ++i) r.user[i] = in.user[i] + t * (out.user[i] - in.user[i]);
   snap_onto_plane(r, vol, plane);
   const float tf = static_cast<float>(t);
   for (int i = 0; i < kClipAttrs; ++i) r.attr[i] = in.attr[i] + tf * (out.attr[i] - in.attr[i]);
@@ -52,8 +56,12 @@ ClipVert intersect(const ClipVert& in, const ClipVert& out, double d_in, double 
 
 uint32_t clip_outcode(const ClipVert& v, const ClipVolume& vol) {
   uint32_t code = 0;
-  for (int p = 0; p < kPlaneCount; ++p)
+  for (int p = 0; p < kFixedPlanes; ++p)
     if (!(plane_distance(v, vol, p) >= 0.0)) code |= 1u << p;
+  for (uint32_t planes = vol.user_planes; planes; planes &= planes - 1) {
+    const int i = __builtin_ctz(planes);
+    if (!(v.user[i] >= 0.0)) code |= 1u << (kFixedPlanes + i);
+  }
   return code;
 }
 

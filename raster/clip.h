@@ -5,21 +5,29 @@
 #include <vector>
 
 #include "raster/texture.h"
+#include "raster/vertex.h"
 
 namespace pineda::raster {
 
-// colour (4), back colour (4), then s, t, r, q per texture unit.
-constexpr int kClipAttrs = 8 + 4 * kMaxTextureUnits;
+// colour (4), back colour (4), s, t, r, q per texture unit, secondary colour (3), back
+// secondary colour (3), fog coordinate (1).
+constexpr int kClipTexAttrs = 8;
+constexpr int kClipSecondaryAttrs = kClipTexAttrs + 4 * kMaxTextureUnits;
+constexpr int kClipFogAttr = kClipSecondaryAttrs + 6;
+constexpr int kClipAttrs = kClipFogAttr + 1;
 
 struct ClipVert {
   double pos[4];
+  double user[kMaxClipPlanes];  // distances to the user clip planes
   float attr[kClipAttrs];
 };
 
-// The clip volume: near and far always, w > epsilon always, and x/y against the guard band
-// (expressed as multiples of w, so the band is fixed in window pixels).
+// The clip volume: near and far always, w > epsilon always, x/y against the guard band
+// (expressed as multiples of w, so the band is fixed in window pixels), and the enabled user
+// clip planes (ClipVert::user >= 0 is inside).
 struct ClipVolume {
   double x_min = -1, x_max = 1, y_min = -1, y_max = 1;
+  uint32_t user_planes = 0;  // bit i: user plane i
 };
 
 // Bit i set when the vertex is outside plane i.

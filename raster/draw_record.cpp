@@ -36,6 +36,14 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
     d.units[d.num_units++] = static_cast<uint8_t>(u);
   }
   d.planes = kColorPlanes + kTexPlanesPerUnit * d.num_units;
+  if (state.color_sum) {
+    d.secondary_plane = d.planes;
+    d.planes += kSecondaryPlanes;
+  }
+  if (state.fog.enabled) {
+    d.fog_plane = d.planes;
+    d.planes += kFogPlanes;
+  }
 
   const bool has_depth = fb.depth.base && fb.depth.bits > 0;
   const bool has_stencil = fb.stencil.base && fb.stencil.bits > 0;
@@ -54,6 +62,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.key.blend = state.blend || state.logic_op_enabled;
   d.key.blend_over = state.blend && !state.logic_op_enabled && is_blend_over(state.blend_state);
   d.key.flat = state.flat_shading;
+  d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled;
   d.key.count_samples = state.sample_counter != nullptr;
   d.routine = select_quad_routine(d.key);
   return d;

@@ -26,6 +26,7 @@ struct FragmentKey {
   bool blend = false;  // blending or logic op: the destination colour is read
   bool blend_over = false;  // blending is SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD (no logic op)
   bool flat = false;
+  bool extras = false;  // colour sum, fog or a stipple: the routine checks which
   bool count_samples = false;  // an occlusion query is active
 };
 
@@ -37,6 +38,8 @@ struct DrawRecord {
   int num_units = 0;
   std::array<uint8_t, kMaxTextureUnits> units{};  // enabled texture units, in order
   int planes = kColorPlanes;                      // interpolated planes
+  int secondary_plane = -1;                       // first secondary colour plane, -1 when unused
+  int fog_plane = -1;                             // the fog coordinate's plane, -1 when unused
 
   double depth_max = 0.0;  // 2^bits - 1
   float alpha_ref = 0.f;

@@ -51,6 +51,32 @@ struct BlendState {
   float color[4] = {0, 0, 0, 0};
 };
 
+enum class FogMode : uint8_t { Linear, Exp, Exp2 };
+
+// GL 1.5 section 3.10: f from the fragment's fog coordinate c, then C = f * C + (1 - f) * Cf.
+struct Fog {
+  bool enabled = false;
+  FogMode mode = FogMode::Exp;
+  float density = 1.f, start = 0.f, end = 1.f;
+  float color[4] = {0, 0, 0, 0};
+};
+
+struct LineStipple {
+  bool enabled = false;
+  int factor = 1;            // clamped to [1, 256]
+  uint16_t pattern = 0xffff;  // bit 0 first
+};
+
+// The 32x32 window-aligned polygon stipple: bit (x % 32) of row (y % 32), bit 0 = leftmost.
+struct PolygonStipple {
+  bool enabled = false;
+  std::array<uint32_t, 32> rows = [] {
+    std::array<uint32_t, 32> all_set;
+    all_set.fill(~0u);
+    return all_set;
+  }();
+};
+
 struct DrawState {
   Viewport viewport;
   bool scissor_test = false;
@@ -66,6 +92,9 @@ struct DrawState {
   float point_size = 1.f;
   float line_width = 1.f;
   bool flat_shading = false;  // GL_FLAT: the provoking vertex's colour for the whole primitive
+  uint32_t clip_planes = 0;   // bit i: user clip plane i enabled (ClipVertex::clip_distance[i])
+  LineStipple line_stipple;
+  PolygonStipple polygon_stipple;
 
   // Per-fragment stages, in pipeline order
   bool alpha_test = false;
@@ -88,6 +117,10 @@ struct DrawState {
 
   // Set while an occlusion query is active: the draw counts its passing samples here.
   std::shared_ptr<SampleCounter> sample_counter;
+
+  // After texturing: the colour sum (ClipVertex::secondary added), then fog.
+  bool color_sum = false;
+  Fog fog;
 };
 
 // What glClear needs.

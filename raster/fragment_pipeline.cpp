@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "raster/blend_over.h"
+#include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
 #include "raster/quad_vector.h"
 #include "raster/sampler.h"
@@ -26,8 +27,8 @@ struct QuadColor {
 
 inline F4 eval(const Plane& p, F4 ox, F4 oy) { return p.a0 + p.dx * ox + p.dy * oy; }
 
-// Interpolated fragment colours of the quad, textured.
-template <bool kTex, bool kFlat>
+// Interpolated fragment colours of the quad, textured (then summed and fogged: kExtras).
+template <bool kTex, bool kFlat, bool kExtras>
 [[gnu::always_inline]] inline QuadColor quad_colors(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy) {
   QuadColor col;
   if constexpr (kFlat) {
@@ -62,6 +63,7 @@ template <bool kTex, bool kFlat>
       for (int c = 0; c < 4; ++c) col.c[c][i] = frag[c];
     }
   }
+  if constexpr (kExtras) apply_color_sum_and_fog(d, p, ox, oy, col.c);
   return col;
 }
 
@@ -298,7 +300,7 @@ inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
 
 // An AVX2 copy is chosen at load time where the CPU has it: the same operations (no FMA, no
 // contraction), so the same results, with 256-bit doubles and three-operand instructions.
-template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver, bool kCount>
+template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver, bool kCount, bool kExtras>
 [[gnu::target_clones("avx2", "default")]] uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
@@ -311,8 +313,9 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
   uint32_t passed = 0;
   for (int q = 0; q < count; ++q) {
     unsigned mask = masks[q];
-    if (!mask) continue;
     const int qx = x + 2 * q;
+    if constexpr (kExtras) mask &= stipple_mask(d, p, qx, y);
+    if (!mask) continue;
     // Offsets from the reference point (exact while the primitive stays near the framebuffer).
     const F4 ox = ox0 + splat(static_cast<float>(2 * q));
     auto depth_and_stencil = [&] {
@@ -322,10 +325,10 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     if (early_tests) {
       depth_and_stencil();
       if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
-      if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, quad_colors<kTex, kFlat>(d, p, ox, oy));
+      if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy));
       continue;
     }
-    const QuadColor col = quad_colors<kTex, kFlat>(d, p, ox, oy);
+    const QuadColor col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
     for (int i = 0; i < 4; ++i)
       if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
     depth_and_stencil();
@@ -335,25 +338,37 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
   return passed;
 }
 
-template <int kBits>
+template <int kBits, bool kExtras>
 constexpr QuadRoutine routine_for() {
   return &shade_quads<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0,
-                      (kBits & 32) != 0, (kBits & 64) != 0>;
+                      (kBits & 32) != 0, (kBits & 64) != 0, kExtras>;
 }
 
-template <int... kBits>
+template <bool kExtras, int... kBits>
 constexpr auto make_table(std::integer_sequence<int, kBits...>) {
-  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits>()...};
+  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits, kExtras>()...};
 }
 
-constexpr auto kRoutines = make_table(std::make_integer_sequence<int, 128>{});
+constexpr auto kRoutines = make_table<false>(std::make_integer_sequence<int, 128>{});
+
+// Fog, colour sum and stipple are rare: their routines leave out the SRC_ALPHA-over fast path
+// (bit 32) to halve their count. Index bit 5 stands for key bit 6.
+constexpr int extras_key_bits(int index) { return (index & 31) | ((index & 32) << 1); }
+constexpr int extras_index(int key_bits) { return (key_bits & 31) | ((key_bits & 64) >> 1); }
+
+template <int... kIndex>
+constexpr auto make_extras_table(std::integer_sequence<int, kIndex...>) {
+  return std::array<QuadRoutine, sizeof...(kIndex)>{routine_for<extras_key_bits(kIndex), true>()...};
+}
+
+constexpr auto kExtrasRoutines = make_extras_table(std::make_integer_sequence<int, 64>{});
 
 }  // namespace
 
 QuadRoutine select_quad_routine(const FragmentKey& key) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
                    (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0) | (key.count_samples ? 64 : 0);
-  return kRoutines[bits];
+  return key.extras ? kExtrasRoutines[extras_index(bits)] : kRoutines[bits];
 }
 
 }  // namespace pineda::raster

@@ -59,6 +59,7 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full)
   volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
   line_width_ = rounded_size(s.line_width, kMaxLineWidth);
   point_size_ = rounded_size(s.point_size, kMaxPointSize);
+  volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
 }
 
 ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
@@ -69,7 +70,13 @@ ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
     c.attr[4 + i] = v.back_color[i];
   }
   for (int u = 0; u < kMaxTextureUnits; ++u)
-    for (int i = 0; i < 4; ++i) c.attr[8 + 4 * u + i] = v.texcoord[u][i];
+    for (int i = 0; i < 4; ++i) c.attr[kClipTexAttrs + 4 * u + i] = v.texcoord[u][i];
+  for (int i = 0; i < 3; ++i) {
+    c.attr[kClipSecondaryAttrs + i] = v.secondary[i];
+    c.attr[kClipSecondaryAttrs + 3 + i] = v.back_secondary[i];
+  }
+  c.attr[kClipFogAttr] = v.fog;
+  for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
   return c;
 }
 
@@ -87,7 +94,7 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   const int color = back_color ? 4 : 0;
   for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
   for (int k = 0; k < d.num_units; ++k) {
-    const float* tc = &v.attr[8 + 4 * d.units[k]];
+    const float* tc = &v.attr[kClipTexAttrs + 4 * d.units[k]];
     float* out = &w.attr[kColorPlanes + kTexPlanesPerUnit * k];
     out[0] = tc[0];
     out[1] = tc[1];
@@ -95,6 +102,9 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   }
   return w;
 }
+  if (d.secondary_plane >= 0)
+    for (int i = 0; i < 3; ++i) w.attr[d.secondary_plane + i] = v.attr[kClipSecondaryAttrs + (back_color ? 3 : 0) + i];
+  if (d.fog_plane >= 0) w.attr[d.fog_plane] = v.attr[kClipFogAttr];
 
 SetupParams GeometryStage::params(const Style& style) const {
   SetupParams p;
@@ -124,11 +134,21 @@ void GeometryStage::emit(const PrimSetup& prim) {
 void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   // Lines are clipped to the view volume itself (not the guard band) before they are widened,
   // as GL specifies: a wide line never reaches into the viewport from a clipped-off part.
-  if (!clip_line(a, b, ClipVolume{})) return;
+  ClipVolume view;
+  view.user_planes = volume_.user_planes;
+  if (!clip_line(a, b, view)) return;
   const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
   if (!has_window_position(wa) || !has_window_position(wb)) return;
   PrimSetup prim;
-  if (setup_line(wa, wb, line_width_, params(style), prim)) emit(prim);
+  if (!setup_line(wa, wb, line_width_, params(style), prim)) return;
+  // The stipple counts the line's columns (rows) from its first vertex on, across a strip.
+  LineCoverage& l = prim.line;
+  const bool forward = l.x_major ? l.x1 > l.x0 : l.y1 > l.y0;
+  l.stipple_first = forward ? l.major_min : l.major_max;
+  l.stipple_step = forward ? 1 : -1;
+  l.stipple_count = stipple_count_;
+  stipple_count_ += static_cast<uint32_t>(l.major_max - l.major_min + 1);
+  emit(prim);
 }
 
 void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
@@ -141,6 +161,8 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
   if (setup_point(wv, point_size_, params(style), prim)) emit(prim);
 }
 
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if ((volume_.user_planes >> i & 1u) && !(v.user[i] >= 0.0)) return;
 void GeometryStage::point(const ClipVertex& v) {
   if (!active_ || !finite_position(v)) return;
   draw_point(to_clip(v), style_for(v, false));
@@ -204,8 +226,11 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
   const size_t n = v.size();
   if (mode == PolygonMode::Line) {
     style.depth_offset = polygon_offset(window_, s.offset_line);
-    for (size_t i = 0; i < n; ++i)
-      if (edge_flags[i]) draw_line(in_[i], in_[(i + 1) % n], style);
+    for (size_t i = 0; i < n; ++i) {
+      if (!edge_flags[i]) continue;
+      restart_line_stipple();
+      draw_line(in_[i], in_[(i + 1) % n], style);
+    }
   } else {
     style.depth_offset = polygon_offset(window_, s.offset_point);
     for (size_t i = 0; i < n; ++i)

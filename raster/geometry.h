@@ -19,6 +19,7 @@ class GeometryStage final : public PrimitiveSink {
   void point(const ClipVertex& v) override;
   void line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) override;
   void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
+  void restart_line_stipple() override { stipple_count_ = 0; }
                const ClipVertex& provoking) override;
 
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
@@ -50,6 +51,7 @@ class GeometryStage final : public PrimitiveSink {
   int line_width_ = 1, point_size_ = 1;
   std::vector<ClipVert> in_, clipped_, scratch_;
   std::vector<WinVert> window_;
+  uint32_t stipple_count_ = 0;  // line stipple fragments generated so far in the strip
 };
 
 }  // namespace pineda::raster

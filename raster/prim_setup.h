@@ -8,7 +8,9 @@ namespace pineda::raster {
 
 constexpr int kColorPlanes = 4;
 constexpr int kTexPlanesPerUnit = 3;  // s, t, q
-constexpr int kMaxPlanes = kColorPlanes + kTexPlanesPerUnit * kMaxTextureUnits;
+constexpr int kSecondaryPlanes = 3;  // r, g, b of the colour sum
+constexpr int kFogPlanes = 1;
+constexpr int kMaxPlanes = kColorPlanes + kTexPlanesPerUnit * kMaxTextureUnits + kSecondaryPlanes + kFogPlanes;
 
 // Pixel rectangle, half-open: [x0, x1) x [y0, y1).
 struct PixelRect {
@@ -39,6 +41,10 @@ struct LineCoverage {
   int width = 1;
   bool x_major = true;
   int major_min = 0, major_max = -1;  // inclusive range of columns (rows) hit
+  // Line stipple: column (row) m is fragment stipple_count + (m - stipple_first) * stipple_step
+  // of its strip.
+  int stipple_first = 0, stipple_step = 1;
+  uint32_t stipple_count = 0;
 };
 
 enum class CoverageKind : uint8_t { Triangle, Line, Point };
@@ -56,7 +62,9 @@ struct PrimSetup {
   float ref_x = 0.f, ref_y = 0.f;
   double z0 = 0.0, dzdx = 0.0, dzdy = 0.0;  // window depth in depth-buffer units
   Plane inv_w;
-  Plane planes[kMaxPlanes];  // r, g, b, a, then s, t, q per enabled unit (in unit order)
+  // r, g, b, a, then s, t, q per enabled unit (in unit order), then the secondary colour and
+  // the fog coordinate when the draw uses them (DrawRecord::secondary_plane, fog_plane).
+  Plane planes[kMaxPlanes];
   float flat_color[4] = {0, 0, 0, 0};
 };
 

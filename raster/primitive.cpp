@@ -105,10 +105,14 @@ void assemble_primitives(Primitive mode, std::span<const ClipVertex> vertices,
         if (const ClipVertex* v = src.at(i)) sink.point(*v);
       break;
     case Primitive::Lines:
-      for (size_t i = 0; i + 1 < n; i += 2) line_if_valid(sink, src.at(i), src.at(i + 1));
+      for (size_t i = 0; i + 1 < n; i += 2) {
+        sink.restart_line_stipple();
+        line_if_valid(sink, src.at(i), src.at(i + 1));
+      }
       break;
     case Primitive::LineStrip:
     case Primitive::LineLoop:
+      sink.restart_line_stipple();
       for (size_t i = 0; i + 1 < n; ++i) line_if_valid(sink, src.at(i), src.at(i + 1));
       // The closing segment's provoking vertex is the first one (GL 1.5 table 2.12).
       if (mode == Primitive::LineLoop && n >= 2) line_if_valid(sink, src.at(n - 1), src.at(0));

@@ -14,6 +14,8 @@ class PrimitiveSink {
   virtual void point(const ClipVertex& v) = 0;
   // `provoking` is the vertex whose colour flat shading uses.
   virtual void line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) = 0;
+  // A new independent line or line strip begins: the line stipple counter restarts.
+  virtual void restart_line_stipple() = 0;
   // A convex polygon (triangle, quad or GL polygon); edge_flags[i] marks the edge from v[i]
   // to v[i + 1] as a boundary edge for the line and point polygon modes.
   virtual void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,

@@ -6,12 +6,16 @@
 
 namespace pineda::raster {
 
+constexpr int kMaxClipPlanes = 6;
+
 // One vertex as the application specified it (immediate mode or client arrays).
 struct VertexInput {
   float position[4] = {0, 0, 0, 1};
   float color[4] = {1, 1, 1, 1};
   float normal[3] = {0, 0, 1};
   float texcoord[kMaxTextureUnits][4] = {};
+  float secondary_color[3] = {0, 0, 0};
+  float fog_coord = 0.f;
   bool edge_flag = true;
 };
 
@@ -24,6 +28,12 @@ struct ClipVertex {
   float back_color[4];
   float texcoord[kMaxTextureUnits][4];
   bool edge_flag;
+  // Added to the textured colour when the colour sum is on (secondary colour or separate specular).
+  float secondary[3] = {0, 0, 0};
+  float back_secondary[3] = {0, 0, 0};
+  float fog = 0.f;  // the fog coordinate c: |z_eye| or the vertex's fog coordinate
+  // Eye-space distance to each enabled user clip plane (>= 0 is inside).
+  float clip_distance[kMaxClipPlanes] = {};
 };
 
 }  // namespace pineda::raster

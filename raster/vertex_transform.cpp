@@ -24,10 +24,12 @@ MaterialColors material_for(const Lighting& l, const Material& m, bool is_front,
   return c;
 }
 
-// The GL 1.x lighting equation (GL 1.5 spec, section 2.14.1) for one face.
+// The GL 1.x lighting equation (GL 1.5 spec, section 2.14.1) for one face. With a separate
+// specular colour the specular terms go to `specular` instead of the result.
 glm::vec4 light_vertex(const Lighting& l, const MaterialColors& m, const glm::vec3& eye_pos,
-                       const glm::vec3& normal) {
+                       const glm::vec3& normal, glm::vec3& specular) {
   glm::vec3 color = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(l.model_ambient);
+  specular = glm::vec3(0.f);
   for (const Light& light : l.lights) {
     if (!light.enabled) continue;
     glm::vec3 to_light;
@@ -51,6 +53,7 @@ glm::vec4 light_vertex(const Lighting& l, const MaterialColors& m, const glm::ve
     const float factor = attenuation * spot;
     if (factor == 0.f) continue;
     glm::vec3 contribution = glm::vec3(m.ambient) * glm::vec3(light.ambient);
+    glm::vec3 spec_contribution(0.f);
     const float n_dot_l = glm::dot(normal, to_light);
     if (n_dot_l > 0.f) {
       contribution += n_dot_l * glm::vec3(m.diffuse) * glm::vec3(light.diffuse);
@@ -61,12 +64,18 @@ glm::vec4 light_vertex(const Lighting& l, const MaterialColors& m, const glm::ve
         const float n_dot_h = glm::dot(normal, half / half_len);
         if (n_dot_h > 0.f) {
           const float spec = m.shininess == 0.f ? 1.f : std::pow(n_dot_h, m.shininess);
-          contribution += spec * glm::vec3(m.specular) * glm::vec3(light.specular);
+          spec_contribution = spec * glm::vec3(m.specular) * glm::vec3(light.specular);
         }
       }
     }
-    color += factor * contribution;
+    if (l.separate_specular) {
+      color += factor * contribution;
+      specular += factor * spec_contribution;
+    } else {
+      color += factor * (contribution + spec_contribution);
+    }
   }
+  specular = glm::clamp(specular, 0.f, 1.f);
   return glm::vec4(glm::clamp(color, 0.f, 1.f), std::clamp(m.diffuse.a, 0.f, 1.f));
 }
 
@@ -77,39 +86,82 @@ void store(float* dst, const glm::vec4& v) {
   dst[3] = v.w;
 }
 
+void store3(float* dst, const glm::vec3& v) {
+  dst[0] = v.x;
+  dst[1] = v.y;
+  dst[2] = v.z;
+}
+
+// Which intermediate values the enabled stages read.
+struct Needs {
+  bool eye = false, normal = false, texgen = false;
+};
+
+Needs needs_of(const Transform& t) {
+  const VertexExtras& x = t.extras;
+  Needs n;
+  n.normal = t.lighting.enabled;
+  for (int u = 0; u < t.texture_units; ++u) {
+    n.texgen |= x.texgen[u].any();
+    n.normal |= x.texgen[u].needs_normal();
+  }
+  n.eye = t.lighting.enabled || (x.fog && !x.fog_from_coord) || x.clip_planes != 0 || n.texgen;
+  return n;
+}
+
 }  // namespace
 
 void transform_vertices(const Transform& t, std::span<const VertexInput> in, std::vector<ClipVertex>& out) {
   out.resize(in.size());
   const Lighting& lighting = t.lighting;
+  const VertexExtras& x = t.extras;
+  const Needs needs = needs_of(t);
   for (size_t i = 0; i < in.size(); ++i) {
     const VertexInput& v = in[i];
     ClipVertex& o = out[i];
     const glm::vec4 obj(v.position[0], v.position[1], v.position[2], v.position[3]);
     store(o.clip, t.modelview_projection * obj);
     o.edge_flag = v.edge_flag;
-
-    if (lighting.enabled) {
-      const glm::vec4 eye4 = t.modelview * obj;
-      const glm::vec3 eye_pos = eye4.w != 0.f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
-      glm::vec3 normal = t.normal_matrix * glm::vec3(v.normal[0], v.normal[1], v.normal[2]);
+    const glm::vec4 eye4 = needs.eye ? t.modelview * obj : glm::vec4(0.f);
+    glm::vec3 normal(0.f);
+    if (needs.normal) {
+      normal = t.normal_matrix * glm::vec3(v.normal[0], v.normal[1], v.normal[2]);
       normal *= t.rescale_factor;
       if (t.normalize) {
         const float len = glm::length(normal);
         if (len > 0.f) normal /= len;
       }
-      store(o.color, light_vertex(lighting, material_for(lighting, lighting.front, true, v.color), eye_pos, normal));
-      if (lighting.two_side)
-        store(o.back_color,
-              light_vertex(lighting, material_for(lighting, lighting.back, false, v.color), eye_pos, -normal));
-      else
+    }
+
+    if (lighting.enabled) {
+      const glm::vec3 eye_pos = eye4.w != 0.f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
+      glm::vec3 specular;
+      store(o.color, light_vertex(lighting, material_for(lighting, lighting.front, true, v.color), eye_pos, normal,
+                                  specular));
+      store3(o.secondary, specular);
+      if (lighting.two_side) {
+        store(o.back_color, light_vertex(lighting, material_for(lighting, lighting.back, false, v.color), eye_pos,
+                                         -normal, specular));
+        store3(o.back_secondary, specular);
+      } else {
         std::copy(o.color, o.color + 4, o.back_color);
+        std::copy(o.secondary, o.secondary + 3, o.back_secondary);
+      }
     } else {
       for (int c = 0; c < 4; ++c) o.color[c] = o.back_color[c] = std::clamp(v.color[c], 0.f, 1.f);
+      if (x.color_sum)
+        for (int c = 0; c < 3; ++c) o.secondary[c] = o.back_secondary[c] = std::clamp(v.secondary_color[c], 0.f, 1.f);
+    }
+    if (x.fog) o.fog = std::fabs(x.fog_from_coord ? v.fog_coord : eye4.z);
+    for (uint32_t planes = x.clip_planes; planes; planes &= planes - 1) {
+      const int p = __builtin_ctz(planes);
+      o.clip_distance[p] = glm::dot(x.clip_plane_eye[p], eye4);
     }
 
     for (int u = 0; u < t.texture_units; ++u) {
-      const glm::vec4 tc(v.texcoord[u][0], v.texcoord[u][1], v.texcoord[u][2], v.texcoord[u][3]);
+      float coords[4] = {v.texcoord[u][0], v.texcoord[u][1], v.texcoord[u][2], v.texcoord[u][3]};
+      if (needs.texgen && x.texgen[u].any()) generate_texcoords(x.texgen[u], {obj, eye4, normal}, coords);
+      const glm::vec4 tc(coords[0], coords[1], coords[2], coords[3]);
       store(o.texcoord[u], t.texture_matrix_identity[u] ? tc : t.texture_matrix[u] * tc);
     }
   }

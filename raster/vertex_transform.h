@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/texgen.h"
 #include "raster/texture.h"
 #include "raster/vertex.h"
 
@@ -43,6 +44,17 @@ struct Lighting {
   glm::vec4 model_ambient{0.2f, 0.2f, 0.2f, 1};
   bool local_viewer = false;
   bool two_side = false;
+  bool separate_specular = false;  // GL_SEPARATE_SPECULAR_COLOR: specular goes to the secondary colour
+};
+
+// The per-vertex values the rasterizer's optional stages read.
+struct VertexExtras {
+  bool color_sum = false;       // ClipVertex::secondary is read
+  bool fog = false;             // ClipVertex::fog is read
+  bool fog_from_coord = false;  // GL_FOG_COORDINATE: c is the vertex's fog coordinate, else |z_eye|
+  uint32_t clip_planes = 0;     // bit i: ClipVertex::clip_distance[i] is read
+  std::array<glm::vec4, kMaxClipPlanes> clip_plane_eye{};  // eye coordinates
+  std::array<TexGen, kMaxTextureUnits> texgen;
 };
 
 struct Transform {
@@ -55,6 +67,7 @@ struct Transform {
   std::array<glm::mat4, kMaxTextureUnits> texture_matrix;
   std::array<bool, kMaxTextureUnits> texture_matrix_identity{true, true, true, true};
   Lighting lighting;
+  VertexExtras extras;
 };
 
 void transform_vertices(const Transform& transform, std::span<const VertexInput> in,

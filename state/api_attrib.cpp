@@ -3,6 +3,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/vertex_extras_attrib.h"
 
 namespace pineda::gl {
 namespace {
@@ -76,6 +77,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.unrendered_caps = ctx.unrendered_caps;
   f.depth_func = ctx.depth_func;
   f.alpha_func = ctx.alpha_func;
+  f.extras = ctx.extras;
   f.stencil_func = ctx.stencil_func;
   f.stencil_fail = ctx.stencil_fail;
   f.stencil_zfail = ctx.stencil_zfail;
@@ -276,6 +278,7 @@ void restore(Context& ctx, const AttribFrame& f) {
 
 void PushAttrib(Context& ctx, GLbitfield mask) {
   if (ctx.attrib_stack.size() >= kMaxAttribStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
+  restore_vertex_extras(ctx, f);
   ctx.attrib_stack.push_back(save(ctx, mask));
 }
 
@@ -297,8 +300,6 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   f.normal_array = ctx.normal_array;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) f.texcoord_arrays[u] = ctx.texture_units[u].texcoord_array;
   f.index_array = ctx.index_array;
-  f.array_buffer = ctx.buffers.array;
-  f.element_array_buffer = ctx.buffers.element_array;
   f.edge_flag_array = ctx.edge_flag_array;
   f.client_active_texture = ctx.client_active_texture;
   ctx.client_attrib_stack.push_back(f);
@@ -308,6 +309,8 @@ void PopClientAttrib(Context& ctx) {
   if (ctx.client_attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
   const ClientAttribFrame f = ctx.client_attrib_stack.back();
   ctx.client_attrib_stack.pop_back();
+  f.fog_coord_array = ctx.fog_coord_array;
+  f.secondary_color_array = ctx.secondary_color_array;
   if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {
     ctx.pack = f.pack;
     ctx.unpack = f.unpack;
@@ -318,11 +321,11 @@ void PopClientAttrib(Context& ctx) {
     ctx.normal_array = f.normal_array;
     for (int u = 0; u < raster::kMaxTextureUnits; ++u) ctx.texture_units[u].texcoord_array = f.texcoord_arrays[u];
     ctx.index_array = f.index_array;
-    ctx.buffers.array = f.array_buffer;
-    ctx.buffers.element_array = f.element_array_buffer;
     ctx.edge_flag_array = f.edge_flag_array;
     ctx.client_active_texture = f.client_active_texture;
   }
 }
 
 }  // namespace pineda::gl
+    ctx.fog_coord_array = f.fog_coord_array;
+    ctx.secondary_color_array = f.secondary_color_array;

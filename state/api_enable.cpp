@@ -9,11 +9,7 @@ namespace {
 
 bool is_unrendered_cap(GLenum cap) {
   switch (cap) {
-    case GL_FOG: case GL_LINE_SMOOTH: case GL_LINE_STIPPLE: case GL_POINT_SMOOTH:
-    case GL_POLYGON_SMOOTH: case GL_POLYGON_STIPPLE: case GL_AUTO_NORMAL:
-    case GL_CLIP_PLANE0: case GL_CLIP_PLANE1: case GL_CLIP_PLANE2: case GL_CLIP_PLANE3:
-    case GL_CLIP_PLANE4: case GL_CLIP_PLANE5:
-    case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T: case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
+    case GL_LINE_SMOOTH: case GL_POINT_SMOOTH: case GL_POLYGON_SMOOTH: case GL_AUTO_NORMAL:
     case GL_MAP1_COLOR_4: case GL_MAP1_INDEX: case GL_MAP1_NORMAL: case GL_MAP1_TEXTURE_COORD_1:
     case GL_MAP1_TEXTURE_COORD_2: case GL_MAP1_TEXTURE_COORD_3: case GL_MAP1_TEXTURE_COORD_4:
     case GL_MAP1_VERTEX_3: case GL_MAP1_VERTEX_4: case GL_MAP2_COLOR_4: case GL_MAP2_INDEX:
@@ -50,6 +46,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_TEXTURE_1D: return &ctx.texture_units[ctx.active_texture].enabled_1d;
     case GL_TEXTURE_2D: return &ctx.texture_units[ctx.active_texture].enabled_2d;
     default:
+      if (bool* flag = vertex_extras_capability(ctx, cap)) return flag;
       if (is_unrendered_cap(cap)) return &ctx.unrendered_caps[cap];
       return nullptr;
   }
@@ -63,7 +60,7 @@ bool* client_capability(Context& ctx, GLenum array) {
     case GL_TEXTURE_COORD_ARRAY: return &ctx.texture_units[ctx.client_active_texture].texcoord_array.enabled;
     case GL_INDEX_ARRAY: return &ctx.index_array;
     case GL_EDGE_FLAG_ARRAY: return &ctx.edge_flag_array.enabled;
-    default: return nullptr;
+    default: return vertex_extras_client_capability(ctx, array);
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/color_material.h"
+#include "state/component_convert.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
@@ -14,14 +15,6 @@ namespace {
 // GL's conversion of integer colour and normal components to floating point.
 inline float to_float(GLfloat v) { return v; }
 inline float to_float(GLdouble v) { return static_cast<float>(v); }
-inline float norm(GLubyte v) { return v / 255.f; }
-inline float norm(GLbyte v) { return (2.f * v + 1.f) / 255.f; }
-inline float norm(GLushort v) { return v / 65535.f; }
-inline float norm(GLshort v) { return (2.f * v + 1.f) / 65535.f; }
-inline float norm(GLuint v) { return static_cast<float>(v / 4294967295.0); }
-inline float norm(GLint v) { return static_cast<float>((2.0 * v + 1.0) / 4294967295.0); }
-inline float norm(GLfloat v) { return v; }
-inline float norm(GLdouble v) { return static_cast<float>(v); }
 
 void emit_vertex(Context& ctx, float x, float y, float z, float w) {
   if (!ctx.in_begin_end) return;  // outside Begin/End a vertex has no effect
@@ -35,6 +28,8 @@ void emit_vertex(Context& ctx, float x, float y, float z, float w) {
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4, v.texcoord[u]);
   v.edge_flag = ctx.current_edge_flag;
+  std::copy(ctx.extras.current_secondary_color, ctx.extras.current_secondary_color + 3, v.secondary_color);
+  v.fog_coord = ctx.extras.current_fog_coord;
   ctx.immediate.push_back(v);
 }
 

@@ -53,6 +53,11 @@ void light_model(Context& ctx, GLenum pname, const GLfloat* v) {
     case GL_LIGHT_MODEL_AMBIENT: ctx.lighting.model_ambient = vec4_of(v); break;
     case GL_LIGHT_MODEL_LOCAL_VIEWER: ctx.lighting.local_viewer = v[0] != 0.f; break;
     case GL_LIGHT_MODEL_TWO_SIDE: ctx.lighting.two_side = v[0] != 0.f; break;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+      if (v[0] == static_cast<GLfloat>(GL_SEPARATE_SPECULAR_COLOR)) ctx.lighting.separate_specular = true;
+      else if (v[0] == static_cast<GLfloat>(GL_SINGLE_COLOR)) ctx.lighting.separate_specular = false;
+      else ctx.record_error(GL_INVALID_ENUM);
+      break;
     default: ctx.record_error(GL_INVALID_ENUM);
   }
 }

@@ -10,6 +10,7 @@
 
 #include "raster/draw_state.h"
 #include "raster/vertex_transform.h"
+#include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
 
 namespace pineda {
@@ -44,6 +45,7 @@ struct AttribFrame {
   GLenum logic_op;
   GLuint stencil_value_mask, stencil_write_mask;
   float clear_color[4];
+  VertexExtrasState extras;
   double clear_depth;
   GLint clear_stencil;
   GLenum hints[5];

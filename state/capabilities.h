@@ -11,4 +11,8 @@ bool* server_capability(Context& ctx, GLenum cap);
 // The flag for a client array (glEnableClientState) or null when `array` is not one.
 bool* client_capability(Context& ctx, GLenum array);
 
+// The same for fog, stipple, clip planes, texgen and the colour sum (vertex_extras_caps.cpp).
+bool* vertex_extras_capability(Context& ctx, GLenum cap);
+bool* vertex_extras_client_capability(Context& ctx, GLenum array);
+
 }  // namespace pineda

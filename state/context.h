@@ -18,16 +18,15 @@
 #include "raster/vertex.h"
 #include "raster/vertex_transform.h"
 #include "state/attrib_stack.h"
-#include "state/buffer_object.h"
 #include "state/display_list.h"
 #include "state/drawable.h"
-#include "state/query_object.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 
 namespace pineda {
 
 struct ContextAttribs {
+#include "state/vertex_extras_state.h"
   int major = 1, minor = 1;
   bool gles = false;
   int threads = 0;  // 0: PINEDA_THREADS or one per core
@@ -45,9 +44,7 @@ struct ClientArray {
   GLint size = 4;
   GLenum type = GL_FLOAT;
   GLsizei stride = 0;
-  const void* pointer = nullptr;  // an offset into `buffer` when one was bound
-  std::shared_ptr<BufferObject> buffer;  // GL_ARRAY_BUFFER when the pointer was set
-  bool active() const { return enabled && (pointer || buffer); }
+  const void* pointer = nullptr;
 };
 
 struct PixelStore {
@@ -63,12 +60,12 @@ struct ClientAttribFrame {
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
   bool index_array = false;
-  std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
   GLuint client_active_texture = 0;
 };
 
 struct TextureUnitState {
   bool enabled_2d = false, enabled_1d = false;
+  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   GLuint bound_2d = 0, bound_1d = 0;
   TexEnvState env;
   float current_texcoord[4] = {0, 0, 0, 1};
@@ -151,7 +148,7 @@ class Context {
   bool line_stipple = false, polygon_stipple = false;
   raster::Lighting lighting;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
-  bool fog = false;
+  VertexExtrasState extras;  // fog, clip planes, texgen, secondary colour (state/api_fog.cpp...)
   // Capabilities GL 1.1 accepts whose rendering Pineda does not do yet (fog, stipple,
   // smoothing, clip planes, texgen, evaluators): the enable bit is kept for glIsEnabled.
   std::unordered_map<GLenum, bool> unrendered_caps;
@@ -183,11 +180,8 @@ class Context {
   std::array<TextureUnitState, raster::kMaxTextureUnits> texture_units;
   TextureNamespace textures;
 
+  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
-
-  // Buffer objects and queries
-  BufferState buffers;
-  QueryState queries;
 
   // Display lists
   DisplayLists lists;

@@ -6,6 +6,7 @@
 
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/vertex_extras_snapshot.h"
 
 namespace pineda {
 namespace {
@@ -18,7 +19,7 @@ raster::Transform build_transform(Context& ctx, int texture_units) {
   t.modelview = glm::mat4(mv);
   t.modelview_projection = glm::mat4(ctx.projection.top() * mv);
   t.lighting = ctx.lighting;
-  if (ctx.lighting.enabled) {
+  if (ctx.lighting.enabled || texgen_needs_normal(ctx, texture_units)) {
     t.normal_matrix = glm::mat3(glm::inverseTranspose(glm::dmat3(mv)));
     t.normalize = ctx.normalize;
     if (ctx.rescale_normal && !ctx.normalize) {
@@ -33,6 +34,7 @@ raster::Transform build_transform(Context& ctx, int texture_units) {
     t.texture_matrix[u] = glm::mat4(ctx.texture_matrix[u].top());
     t.texture_matrix_identity[u] = is_identity(t.texture_matrix[u]);
   }
+  snapshot_vertex_extras(ctx, t, texture_units);
   return t;
 }
 
