@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "glapi/gl_entry_points.h"
+#include "state/buffer_draw.h"
 #include "state/color_material.h"
 #include "state/context.h"
 #include "state/draw.h"
@@ -22,6 +23,7 @@ void set_pointer(Context& ctx, ClientArray& array, GLint size, GLenum type, GLsi
   array.type = type;
   array.stride = stride;
   array.pointer = ptr;
+  array.buffer = ctx.buffers.array;
 }
 
 bool valid_mode(Context& ctx, GLenum mode) {
@@ -31,7 +33,7 @@ bool valid_mode(Context& ctx, GLenum mode) {
   return false;
 }
 
-bool can_fetch(const Context& ctx) { return ctx.vertex_array.enabled && ctx.vertex_array.pointer; }
+bool can_fetch(const Context& ctx) { return ctx.vertex_array.active(); }
 
 template <typename Index>
 void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {
@@ -40,6 +42,7 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
     lo = std::min(lo, indices[i]);
     hi = std::max(hi, indices[i]);
   }
+  if (!arrays_ready(ctx, hi)) return;
   const size_t range = size_t(hi) - lo + 1;
   std::vector<uint32_t> rebased;
   if (range <= size_t(count) * 4) {
@@ -79,12 +82,13 @@ void EdgeFlagPointer(Context& ctx, GLsizei stride, const void* ptr) {
   if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
   ctx.edge_flag_array.stride = stride;
   ctx.edge_flag_array.pointer = ptr;
+  ctx.edge_flag_array.buffer = ctx.buffers.array;
 }
 
 void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (!valid_mode(ctx, mode)) return;
   if (count < 0 || first < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (count == 0 || !can_fetch(ctx)) return;
+  if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
   ctx.fetched.resize(count);
   for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, ctx.fetched[i]);
   draw_vertices(ctx, mode, ctx.fetched, {});
@@ -95,7 +99,9 @@ void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const v
   if (count < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
     return ctx.record_error(GL_INVALID_ENUM);
-  if (count == 0 || !indices || !can_fetch(ctx)) return;
+  if (count == 0 || !can_fetch(ctx)) return;
+  indices = element_indices(ctx, indices, size_t(count) * gl_type_size(type));
+  if (!indices) return;
   switch (type) {
     case GL_UNSIGNED_BYTE: return draw_indexed(ctx, mode, count, static_cast<const GLubyte*>(indices));
     case GL_UNSIGNED_SHORT: return draw_indexed(ctx, mode, count, static_cast<const GLushort*>(indices));
@@ -108,15 +114,15 @@ void ArrayElement(Context& ctx, GLint i) {
   if (i < 0) return ctx.record_error(GL_INVALID_VALUE);
   raster::VertexInput v;
   fetch_vertex(ctx, size_t(i), v);
-  if (ctx.color_array.enabled && ctx.color_array.pointer) {
+  if (ctx.color_array.active()) {
     std::copy(v.color, v.color + 4, ctx.current_color);
     track_color_material(ctx);
   }
-  if (ctx.normal_array.enabled && ctx.normal_array.pointer) std::copy(v.normal, v.normal + 3, ctx.current_normal);
-  if (ctx.edge_flag_array.enabled && ctx.edge_flag_array.pointer) ctx.current_edge_flag = v.edge_flag;
+  if (ctx.normal_array.active()) std::copy(v.normal, v.normal + 3, ctx.current_normal);
+  if (ctx.edge_flag_array.active()) ctx.current_edge_flag = v.edge_flag;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
     TextureUnitState& unit = ctx.texture_units[u];
-    if (unit.texcoord_array.enabled && unit.texcoord_array.pointer)
+    if (unit.texcoord_array.active())
       std::copy(v.texcoord[u], v.texcoord[u] + 4, unit.current_texcoord);
   }
   if (can_fetch(ctx) && ctx.in_begin_end) ctx.immediate.push_back(v);
@@ -165,6 +171,7 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
   ctx.index_array = false;
   ctx.edge_flag_array.enabled = false;
   ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, base + layout->pv * f};
+  for (ClientArray* a : {&tex, &ctx.color_array, &ctx.normal_array, &ctx.vertex_array}) a->buffer = ctx.buffers.array;
 }
 
 void GetPointerv(Context& ctx, GLenum pname, void** params) {

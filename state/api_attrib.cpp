@@ -300,6 +300,8 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   f.normal_array = ctx.normal_array;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) f.texcoord_arrays[u] = ctx.texture_units[u].texcoord_array;
   f.index_array = ctx.index_array;
+  f.array_buffer = ctx.buffers.array;
+  f.element_array_buffer = ctx.buffers.element_array;
   f.edge_flag_array = ctx.edge_flag_array;
   f.client_active_texture = ctx.client_active_texture;
   ctx.client_attrib_stack.push_back(f);
@@ -321,6 +323,8 @@ void PopClientAttrib(Context& ctx) {
     ctx.normal_array = f.normal_array;
     for (int u = 0; u < raster::kMaxTextureUnits; ++u) ctx.texture_units[u].texcoord_array = f.texcoord_arrays[u];
     ctx.index_array = f.index_array;
+    ctx.buffers.array = f.array_buffer;
+    ctx.buffers.element_array = f.element_array_buffer;
     ctx.edge_flag_array = f.edge_flag_array;
     ctx.client_active_texture = f.client_active_texture;
   }

@@ -18,8 +18,10 @@
 #include "raster/vertex.h"
 #include "raster/vertex_transform.h"
 #include "state/attrib_stack.h"
+#include "state/buffer_object.h"
 #include "state/display_list.h"
 #include "state/drawable.h"
+#include "state/query_object.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 
@@ -44,7 +46,9 @@ struct ClientArray {
   GLint size = 4;
   GLenum type = GL_FLOAT;
   GLsizei stride = 0;
-  const void* pointer = nullptr;
+  const void* pointer = nullptr;  // an offset into `buffer` when one was bound
+  std::shared_ptr<BufferObject> buffer;  // GL_ARRAY_BUFFER when the pointer was set
+  bool active() const { return enabled && (pointer || buffer); }
 };
 
 struct PixelStore {
@@ -60,6 +64,7 @@ struct ClientAttribFrame {
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
   bool index_array = false;
+  std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
   GLuint client_active_texture = 0;
 };
 
@@ -182,6 +187,10 @@ class Context {
 
   ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+
+  // Buffer objects and queries
+  BufferState buffers;
+  QueryState queries;
 
   // Display lists
   DisplayLists lists;

@@ -30,15 +30,23 @@ float read_component(const uint8_t* p, GLenum type, bool normalize) {
 }
 
 // Reads `array.size` components of element `index` into dst (which keeps its defaults
-// for the components the array does not have).
+// for the components the array does not have, and all of them when the element lies
+// outside the array's buffer object).
 void read_array(const ClientArray& array, size_t index, float* dst, bool normalize) {
   const int component = gl_type_size(array.type);
-  const size_t stride = array.stride ? array.stride : size_t(component) * array.size;
-  const uint8_t* p = static_cast<const uint8_t*>(array.pointer) + stride * index;
+  const uint8_t* p = array_element(array, index, size_t(component) * array.size);
+  if (!p) return;
   for (int c = 0; c < array.size; ++c) dst[c] = read_component(p + c * component, array.type, normalize);
 }
 
 }  // namespace
+
+const uint8_t* array_element(const ClientArray& array, size_t index, size_t bytes) {
+  const size_t stride = array.stride ? size_t(array.stride) : bytes;
+  if (!array.buffer) return static_cast<const uint8_t*>(array.pointer) + stride * index;
+  if (stride && index > (SIZE_MAX - reinterpret_cast<uintptr_t>(array.pointer)) / stride) return nullptr;
+  return buffer_range(*array.buffer, reinterpret_cast<uintptr_t>(array.pointer) + stride * index, bytes);
+}
 
 int gl_type_size(unsigned type) {
   switch (type) {
@@ -53,36 +61,35 @@ int gl_type_size(unsigned type) {
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
   read_array(ctx.vertex_array, index, out.position, false);
-  if (ctx.color_array.enabled && ctx.color_array.pointer) {
+  if (ctx.color_array.active()) {
     read_array(ctx.color_array, index, out.color, true);
   } else {
     std::copy(ctx.current_color, ctx.current_color + 4, out.color);
   }
-  if (ctx.normal_array.enabled && ctx.normal_array.pointer) {
+  if (ctx.normal_array.active()) {
     read_array(ctx.normal_array, index, out.normal, true);
   } else {
     std::copy(ctx.current_normal, ctx.current_normal + 3, out.normal);
   }
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
     const TextureUnitState& unit = ctx.texture_units[u];
-    if (unit.texcoord_array.enabled && unit.texcoord_array.pointer) {
+    if (unit.texcoord_array.active()) {
       out.texcoord[u][3] = 1.f;
       read_array(unit.texcoord_array, index, out.texcoord[u], false);
     } else
       std::copy(unit.current_texcoord, unit.current_texcoord + 4, out.texcoord[u]);
   }
-  if (ctx.secondary_color_array.enabled && ctx.secondary_color_array.pointer)
+  if (ctx.secondary_color_array.active())
     read_array(ctx.secondary_color_array, index, out.secondary_color, true);
   else
     std::copy(ctx.extras.current_secondary_color, ctx.extras.current_secondary_color + 3, out.secondary_color);
-  if (ctx.fog_coord_array.enabled && ctx.fog_coord_array.pointer)
+  if (ctx.fog_coord_array.active())
     read_array(ctx.fog_coord_array, index, &out.fog_coord, false);
   else
     out.fog_coord = ctx.extras.current_fog_coord;
-  if (ctx.edge_flag_array.enabled && ctx.edge_flag_array.pointer) {
-    const ClientArray& a = ctx.edge_flag_array;
-    const size_t stride = a.stride ? size_t(a.stride) : sizeof(GLboolean);
-    out.edge_flag = *(static_cast<const GLboolean*>(a.pointer) + stride * index) != GL_FALSE;
+  if (ctx.edge_flag_array.active()) {
+    const uint8_t* p = array_element(ctx.edge_flag_array, index, sizeof(GLboolean));
+    out.edge_flag = p ? *p != GL_FALSE : ctx.current_edge_flag;
   } else {
     out.edge_flag = ctx.current_edge_flag;
   }
