@@ -181,6 +181,8 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
     case GL_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.color_array.pointer); break;
     case GL_NORMAL_ARRAY_POINTER: *params = const_cast<void*>(ctx.normal_array.pointer); break;
     case GL_EDGE_FLAG_ARRAY_POINTER: *params = const_cast<void*>(ctx.edge_flag_array.pointer); break;
+    case GL_FOG_COORD_ARRAY_POINTER: *params = const_cast<void*>(ctx.fog_coord_array.pointer); break;
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.secondary_color_array.pointer); break;
     case GL_TEXTURE_COORD_ARRAY_POINTER:
       *params = const_cast<void*>(ctx.texture_units[ctx.client_active_texture].texcoord_array.pointer);
       break;
@@ -188,6 +190,4 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
   }
 }
 
-    case GL_FOG_COORD_ARRAY_POINTER: *params = const_cast<void*>(ctx.fog_coord_array.pointer); break;
-    case GL_SECONDARY_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.secondary_color_array.pointer); break;
 }  // namespace pineda::gl

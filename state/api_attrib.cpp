@@ -75,9 +75,9 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.color_material_face = ctx.color_material_face;
   f.color_material_mode = ctx.color_material_mode;
   f.unrendered_caps = ctx.unrendered_caps;
+  f.extras = ctx.extras;
   f.depth_func = ctx.depth_func;
   f.alpha_func = ctx.alpha_func;
-  f.extras = ctx.extras;
   f.stencil_func = ctx.stencil_func;
   f.stencil_fail = ctx.stencil_fail;
   f.stencil_zfail = ctx.stencil_zfail;
@@ -272,13 +272,13 @@ void restore(Context& ctx, const AttribFrame& f) {
     s.scissor_test = o.scissor_test;
     s.scissor = o.scissor;
   }
+  restore_vertex_extras(ctx, f);
 }
 
 }  // namespace
 
 void PushAttrib(Context& ctx, GLbitfield mask) {
   if (ctx.attrib_stack.size() >= kMaxAttribStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
-  restore_vertex_extras(ctx, f);
   ctx.attrib_stack.push_back(save(ctx, mask));
 }
 
@@ -303,6 +303,8 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   f.array_buffer = ctx.buffers.array;
   f.element_array_buffer = ctx.buffers.element_array;
   f.edge_flag_array = ctx.edge_flag_array;
+  f.fog_coord_array = ctx.fog_coord_array;
+  f.secondary_color_array = ctx.secondary_color_array;
   f.client_active_texture = ctx.client_active_texture;
   ctx.client_attrib_stack.push_back(f);
 }
@@ -311,8 +313,6 @@ void PopClientAttrib(Context& ctx) {
   if (ctx.client_attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
   const ClientAttribFrame f = ctx.client_attrib_stack.back();
   ctx.client_attrib_stack.pop_back();
-  f.fog_coord_array = ctx.fog_coord_array;
-  f.secondary_color_array = ctx.secondary_color_array;
   if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {
     ctx.pack = f.pack;
     ctx.unpack = f.unpack;
@@ -326,10 +326,10 @@ void PopClientAttrib(Context& ctx) {
     ctx.buffers.array = f.array_buffer;
     ctx.buffers.element_array = f.element_array_buffer;
     ctx.edge_flag_array = f.edge_flag_array;
+    ctx.fog_coord_array = f.fog_coord_array;
+    ctx.secondary_color_array = f.secondary_color_array;
     ctx.client_active_texture = f.client_active_texture;
   }
 }
 
 }  // namespace pineda::gl
-    ctx.fog_coord_array = f.fog_coord_array;
-    ctx.secondary_color_array = f.secondary_color_array;

@@ -24,11 +24,11 @@
 #include "state/query_object.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
+#include "state/vertex_extras_state.h"
 
 namespace pineda {
 
 struct ContextAttribs {
-#include "state/vertex_extras_state.h"
   int major = 1, minor = 1;
   bool gles = false;
   int threads = 0;  // 0: PINEDA_THREADS or one per core
@@ -63,6 +63,7 @@ struct ClientAttribFrame {
   ClientArray vertex_array, color_array, normal_array;
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
+  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   bool index_array = false;
   std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
   GLuint client_active_texture = 0;
@@ -70,7 +71,6 @@ struct ClientAttribFrame {
 
 struct TextureUnitState {
   bool enabled_2d = false, enabled_1d = false;
-  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   GLuint bound_2d = 0, bound_1d = 0;
   TexEnvState env;
   float current_texcoord[4] = {0, 0, 0, 1};
@@ -178,6 +178,7 @@ class Context {
   // Client arrays and pixel storage
   ClientArray vertex_array, color_array, normal_array;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};  // GLboolean flags
+  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   bool index_array = false;
   PixelStore pack, unpack;
 
@@ -185,7 +186,6 @@ class Context {
   std::array<TextureUnitState, raster::kMaxTextureUnits> texture_units;
   TextureNamespace textures;
 
-  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
 
   // Buffer objects and queries
