@@ -1,4 +1,8 @@
 // glTexGen / glGetTexGen: texture coordinate generation of the active texture unit.
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "glapi/gl_entry_points.h"
@@ -70,8 +74,15 @@ void get_vector(Context& ctx, GLenum coord, GLenum pname, T* params) {
     case GL_EYE_PLANE: plane = &c->eye_plane; break;
     default: return ctx.record_error(GL_INVALID_ENUM);
   }
-  if (params)
-    for (int i = 0; i < 4; ++i) params[i] = static_cast<T>((*plane)[i]);
+  if (!params) return;
+  for (int i = 0; i < 4; ++i) {
+    const double v = (*plane)[i];
+    // GL 1.5 section 6.1.2: floating-point state is rounded to the nearest integer.
+    if constexpr (std::is_integral_v<T>)
+      params[i] = static_cast<T>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
+    else
+      params[i] = static_cast<T>(v);
+  }
 }
 
 }  // namespace
