@@ -57,7 +57,8 @@ void unbind_everywhere(Context& ctx, GLuint name) {
   };
   drop(ctx.buffers.array);
   drop(ctx.buffers.element_array);
-  for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array})
+  for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array,
+                         &ctx.fog_coord_array, &ctx.secondary_color_array})
     drop(a->buffer);
   for (TextureUnitState& unit : ctx.texture_units) drop(unit.texcoord_array.buffer);
 }

@@ -10,7 +10,8 @@ namespace {
 
 template <typename Visit>
 void for_each_array(Context& ctx, Visit visit) {
-  for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array})
+  for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array,
+                         &ctx.fog_coord_array, &ctx.secondary_color_array})
     visit(*a);
   for (TextureUnitState& unit : ctx.texture_units) visit(unit.texcoord_array);
 }

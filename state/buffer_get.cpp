@@ -14,6 +14,8 @@ bool query_buffer_binding(const Context& ctx, GLenum pname, GLuint& name) {
     case GL_NORMAL_ARRAY_BUFFER_BINDING: array = &ctx.normal_array; break;
     case GL_COLOR_ARRAY_BUFFER_BINDING: array = &ctx.color_array; break;
     case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: array = &ctx.edge_flag_array; break;
+    case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: array = &ctx.secondary_color_array; break;
+    case GL_FOG_COORD_ARRAY_BUFFER_BINDING: array = &ctx.fog_coord_array; break;
     case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING:
       array = &ctx.texture_units[ctx.client_active_texture].texcoord_array;
       break;
