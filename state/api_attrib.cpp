@@ -60,6 +60,8 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4,
               f.current_texcoord[u].begin());
   f.current_edge_flag = ctx.current_edge_flag;
+  f.raster_pos = ctx.raster_pos;
+  f.pixel_mode = ctx.pixel_mode;
   f.draw_state = ctx.draw_state;
   for (raster::TextureUnit& unit : f.draw_state.texture_units) unit.image.reset();  // rebuilt per draw
   f.enable_cull = ctx.enable_cull;
@@ -158,6 +160,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     for (int u = 0; u < raster::kMaxTextureUnits; ++u)
       std::copy(f.current_texcoord[u].begin(), f.current_texcoord[u].end(), ctx.texture_units[u].current_texcoord);
     ctx.current_edge_flag = f.current_edge_flag;
+    ctx.raster_pos = f.raster_pos;
   }
   if (m & GL_POINT_BIT) {
     s.point_size = o.point_size;
@@ -185,7 +188,10 @@ void restore(Context& ctx, const AttribFrame& f) {
     s.offset_point = o.offset_point;
     restore_caps(ctx, f, GL_POLYGON_BIT);
   }
-  if (m & GL_PIXEL_MODE_BIT) ctx.read_buffer = f.read_buffer;
+  if (m & GL_PIXEL_MODE_BIT) {
+    ctx.read_buffer = f.read_buffer;
+    ctx.pixel_mode = f.pixel_mode;
+  }
   if (m & GL_LIGHTING_BIT) {
     ctx.lighting = f.lighting;
     ctx.color_material_face = f.color_material_face;

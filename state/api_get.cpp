@@ -9,17 +9,14 @@
 #include "state/buffer_get.h"
 #include "state/capabilities.h"
 #include "state/context.h"
+#include "state/get_values.h"
 #include "state/limits.h"
 
 namespace pineda::gl {
 namespace {
 
-enum class Kind { Int, Enum, Bool, Float, Color };  // Color: [0,1] values that map to the int range
-
-struct Values {
-  Kind kind = Kind::Int;
-  std::vector<double> v;
-};
+using Kind = GetKind;
+using Values = GetValues;
 
 Values ints(std::initializer_list<double> v) { return {Kind::Int, v}; }
 Values enums(std::initializer_list<double> v) { return {Kind::Enum, v}; }
@@ -194,6 +191,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     out = ints({double(name)});
     return true;
   }
+  if (query_pixel_state(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);
@@ -244,7 +242,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
       "GL_EXT_stencil_wrap "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
-      "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra";
+      "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos";
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

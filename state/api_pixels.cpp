@@ -5,6 +5,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/pixel_format.h"
+#include "state/pixel_transfer.h"
 
 namespace pineda::gl {
 namespace {
@@ -46,6 +47,12 @@ void read_color(const raster::ColorBuffer& cb, int x, int y, double rgba[4]) {
   rgba[3] = p[3] / 255.0;
 }
 
+void transfer_read_color(const Context& ctx, double rgba[4]) {
+  float f[4] = {float(rgba[0]), float(rgba[1]), float(rgba[2]), float(rgba[3])};
+  transfer_color(ctx.pixel_mode, ctx.pixel_maps, f);
+  for (int c = 0; c < 4; ++c) rgba[c] = f[c];
+}
+
 }  // namespace
 
 void PixelStorei(Context& ctx, GLenum pname, GLint param) { set_store(ctx, pname, param); }
@@ -68,18 +75,23 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   const int y0 = std::max(y, 0), y1 = std::min<int64_t>(int64_t(y) + height, fb.height);
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
   const int components = std::max(color_format_components(format), 1);
+  const bool color_identity = color_transfer_is_identity(ctx.pixel_mode);
   for (int fy = y0; fy < y1; ++fy) {
     uint8_t* row = out + layout.row_stride * size_t(fy - y);
     for (int fx = x0; fx < x1; ++fx) {
       uint8_t* dst = row + layout.pixel_bytes * size_t(fx - x);
       if (format == GL_DEPTH_COMPONENT) {
-        store_scalar(fb.depth.base[fb.depth.stride * fy + fx] / depth_max, true, type, dst);
+        double z = fb.depth.base[fb.depth.stride * fy + fx] / depth_max;
+        z = transfer_depth(ctx.pixel_mode, z);
+        store_scalar(z, true, type, dst);
       } else if (format == GL_STENCIL_INDEX) {
-        store_scalar(fb.stencil.base[fb.stencil.stride * fy + fx], false, type, dst);
+        const int64_t s = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, fb.stencil.base[fb.stencil.stride * fy + fx]);
+        store_scalar(static_cast<double>(s), false, type, dst);
       } else {
         double rgba[4];
         read_color(fb.color, fx, fy, rgba);
         if (d->alpha_bits == 0) rgba[3] = 1.0;
+        if (!color_identity) transfer_read_color(ctx, rgba);
         store_color(rgba, format, type, dst);
       }
       if (ctx.pack.swap_bytes) swap_component_bytes(dst, components, pixel_type_size(type));

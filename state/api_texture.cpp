@@ -6,6 +6,7 @@
 #include "state/context.h"
 #include "state/limits.h"
 #include "state/pixel_format.h"
+#include "state/pixel_transfer.h"
 
 namespace pineda::gl {
 namespace {
@@ -72,6 +73,7 @@ void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int 
   const int full_width = width + 2 * border_x;
   const ImageLayout layout = image_layout(ctx.unpack, full_width, format, type);
   const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
+  const bool transfer = !color_transfer_is_identity(ctx.pixel_mode);  // GL 1.5 3.8.1: as DrawPixels
   for (int y = 0; y < height; ++y) {
     const uint8_t* row = src + layout.row_stride * size_t(y + border_y) + layout.pixel_bytes * border_x;
     uint32_t* dst = level.texels.data() + size_t(yoffset + y) * level.width + xoffset;
@@ -85,6 +87,7 @@ void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int 
         src_pixel = swapped;
       }
       load_color(src_pixel, format, type, rgba);
+      if (transfer) transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
       dst[x] = to_texel(rgba, base);
     }
   }

@@ -10,6 +10,7 @@
 
 #include "raster/draw_state.h"
 #include "raster/vertex_transform.h"
+#include "state/pixel_state.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
 
@@ -33,6 +34,9 @@ struct AttribFrame {
   float current_color[4], current_normal[3];
   std::array<std::array<float, 4>, raster::kMaxTextureUnits> current_texcoord;
   bool current_edge_flag;
+  RasterPosition raster_pos;
+  // pixel mode
+  PixelMode pixel_mode;
   // rasterization, fragment, enables (kept whole; restored field by field)
   raster::DrawState draw_state;
   bool enable_cull, normalize, rescale_normal;

@@ -21,6 +21,7 @@
 #include "state/buffer_object.h"
 #include "state/display_list.h"
 #include "state/drawable.h"
+#include "state/pixel_state.h"
 #include "state/query_object.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
@@ -187,6 +188,11 @@ class Context {
   TextureNamespace textures;
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+
+  // Raster position and pixel rectangles
+  RasterPosition raster_pos;
+  PixelMode pixel_mode;
+  PixelMaps pixel_maps;
 
   // Buffer objects and queries
   BufferState buffers;

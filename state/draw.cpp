@@ -64,6 +64,19 @@ int snapshot_textures(Context& ctx) {
 
 }  // namespace
 
+raster::ClipVertex transform_single_vertex(Context& ctx, const raster::VertexInput& vertex) {
+  const raster::Transform transform = build_transform(ctx, raster::kMaxTextureUnits);
+  std::vector<raster::ClipVertex> out;
+  raster::transform_vertices(transform, std::span(&vertex, 1), out);
+  return out[0];
+}
+
+const raster::DrawState& fragment_snapshot(Context& ctx) {
+  snapshot_textures(ctx);
+  ctx.draw_state.viewport = ctx.viewport;
+  return ctx.draw_state;
+}
+
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
                    std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials) {
   if (!ctx.draw_drawable() || vertices.empty()) return;

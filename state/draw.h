@@ -20,4 +20,12 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
                    std::span<const uint32_t> indices,
                    std::span<const Context::MaterialChange> materials = {});
 
+// One vertex through the vertex stage (transform, lighting, every unit's texture matrix):
+// the raster position's vertex.
+raster::ClipVertex transform_single_vertex(Context& ctx, const raster::VertexInput& vertex);
+
+// The draw snapshot for fragments that do not come from primitives (pixel rectangles,
+// bitmaps): the current fragment state with the bound textures.
+const raster::DrawState& fragment_snapshot(Context& ctx);
+
 }  // namespace pineda

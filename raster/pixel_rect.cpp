@@ -1,0 +1,52 @@
+#include "raster/pixel_rect.h"
+
+#include <algorithm>
+
+#include "raster/fragment_ops.h"
+
+namespace pineda::raster {
+namespace {
+
+DrawState flat_state(DrawState state) {
+  state.flat_shading = true;  // the fragment's colour is the primitive's flat colour
+  return state;
+}
+
+}  // namespace
+
+PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuffer& fb, const float (*texcoords)[4])
+    : record_(make_draw_record(flat_state(state), fb)), fb_(fb) {
+  prim_.kind = CoverageKind::Point;
+  for (int k = 0; k < record_.num_units; ++k) {
+    const float* tc = texcoords[record_.units[k]];
+    Plane* planes = &prim_.planes[kColorPlanes + kTexPlanesPerUnit * k];
+    planes[0].a0 = tc[0];
+    planes[1].a0 = tc[1];
+    planes[2].a0 = tc[3];  // q
+  }
+  x1_ = fb.width;
+  y1_ = fb.height;
+  if (state.scissor_test) {
+    x0_ = std::max(x0_, state.scissor.x);
+    y0_ = std::max(y0_, state.scissor.y);
+    x1_ = std::min<int64_t>(x1_, int64_t{state.scissor.x} + std::max(state.scissor.width, 0));
+    y1_ = std::min<int64_t>(y1_, int64_t{state.scissor.y} + std::max(state.scissor.height, 0));
+  }
+}
+
+void PixelFragmentWriter::fragment(int x, int y, const float rgba[4], double depth) {
+  if (!inside(x, y)) return;
+  for (int c = 0; c < 4; ++c) prim_.flat_color[c] = clamp01(rgba[c]);
+  prim_.z0 = (depth > 0.0 ? (depth < 1.0 ? depth : 1.0) : 0.0) * record_.depth_max;
+  const uint8_t mask = static_cast<uint8_t>(1u << ((x & 1) + 2 * (y & 1)));
+  record_.routine(record_, prim_, fb_, x & ~1, y & ~1, 1, &mask);
+}
+
+void PixelFragmentWriter::stencil(int x, int y, uint32_t value) {
+  if (!inside(x, y) || !fb_.stencil.base || fb_.stencil.bits == 0) return;
+  uint8_t& s = fb_.stencil.base[static_cast<ptrdiff_t>(y) * fb_.stencil.stride + x];
+  const uint8_t mask = record_.state.stencil_front.write_mask;
+  s = static_cast<uint8_t>((s & ~mask) | (value & mask));
+}
+
+}  // namespace pineda::raster

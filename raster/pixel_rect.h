@@ -1,0 +1,37 @@
+// Fragments that come from pixel rectangles and bitmaps (glDrawPixels, glCopyPixels,
+// glBitmap) rather than from primitives: each has its own colour and depth, and all share
+// the raster position's texture coordinates. They go through the same fragment routines as
+// primitives (texturing, alpha, stencil, depth, blending or logic op, masks), after the
+// scissor test. The caller flushes queued primitives first, so that the order holds.
+#pragma once
+#include <cstdint>
+
+#include "raster/draw_record.h"
+#include "raster/draw_state.h"
+#include "raster/framebuffer.h"
+
+namespace pineda::raster {
+
+class PixelFragmentWriter {
+ public:
+  // texcoords: s, t, r, q of every texture unit.
+  PixelFragmentWriter(const DrawState& state, const Framebuffer& fb, const float (*texcoords)[4]);
+
+  // One fragment at pixel (x, y); colour components and depth in [0, 1] (clamped here).
+  void fragment(int x, int y, const float rgba[4], double depth);
+
+  // Writes `value` to the stencil buffer at (x, y), under the scissor test and the front
+  // stencil write mask only (glDrawPixels of GL_STENCIL_INDEX).
+  void stencil(int x, int y, uint32_t value);
+
+  // Whether (x, y) is inside the framebuffer and the scissor rectangle.
+  bool inside(int x, int y) const { return x >= x0_ && x < x1_ && y >= y0_ && y < y1_; }
+
+ private:
+  DrawRecord record_;
+  const Framebuffer& fb_;
+  PrimSetup prim_;
+  int x0_ = 0, y0_ = 0, x1_ = 0, y1_ = 0;
+};
+
+}  // namespace pineda::raster

@@ -1,0 +1,115 @@
+// glDrawPixels and glCopyPixels (GL 1.5 spec 3.6.4, 4.3.3).
+#include <algorithm>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/pixel_format.h"
+#include "state/pixel_rect_draw.h"
+#include "state/pixel_transfer.h"
+#include "state/pixel_unpack.h"
+
+namespace pineda::gl {
+namespace {
+
+bool has_depth(const Drawable* d) { return d && d->framebuffer.depth.bits > 0; }
+bool has_stencil(const Drawable* d) { return d && d->framebuffer.stencil.bits > 0; }
+
+GLenum draw_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  const bool index = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
+  if (color_format_components(format) > 0) {
+    if (const GLenum error = color_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  } else if (!index && format != GL_DEPTH_COMPONENT) {
+    return GL_INVALID_ENUM;
+  } else if (type == GL_BITMAP) {
+    if (!index) return GL_INVALID_ENUM;
+  } else if (pixel_element_size(type) == 0) {
+    return GL_INVALID_ENUM;
+  } else if (is_packed_pixel_type(type)) {
+    return GL_INVALID_OPERATION;  // packed types hold colours only
+  }
+  if (format == GL_DEPTH_COMPONENT && !has_depth(ctx.draw_drawable())) return GL_INVALID_OPERATION;
+  if (format == GL_STENCIL_INDEX && !has_stencil(ctx.draw_drawable())) return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
+}
+
+// The source rectangle of glCopyPixels, read before anything is drawn (the rectangles may
+// overlap). Pixels outside the read buffer produce no fragments.
+PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int x, int y, int width, int height,
+                         GLenum type) {
+  PixelRectImage image;
+  image.width = width;
+  image.height = height;
+  const size_t n = size_t(width) * size_t(height);
+  image.present.assign(n, 0);
+  if (type == GL_COLOR) {
+    image.kind = PixelRectImage::Kind::Color;
+    image.color.assign(4 * n, 0.f);
+  } else if (type == GL_DEPTH) {
+    image.kind = PixelRectImage::Kind::Depth;
+    image.depth.assign(n, 0.0);
+  } else {
+    image.kind = PixelRectImage::Kind::Stencil;
+    image.stencil.assign(n, 0);
+  }
+  const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
+  const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
+  for (int j = 0; j < height; ++j) {
+    const int64_t sy = int64_t(y) + j;
+    if (sy < 0 || sy >= fb.height) continue;
+    for (int i = 0; i < width; ++i) {
+      const int64_t sx = int64_t(x) + i;
+      if (sx < 0 || sx >= fb.width) continue;
+      const size_t k = size_t(j) * width + i;
+      image.present[k] = 1;
+      if (type == GL_COLOR) {
+        const uint8_t* p = fb.color.base + fb.color.stride * sy + 4 * sx;
+        float* rgba = &image.color[4 * k];
+        rgba[0] = p[bgra ? 2 : 0] / 255.f;
+        rgba[1] = p[1] / 255.f;
+        rgba[2] = p[bgra ? 0 : 2] / 255.f;
+        rgba[3] = p[3] / 255.f;
+        transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
+      } else if (type == GL_DEPTH) {
+        image.depth[k] = transfer_depth(ctx.pixel_mode, fb.depth.base[fb.depth.stride * sy + sx] / depth_max);
+      } else {
+        image.stencil[k] = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, fb.stencil.base[fb.stencil.stride * sy + sx]);
+      }
+    }
+  }
+  return image;
+}
+
+}  // namespace
+
+void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (const GLenum error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
+  if (!ctx.raster_pos.valid || !pixels || width == 0 || height == 0 || !ctx.draw_drawable()) return;
+  PixelRectImage image;
+  image.width = width;
+  image.height = height;
+  if (format == GL_DEPTH_COMPONENT) {
+    image.kind = PixelRectImage::Kind::Depth;
+    image.depth = unpack_depth_image(ctx, width, height, type, pixels);
+  } else if (format == GL_STENCIL_INDEX) {
+    image.kind = PixelRectImage::Kind::Stencil;
+    image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);
+  } else {
+    image.color = unpack_color_image(ctx, width, height, format, type, pixels);
+  }
+  draw_pixel_rect(ctx, image);
+}
+
+void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return ctx.record_error(GL_INVALID_ENUM);
+  const Drawable* draw = ctx.draw_drawable();
+  const Drawable* read = ctx.read_drawable();
+  if (type == GL_DEPTH && (!has_depth(draw) || !has_depth(read))) return ctx.record_error(GL_INVALID_OPERATION);
+  if (type == GL_STENCIL && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!ctx.raster_pos.valid || width == 0 || height == 0 || !draw || !read) return;
+  ctx.finish();
+  draw_pixel_rect(ctx, read_rect(ctx, read->framebuffer, x, y, width, height, type));
+}
+
+}  // namespace pineda::gl

@@ -1,0 +1,103 @@
+// glPixelTransfer, glPixelZoom, glPixelMap and glGetPixelMap (GL 1.5 spec 3.6.3, 6.1.3).
+#include <algorithm>
+#include <cmath>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+
+namespace pineda::gl {
+namespace {
+
+float* transfer_float(PixelMode& m, GLenum pname) {
+  switch (pname) {
+    case GL_RED_SCALE: return &m.scale[0];
+    case GL_GREEN_SCALE: return &m.scale[1];
+    case GL_BLUE_SCALE: return &m.scale[2];
+    case GL_ALPHA_SCALE: return &m.scale[3];
+    case GL_RED_BIAS: return &m.bias[0];
+    case GL_GREEN_BIAS: return &m.bias[1];
+    case GL_BLUE_BIAS: return &m.bias[2];
+    case GL_ALPHA_BIAS: return &m.bias[3];
+    case GL_DEPTH_SCALE: return &m.depth_scale;
+    case GL_DEPTH_BIAS: return &m.depth_bias;
+    default: return nullptr;
+  }
+}
+
+GLint to_index(double v) { return static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0)); }
+
+void set_transfer(Context& ctx, GLenum pname, double value) {
+  PixelMode& m = ctx.pixel_mode;
+  if (float* f = transfer_float(m, pname)) {
+    *f = static_cast<float>(value);
+    return;
+  }
+  switch (pname) {
+    case GL_MAP_COLOR: m.map_color = value != 0.0; return;
+    case GL_MAP_STENCIL: m.map_stencil = value != 0.0; return;
+    case GL_INDEX_SHIFT: m.index_shift = to_index(value); return;
+    case GL_INDEX_OFFSET: m.index_offset = to_index(value); return;
+    default: ctx.record_error(GL_INVALID_ENUM);
+  }
+}
+
+bool is_pixel_map(GLenum map) { return map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_A_TO_A; }
+// I_TO_I and S_TO_S hold indices; the others hold colour components.
+bool is_index_map(GLenum map) { return map == GL_PIXEL_MAP_I_TO_I || map == GL_PIXEL_MAP_S_TO_S; }
+// Maps indexed by a colour index or stencil index need a power-of-two size.
+bool needs_power_of_two(GLenum map) { return map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_I_TO_A; }
+
+// `normalize_max`: the integer type's maximum (colour maps read unsigned integers as [0, 1]).
+template <typename T>
+void set_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
+  if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM);
+  if (size < 1 || size > kMaxPixelMapTable) return ctx.record_error(GL_INVALID_VALUE);
+  if (needs_power_of_two(map) && (size & (size - 1)) != 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!values) return;
+  std::vector<float>& table = ctx.pixel_maps[map];
+  table.resize(size_t(size));
+  for (GLsizei i = 0; i < size; ++i) {
+    const double v = double(values[i]);
+    table[i] = is_index_map(map) ? static_cast<float>(v)
+                                 : std::clamp(static_cast<float>(v / normalize_max), 0.f, 1.f);
+  }
+}
+
+template <typename T>
+void get_map(Context& ctx, GLenum map, T* values, double normalize_max) {
+  if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!values) return;
+  const std::vector<float>& table = ctx.pixel_maps[map];
+  for (size_t i = 0; i < table.size(); ++i) {
+    const double v = table[i];
+    if (normalize_max == 1.0) values[i] = static_cast<T>(v);
+    else if (is_index_map(map)) values[i] = static_cast<T>(std::clamp(v, 0.0, normalize_max));
+    else values[i] = static_cast<T>(std::llround(v * normalize_max));
+  }
+}
+
+}  // namespace
+
+void PixelTransferf(Context& ctx, GLenum pname, GLfloat param) { set_transfer(ctx, pname, param); }
+void PixelTransferi(Context& ctx, GLenum pname, GLint param) { set_transfer(ctx, pname, param); }
+
+void PixelZoom(Context& ctx, GLfloat xfactor, GLfloat yfactor) {
+  ctx.pixel_mode.zoom_x = xfactor;
+  ctx.pixel_mode.zoom_y = yfactor;
+}
+
+void PixelMapfv(Context& ctx, GLenum map, GLsizei mapsize, const GLfloat* values) {
+  set_map(ctx, map, mapsize, values, 1.0);
+}
+void PixelMapuiv(Context& ctx, GLenum map, GLsizei mapsize, const GLuint* values) {
+  set_map(ctx, map, mapsize, values, 4294967295.0);
+}
+void PixelMapusv(Context& ctx, GLenum map, GLsizei mapsize, const GLushort* values) {
+  set_map(ctx, map, mapsize, values, 65535.0);
+}
+
+void GetPixelMapfv(Context& ctx, GLenum map, GLfloat* values) { get_map(ctx, map, values, 1.0); }
+void GetPixelMapuiv(Context& ctx, GLenum map, GLuint* values) { get_map(ctx, map, values, 4294967295.0); }
+void GetPixelMapusv(Context& ctx, GLenum map, GLushort* values) { get_map(ctx, map, values, 65535.0); }
+
+}  // namespace pineda::gl

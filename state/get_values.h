@@ -1,0 +1,28 @@
+// What a glGet* query returns before conversion to the caller's type (api_get.cpp), for the
+// files that answer part of the queries.
+#pragma once
+#include <GL/gl.h>
+
+#include <initializer_list>
+#include <vector>
+
+namespace pineda {
+
+class Context;
+
+enum class GetKind { Int, Enum, Bool, Float, Color };  // Color: [0,1] values that map to the int range
+
+struct GetValues {
+  GetKind kind = GetKind::Int;
+  std::vector<double> v;
+};
+
+inline GetValues get_ints(std::initializer_list<double> v) { return {GetKind::Int, v}; }
+inline GetValues get_enums(std::initializer_list<double> v) { return {GetKind::Enum, v}; }
+inline GetValues get_bools(std::initializer_list<double> v) { return {GetKind::Bool, v}; }
+inline GetValues get_floats(std::initializer_list<double> v) { return {GetKind::Float, v}; }
+
+// Raster position, pixel transfer, zoom and pixel-map sizes (api_get_pixel_state.cpp).
+bool query_pixel_state(Context& ctx, unsigned pname, GetValues& out);
+
+}  // namespace pineda

@@ -1,0 +1,24 @@
+// Draws a converted pixel rectangle at the current raster position with the pixel zoom
+// (GL 1.5 spec 3.6.5, "Conversion to fragments"): the shared back end of glDrawPixels and
+// glCopyPixels.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "state/context.h"
+
+namespace pineda {
+
+struct PixelRectImage {
+  enum class Kind { Color, Depth, Stencil };
+  Kind kind = Kind::Color;
+  int width = 0, height = 0;
+  std::vector<float> color;      // Color: RGBA per pixel, bottom row first
+  std::vector<double> depth;     // Depth: one value per pixel in [0, 1]
+  std::vector<int64_t> stencil;  // Stencil: one index per pixel
+  std::vector<uint8_t> present;  // empty, or 0 for pixels that produce no fragment
+};
+
+void draw_pixel_rect(Context& ctx, const PixelRectImage& image);
+
+}  // namespace pineda

@@ -1,0 +1,45 @@
+// The state of raster position and pixel rectangles (GL 1.5 spec 2.13, 3.6, 3.7): the
+// current raster position, the pixel-transfer modes and the pixel maps.
+#pragma once
+#include <GL/gl.h>
+
+#include <array>
+#include <vector>
+
+#include "raster/texture.h"
+
+namespace pineda {
+
+// GL_CURRENT_RASTER_*: saved with GL_CURRENT_BIT.
+struct RasterPosition {
+  float window[4] = {0, 0, 0, 1};  // x, y, z in window coordinates; w is the clip w
+  bool valid = true;
+  float color[4] = {1, 1, 1, 1};
+  float texcoord[raster::kMaxTextureUnits][4] = {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}};
+  float distance = 0.f;  // from the eye, for fog
+};
+
+// glPixelTransfer and glPixelZoom: saved with GL_PIXEL_MODE_BIT.
+struct PixelMode {
+  bool map_color = false, map_stencil = false;
+  GLint index_shift = 0, index_offset = 0;
+  float scale[4] = {1, 1, 1, 1}, bias[4] = {0, 0, 0, 0};  // RGBA
+  float depth_scale = 1.f, depth_bias = 0.f;
+  float zoom_x = 1.f, zoom_y = 1.f;
+};
+
+constexpr int kMaxPixelMapTable = 256;
+constexpr int kPixelMapCount = GL_PIXEL_MAP_A_TO_A - GL_PIXEL_MAP_I_TO_I + 1;
+
+// glPixelMap tables, indexed by map - GL_PIXEL_MAP_I_TO_I. Colour maps hold [0, 1] values,
+// I_TO_I and S_TO_S hold indices. Each starts with one entry, 0.
+struct PixelMaps {
+  std::array<std::vector<float>, kPixelMapCount> tables;
+  PixelMaps() {
+    for (auto& t : tables) t.assign(1, 0.f);
+  }
+  const std::vector<float>& operator[](GLenum map) const { return tables[map - GL_PIXEL_MAP_I_TO_I]; }
+  std::vector<float>& operator[](GLenum map) { return tables[map - GL_PIXEL_MAP_I_TO_I]; }
+};
+
+}  // namespace pineda

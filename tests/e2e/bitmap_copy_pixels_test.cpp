@@ -1,0 +1,202 @@
+// glBitmap (position, origin, advance, unpack state, fragment operations) and glCopyPixels
+// (colour, depth, stencil, overlapping rectangles, zoom, pixel transfer).
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "tests/e2e/support/gl_test.h"
+
+namespace pineda::test {
+namespace {
+
+class BitmapTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    clear_to(0, 0, 0, 0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  }
+  std::array<float, 4> position() {
+    std::array<float, 4> p{};
+    glGetFloatv(GL_CURRENT_RASTER_POSITION, p.data());
+    return p;
+  }
+};
+
+constexpr Rgba kBlack{0, 0, 0, 0};
+
+TEST_F(BitmapTest, SetBitsTakeTheRasterColour) {
+  const GLubyte bits[2] = {0xc1, 0x80};  // row 0: 1100 0001, row 1: 1000 0000
+  glColor4f(1, 0.5f, 0, 1);
+  glWindowPos2i(4, 4);
+  glColor3f(0, 0, 1);  // after the raster position: not used
+  glBitmap(8, 2, 0, 0, 10, 1, bits);
+  const Rgba orange{255, 128, 0, 255};
+  EXPECT_EQ(pixel(4, 4), orange);
+  EXPECT_EQ(pixel(5, 4), orange);
+  EXPECT_EQ(pixel(6, 4), kBlack);
+  EXPECT_EQ(pixel(11, 4), orange);
+  EXPECT_EQ(pixel(4, 5), orange);
+  EXPECT_EQ(pixel(5, 5), kBlack);
+  EXPECT_EQ(count_pixels(orange), 4);
+  EXPECT_EQ(position(), (std::array<float, 4>{14, 5, 0, 1}));
+}
+
+TEST_F(BitmapTest, OriginLsbFirstAndSkips) {
+  const GLubyte bits[2] = {0x00, 0x02};  // LSB first: second row, bit 1
+  glPixelStorei(GL_UNPACK_LSB_FIRST, GL_TRUE);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 1);
+  glColor3f(1, 1, 1);
+  glWindowPos2f(10.5f, 10.f);
+  glBitmap(8, 1, 2.f, 1.f, 0, 0, bits);  // lower-left at floor(10.5 - 2), 10 - 1
+  EXPECT_EQ(pixel(9, 9), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 1);
+  glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 3);
+  const GLubyte one = 0x10;  // bit 3 from the left
+  glWindowPos2i(0, 0);
+  glBitmap(1, 1, 0, 0, 0, 0, &one);
+  EXPECT_EQ(pixel(0, 0), (Rgba{255, 255, 255, 255}));
+}
+
+TEST_F(BitmapTest, AlignmentPadsRows) {
+  const GLubyte bits[8] = {0x80, 0, 0, 0, 0x40, 0, 0, 0};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glColor3f(0, 1, 0);
+  glWindowPos2i(0, 0);
+  glBitmap(3, 2, 0, 0, 0, 0, bits);
+  EXPECT_EQ(pixel(0, 0), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(pixel(1, 1), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(count_pixels({0, 255, 0, 255}), 2);
+}
+
+TEST_F(BitmapTest, NullBitmapAndInvalidPosition) {
+  glWindowPos2i(1, 1);
+  glBitmap(0, 0, 0, 0, 3.5f, -1.f, nullptr);
+  EXPECT_EQ(position(), (std::array<float, 4>{4.5f, 0, 0, 1}));
+  glRasterPos2f(5.f, 0.f);  // invalid: no drawing and no advance
+  const GLubyte all = 0xff;
+  glBitmap(8, 1, 0, 0, 3, 3, &all);
+  GLboolean valid = GL_TRUE;
+  glGetBooleanv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, GL_FALSE);
+  EXPECT_EQ(count_pixels(kBlack), width() * height());
+  glBitmap(-1, 1, 0, 0, 0, 0, &all);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+}
+
+TEST_F(BitmapTest, FragmentsUseRasterDepthAndStencil) {
+  glClearDepth(0.5);
+  glClearStencil(0);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 3, 0xff);
+  glStencilOp(GL_KEEP, GL_INCR, GL_REPLACE);
+  const GLubyte bits = 0xc0;
+  glColor3f(1, 1, 1);
+  glWindowPos3f(0, 0, 0.25f);  // in front: passes
+  glBitmap(2, 1, 0, 0, 0, 0, &bits);
+  glWindowPos3f(0, 1, 0.75f);  // behind: fails
+  glBitmap(2, 1, 0, 0, 0, 0, &bits);
+  EXPECT_EQ(pixel(0, 0), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(pixel(0, 1), kBlack);
+  GLubyte s[2] = {};
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, 1, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+  EXPECT_EQ(s[0], 3);
+  EXPECT_EQ(s[1], 1);
+}
+
+TEST_F(BitmapTest, CompiledIntoAList) {
+  GLubyte bits = 0x80;
+  glColor3f(1, 0, 0);
+  glNewList(1, GL_COMPILE);
+  glWindowPos2i(2, 2);
+  glBitmap(1, 1, 0, 0, 1, 0, &bits);
+  glBitmap(1, 1, 0, 0, 1, 0, &bits);
+  glEndList();
+  bits = 0;
+  glCallList(1);
+  EXPECT_EQ(pixel(2, 2), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(pixel(3, 2), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(count_pixels({255, 0, 0, 255}), 2);
+}
+
+class CopyPixelsTest : public BitmapTest {};
+
+TEST_F(CopyPixelsTest, CopiesColourToTheRasterPosition) {
+  const GLubyte image[2][2][4] = {{{255, 0, 0, 255}, {0, 255, 0, 255}}, {{0, 0, 255, 255}, {9, 9, 9, 9}}};
+  glWindowPos2i(1, 1);
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, image);
+  glWindowPos2i(10, 20);
+  glCopyPixels(1, 1, 2, 2, GL_COLOR);
+  EXPECT_EQ(pixel(10, 20), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(pixel(11, 20), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(pixel(10, 21), (Rgba{0, 0, 255, 255}));
+  EXPECT_EQ(pixel(11, 21), (Rgba{9, 9, 9, 9}));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(CopyPixelsTest, OverlappingRectanglesReadTheSourceFirst) {
+  std::vector<GLubyte> row(8 * 4);
+  for (int i = 0; i < 8; ++i) row[4 * i] = GLubyte(10 * (i + 1)), row[4 * i + 3] = 255;
+  glWindowPos2i(0, 0);
+  glDrawPixels(8, 1, GL_RGBA, GL_UNSIGNED_BYTE, row.data());
+  glWindowPos2i(1, 0);
+  glCopyPixels(0, 0, 8, 1, GL_COLOR);  // shift right by one
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(pixel(i + 1, 0)[0], 10 * (i + 1)) << i;
+  EXPECT_EQ(pixel(0, 0)[0], 10);
+}
+
+TEST_F(CopyPixelsTest, ZoomScissorAndTransfer) {
+  const GLubyte c[4] = {100, 0, 0, 255};
+  glWindowPos2i(0, 0);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, c);
+  glPixelZoom(2, 2);
+  glPixelTransferf(GL_GREEN_BIAS, 1.f);
+  glWindowPos2i(4, 4);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(0, 0, 5, 32);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  glPixelTransferf(GL_GREEN_BIAS, 0.f);
+  EXPECT_EQ(count_pixels({100, 255, 0, 255}), 2);  // x = 4 only, rows 4 and 5
+}
+
+TEST_F(CopyPixelsTest, DepthAndStencil) {
+  glClearDepth(0.25);
+  glClearStencil(7);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glScissor(0, 0, 1, 1);
+  glEnable(GL_SCISSOR_TEST);
+  glClearDepth(0.75);
+  glClearStencil(9);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glWindowPos2i(5, 5);
+  glCopyPixels(0, 0, 1, 1, GL_DEPTH);
+  glCopyPixels(0, 0, 1, 1, GL_STENCIL);
+  GLuint z = 0;
+  glReadPixels(5, 5, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
+  EXPECT_EQ(z >> 8, uint32_t(0.75 * 16777215 + 0.5));
+  GLubyte s = 0;
+  glReadPixels(5, 5, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &s);
+  EXPECT_EQ(s, 9);
+  glReadPixels(6, 5, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &s);
+  EXPECT_EQ(s, 7);
+}
+
+TEST_F(CopyPixelsTest, Errors) {
+  glCopyPixels(0, 0, -1, 1, GL_COLOR);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glCopyPixels(0, 0, 1, 1, GL_RGBA);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glCopyPixels(-100, -100, 1000, 1000, GL_COLOR);  // partly outside: no crash, no error
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace pineda::test
