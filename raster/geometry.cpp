@@ -5,6 +5,8 @@
 
 #include "raster/fragment_ops.h"
 #include "raster/raster_limits.h"
+#include "raster/reference_triangle.h"
+#include "raster/reference_lines_points.h"
 
 namespace pineda::raster {
 namespace {
@@ -32,8 +34,8 @@ bool has_window_position(const WinVert& v) { return std::isfinite(v.inv_w) && st
 
 }  // namespace
 
-GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full)
-    : scene_(scene), on_full_(std::move(on_full)) {
+GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool reference)
+    : scene_(scene), on_full_(std::move(on_full)), reference_(reference) {
   const DrawState& s = scene_.current_draw().state;
   const Viewport& vp = s.viewport;
   if (vp.width <= 0 || vp.height <= 0) return;
@@ -57,9 +59,9 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full)
   volume_.x_max = (kGuardBand - vp_x_) / vp_half_w_ - 1.0;
   volume_.y_min = (-kGuardBand - vp_y_) / vp_half_h_ - 1.0;
   volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
+  volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
   line_width_ = rounded_size(s.line_width, kMaxLineWidth);
   point_size_ = rounded_size(s.point_size, kMaxPointSize);
-  volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
 }
 
 ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
@@ -100,11 +102,11 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
     out[1] = tc[1];
     out[2] = tc[3];
   }
-  return w;
-}
   if (d.secondary_plane >= 0)
     for (int i = 0; i < 3; ++i) w.attr[d.secondary_plane + i] = v.attr[kClipSecondaryAttrs + (back_color ? 3 : 0) + i];
   if (d.fog_plane >= 0) w.attr[d.fog_plane] = v.attr[kClipFogAttr];
+  return w;
+}
 
 SetupParams GeometryStage::params(const Style& style) const {
   SetupParams p;
@@ -127,6 +129,10 @@ GeometryStage::Style GeometryStage::style_for(const ClipVertex& provoking, bool 
 }
 
 void GeometryStage::emit(const PrimSetup& prim) {
+  if (reference_) {
+    reference_lines_points(prim, scene_.current_draw(), scene_.framebuffer());
+    return;
+  }
   scene_.add_prim(prim);
   if (scene_.full()) on_full_();
 }
@@ -141,13 +147,15 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   if (!has_window_position(wa) || !has_window_position(wb)) return;
   PrimSetup prim;
   if (!setup_line(wa, wb, line_width_, params(style), prim)) return;
-  // The stipple counts the line's columns (rows) from its first vertex on, across a strip.
+  // The stipple counts whole pixels of major-axis distance from the first vertex on, across a
+  // strip, as llvmpipe (Mesa's draw module) does.
   LineCoverage& l = prim.line;
-  const bool forward = l.x_major ? l.x1 > l.x0 : l.y1 > l.y0;
-  l.stipple_first = forward ? l.major_min : l.major_max;
-  l.stipple_step = forward ? 1 : -1;
+  const double d_major = l.x_major ? wb.fx - wa.fx : wb.fy - wa.fy;
+  l.stipple_origin = static_cast<float>(l.x_major ? wa.fx : wa.fy);
+  l.stipple_step = d_major >= 0.0 ? 1 : -1;
+  l.stipple_length = static_cast<float>(std::max(std::fabs(wb.fx - wa.fx), std::fabs(wb.fy - wa.fy)));
   l.stipple_count = stipple_count_;
-  stipple_count_ += static_cast<uint32_t>(l.major_max - l.major_min + 1);
+  stipple_count_ += l.stipple_length;
   emit(prim);
 }
 
@@ -155,14 +163,14 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
   const double x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
   // A point is drawn when its centre is inside the clip volume.
   if (!(w > 0.0 && -w <= x && x <= w && -w <= y && y <= w && -w <= z && z <= w)) return;
+  for (int i = 0; i < kMaxClipPlanes; ++i)
+    if ((volume_.user_planes >> i & 1u) && !(v.user[i] >= 0.0)) return;
   const WinVert wv = to_window(v, style.back_facing);
   if (!has_window_position(wv)) return;
   PrimSetup prim;
   if (setup_point(wv, point_size_, params(style), prim)) emit(prim);
 }
 
-  for (int i = 0; i < kMaxClipPlanes; ++i)
-    if ((volume_.user_planes >> i & 1u) && !(v.user[i] >= 0.0)) return;
 void GeometryStage::point(const ClipVertex& v) {
   if (!active_ || !finite_position(v)) return;
   draw_point(to_clip(v), style_for(v, false));
@@ -215,6 +223,10 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
       for (size_t i = 0; i < clipped_.size(); ++i) window_[i] = to_window(clipped_[i], true);
     const SetupParams p = params(style);
     for (size_t i = 1; i + 1 < window_.size(); ++i) {
+      if (reference_) {  // unsnapped: no sliver is turned inside out
+        reference_triangle(window_[0], window_[i], window_[i + 1], p, scene_.current_draw(), scene_.framebuffer());
+        continue;
+      }
       // Slivers that snapping turned inside out would cover pixels twice; they are dropped.
       const int64_t a = signed_area2(window_[0], window_[i], window_[i + 1]);
       if (a == 0 || (a > 0) != (area > 0)) continue;

@@ -14,12 +14,13 @@ namespace pineda::raster {
 class GeometryStage final : public PrimitiveSink {
  public:
   // Uses the scene's current draw; `on_full` is called when the scene asks to be executed.
-  GeometryStage(Scene& scene, std::function<void()> on_full);
+  // `reference`: primitives are rasterized at once by the reference path, not binned.
+  GeometryStage(Scene& scene, std::function<void()> on_full, bool reference = false);
 
   void point(const ClipVertex& v) override;
   void line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) override;
+  void restart_line_stipple() override { stipple_count_ = 0.f; }
   void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
-  void restart_line_stipple() override { stipple_count_ = 0; }
                const ClipVertex& provoking) override;
 
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
@@ -44,14 +45,15 @@ class GeometryStage final : public PrimitiveSink {
 
   Scene& scene_;
   std::function<void()> on_full_;
+  bool reference_ = false;
   bool active_ = false;
   ClipVolume volume_;
   PixelRect clip_rect_;
   double vp_x_ = 0, vp_y_ = 0, vp_half_w_ = 0, vp_half_h_ = 0, depth_near_ = 0, depth_far_ = 1;
   int line_width_ = 1, point_size_ = 1;
+  float stipple_count_ = 0.f;  // major-axis length of the strip's lines so far (line stipple)
   std::vector<ClipVert> in_, clipped_, scratch_;
   std::vector<WinVert> window_;
-  uint32_t stipple_count_ = 0;  // line stipple fragments generated so far in the strip
 };
 
 }  // namespace pineda::raster

@@ -4,19 +4,25 @@
 #include "raster/draw_record.h"
 #include "raster/geometry.h"
 #include "raster/primitive.h"
+#include "raster/reference_lines_points.h"
+#include "raster/reference_mode.h"
 #include "raster/scene.h"
 #include "raster/worker_pool.h"
 
 namespace pineda::raster {
 
 struct Renderer::Impl {
-  explicit Impl(int threads) : pool(resolve_thread_count(threads)) { scene.reset(fb); }
+  explicit Impl(int threads, bool reference_mode)
+      : reference(reference_mode), pool(reference ? 1 : resolve_thread_count(threads)) {
+    scene.reset(fb);
+  }
+  const bool reference;  // PINEDA_REFERENCE at creation: primitives drawn at once, per pixel
   Framebuffer fb;
   Scene scene;
   WorkerPool pool;
 };
 
-Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads)) {}
+Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads, reference_mode_from_environment())) {}
 
 // Work still queued is dropped: the framebuffer's owner may already have released its memory.
 Renderer::~Renderer() = default;
@@ -40,8 +46,13 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
                     std::span<const uint32_t> indices) {
   Scene& scene = impl_->scene;
   if (scene.render_area().empty() || vertices.empty()) return;
-  scene.begin_draw(make_draw_record(state, impl_->fb));
-  GeometryStage geometry(scene, [this] { flush(); });
+  DrawRecord record = make_draw_record(state, impl_->fb);
+  if (impl_->reference) {
+    flush();  // queued clears first: reference primitives are drawn into the framebuffer at once
+    record.routine = reference_plane_quads;
+  }
+  scene.begin_draw(std::move(record));
+  GeometryStage geometry(scene, [this] { flush(); }, impl_->reference);
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
   if (scene.full()) flush();
 }

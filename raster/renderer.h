@@ -16,7 +16,8 @@ class WorkerPool;
 
 class Renderer {
  public:
-  // threads == 0: PINEDA_THREADS if set, otherwise one per core.
+  // threads == 0: PINEDA_THREADS if set, otherwise one per core. PINEDA_REFERENCE=1 (read here)
+  // selects the reference mode (reference_mode.h): one thread, exact per-pixel rasterization.
   explicit Renderer(int threads = 0);
   ~Renderer();
   Renderer(const Renderer&) = delete;
