@@ -20,10 +20,12 @@ inline unsigned stipple_mask(const DrawRecord& d, const PrimSetup& p, int x, int
   if (p.kind == CoverageKind::Line && s.line_stipple.enabled) {
     const LineCoverage& l = p.line;
     unsigned mask = 0;
+    const float last = std::ceil(l.stipple_length) - 1.f;  // the last whole step of the segment
     for (int i = 0; i < 4; ++i) {
       const int major = l.x_major ? x + (i & 1) : y + (i >> 1);
-      const int64_t n = int64_t{l.stipple_count} + int64_t{major - l.stipple_first} * l.stipple_step;
-      if (n < 0) continue;  // outside the line's own columns: never covered
+      const float d = std::floor((static_cast<float>(major) + 0.5f - l.stipple_origin) * static_cast<float>(l.stipple_step));
+      const float step = d < 0.f ? 0.f : (d > last ? last : d);
+      const int64_t n = static_cast<int64_t>(l.stipple_count + step);
       const int64_t b = (n / s.line_stipple.factor) & 15;
       if ((s.line_stipple.pattern >> b) & 1u) mask |= 1u << i;
     }

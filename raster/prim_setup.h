@@ -41,10 +41,12 @@ struct LineCoverage {
   int width = 1;
   bool x_major = true;
   int major_min = 0, major_max = -1;  // inclusive range of columns (rows) hit
-  // Line stipple: column (row) m is fragment stipple_count + (m - stipple_first) * stipple_step
-  // of its strip.
-  int stipple_first = 0, stipple_step = 1;
-  uint32_t stipple_count = 0;
+  // Line stipple, counted as Mesa's draw module does: the pixel whose centre lies d pixels
+  // along the major axis from the first vertex (stipple_origin, window pixels; stipple_step
+  // the direction) gets pattern index stipple_count + floor(d), d clamped to the segment's
+  // [0, stipple_length); stipple_count is the strip's length so far.
+  float stipple_origin = 0.f, stipple_length = 0.f, stipple_count = 0.f;
+  int stipple_step = 1;
 };
 
 enum class CoverageKind : uint8_t { Triangle, Line, Point };
