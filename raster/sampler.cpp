@@ -209,7 +209,7 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
   const int max_level = static_cast<int>(image.levels.size()) - 1;
   float lambda = quad_lambda(image.levels[0], s, t);
   if (std::isnan(lambda)) lambda = 0.f;
-  lambda = std::min(std::max(lambda, sampler.min_lod), sampler.max_lod);
+  lambda = std::min(std::max(lambda + sampler.lod_bias, sampler.min_lod), sampler.max_lod);
   if (!(lambda > -1e30f && lambda < 1e30f)) lambda = lambda > 0 ? 1e30f : -1e30f;
 
   const TexFilter min = sampler.min_filter;

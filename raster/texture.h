@@ -51,6 +51,7 @@ struct Sampler {
   TexWrap wrap_t = TexWrap::Repeat;
   float border_color[4] = {0, 0, 0, 0};
   float min_lod = -1000.f, max_lod = 1000.f;
+  float lod_bias = 0.f;  // the texture's and the unit's, added to lambda before the clamp
 };
 
 struct TextureUnit {

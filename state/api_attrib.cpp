@@ -33,21 +33,14 @@ void restore_caps(Context& ctx, const AttribFrame& f, GLbitfield group) {
 
 SavedTextureParams save_params(Context& ctx, GLuint name, GLenum target) {
   const TextureObject& t = ctx.textures.get_or_create(name, target);
-  SavedTextureParams p{name, target, t.min_filter, t.mag_filter, t.wrap_s, t.wrap_t, {}, t.priority};
-  std::copy(t.border_color, t.border_color + 4, p.border_color);
-  return p;
+  return SavedTextureParams{name, target, t.params};
 }
 
 void restore_params(Context& ctx, const SavedTextureParams& p) {
   // A texture deleted since the push is not brought back.
   if (p.name != 0 && !ctx.textures.find(p.name)) return;
   TextureObject& t = ctx.textures.get_or_create(p.name, p.target);
-  t.min_filter = p.min_filter;
-  t.mag_filter = p.mag_filter;
-  t.wrap_s = p.wrap_s;
-  t.wrap_t = p.wrap_t;
-  std::copy(p.border_color, p.border_color + 4, t.border_color);
-  t.priority = p.priority;
+  t.params = p.params;
   t.changed();
 }
 

@@ -85,6 +85,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
     case GL_MAX_LIGHTS: out = ints({raster::kMaxLights}); return true;
     case GL_MAX_TEXTURE_UNITS: out = ints({raster::kMaxTextureUnits}); return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: out = floats({kMaxTextureLodBias}); return true;
     case GL_ACTIVE_TEXTURE: out = enums({double(GL_TEXTURE0 + ctx.active_texture)}); return true;
     case GL_CLIENT_ACTIVE_TEXTURE: out = enums({double(GL_TEXTURE0 + ctx.client_active_texture)}); return true;
     case GL_MAX_CLIP_PLANES: out = ints({6}); return true;
@@ -242,7 +243,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
       "GL_EXT_stencil_wrap "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
-      "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos";
+      "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
+      "GL_SGIS_texture_lod GL_EXT_texture_lod_bias";
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

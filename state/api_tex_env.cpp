@@ -1,4 +1,4 @@
-// glTexEnv and glGetTexEnv: the active unit's environment mode and colour, and the
+// glTexEnv and glGetTexEnv: the active unit's environment mode and colour, its LOD bias, and the
 // GL_COMBINE parameters (GL 1.3, ARB_texture_env_combine, _crossbar, _dot3).
 #include <algorithm>
 
@@ -62,8 +62,12 @@ float* scale_param(TexEnvState& env, GLenum pname) {
 }
 
 void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
-  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
   TexEnvState& env = ctx.texture_units[ctx.active_texture].env;
+  if (target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS) {
+    env.lod_bias = v[0];
+    return;
+  }
+  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) env.color[i] = std::clamp(v[i], 0.f, 1.f);
   } else if (GLenum* e = enum_param(env, pname)) {
@@ -82,6 +86,10 @@ void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
 // it is not one.
 int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
   TexEnvState& env = ctx.texture_units[ctx.active_texture].env;
+  if (target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS) {
+    v[0] = env.lod_bias;
+    return 1;
+  }
   if (target != GL_TEXTURE_ENV) {
     ctx.record_error(GL_INVALID_ENUM);
     return 0;

@@ -56,6 +56,14 @@ TextureObject* bound_texture(Context& ctx, GLenum target) {
   return nullptr;
 }
 
+bool is_proxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D; }
+bool is_1d(GLenum target) { return target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D; }
+
+// The texture an image command or level query of `target` addresses: the bound one, or a proxy.
+TextureObject* image_texture(Context& ctx, GLenum target) {
+  return is_proxy(target) ? &ctx.textures.proxy(target) : bound_texture(ctx, target);
+}
+
 bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
   const GLenum error = color_format_type_error(format, type);
   if (error != GL_NO_ERROR) ctx.record_error(error);
@@ -96,26 +104,29 @@ void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int 
 void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, GLsizei width, GLsizei height,
                GLint border, GLenum format, GLenum type, const void* pixels) {
   TexBaseFormat base;
-  TextureObject* tex = bound_texture(ctx, target);
+  TextureObject* tex = image_texture(ctx, target);
   if (!tex) return ctx.record_error(GL_INVALID_ENUM);
   if (!valid_format_type(ctx, format, type)) return;
   if (level < 0 || level > max_level() || !base_format_of(internal_format, base) || (border != 0 && border != 1))
     return ctx.record_error(GL_INVALID_VALUE);
-  const int inner_w = width - 2 * border, inner_h = target == GL_TEXTURE_1D ? 1 : height - 2 * border;
-  if (inner_w < 0 || inner_h < 0 || inner_w > kMaxTextureSize || inner_h > kMaxTextureSize)
-    return ctx.record_error(GL_INVALID_VALUE);
+  const int inner_w = width - 2 * border, inner_h = is_1d(target) ? 1 : height - 2 * border;
+  if (inner_w < 0 || inner_h < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (tex->levels.size() <= size_t(level)) tex->levels.resize(level + 1);
   TextureLevelData& l = tex->levels[level];
+  const bool too_large = inner_w > kMaxTextureSize || inner_h > kMaxTextureSize;
+  if (is_proxy(target)) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
+    l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, border, internal_format, base, {}};
+    return;
+  }
+  if (too_large) return ctx.record_error(GL_INVALID_VALUE);
   l.width = inner_w;
   l.height = inner_h;
   l.border = border;
   l.internal_format = internal_format;
   l.base = base;
   l.texels.assign(size_t(inner_w) * inner_h, 0u);
-  if (level == 0) tex->base_format = base;
-  unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, target == GL_TEXTURE_1D ? 0 : border, format, type,
-              pixels);
-  tex->changed();
+  unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, is_1d(target) ? 0 : border, format, type, pixels);
+  tex->level_changed(level);
 }
 
 void tex_sub_image(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
@@ -132,44 +143,61 @@ void tex_sub_image(Context& ctx, GLenum target, GLint level, GLint xoffset, GLin
   TexBaseFormat base;
   base_format_of(l.internal_format, base);
   unpack_into(ctx, l, base, xoffset, yoffset, width, height, 0, 0, format, type, pixels);
-  tex->changed();
+  tex->level_changed(level);
 }
 
-bool set_tex_parameter(Context& ctx, TextureObject& tex, GLenum pname, const GLfloat* v) {
+// Sets one parameter; returns the error the spec names for a bad one.
+GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
+  TexParams& p = tex.params;
   const GLenum e = static_cast<GLenum>(v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
           e != GL_NEAREST_MIPMAP_LINEAR && e != GL_LINEAR_MIPMAP_LINEAR)
-        return false;
-      tex.min_filter = e;
+        return GL_INVALID_ENUM;
+      p.min_filter = e;
       break;
     case GL_TEXTURE_MAG_FILTER:
-      if (e != GL_NEAREST && e != GL_LINEAR) return false;
-      tex.mag_filter = e;
+      if (e != GL_NEAREST && e != GL_LINEAR) return GL_INVALID_ENUM;
+      p.mag_filter = e;
       break;
     case GL_TEXTURE_WRAP_S:
     case GL_TEXTURE_WRAP_T:
       if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT)
-        return false;
-      (pname == GL_TEXTURE_WRAP_S ? tex.wrap_s : tex.wrap_t) = e;
+        return GL_INVALID_ENUM;
+      (pname == GL_TEXTURE_WRAP_S ? p.wrap_s : p.wrap_t) = e;
       break;
     case GL_TEXTURE_BORDER_COLOR:
-      for (int i = 0; i < 4; ++i) tex.border_color[i] = std::clamp(v[i], 0.f, 1.f);
+      for (int i = 0; i < 4; ++i) p.border_color[i] = std::clamp(v[i], 0.f, 1.f);
       break;
     case GL_TEXTURE_PRIORITY:
-      tex.priority = std::clamp(v[0], 0.f, 1.f);
-      return true;
+      p.priority = std::clamp(v[0], 0.f, 1.f);
+      return GL_NO_ERROR;
+    case GL_TEXTURE_MIN_LOD: p.min_lod = v[0]; break;
+    case GL_TEXTURE_MAX_LOD: p.max_lod = v[0]; break;
+    case GL_TEXTURE_LOD_BIAS: p.lod_bias = v[0]; break;
+    case GL_TEXTURE_BASE_LEVEL:
+    case GL_TEXTURE_MAX_LEVEL: {
+      if (v[0] < 0.f) return GL_INVALID_VALUE;
+      const GLint level = GLint(std::min(v[0], 2147483647.f));
+      (pname == GL_TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = level;
+      break;
+    }
+    case GL_GENERATE_MIPMAP:
+      if (e != GL_TRUE && e != GL_FALSE) return GL_INVALID_ENUM;
+      p.generate_mipmap = e == GL_TRUE;
+      return GL_NO_ERROR;
     default:
-      return false;
+      return GL_INVALID_ENUM;
   }
   tex.changed();
-  return true;
+  return GL_NO_ERROR;
 }
 
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
-  if (!tex || !set_tex_parameter(ctx, *tex, pname, v)) ctx.record_error(GL_INVALID_ENUM);
+  if (!tex) return ctx.record_error(GL_INVALID_ENUM);
+  if (const GLenum error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
 
 bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR; }
@@ -178,17 +206,24 @@ bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR
 bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], int& count, bool& colour) {
   TextureObject* tex = bound_texture(ctx, target);
   if (!tex) return false;
+  const TexParams& p = tex->params;
   count = 1;
   colour = false;
   switch (pname) {
-    case GL_TEXTURE_MIN_FILTER: out[0] = float(tex->min_filter); return true;
-    case GL_TEXTURE_MAG_FILTER: out[0] = float(tex->mag_filter); return true;
-    case GL_TEXTURE_WRAP_S: out[0] = float(tex->wrap_s); return true;
-    case GL_TEXTURE_WRAP_T: out[0] = float(tex->wrap_t); return true;
-    case GL_TEXTURE_PRIORITY: out[0] = tex->priority; colour = true; return true;
+    case GL_TEXTURE_MIN_FILTER: out[0] = float(p.min_filter); return true;
+    case GL_TEXTURE_MAG_FILTER: out[0] = float(p.mag_filter); return true;
+    case GL_TEXTURE_WRAP_S: out[0] = float(p.wrap_s); return true;
+    case GL_TEXTURE_WRAP_T: out[0] = float(p.wrap_t); return true;
+    case GL_TEXTURE_PRIORITY: out[0] = p.priority; colour = true; return true;
     case GL_TEXTURE_RESIDENT: out[0] = 1.f; return true;
+    case GL_TEXTURE_MIN_LOD: out[0] = p.min_lod; return true;
+    case GL_TEXTURE_MAX_LOD: out[0] = p.max_lod; return true;
+    case GL_TEXTURE_LOD_BIAS: out[0] = p.lod_bias; return true;
+    case GL_TEXTURE_BASE_LEVEL: out[0] = float(p.base_level); return true;
+    case GL_TEXTURE_MAX_LEVEL: out[0] = float(p.max_level); return true;
+    case GL_GENERATE_MIPMAP: out[0] = p.generate_mipmap ? 1.f : 0.f; return true;
     case GL_TEXTURE_BORDER_COLOR:
-      std::copy(tex->border_color, tex->border_color + 4, out);
+      std::copy(p.border_color, p.border_color + 4, out);
       count = 4;
       colour = true;
       return true;
@@ -197,7 +232,7 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
 }
 
 bool get_tex_level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLint& out) {
-  TextureObject* tex = bound_texture(ctx, target);
+  TextureObject* tex = image_texture(ctx, target);
   if (!tex) return false;
   const TextureLevelData empty;
   const TextureLevelData& l = size_t(level) < tex->levels.size() ? tex->levels[level] : empty;
@@ -209,7 +244,7 @@ bool get_tex_level_parameter(Context& ctx, GLenum target, GLint level, GLenum pn
   const bool lum = base == TexBaseFormat::Luminance || base == TexBaseFormat::LuminanceAlpha;
   switch (pname) {
     case GL_TEXTURE_WIDTH: out = defined ? l.width + 2 * l.border : 0; return true;
-    case GL_TEXTURE_HEIGHT: out = defined ? (target == GL_TEXTURE_1D ? 1 : l.height + 2 * l.border) : 0; return true;
+    case GL_TEXTURE_HEIGHT: out = defined ? (is_1d(target) ? 1 : l.height + 2 * l.border) : 0; return true;
     case GL_TEXTURE_BORDER: out = defined ? l.border : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: out = defined ? l.internal_format : 1; return true;
     case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: out = bits(rgb); return true;
@@ -256,13 +291,13 @@ GLboolean IsTexture(Context& ctx, GLuint texture) { return ctx.textures.is_textu
 
 void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                 GLint border, GLenum format, GLenum type, const void* pixels) {
-  if (target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
   tex_image(ctx, target, level, internalformat, width, height, border, format, type, pixels);
 }
 
 void TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
                 GLenum format, GLenum type, const void* pixels) {
-  if (target != GL_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
   tex_image(ctx, target, level, internalformat, width, 1, border, format, type, pixels);
 }
 
@@ -328,7 +363,7 @@ void PrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures, const G
   if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (!textures || !priorities) return;
   for (GLsizei i = 0; i < n; ++i)
-    if (TextureObject* t = ctx.textures.find(textures[i])) t->priority = std::clamp(priorities[i], 0.f, 1.f);
+    if (TextureObject* t = ctx.textures.find(textures[i])) t->params.priority = std::clamp(priorities[i], 0.f, 1.f);
 }
 
 // Every texture is resident in a software renderer.

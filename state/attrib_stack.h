@@ -13,6 +13,7 @@
 #include "state/pixel_state.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
+#include "state/texture_object.h"
 
 namespace pineda {
 
@@ -22,9 +23,7 @@ constexpr size_t kMaxClientAttribStackDepth = 16;
 struct SavedTextureParams {
   GLuint name = 0;
   GLenum target = 0;
-  GLenum min_filter = 0, mag_filter = 0, wrap_s = 0, wrap_t = 0;
-  float border_color[4] = {};
-  float priority = 1.f;
+  TexParams params;
 };
 
 // Everything a glPushAttrib may save; glPopAttrib restores the groups of `mask` only.

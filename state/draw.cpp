@@ -54,6 +54,8 @@ int snapshot_textures(Context& ctx) {
     out.image = tex->snapshot();
     if (!out.image) continue;
     out.sampler = tex->sampler();
+    out.sampler.lod_bias =
+        std::clamp(out.sampler.lod_bias + unit.env.lod_bias, -kMaxTextureLodBias, kMaxTextureLodBias);
     out.env_mode = raster_env_mode(unit.env);
     if (out.env_mode == raster::TexEnvMode::Combine) out.combine = raster_combine(unit.env);
     std::copy(unit.env.color, unit.env.color + 4, out.env_color);

@@ -18,7 +18,11 @@ struct TexEnvState {
   GLenum operand_rgb[3] = {GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};
   GLenum operand_alpha[3] = {GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA};
   float rgb_scale = 1.f, alpha_scale = 1.f;
+  float lod_bias = 0.f;  // GL_TEXTURE_FILTER_CONTROL
 };
+
+// GL 1.4: the largest |bias| a level-of-detail sum keeps.
+constexpr float kMaxTextureLodBias = 16.f;
 
 raster::TexEnvMode raster_env_mode(const TexEnvState& env);
 raster::CombineState raster_combine(const TexEnvState& env);

@@ -19,19 +19,29 @@ struct TextureLevelData {
   std::vector<uint32_t> texels;
 };
 
-struct TextureObject {
-  GLenum target = 0;  // 0 until first bound
-  std::vector<TextureLevelData> levels;  // index = level
-  raster::TexBaseFormat base_format = raster::TexBaseFormat::RGBA;
+// What glTexParameter sets; glPushAttrib(GL_TEXTURE_BIT) saves it whole.
+struct TexParams {
   GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
   GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
   float border_color[4] = {0, 0, 0, 0};
   float priority = 1.f;
+  float min_lod = -1000.f, max_lod = 1000.f, lod_bias = 0.f;
+  GLint base_level = 0, max_level = 1000;
+  bool generate_mipmap = false;
+};
+
+struct TextureObject {
+  GLenum target = 0;  // 0 until first bound
+  std::vector<TextureLevelData> levels;  // index = level
+  TexParams params;
 
   // The image the sampler reads, or null when the texture is incomplete.
   std::shared_ptr<const raster::TextureImage> snapshot();
   raster::Sampler sampler() const;
   void changed() { snapshot_.reset(); snapshot_valid_ = false; }
+  // GL_GENERATE_MIPMAP: after `level` changed, rebuilds the levels below it when it is the
+  // base level and generation is on.
+  void level_changed(int level);
 
  private:
   std::shared_ptr<const raster::TextureImage> snapshot_;
@@ -47,12 +57,15 @@ class TextureNamespace {
   TextureObject* find(GLuint name);
   void remove(GLuint name);
   bool is_texture(GLuint name) const;
+  // The proxy object of GL_PROXY_TEXTURE_1D/2D: levels without texels, never bound.
+  TextureObject& proxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D ? proxy_1d_ : proxy_2d_; }
 
  private:
   std::map<GLuint, std::unique_ptr<TextureObject>> objects_;
   std::map<GLuint, bool> reserved_;  // generated names not bound yet
   GLuint next_name_ = 1;
   TextureObject default_2d_, default_1d_;
+  TextureObject proxy_2d_, proxy_1d_;
 };
 
 }  // namespace pineda

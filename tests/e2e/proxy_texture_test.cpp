@@ -1,0 +1,66 @@
+// Proxy textures (GL 1.1 PROXY_TEXTURE_1D/2D): glTexImage on a proxy target records what the
+// image would be, or zeros when it is too large, without errors or effects on real textures.
+#include "tests/e2e/support/gl_test.h"
+
+#include <GL/glext.h>
+
+namespace pineda::test {
+namespace {
+
+class ProxyTextureTest : public GlTest {
+ protected:
+  GLint level_param(GLenum target, GLenum pname, GLint level = 0) {
+    GLint v = -1;
+    glGetTexLevelParameteriv(target, level, pname, &v);
+    return v;
+  }
+};
+
+TEST_F(ProxyTextureTest, FittingImageSetsTheProxyState) {
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGB8, 64, 32, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH), 64);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_HEIGHT), 32);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_INTERNAL_FORMAT), GL_RGB8);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_RED_SIZE), 8);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_ALPHA_SIZE), 0);
+  EXPECT_EQ(level_param(GL_TEXTURE_2D, GL_TEXTURE_WIDTH), 0);  // the real texture is untouched
+  glTexImage1D(GL_PROXY_TEXTURE_1D, 2, GL_ALPHA, 18, 1, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_1D, GL_TEXTURE_WIDTH, 2), 18);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_1D, GL_TEXTURE_HEIGHT, 2), 1);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_1D, GL_TEXTURE_BORDER, 2), 1);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_1D, GL_TEXTURE_ALPHA_SIZE, 2), 8);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(ProxyTextureTest, TooLargeImageZeroesTheProxyWithoutError) {
+  GLint max = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, max * 2, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH), 0);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_HEIGHT), 0);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_RED_SIZE), 0);
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, max, max, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH), max);
+}
+
+TEST_F(ProxyTextureTest, ArgumentErrorsStillApply) {
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, -1, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, 77, 16, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glTexImage1D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glBindTexture(GL_PROXY_TEXTURE_2D, 1);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glTexParameteri(GL_PROXY_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  const uint8_t texel[4] = {};
+  glTexSubImage2D(GL_PROXY_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+}
+
+}  // namespace
+}  // namespace pineda::test
