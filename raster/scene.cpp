@@ -12,6 +12,7 @@ namespace {
 constexpr size_t kMaxPrims = size_t{1} << 16;
 constexpr size_t kMaxCommands = size_t{1} << 22;
 constexpr size_t kMaxDraws = 4096;
+constexpr size_t kMaxRetainedTextureBytes = size_t{256} << 20;
 // Below this many binned commands the calling thread does the work alone.
 constexpr size_t kSmallScene = 64;
 
@@ -30,9 +31,24 @@ void Scene::reset(const Framebuffer& fb) {
   bins_.assign(static_cast<size_t>(tiles_x_) * tiles_y_, {});
   touched_tiles_.clear();
   commands_ = 0;
+  retained_images_.clear();
+  retained_texture_bytes_ = 0;
 }
 
-void Scene::begin_draw(DrawRecord&& draw) { draws_.push_back(std::move(draw)); }
+void Scene::begin_draw(DrawRecord&& draw) {
+  draws_.push_back(std::move(draw));
+  retain_textures(draws_.back());
+}
+
+void Scene::retain_textures(const DrawRecord& draw) {
+  for (int k = 0; k < draw.num_units; ++k) {
+    const TextureImage* image = draw.state.texture_units[draw.units[k]].image.get();
+    if (!image || std::find(retained_images_.begin(), retained_images_.end(), image) != retained_images_.end())
+      continue;
+    retained_images_.push_back(image);
+    for (const TextureLevel& level : image->levels) retained_texture_bytes_ += level.texels.size() * sizeof(level.texels[0]);
+  }
+}
 
 void Scene::add_prim(PrimSetup prim) {
   const PixelRect r = intersect(prim.bounds, render_area());
@@ -71,7 +87,7 @@ void Scene::add_clear(const ClearRecord& clear) {
 
 bool Scene::full() const {
   return prims_.size() >= kMaxPrims || commands_ >= kMaxCommands || clears_.size() >= kMaxPrims ||
-         draws_.size() >= kMaxDraws;
+         draws_.size() >= kMaxDraws || retained_texture_bytes_ >= kMaxRetainedTextureBytes;
 }
 
 void Scene::run_tile(int tile) const {
@@ -104,6 +120,9 @@ void Scene::execute(WorkerPool& pool) {
   clears_.clear();
   commands_ = 0;
   if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
+  retained_images_.clear();
+  retained_texture_bytes_ = 0;
+  if (!draws_.empty()) retain_textures(draws_.back());
 }
 
 }  // namespace pineda::raster

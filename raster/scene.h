@@ -40,6 +40,7 @@ class Scene {
   static constexpr uint32_t kClearBit = 0x80000000u;
 
   void run_tile(int tile) const;
+  void retain_textures(const DrawRecord& draw);
 
   Framebuffer fb_;
   int render_w_ = 0, render_h_ = 0;
@@ -52,6 +53,10 @@ class Scene {
   std::vector<std::vector<uint32_t>> bins_;
   std::vector<int> touched_tiles_;
   size_t commands_ = 0;
+  // The distinct texture images that queued draws keep alive (a program that creates, draws
+  // with and deletes textures in a loop must not pile them up until the next flush).
+  std::vector<const TextureImage*> retained_images_;
+  size_t retained_texture_bytes_ = 0;
 };
 
 }  // namespace pineda::raster
