@@ -60,7 +60,7 @@ int gl_type_size(unsigned type) {
 
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
-  read_array(ctx.vertex_array, index, out.position, false);
+  if (ctx.vertex_array.active()) read_array(ctx.vertex_array, index, out.position, false);
   if (ctx.color_array.active()) {
     read_array(ctx.color_array, index, out.color, true);
   } else {
