@@ -5,6 +5,7 @@
 #include <GL/glext.h>
 
 #include <cmath>
+#include <string>
 
 #include "tests/e2e/support/gl_test.h"
 #include "tests/e2e/support/window_quad.h"
@@ -170,6 +171,12 @@ TEST_F(FogTest, QueriesAndErrors) {
   EXPECT_EQ(src, GL_FRAGMENT_DEPTH);
   glHint(GL_FOG_HINT, GL_NICEST);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(FogTest, ExtensionsAdvertised) {
+  const std::string ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  for (const char* name : {"GL_EXT_fog_coord", "GL_EXT_secondary_color", "GL_EXT_separate_specular_color"})
+    EXPECT_NE((" " + ext + " ").find(std::string(" ") + name + " "), std::string::npos) << name;
 }
 
 TEST_F(FogTest, PushPopFogBit) {
