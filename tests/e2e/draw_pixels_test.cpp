@@ -60,6 +60,12 @@ TEST_F(DrawPixelsTest, FormatsAndTypes) {
   const GLubyte bgra[4] = {1, 2, 3, 4};
   glDrawPixels(1, 1, GL_BGRA, GL_UNSIGNED_BYTE, bgra);
   EXPECT_EQ(pixel(0, 0), (Rgba{3, 2, 1, 4}));
+  const GLubyte rgb332 = 0xe3;  // R 7/7, G 0, B 3/3
+  glDrawPixels(1, 1, GL_RGB, GL_UNSIGNED_BYTE_3_3_2, &rgb332);
+  EXPECT_EQ(pixel(0, 0), (Rgba{255, 0, 255, 255}));
+  const GLuint rgba8888 = 0x11223344u;  // UNSIGNED_INT_8_8_8_8: R in the high byte
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, &rgba8888);
+  EXPECT_EQ(pixel(0, 0), (Rgba{0x11, 0x22, 0x33, 0x44}));
 }
 
 TEST_F(DrawPixelsTest, UnpackRowLengthSkipsAlignmentAndSwapBytes) {
@@ -296,6 +302,12 @@ TEST_F(DrawPixelsTest, Errors) {
   EXPECT_EQ(error(), GLenum(GL_INVALID_ENUM));
   glDrawPixels(1, 1, GL_RGBA, GL_BITMAP, c);
   EXPECT_EQ(error(), GLenum(GL_INVALID_ENUM));
+  glDrawPixels(1, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE_3_3_2, c);
+  EXPECT_EQ(error(), GLenum(GL_INVALID_OPERATION));
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, c);
+  EXPECT_EQ(error(), GLenum(GL_INVALID_OPERATION));
+  glDrawPixels(1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8, c);
+  EXPECT_EQ(error(), GLenum(GL_INVALID_OPERATION));
   glBegin(GL_POINTS);
   glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, c);
   glEnd();
