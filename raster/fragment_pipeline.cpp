@@ -298,10 +298,8 @@ inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
   return mask;
 }
 
-// An AVX2 copy is chosen at load time where the CPU has it: the same operations (no FMA, no
-// contraction), so the same results, with 256-bit doubles and three-operand instructions.
 template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver, bool kCount, bool kExtras>
-[[gnu::target_clones("avx2", "default")]] uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+[[gnu::always_inline]] inline uint32_t shade_quads_body(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
@@ -338,37 +336,62 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
   return passed;
 }
 
-template <int kBits, bool kExtras>
+// Two copies of every routine: the baseline one, and an AVX2 one for CPUs that have it (the
+// same operations, no FMA, no contraction, so the same results, with 256-bit doubles and
+// three-operand instructions). simd_path.h chooses.
+template <bool... kFlags>
+uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                     const uint8_t* masks) {
+  return shade_quads_body<kFlags...>(d, p, fb, x, y, count, masks);
+}
+
+template <bool... kFlags>
+[[gnu::target("avx2")]] uint32_t shade_quads_avx2(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x,
+                                                  int y, int count, const uint8_t* masks) {
+  return shade_quads_body<kFlags...>(d, p, fb, x, y, count, masks);
+}
+
+template <int kBits, bool kExtras, bool kAvx2>
 constexpr QuadRoutine routine_for() {
-  return &shade_quads<(kBits & 1) != 0, (kBits & 2) != 0, (kBits & 4) != 0, (kBits & 8) != 0, (kBits & 16) != 0,
-                      (kBits & 32) != 0, (kBits & 64) != 0, kExtras>;
+  constexpr bool t = kBits & 1, z = kBits & 2, st = kBits & 4, b = kBits & 8, f = kBits & 16, o = kBits & 32, c = kBits & 64;
+  if constexpr (kAvx2) return &shade_quads_avx2<t, z, st, b, f, o, c, kExtras>;
+  else return &shade_quads<t, z, st, b, f, o, c, kExtras>;
 }
 
-template <bool kExtras, int... kBits>
+template <bool kExtras, bool kAvx2, int... kBits>
 constexpr auto make_table(std::integer_sequence<int, kBits...>) {
-  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits, kExtras>()...};
+  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits, kExtras, kAvx2>()...};
 }
 
-constexpr auto kRoutines = make_table<false>(std::make_integer_sequence<int, 128>{});
+constexpr auto kRoutines = make_table<false, false>(std::make_integer_sequence<int, 128>{});
+constexpr auto kRoutinesAvx2 = make_table<false, true>(std::make_integer_sequence<int, 128>{});
 
 // Fog, colour sum and stipple are rare: their routines leave out the SRC_ALPHA-over fast path
 // (bit 32) to halve their count. Index bit 5 stands for key bit 6.
 constexpr int extras_key_bits(int index) { return (index & 31) | ((index & 32) << 1); }
 constexpr int extras_index(int key_bits) { return (key_bits & 31) | ((key_bits & 64) >> 1); }
 
-template <int... kIndex>
+template <bool kAvx2, int... kIndex>
 constexpr auto make_extras_table(std::integer_sequence<int, kIndex...>) {
-  return std::array<QuadRoutine, sizeof...(kIndex)>{routine_for<extras_key_bits(kIndex), true>()...};
+  return std::array<QuadRoutine, sizeof...(kIndex)>{routine_for<extras_key_bits(kIndex), true, kAvx2>()...};
 }
 
-constexpr auto kExtrasRoutines = make_extras_table(std::make_integer_sequence<int, 64>{});
+constexpr auto kExtrasRoutines = make_extras_table<false>(std::make_integer_sequence<int, 64>{});
+constexpr auto kExtrasRoutinesAvx2 = make_extras_table<true>(std::make_integer_sequence<int, 64>{});
+
+bool cpu_has_avx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
 
 }  // namespace
 
-QuadRoutine select_quad_routine(const FragmentKey& key) {
+QuadRoutine select_quad_routine(const FragmentKey& key, SimdPath path) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
                    (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0) | (key.count_samples ? 64 : 0);
-  return key.extras ? kExtrasRoutines[extras_index(bits)] : kRoutines[bits];
+  const bool avx2 = path == SimdPath::Best && cpu_has_avx2();
+  if (key.extras) return (avx2 ? kExtrasRoutinesAvx2 : kExtrasRoutines)[extras_index(bits)];
+  return (avx2 ? kRoutinesAvx2 : kRoutines)[bits];
 }
 
 }  // namespace pineda::raster

@@ -3,9 +3,10 @@
 #pragma once
 
 #include "raster/draw_record.h"
+#include "raster/simd_path.h"
 
 namespace pineda::raster {
 
-QuadRoutine select_quad_routine(const FragmentKey& key);
+QuadRoutine select_quad_routine(const FragmentKey& key, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

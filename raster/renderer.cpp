@@ -2,6 +2,7 @@
 
 #include "raster/clear.h"
 #include "raster/draw_record.h"
+#include "raster/fragment_pipeline.h"
 #include "raster/geometry.h"
 #include "raster/primitive.h"
 #include "raster/reference_lines_points.h"
@@ -12,17 +13,18 @@
 namespace pineda::raster {
 
 struct Renderer::Impl {
-  explicit Impl(int threads, bool reference_mode)
-      : reference(reference_mode), pool(reference ? 1 : resolve_thread_count(threads)) {
+  explicit Impl(int threads, bool reference_mode, SimdPath simd_path)
+      : reference(reference_mode), simd(simd_path), pool(reference ? 1 : resolve_thread_count(threads)) {
     scene.reset(fb);
   }
   const bool reference;  // PINEDA_REFERENCE at creation: primitives drawn at once, per pixel
+  const SimdPath simd;   // PINEDA_SIMD at creation
   Framebuffer fb;
   Scene scene;
   WorkerPool pool;
 };
 
-Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads, reference_mode_from_environment())) {}
+Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads, reference_mode_from_environment(), simd_path_from_environment())) {}
 
 // Work still queued is dropped: the framebuffer's owner may already have released its memory.
 Renderer::~Renderer() = default;
@@ -50,6 +52,8 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   if (impl_->reference) {
     flush();  // queued clears first: reference primitives are drawn into the framebuffer at once
     record.routine = reference_plane_quads;
+  } else if (impl_->simd != SimdPath::Best) {
+    record.routine = select_quad_routine(record.key, impl_->simd);
   }
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, [this] { flush(); }, impl_->reference);

@@ -17,7 +17,8 @@ class WorkerPool;
 class Renderer {
  public:
   // threads == 0: PINEDA_THREADS if set, otherwise one per core. PINEDA_REFERENCE=1 (read here)
-  // selects the reference mode (reference_mode.h): one thread, exact per-pixel rasterization.
+  // selects the reference mode (reference_mode.h): one thread, exact per-pixel rasterization;
+  // PINEDA_SIMD=baseline the baseline copy of the fragment routines (simd_path.h).
   explicit Renderer(int threads = 0);
   ~Renderer();
   Renderer(const Renderer&) = delete;
