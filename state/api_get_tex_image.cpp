@@ -9,9 +9,11 @@
 namespace pineda::gl {
 namespace {
 
-// GL 1.1 spec 6.1.4: the texel as RGBA before packing; luminance and intensity land in R only.
-void texel_rgba(uint32_t texel, raster::TexBaseFormat base, double rgba[4]) {
+// GL 1.1 spec 6.1.4: the texel as RGBA before packing; luminance and intensity land in R only,
+// and a luminance result is R alone (not R + G + B as glReadPixels sums).
+void texel_rgba(uint32_t texel, raster::TexBaseFormat base, GLenum format, double rgba[4]) {
   for (int c = 0; c < 4; ++c) rgba[c] = double((texel >> (8 * c)) & 0xff) / 255.0;
+  if (format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA) rgba[1] = rgba[2] = 0.0;
   using raster::TexBaseFormat;
   switch (base) {
     case TexBaseFormat::Luminance: case TexBaseFormat::LuminanceAlpha: rgba[1] = rgba[2] = 0.0; break;
@@ -38,7 +40,7 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
   for (int y = 0; y < l.height; ++y)
     for (int x = 0; x < l.width; ++x) {
       double rgba[4];
-      texel_rgba(l.texels[size_t(y) * l.width + x], l.base, rgba);
+      texel_rgba(l.texels[size_t(y) * l.width + x], l.base, format, rgba);
       uint8_t* dst = out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x);
       store_color(rgba, format, type, dst);
       if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);

@@ -113,7 +113,8 @@ void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, 
   if (inner_w < 0 || inner_h < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (tex->levels.size() <= size_t(level)) tex->levels.resize(level + 1);
   TextureLevelData& l = tex->levels[level];
-  const bool too_large = inner_w > kMaxTextureSize || inner_h > kMaxTextureSize;
+  const int level_max = kMaxTextureSize >> level;  // level l of a full chain is at most max >> l
+  const bool too_large = inner_w > level_max || inner_h > level_max;
   if (is_proxy(target)) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
     l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, border, internal_format, base, {}};
     return;

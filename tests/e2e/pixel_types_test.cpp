@@ -131,6 +131,15 @@ TEST_F(PixelTypesTest, GetTexImagePacksPackedTypes) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+TEST_F(PixelTypesTest, GetTexImageLuminanceIsRedAlone) {
+  const uint8_t texel[4] = {128, 200, 100, 60};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  uint8_t out[2] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, out);
+  EXPECT_EQ(out[0], 128);
+  EXPECT_EQ(out[1], 60);
+}
+
 TEST_F(PixelTypesTest, PackedTypesNeedAMatchingFormat) {
   const uint32_t pixel = 0;
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, &pixel);

@@ -46,6 +46,20 @@ TEST_F(ProxyTextureTest, TooLargeImageZeroesTheProxyWithoutError) {
   EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH), max);
 }
 
+TEST_F(ProxyTextureTest, LevelsAboveZeroHaveSmallerLimits) {
+  GLint max = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 1, GL_RGBA, max / 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH, 1), max / 2);
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 1, GL_RGBA, max, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH, 1), 0);
+  glBindTexture(GL_TEXTURE_2D, 1);
+  glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, max, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glTexImage1D(GL_TEXTURE_1D, 3, GL_RGBA, max / 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+}
+
 TEST_F(ProxyTextureTest, ArgumentErrorsStillApply) {
   glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, -1, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
