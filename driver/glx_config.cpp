@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <map>
 
+#include "state/accum.h"
+
 namespace pineda::glx {
 namespace {
 
@@ -103,7 +105,7 @@ int config_attribute(const Config& c, int attribute, int* value) {
     case GLX_DEPTH_SIZE: *value = c.depth; break;
     case GLX_STENCIL_SIZE: *value = c.stencil; break;
     case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE:
-    case GLX_ACCUM_ALPHA_SIZE: *value = 0; break;
+    case GLX_ACCUM_ALPHA_SIZE: *value = kAccumBits; break;  // every context has one (state/accum.h)
     case GLX_RENDER_TYPE: *value = GLX_RGBA_BIT; break;
     case GLX_DRAWABLE_TYPE: *value = GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT; break;
     case GLX_X_RENDERABLE: *value = True; break;
@@ -274,8 +276,9 @@ const Config* choose_visual_config(const DisplayState& d, int screen, const int*
       default: return nullptr;
     }
   }
-  // There are no colour-index, stereo, overlay, auxiliary or accumulation buffers.
-  if (!rgba || stereo || level != 0 || aux > 0 || accum > 0) return nullptr;
+  // There are no colour-index, stereo, overlay or auxiliary buffers; accumulation buffers
+  // have 16 bits per channel.
+  if (!rgba || stereo || level != 0 || aux > 0 || accum > kAccumBits) return nullptr;
   std::vector<const Config*> candidates;
   for (const auto& c : d.configs) {
     if (c->screen != screen || !c->visual_canonical) continue;

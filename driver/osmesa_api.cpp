@@ -104,7 +104,7 @@ PINEDA_EXPORT OSMesaContext GLAPIENTRY OSMesaCreateContext(GLenum format, OSMesa
 PINEDA_EXPORT OSMesaContext GLAPIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBits,
                                                               GLint stencilBits, GLint accumBits,
                                                               OSMesaContext sharelist) {
-  // There is no accumulation buffer: accumBits is ignored.
+  // Every context has a 16-bit accumulation buffer (state/accum.h): accumBits asks for no more.
   return create(Request{.format = format, .depth_bits = depthBits, .stencil_bits = stencilBits},
                 sharelist);
 }

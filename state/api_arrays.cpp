@@ -9,6 +9,7 @@
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
+#include "state/render_mode_get.h"
 #include "state/vertex_fetch.h"
 
 namespace pineda::gl {
@@ -176,6 +177,7 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
 
 void GetPointerv(Context& ctx, GLenum pname, void** params) {
   if (!params) return;
+  if (render_mode_pointer(ctx, pname, params)) return;
   switch (pname) {
     case GL_VERTEX_ARRAY_POINTER: *params = const_cast<void*>(ctx.vertex_array.pointer); break;
     case GL_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.color_array.pointer); break;

@@ -56,6 +56,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.raster_pos = ctx.raster_pos;
   f.pixel_mode = ctx.pixel_mode;
   f.draw_state = ctx.draw_state;
+  std::copy(ctx.accum.clear_value, ctx.accum.clear_value + 4, f.accum_clear);
   for (raster::TextureUnit& unit : f.draw_state.texture_units) unit.image.reset();  // rebuilt per draw
   f.enable_cull = ctx.enable_cull;
   f.normalize = ctx.normalize;
@@ -220,6 +221,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     restore_caps(ctx, f, GL_TRANSFORM_BIT);
   }
   if (m & GL_ENABLE_BIT) restore_enables(ctx, f);
+  if (m & GL_ACCUM_BUFFER_BIT) std::copy(f.accum_clear, f.accum_clear + 4, ctx.accum.clear_value);
   if (m & GL_COLOR_BUFFER_BIT) {
     s.alpha_test = o.alpha_test;
     ctx.alpha_func = f.alpha_func;

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "glapi/gl_entry_points.h"
+#include "state/accum.h"
 #include "state/context.h"
 
 namespace pineda::gl {
@@ -15,6 +16,7 @@ void Clear(Context& ctx, GLbitfield mask) {
     return;
   }
   if (!ctx.draw_drawable()) return;
+  if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(ctx);
   raster::ClearState clear;
   clear.color = mask & GL_COLOR_BUFFER_BIT;
   clear.depth = mask & GL_DEPTH_BUFFER_BIT;

@@ -7,7 +7,9 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/buffer_get.h"
+#include "state/accum.h"
 #include "state/capabilities.h"
+#include "state/render_mode_get.h"
 #include "state/context.h"
 #include "state/get_values.h"
 #include "state/vertex_extras_get.h"
@@ -109,6 +111,9 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_DEPTH_BITS: out = ints({double(d ? d->framebuffer.depth.bits : 0)}); return true;
     case GL_STENCIL_BITS: out = ints({double(stencil_bits)}); return true;
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
+      out = ints({double(d ? kAccumBits : 0)});
+      return true;
+    case GL_ACCUM_CLEAR_VALUE: out = colors(ctx.accum.clear_value); return true;
     case GL_INDEX_BITS: case GL_AUX_BUFFERS:
       out = ints({0});
       return true;
@@ -188,6 +193,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_COLOR_MATERIAL_FACE: out = enums({double(ctx.color_material_face)}); return true;
     case GL_COLOR_MATERIAL_PARAMETER: out = enums({double(ctx.color_material_mode)}); return true;
     default: break;
+  }
+  if (RenderModeValue rm; query_render_mode(ctx, pname, rm)) {
+    out = rm.is_enum ? enums({double(rm.value)}) : ints({double(rm.value)});
+    return true;
   }
   if (GLuint name; query_buffer_binding(ctx, pname, name)) {
     out = ints({double(name)});

@@ -17,6 +17,7 @@ void set_array(Context& ctx, ClientArray& array, GLint size, GLenum type, GLsize
   array.type = type;
   array.stride = stride;
   array.pointer = ptr;
+  array.buffer = ctx.buffers.array;  // with a buffer bound, ptr is an offset into it
 }
 
 void fog_coord_pointer(Context& ctx, GLenum type, GLsizei stride, const void* ptr) {

@@ -29,6 +29,7 @@ struct SavedTextureParams {
 // Everything a glPushAttrib may save; glPopAttrib restores the groups of `mask` only.
 struct AttribFrame {
   GLbitfield mask = 0;
+  float accum_clear[4] = {0, 0, 0, 0};  // GL_ACCUM_BUFFER_BIT
   // current
   float current_color[4], current_normal[3];
   std::array<std::array<float, 4>, raster::kMaxTextureUnits> current_texcoord;

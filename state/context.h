@@ -17,12 +17,14 @@
 #include "raster/renderer.h"
 #include "raster/vertex.h"
 #include "raster/vertex_transform.h"
+#include "state/accum.h"
 #include "state/attrib_stack.h"
 #include "state/buffer_object.h"
 #include "state/display_list.h"
 #include "state/drawable.h"
 #include "state/pixel_state.h"
 #include "state/query_object.h"
+#include "state/select_feedback.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 #include "state/vertex_extras_state.h"
@@ -197,6 +199,8 @@ class Context {
   // Buffer objects and queries
   BufferState buffers;
   QueryState queries;
+  RenderModeState render_mode;  // glRenderMode: selection and feedback
+  AccumState accum;
 
   // Display lists
   DisplayLists lists;

@@ -6,6 +6,7 @@
 
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/select_feedback.h"
 #include "state/vertex_extras_snapshot.h"
 
 namespace pineda {
@@ -85,7 +86,9 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
   const int texture_units = snapshot_textures(ctx);
-  raster::Transform transform = build_transform(ctx, texture_units);
+  // Feedback reports unit 0's coordinates even when no texture is enabled.
+  const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
+  raster::Transform transform = build_transform(ctx, feedback ? std::max(texture_units, 1) : texture_units);
   if (materials.empty() || !ctx.lighting.enabled) {
     raster::transform_vertices(transform, vertices, ctx.transformed);
   } else {
@@ -105,6 +108,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   raster::DrawState& state = ctx.draw_state;
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;
+  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
   ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
 }
 

@@ -256,6 +256,32 @@ TEST_F(BufferObjectTest, ArbNamesShareTheObjects) {
   EXPECT_NE(ext.find("GL_ARB_vertex_buffer_object"), std::string::npos);
 }
 
+TEST_F(BufferObjectTest, FogAndSecondaryColorArraysTakeBufferOffsets) {
+  const GLfloat fog[] = {0.25f, 0.5f, 0.5f, 0.5f};
+  const GLuint b = make_buffer(GL_ARRAY_BUFFER, fog, sizeof fog);
+  glFogCoordPointer(GL_FLOAT, 0, nullptr);  // offset 0 of the buffer
+  glSecondaryColorPointer(3, GL_FLOAT, 0, reinterpret_cast<const void*>(4096));  // an offset, not an address
+  EXPECT_EQ(get_int(GL_FOG_COORD_ARRAY_BUFFER_BINDING), GLint(b));
+  EXPECT_EQ(get_int(GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING), GLint(b));
+  glEnableClientState(GL_FOG_COORD_ARRAY);
+  glEnableClientState(GL_SECONDARY_COLOR_ARRAY);
+  make_buffer(GL_ARRAY_BUFFER, kQuads, sizeof kQuads);
+  glVertexPointer(2, GL_FLOAT, 0, nullptr);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glColor3f(1, 1, 1);
+  glDrawArrays(GL_QUADS, 0, 4);  // the secondary colours lie outside their buffer: dropped
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  glDisableClientState(GL_SECONDARY_COLOR_ARRAY);
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 8 * 8);
+  clear_to(0, 0, 0, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  glFogCoordPointer(GL_FLOAT, 0, reinterpret_cast<const void*>(4));  // holds vertices 0..2 only
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(BufferObjectTest, BufferCommandsInsideBeginEndAreErrors) {
   GLuint b = 0;
   glBegin(GL_POINTS);

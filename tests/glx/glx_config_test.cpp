@@ -86,7 +86,8 @@ TEST_F(GlxConfigTest, ChooseByIdAndImpossibleRequests) {
   EXPECT_EQ(configs[0], c);
   XFree(configs);
   EXPECT_EQ(choose({GLX_SAMPLES, 4}), nullptr);
-  EXPECT_EQ(choose({GLX_ACCUM_RED_SIZE, 1}), nullptr);
+  EXPECT_EQ(choose({GLX_ACCUM_RED_SIZE, 17}), nullptr);
+  EXPECT_NE(choose({GLX_ACCUM_RED_SIZE, 16, GLX_ACCUM_ALPHA_SIZE, 1}), nullptr);  // 16-bit accumulation
   EXPECT_EQ(choose({GLX_RENDER_TYPE, GLX_COLOR_INDEX_BIT}), nullptr);
   EXPECT_EQ(choose({GLX_STENCIL_SIZE, 9}), nullptr);
   EXPECT_EQ(choose({0x7777, 1}), nullptr);

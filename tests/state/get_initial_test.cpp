@@ -191,9 +191,9 @@ TEST_F(InitialStateTest, FramebufferBits) {
   EXPECT_EQ(get_bool(GL_RGBA_MODE), GL_TRUE);
   EXPECT_EQ(get_bool(GL_INDEX_MODE), GL_FALSE);
   EXPECT_EQ(get_bool(GL_STEREO), GL_FALSE);
-  for (GLenum p : {GL_ACCUM_RED_BITS, GL_ACCUM_GREEN_BITS, GL_ACCUM_BLUE_BITS, GL_ACCUM_ALPHA_BITS, GL_INDEX_BITS,
-                   GL_AUX_BUFFERS})
-    EXPECT_EQ(get_int(p), 0) << std::hex << p;
+  for (GLenum p : {GL_ACCUM_RED_BITS, GL_ACCUM_GREEN_BITS, GL_ACCUM_BLUE_BITS, GL_ACCUM_ALPHA_BITS})
+    EXPECT_EQ(get_int(p), 16) << std::hex << p;
+  for (GLenum p : {GL_INDEX_BITS, GL_AUX_BUFFERS}) EXPECT_EQ(get_int(p), 0) << std::hex << p;
 }
 
 }  // namespace
