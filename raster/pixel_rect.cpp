@@ -39,7 +39,8 @@ void PixelFragmentWriter::fragment(int x, int y, const float rgba[4], double dep
   for (int c = 0; c < 4; ++c) prim_.flat_color[c] = clamp01(rgba[c]);
   prim_.z0 = (depth > 0.0 ? (depth < 1.0 ? depth : 1.0) : 0.0) * record_.depth_max;
   const uint8_t mask = static_cast<uint8_t>(1u << ((x & 1) + 2 * (y & 1)));
-  record_.routine(record_, prim_, fb_, x & ~1, y & ~1, 1, &mask);
+  const uint32_t passed = record_.routine(record_, prim_, fb_, x & ~1, y & ~1, 1, &mask);
+  if (passed) record_.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);  // occlusion query
 }
 
 void PixelFragmentWriter::stencil(int x, int y, uint32_t value) {

@@ -141,6 +141,21 @@ TEST_F(OcclusionQueryTest, DeletingTheActiveQueryEndsIt) {
   glEndQuery(GL_SAMPLES_PASSED);
 }
 
+TEST_F(OcclusionQueryTest, PixelRectanglesAreCounted) {
+  const GLubyte pixels[2 * 3 * 4] = {};
+  glRasterPos2i(4, 4);
+  glBeginQuery(GL_SAMPLES_PASSED, query_);
+  glDrawPixels(2, 3, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
+  glEndQuery(GL_SAMPLES_PASSED);
+  EXPECT_EQ(result(query_), 6u);
+  const GLubyte bits[2] = {0xf0, 0x80};  // rows of 4 and 1 set pixels
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBeginQuery(GL_SAMPLES_PASSED, query_);
+  glBitmap(8, 2, 0, 0, 0, 0, bits);
+  glEndQuery(GL_SAMPLES_PASSED);
+  EXPECT_EQ(result(query_), 5u);
+}
+
 TEST_F(OcclusionQueryTest, BeginAndEndAreCompiledIntoLists) {
   const GLuint list = glGenLists(1);
   glNewList(list, GL_COMPILE);
