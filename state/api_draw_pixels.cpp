@@ -109,7 +109,7 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   if (type == GL_STENCIL && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
   if (!ctx.raster_pos.valid || width == 0 || height == 0 || !draw || !read) return;
   ctx.finish();
-  draw_pixel_rect(ctx, read_rect(ctx, read->framebuffer, x, y, width, height, type));
+  draw_pixel_rect(ctx, read_rect(ctx, ctx.read_framebuffer(), x, y, width, height, type));
 }
 
 }  // namespace pineda::gl

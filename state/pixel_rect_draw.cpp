@@ -37,31 +37,34 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
 
 void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
   if (!ctx.draw_drawable()) return;
-  ctx.finish();
-  const raster::Framebuffer& fb = ctx.renderer().framebuffer();
-  const RasterPosition& rp = ctx.raster_pos;
-  raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord);
-  const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
-  const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
-  for (size_t r = 0; r < rows.source.size(); ++r) {
-    const int j = rows.source[r];
-    if (j < 0) continue;
-    const int y = rows.first + int(r);
-    for (size_t c = 0; c < cols.source.size(); ++c) {
-      const int i = cols.source[c];
-      const int x = cols.first + int(c);
-      if (i < 0 || !writer.inside(x, y)) continue;
-      const size_t k = size_t(j) * image.width + i;
-      if (!image.present.empty() && !image.present[k]) continue;
-      switch (image.kind) {
-        case PixelRectImage::Kind::Color: writer.fragment(x, y, &image.color[4 * k], rp.window[2]); break;
-        case PixelRectImage::Kind::Depth: writer.fragment(x, y, rp.color, image.depth[k]); break;
-        case PixelRectImage::Kind::Stencil:
-          writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
-          break;
+  // Once per colour buffer glDrawBuffer selects, after the queued primitives.
+  ctx.render_to_draw_buffers([&] {
+    ctx.finish();
+    const raster::Framebuffer& fb = ctx.renderer().framebuffer();
+    const RasterPosition& rp = ctx.raster_pos;
+    raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord);
+    const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
+    const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
+    for (size_t r = 0; r < rows.source.size(); ++r) {
+      const int j = rows.source[r];
+      if (j < 0) continue;
+      const int y = rows.first + int(r);
+      for (size_t c = 0; c < cols.source.size(); ++c) {
+        const int i = cols.source[c];
+        const int x = cols.first + int(c);
+        if (i < 0 || !writer.inside(x, y)) continue;
+        const size_t k = size_t(j) * image.width + i;
+        if (!image.present.empty() && !image.present[k]) continue;
+        switch (image.kind) {
+          case PixelRectImage::Kind::Color: writer.fragment(x, y, &image.color[4 * k], rp.window[2]); break;
+          case PixelRectImage::Kind::Depth: writer.fragment(x, y, rp.color, image.depth[k]); break;
+          case PixelRectImage::Kind::Stencil:
+            writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
+            break;
+        }
       }
     }
-  }
+  });
 }
 
 }  // namespace pineda
