@@ -195,6 +195,24 @@ TEST_F(DrawPixelsTest, OrderedAfterQueuedTriangles) {
   EXPECT_EQ(pixel(20, 20), (Rgba{255, 0, 0, 255}));
 }
 
+TEST_F(DrawPixelsTest, DrawBufferNoneWritesNoColourButDepth) {
+  glClearDepth(1.0);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDrawBuffer(GL_NONE);
+  const GLubyte c[4] = {255, 255, 255, 255};
+  glWindowPos3f(0, 0, 0.5f);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, c);
+  const GLubyte bit = 0x80;
+  glWindowPos3f(1, 0, 0.5f);
+  glBitmap(1, 1, 0, 0, 0, 0, &bit);
+  glDrawBuffer(GL_FRONT);
+  EXPECT_EQ(pixel(0, 0), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(pixel(1, 0), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(depth_at(0, 0), uint32_t(0.5 * 16777215 + 0.5));
+  EXPECT_EQ(depth_at(1, 0), uint32_t(0.5 * 16777215 + 0.5));
+}
+
 TEST_F(DrawPixelsTest, DepthComponentWritesDepthWithTheRasterColour) {
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
