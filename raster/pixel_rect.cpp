@@ -14,8 +14,10 @@ DrawState flat_state(DrawState state) {
 
 }  // namespace
 
-PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuffer& fb, const float (*texcoords)[4])
+PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuffer& fb, const float (*texcoords)[4],
+                                         float fog_coordinate)
     : record_(make_draw_record(flat_state(state), fb)), fb_(fb) {
+  if (record_.fog_plane >= 0) prim_.planes[record_.fog_plane].a0 = fog_coordinate;
   prim_.kind = CoverageKind::Point;
   for (int k = 0; k < record_.num_units; ++k) {
     const float* tc = texcoords[record_.units[k]];

@@ -14,8 +14,9 @@ namespace pineda::raster {
 
 class PixelFragmentWriter {
  public:
-  // texcoords: s, t, r, q of every texture unit.
-  PixelFragmentWriter(const DrawState& state, const Framebuffer& fb, const float (*texcoords)[4]);
+  // texcoords: s, t, r, q of every texture unit; fog_coordinate: the raster distance.
+  PixelFragmentWriter(const DrawState& state, const Framebuffer& fb, const float (*texcoords)[4],
+                      float fog_coordinate);
 
   // One fragment at pixel (x, y); colour components and depth in [0, 1] (clamped here).
   void fragment(int x, int y, const float rgba[4], double depth);

@@ -15,7 +15,8 @@ namespace {
 void draw_bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, const GLubyte* bitmap) {
   ctx.finish();
   const RasterPosition& rp = ctx.raster_pos;
-  raster::PixelFragmentWriter writer(fragment_snapshot(ctx), ctx.renderer().framebuffer(), rp.texcoord);
+  raster::PixelFragmentWriter writer(fragment_snapshot(ctx), ctx.renderer().framebuffer(), rp.texcoord,
+                                     rp.distance);
   // As Mesa: a small epsilon keeps a position computed as 9.99999 on pixel 10.
   constexpr double kEpsilon = 0.0001;
   const double fx = std::floor(double(rp.window[0]) - xorig + kEpsilon);

@@ -42,7 +42,7 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     ctx.finish();
     const raster::Framebuffer& fb = ctx.renderer().framebuffer();
     const RasterPosition& rp = ctx.raster_pos;
-    raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord);
+    raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord, rp.distance);
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
     for (size_t r = 0; r < rows.source.size(); ++r) {

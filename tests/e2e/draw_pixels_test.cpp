@@ -213,6 +213,22 @@ TEST_F(DrawPixelsTest, DrawBufferNoneWritesNoColourButDepth) {
   EXPECT_EQ(depth_at(1, 0), uint32_t(0.5 * 16777215 + 0.5));
 }
 
+TEST_F(DrawPixelsTest, FogUsesTheRasterDistance) {
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(0, width(), 0, height(), -10, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glRasterPos3f(0, 0, -5);  // 5 units from the eye
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 0.f);
+  glFogf(GL_FOG_END, 10.f);
+  const GLfloat blue[4] = {0, 0, 1, 1};
+  glFogfv(GL_FOG_COLOR, blue);
+  const GLubyte white[4] = {255, 255, 255, 255};
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, white);
+  EXPECT_TRUE(near_rgba(pixel(0, 0), {128, 128, 255, 255}, 1));
+}
+
 TEST_F(DrawPixelsTest, DepthComponentWritesDepthWithTheRasterColour) {
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
