@@ -25,6 +25,9 @@ void set_raster_pos(Context& ctx, double x, double y, double z, double w) {
   rp.valid = std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]) &&
              -c[3] <= c[0] && c[0] <= c[3] && -c[3] <= c[1] && c[1] <= c[3] && -c[3] <= c[2] && c[2] <= c[3] &&
              c[3] > 0.f;
+  const glm::dvec4 eye = ctx.modelview.top() * glm::dvec4(x, y, z, w);
+  for (int i = 0; i < raster::kMaxClipPlanes; ++i)  // GL 1.5 2.13: user clip planes too
+    if (ctx.extras.clip_plane_enabled[i] && glm::dot(ctx.extras.clip_planes[i], eye) < 0.0) rp.valid = false;
   if (!rp.valid) return;
   const raster::Viewport& vp = ctx.viewport;
   const double xd = c[0] / double(c[3]), yd = c[1] / double(c[3]), zd = c[2] / double(c[3]);
@@ -34,8 +37,8 @@ void set_raster_pos(Context& ctx, double x, double y, double z, double w) {
   rp.window[3] = c[3];
   std::copy(out.color, out.color + 4, rp.color);
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) std::copy(out.texcoord[u], out.texcoord[u] + 4, rp.texcoord[u]);
-  const glm::dvec4 eye = ctx.modelview.top() * glm::dvec4(x, y, z, w);
-  rp.distance = static_cast<float>(glm::length(glm::dvec3(eye)));
+  rp.distance = ctx.extras.fog_coord_source == GL_FOG_COORDINATE ? ctx.extras.current_fog_coord
+                                                                 : static_cast<float>(glm::length(glm::dvec3(eye)));
 }
 
 // GL 1.4 2.13: x and y are window coordinates as given, z is clamped to [0, 1] and mapped
@@ -51,7 +54,7 @@ void set_window_pos(Context& ctx, double x, double y, double z) {
   for (int i = 0; i < 4; ++i) rp.color[i] = std::clamp(ctx.current_color[i], 0.f, 1.f);
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4, rp.texcoord[u]);
-  rp.distance = 0.f;
+  rp.distance = ctx.extras.fog_coord_source == GL_FOG_COORDINATE ? ctx.extras.current_fog_coord : 0.f;
 }
 
 }  // namespace

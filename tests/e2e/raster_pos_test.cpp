@@ -133,6 +133,27 @@ TEST_F(RasterPosTest, WindowPosSetsWindowCoordinatesDirectly) {
   EXPECT_EQ(c[3], 0.5f);
 }
 
+TEST_F(RasterPosTest, UserClipPlanesAndFogCoordinate) {
+  const GLdouble keep_x_below_half[4] = {-1, 0, 0, 0.5};
+  glClipPlane(GL_CLIP_PLANE0, keep_x_below_half);
+  glEnable(GL_CLIP_PLANE0);
+  glRasterPos2f(0.25f, 0.f);
+  EXPECT_TRUE(valid());
+  glRasterPos2f(0.75f, 0.f);
+  EXPECT_FALSE(valid());
+  glDisable(GL_CLIP_PLANE0);
+  glFogi(GL_FOG_COORDINATE_SOURCE, GL_FOG_COORDINATE);
+  glFogCoordf(3.5f);
+  glRasterPos3f(0.f, 0.f, 0.5f);
+  float d = 0;
+  glGetFloatv(GL_CURRENT_RASTER_DISTANCE, &d);
+  EXPECT_EQ(d, 3.5f);
+  glFogi(GL_FOG_COORDINATE_SOURCE, GL_FRAGMENT_DEPTH);
+  glRasterPos3f(0.f, 0.f, 0.5f);
+  glGetFloatv(GL_CURRENT_RASTER_DISTANCE, &d);
+  EXPECT_EQ(d, 0.5f);
+}
+
 TEST_F(RasterPosTest, SavedWithCurrentBit) {
   glWindowPos2i(3, 4);
   glPushAttrib(GL_CURRENT_BIT);
