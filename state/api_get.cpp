@@ -256,7 +256,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_EXT_fog_coord GL_EXT_secondary_color GL_EXT_separate_specular_color "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
-      "GL_SGIS_texture_lod GL_EXT_texture_lod_bias";
+      "GL_SGIS_texture_lod GL_EXT_texture_lod_bias ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());
