@@ -8,6 +8,7 @@ namespace pineda::glx {
 // GLX's own error codes (offsets from the extension's error base).
 enum class GlxError : unsigned char {
   GlxContext = 0,
+  GlxContextState = 1,
   GlxDrawable = 2,
   GlxPixmap = 3,
   GlxFBConfig = 9,
@@ -27,6 +28,7 @@ enum class GlxRequest : int {
   WaitX = 9,
   CopyContext = 10,
   SwapBuffers = 11,
+  UseXFont = 12,
   CreateGLXPixmap = 13,
   DestroyGLXPixmap = 15,
   VendorPrivate = 16,

@@ -58,6 +58,7 @@ const Entry kGlxFunctions[] = {
     PINEDA_GLX_ENTRY(glXSwapIntervalEXT),
     PINEDA_GLX_ENTRY(glXSwapIntervalMESA),
     PINEDA_GLX_ENTRY(glXSwapIntervalSGI),
+    PINEDA_GLX_ENTRY(glXUseXFont),
     PINEDA_GLX_ENTRY(glXWaitGL),
     PINEDA_GLX_ENTRY(glXWaitX),
 };
