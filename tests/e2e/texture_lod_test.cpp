@@ -143,7 +143,7 @@ TEST_F(TextureLodTest, GenerateMipmapBuildsTheChainFromTheBaseLevel) {
 TEST_F(TextureLodTest, GenerateMipmapOffLeavesOtherLevels) {
   three_levels();
   level(0, 4, kWhite);
-  uint8_t out[4] = {};
+  uint8_t out[16] = {};  // level 1 of the 4x4 texture is 2x2
   glGetTexImage(GL_TEXTURE_2D, 1, GL_RGBA, GL_UNSIGNED_BYTE, out);
   EXPECT_TRUE(near_rgba({out[0], out[1], out[2], out[3]}, kGreen));
   glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
