@@ -136,6 +136,17 @@ TEST_F(FogTest, FogIsAppliedAfterTexturing) {
   EXPECT_TRUE(near_rgba(pixel(8, 8), {0, 191, 64, 255}));
 }
 
+// GL 2.1 section 3.9: the colour sum is clamped to [0, 1] before fog. (llvmpipe fogs the
+// unclamped sum, which would give 255 here.)
+TEST_F(FogTest, ColorSumIsClampedBeforeFog) {
+  glEnable(GL_COLOR_SUM);
+  glSecondaryColor3f(1, 0, 0);  // red 1 + 1 = 2, clamped to 1
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_END, 1.f);
+  quad(-0.25f);  // f = 0.75
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {191, 0, 64, 255}));
+}
+
 TEST_F(FogTest, QueriesAndErrors) {
   GLint mode = 0;
   glGetIntegerv(GL_FOG_MODE, &mode);

@@ -1,5 +1,5 @@
 #pragma once
-// A demo scene: GL 1.1 calls only. Each scene runs in a fresh context, so it sets up
+// A demo scene: GL 1.1 calls (and ARB_multitexture where a scene says so). Each scene runs in a fresh context, so it sets up
 // everything it needs in its constructor and assumes GL's initial state.
 #include <memory>
 #include <string_view>
@@ -28,5 +28,6 @@ std::unique_ptr<Scene> createGears(int width, int height);
 int gearsTrianglesPerFrame();  // for pineda-bench, which draws the same gears
 std::unique_ptr<Scene> createBlend(int width, int height);
 std::unique_ptr<Scene> createLinesPoints(int width, int height);
+std::unique_ptr<Scene> createLitFog(int width, int height);
 
 }  // namespace pineda::demo

@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "box_filter.h"
 #include "scene.h"
 
 namespace pineda::demo {
 namespace {
 
-using Texels = std::vector<std::uint8_t>;  // RGBA8
 
 Texels checkerboard(int size, int check) {
   Texels texels(std::size_t(size) * size * 4);
@@ -26,20 +26,6 @@ Texels checkerboard(int size, int check) {
   return texels;
 }
 
-// Box-filters a square RGBA8 level down to half its size.
-Texels halve(const Texels& level, int size) {
-  int half = size / 2;
-  Texels out(std::size_t(half) * half * 4);
-  for (int y = 0; y < half; ++y)
-    for (int x = 0; x < half; ++x)
-      for (int c = 0; c < 4; ++c) {
-        auto at = [&](int sx, int sy) { return int(level[(std::size_t(sy) * size + sx) * 4 + c]); };
-        int sum = at(2 * x, 2 * y) + at(2 * x + 1, 2 * y) + at(2 * x, 2 * y + 1) + at(2 * x + 1, 2 * y + 1);
-        out[(std::size_t(y) * half + x) * 4 + c] = std::uint8_t((sum + 2) / 4);
-      }
-  return out;
-}
-
 class Textured final : public Scene {
  public:
   Textured(int width, int height) {
@@ -53,7 +39,7 @@ class Textured final : public Scene {
     Texels level = checkerboard(size, 8);
     for (int lod = 0; size >= 1; ++lod, size /= 2) {
       glTexImage2D(GL_TEXTURE_2D, lod, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, level.data());
-      if (size > 1) level = halve(level, size);
+      if (size > 1) level = halve(level, size, 4);
     }
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
