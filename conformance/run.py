@@ -56,7 +56,8 @@ def driver_env(driver, platform, lib_dir):
 
 
 def group_regex(groups):
-    return ["^" + re.escape(g) + "@" for g in groups]
+    """A group is a test name prefix ending at an '@', or one whole test."""
+    return ["^" + re.escape(g) + "(@|$)" for g in groups]
 
 
 def load_results(results_dir, final=True):
@@ -117,7 +118,7 @@ def whole_test_counts(tests, groups):
     for g in groups:
         c = counts.setdefault(g, {})
         for name, t in tests.items():
-            if name.startswith(g + "@"):
+            if name == g or name.startswith(g + "@"):
                 c[t["result"]] = c.get(t["result"], 0) + 1
     return counts
 

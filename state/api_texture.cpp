@@ -7,47 +7,12 @@
 #include "state/limits.h"
 #include "state/pixel_format.h"
 #include "state/pixel_transfer.h"
+#include "state/texture_format.h"
 
 namespace pineda::gl {
 namespace {
 
 using raster::TexBaseFormat;
-
-bool base_format_of(GLint internal_format, TexBaseFormat& out) {
-  switch (internal_format) {
-    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_ALPHA12: case GL_ALPHA16:
-      out = TexBaseFormat::Alpha; return true;
-    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:
-      out = TexBaseFormat::Luminance; return true;
-    case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_LUMINANCE8_ALPHA8:
-    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
-      out = TexBaseFormat::LuminanceAlpha; return true;
-    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12: case GL_INTENSITY16:
-      out = TexBaseFormat::Intensity; return true;
-    case 3: case GL_RGB: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10: case GL_RGB12:
-    case GL_RGB16:
-      out = TexBaseFormat::RGB; return true;
-    case 4: case GL_RGBA: case GL_RGBA2: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA8: case GL_RGB10_A2:
-    case GL_RGBA12: case GL_RGBA16:
-      out = TexBaseFormat::RGBA; return true;
-    default: return false;
-  }
-}
-
-// An RGBA colour reduced to what the base format keeps, as an RGBA8 texel.
-uint32_t to_texel(const float rgba[4], TexBaseFormat base) {
-  auto u8 = [](float v) { return uint32_t(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); };
-  uint32_t r = u8(rgba[0]), g = u8(rgba[1]), b = u8(rgba[2]), a = u8(rgba[3]);
-  switch (base) {
-    case TexBaseFormat::Alpha: r = g = b = 0; break;
-    case TexBaseFormat::Luminance: g = b = r; a = 255; break;
-    case TexBaseFormat::LuminanceAlpha: g = b = r; break;
-    case TexBaseFormat::Intensity: g = b = a = r; break;
-    case TexBaseFormat::RGB: a = 255; break;
-    case TexBaseFormat::RGBA: break;
-  }
-  return r | g << 8 | b << 16 | a << 24;
-}
 
 TextureObject* bound_texture(Context& ctx, GLenum target) {
   TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
@@ -75,7 +40,7 @@ int max_level() { return int(std::log2(kMaxTextureSize)); }
 // Copies a width x height client image into texels at (xoffset, yoffset) of `level`; the
 // source's border texels are skipped: `border_x` columns on each side, `border_y` rows
 // (a 1D texture has a border in width only).
-void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int xoffset, int yoffset, int width,
+void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, int xoffset, int yoffset, int width,
                  int height, int border_x, int border_y, GLenum format, GLenum type, const void* pixels) {
   if (!pixels) return;
   const int full_width = width + 2 * border_x;
@@ -96,19 +61,20 @@ void unpack_into(Context& ctx, TextureLevelData& level, TexBaseFormat base, int 
       }
       load_color(src_pixel, format, type, rgba);
       if (transfer) transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
-      dst[x] = to_texel(rgba, base);
+      dst[x] = to_texel(rgba, storage);
     }
   }
 }
 
 void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, GLsizei width, GLsizei height,
                GLint border, GLenum format, GLenum type, const void* pixels) {
-  TexBaseFormat base;
   TextureObject* tex = image_texture(ctx, target);
   if (!tex) return ctx.record_error(GL_INVALID_ENUM);
   if (!valid_format_type(ctx, format, type)) return;
-  if (level < 0 || level > max_level() || !base_format_of(internal_format, base) || (border != 0 && border != 1))
+  const std::optional<TextureFormat> storage = texture_format(internal_format);
+  if (level < 0 || level > max_level() || !storage || (border != 0 && border != 1))
     return ctx.record_error(GL_INVALID_VALUE);
+  const TexBaseFormat base = storage->base;
   const int inner_w = width - 2 * border, inner_h = is_1d(target) ? 1 : height - 2 * border;
   if (inner_w < 0 || inner_h < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (tex->levels.size() <= size_t(level)) tex->levels.resize(level + 1);
@@ -126,7 +92,7 @@ void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, 
   l.internal_format = internal_format;
   l.base = base;
   l.texels.assign(size_t(inner_w) * inner_h, 0u);
-  unpack_into(ctx, l, base, 0, 0, inner_w, inner_h, border, is_1d(target) ? 0 : border, format, type, pixels);
+  unpack_into(ctx, l, *storage, 0, 0, inner_w, inner_h, border, is_1d(target) ? 0 : border, format, type, pixels);
   tex->level_changed(level);
 }
 
@@ -141,9 +107,7 @@ void tex_sub_image(Context& ctx, GLenum target, GLint level, GLint xoffset, GLin
   TextureLevelData& l = tex->levels[level];
   if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + width > l.width || int64_t(yoffset) + height > l.height)
     return ctx.record_error(GL_INVALID_VALUE);
-  TexBaseFormat base;
-  base_format_of(l.internal_format, base);
-  unpack_into(ctx, l, base, xoffset, yoffset, width, height, 0, 0, format, type, pixels);
+  unpack_into(ctx, l, *texture_format(l.internal_format), xoffset, yoffset, width, height, 0, 0, format, type, pixels);
   tex->level_changed(level);
 }
 
@@ -237,21 +201,22 @@ bool get_tex_level_parameter(Context& ctx, GLenum target, GLint level, GLenum pn
   if (!tex) return false;
   const TextureLevelData empty;
   const TextureLevelData& l = size_t(level) < tex->levels.size() ? tex->levels[level] : empty;
-  TexBaseFormat base = TexBaseFormat::RGBA;
-  const bool defined = l.width > 0 && base_format_of(l.internal_format, base);
-  auto bits = [&](bool has) { return defined && has ? 8 : 0; };
-  const bool rgb = base == TexBaseFormat::RGB || base == TexBaseFormat::RGBA;
-  const bool alpha = base == TexBaseFormat::Alpha || base == TexBaseFormat::LuminanceAlpha || base == TexBaseFormat::RGBA;
-  const bool lum = base == TexBaseFormat::Luminance || base == TexBaseFormat::LuminanceAlpha;
+  const std::optional<TextureFormat> storage = l.width > 0 ? texture_format(l.internal_format) : std::nullopt;
+  const bool defined = storage.has_value();
+  const TextureFormat sizes = storage.value_or(TextureFormat{});
   switch (pname) {
     case GL_TEXTURE_WIDTH: out = defined ? l.width + 2 * l.border : 0; return true;
     case GL_TEXTURE_HEIGHT: out = defined ? (is_1d(target) ? 1 : l.height + 2 * l.border) : 0; return true;
     case GL_TEXTURE_BORDER: out = defined ? l.border : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: out = defined ? l.internal_format : 1; return true;
-    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: out = bits(rgb); return true;
-    case GL_TEXTURE_ALPHA_SIZE: out = bits(alpha); return true;
-    case GL_TEXTURE_LUMINANCE_SIZE: out = bits(lum); return true;
-    case GL_TEXTURE_INTENSITY_SIZE: out = bits(base == TexBaseFormat::Intensity); return true;
+    case GL_TEXTURE_RED_SIZE: out = sizes.red; return true;
+    case GL_TEXTURE_GREEN_SIZE: out = sizes.green; return true;
+    case GL_TEXTURE_BLUE_SIZE: out = sizes.blue; return true;
+    case GL_TEXTURE_ALPHA_SIZE: out = sizes.alpha; return true;
+    case GL_TEXTURE_LUMINANCE_SIZE: out = sizes.luminance; return true;
+    case GL_TEXTURE_INTENSITY_SIZE: out = sizes.intensity; return true;
+    // No colour format has depth or stencil; Mesa answers these in any version.
+    case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: out = 0; return true;
     default: return false;
   }
 }

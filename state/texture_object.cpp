@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "state/texture_format.h"
+
 namespace pineda {
 namespace {
 
@@ -29,7 +31,7 @@ raster::TexWrap to_raster_wrap(GLenum w) {
 bool uses_mipmaps(GLenum min_filter) { return min_filter != GL_NEAREST && min_filter != GL_LINEAR; }
 
 // The next smaller level: each texel the rounded average of the 2x2 (or 2x1) texels it
-// covers, as Mesa's software mipmap generation computes it.
+// covers, as Mesa's software mipmap generation computes it, in the level's stored bits.
 void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
   dst.width = std::max(1, src.width / 2);
   dst.height = std::max(1, src.height / 2);
@@ -37,6 +39,7 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
   dst.internal_format = src.internal_format;
   dst.base = src.base;
   dst.texels.assign(size_t(dst.width) * dst.height, 0u);
+  const TextureFormat storage = texture_format(src.internal_format).value_or(TextureFormat{});
   const int dx = src.width > 1 ? 1 : 0, dy = src.height > 1 ? 1 : 0;
   for (int y = 0; y < dst.height; ++y)
     for (int x = 0; x < dst.width; ++x) {
@@ -50,7 +53,7 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
         for (uint32_t t : quad) sum += (t >> c) & 0xffu;
         out |= (sum / 4) << c;
       }
-      dst.texels[size_t(y) * dst.width + x] = out;
+      dst.texels[size_t(y) * dst.width + x] = requantize_texel(out, storage);
     }
 }
 

@@ -1,0 +1,35 @@
+// Texture internal formats (GL 1.5 spec tables 3.15 and 3.16): which components a format
+// keeps and how many bits each is stored with.
+//
+// Texels are stored as RGBA8. A format with fewer bits than 8 per component is quantized to
+// the bits Mesa allocates for it (RGBA4 to 4, RGB5_A1 to 5/5/5/1, R3_G3_B2 to 3/3/2, ...),
+// so that sampling and glGetTexImage see the values Mesa would; a format asking for more
+// (RGB10, RGBA12, LUMINANCE16, ...) is kept at 8 bits, and its sizes say so.
+#pragma once
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <optional>
+
+#include "raster/texture.h"
+
+namespace pineda {
+
+struct TextureFormat {
+  raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;
+  // Bits stored per component, as glGetTexLevelParameter's TEXTURE_*_SIZE report them.
+  uint8_t red = 0, green = 0, blue = 0, alpha = 0, luminance = 0, intensity = 0;
+};
+
+// The storage of a colour internal format (1..4, the base formats and the sized ones), or
+// nullopt when `internal_format` is not one.
+std::optional<TextureFormat> texture_format(GLint internal_format);
+
+// An RGBA colour reduced to the components the format keeps and quantized to its bits, as an
+// RGBA8 texel (R in the lowest byte).
+uint32_t to_texel(const float rgba[4], const TextureFormat& format);
+
+// An RGBA8 texel (an average of stored texels, say) quantized again to the format's bits.
+uint32_t requantize_texel(uint32_t texel, const TextureFormat& format);
+
+}  // namespace pineda
