@@ -69,8 +69,11 @@ bool* client_capability(Context& ctx, GLenum array) {
 namespace pineda::gl {
 namespace {
 
+// Mesa's compatibility profile, the tie-breaker, also takes the client arrays here (as
+// glEnableClientState), and piglit relies on it; compiled into a list, they switch on replay.
 void set_capability(Context& ctx, GLenum cap, bool value) {
   bool* flag = server_capability(ctx, cap);
+  if (!flag) flag = client_capability(ctx, cap);
   if (!flag) return ctx.record_error(GL_INVALID_ENUM);
   *flag = value;
   if (cap == GL_COLOR_MATERIAL) track_color_material(ctx);

@@ -97,6 +97,8 @@ void material(Context& ctx, GLenum face, GLenum pname, const GLfloat* v) {
       default: break;                // rejected above
     }
   }
+  // A property that follows the colour keeps it (Mesa ignores such Material calls).
+  track_color_material(ctx);
   note_material_after_change(ctx);
 }
 

@@ -200,12 +200,24 @@ TEST_F(ErrorTest, GetWithInvalidPnameIsInvalidEnumAndWritesNothing) {
 }
 
 TEST_F(ErrorTest, EnableOfNonCapabilityIsInvalidEnum) {
-  glEnable(GL_VERTEX_ARRAY);  // a client state, not a server capability
+  glEnable(GL_LINE_WIDTH);  // a value, not a capability
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_FALSE);
+  EXPECT_EQ(glIsEnabled(GL_LINE_WIDTH), GL_FALSE);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glEnableClientState(GL_BLEND);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   EXPECT_EQ(glIsEnabled(GL_BLEND), GL_FALSE);
+}
+
+// As in Mesa's compatibility profile: glEnable/glDisable of a client array act as
+// glEnableClientState/glDisableClientState.
+TEST_F(ErrorTest, EnableOfClientArraySwitchesIt) {
+  glEnable(GL_VERTEX_ARRAY);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_TRUE);
+  glDisable(GL_VERTEX_ARRAY);
+  EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_FALSE);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 }  // namespace
