@@ -72,6 +72,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.color_material_mode = ctx.color_material_mode;
   f.unrendered_caps = ctx.unrendered_caps;
   f.extras = ctx.extras;
+  f.multisample = ctx.multisample;
   f.depth_func = ctx.depth_func;
   f.alpha_func = ctx.alpha_func;
   f.stencil_func = ctx.stencil_func;
@@ -95,6 +96,8 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.hints[2] = ctx.hint_line;
   f.hints[3] = ctx.hint_polygon;
   f.hints[4] = ctx.hint_fog;
+  f.hints[5] = ctx.hint_generate_mipmap;
+  f.hints[6] = ctx.hint_texture_compression;
   f.viewport = ctx.viewport;
   f.draw_buffer = ctx.draw_buffer;
   f.read_buffer = ctx.read_buffer;
@@ -250,6 +253,8 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.hint_line = f.hints[2];
     ctx.hint_polygon = f.hints[3];
     ctx.hint_fog = f.hints[4];
+    ctx.hint_generate_mipmap = f.hints[5];
+    ctx.hint_texture_compression = f.hints[6];
   }
   if (m & GL_EVAL_BIT) restore_caps(ctx, f, GL_EVAL_BIT);
   if (m & GL_LIST_BIT) ctx.list_base = f.list_base;
@@ -274,6 +279,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     s.scissor = o.scissor;
   }
   restore_vertex_extras(ctx, f);
+  restore_multisample(ctx, f);
 }
 
 }  // namespace

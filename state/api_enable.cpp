@@ -47,6 +47,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_TEXTURE_2D: return &ctx.texture_units[ctx.active_texture].enabled_2d;
     default:
       if (bool* flag = vertex_extras_capability(ctx, cap)) return flag;
+      if (bool* flag = multisample_capability(ctx, cap)) return flag;
       if (is_unrendered_cap(cap)) return &ctx.unrendered_caps[cap];
       return nullptr;
   }

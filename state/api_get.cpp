@@ -14,6 +14,7 @@
 #include "state/get_values.h"
 #include "state/vertex_extras_get.h"
 #include "state/limits.h"
+#include "state/multisample.h"
 
 namespace pineda::gl {
 namespace {
@@ -124,15 +125,24 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_MODELVIEW_MATRIX: out = matrix(ctx.modelview.top()); return true;
     case GL_PROJECTION_MATRIX: out = matrix(ctx.projection.top()); return true;
     case GL_TEXTURE_MATRIX: out = matrix(ctx.texture_matrix[ctx.active_texture].top()); return true;
+    case GL_TRANSPOSE_MODELVIEW_MATRIX: out = matrix(glm::transpose(ctx.modelview.top())); return true;
+    case GL_TRANSPOSE_PROJECTION_MATRIX: out = matrix(glm::transpose(ctx.projection.top())); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX:
+      out = matrix(glm::transpose(ctx.texture_matrix[ctx.active_texture].top()));
+      return true;
     case GL_MODELVIEW_STACK_DEPTH: out = ints({double(ctx.modelview.stack.size())}); return true;
     case GL_PROJECTION_STACK_DEPTH: out = ints({double(ctx.projection.stack.size())}); return true;
     case GL_TEXTURE_STACK_DEPTH: out = ints({double(ctx.texture_matrix[ctx.active_texture].stack.size())}); return true;
     case GL_POINT_SIZE: out = floats({s.point_size}); return true;
     case GL_POINT_SIZE_RANGE: out = floats({kPointSizeRange[0], kPointSizeRange[1]}); return true;
     case GL_POINT_SIZE_GRANULARITY: out = floats({1.0}); return true;
+    case GL_ALIASED_POINT_SIZE_RANGE: out = floats({kPointSizeRange[0], kPointSizeRange[1]}); return true;
     case GL_LINE_WIDTH: out = floats({s.line_width}); return true;
     case GL_LINE_WIDTH_RANGE: out = floats({kLineWidthRange[0], kLineWidthRange[1]}); return true;
     case GL_LINE_WIDTH_GRANULARITY: out = floats({1.0}); return true;
+    case GL_ALIASED_LINE_WIDTH_RANGE: out = floats({kLineWidthRange[0], kLineWidthRange[1]}); return true;
+    case GL_MAX_ELEMENTS_VERTICES: out = ints({kMaxElementsVertices}); return true;
+    case GL_MAX_ELEMENTS_INDICES: out = ints({kMaxElementsIndices}); return true;
     case GL_CULL_FACE_MODE: out = enums({double(ctx.cull_face_mode)}); return true;
     case GL_FRONT_FACE: out = enums({double(ctx.front_face)}); return true;
     case GL_POLYGON_MODE: out = enums({double(ctx.polygon_mode_front), double(ctx.polygon_mode_back)}); return true;
@@ -152,6 +162,8 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_STENCIL_WRITEMASK: out = ints({double(ctx.stencil_write_mask)}); return true;
     case GL_BLEND_SRC: out = enums({double(ctx.blend_src_rgb)}); return true;
     case GL_BLEND_DST: out = enums({double(ctx.blend_dst_rgb)}); return true;
+    case GL_BLEND_SRC_RGB: out = enums({double(ctx.blend_src_rgb)}); return true;
+    case GL_BLEND_DST_RGB: out = enums({double(ctx.blend_dst_rgb)}); return true;
     case GL_BLEND_SRC_ALPHA: out = enums({double(ctx.blend_src_alpha)}); return true;
     case GL_BLEND_DST_ALPHA: out = enums({double(ctx.blend_dst_alpha)}); return true;
     case GL_BLEND_EQUATION: out = enums({double(ctx.blend_eq_rgb)}); return true;
@@ -183,6 +195,8 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_LINE_SMOOTH_HINT: out = enums({double(ctx.hint_line)}); return true;
     case GL_POLYGON_SMOOTH_HINT: out = enums({double(ctx.hint_polygon)}); return true;
     case GL_FOG_HINT: out = enums({double(ctx.hint_fog)}); return true;
+    case GL_GENERATE_MIPMAP_HINT: out = enums({double(ctx.hint_generate_mipmap)}); return true;
+    case GL_TEXTURE_COMPRESSION_HINT: out = enums({double(ctx.hint_texture_compression)}); return true;
     case GL_LIGHT_MODEL_AMBIENT: {
       const glm::vec4& a = ctx.lighting.model_ambient;
       out = {Kind::Color, {a.r, a.g, a.b, a.a}};
@@ -204,6 +218,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   }
   if (query_pixel_state(ctx, pname, out)) return true;
   if (query_vertex_extras(ctx, pname, out)) return true;
+  if (query_multisample(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);
@@ -253,6 +268,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
       "GL_EXT_stencil_wrap "
+      "GL_ARB_transpose_matrix GL_ARB_multisample "
       "GL_EXT_fog_coord GL_EXT_secondary_color GL_EXT_separate_specular_color "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "

@@ -58,6 +58,24 @@ void MultMatrixd(Context& ctx, const GLdouble* m) {
   if (m) multiply(ctx, from_column_major(m));
 }
 
+// GL 1.3 (ARB_transpose_matrix): the same matrices given row by row.
+void LoadTransposeMatrixf(Context& ctx, const GLfloat* m) {
+  if (m) current_stack(ctx).top() = glm::transpose(from_column_major(m));
+}
+void LoadTransposeMatrixd(Context& ctx, const GLdouble* m) {
+  if (m) current_stack(ctx).top() = glm::transpose(from_column_major(m));
+}
+void MultTransposeMatrixf(Context& ctx, const GLfloat* m) {
+  if (m) multiply(ctx, glm::transpose(from_column_major(m)));
+}
+void MultTransposeMatrixd(Context& ctx, const GLdouble* m) {
+  if (m) multiply(ctx, glm::transpose(from_column_major(m)));
+}
+void LoadTransposeMatrixfARB(Context& ctx, const GLfloat* m) { LoadTransposeMatrixf(ctx, m); }
+void LoadTransposeMatrixdARB(Context& ctx, const GLdouble* m) { LoadTransposeMatrixd(ctx, m); }
+void MultTransposeMatrixfARB(Context& ctx, const GLfloat* m) { MultTransposeMatrixf(ctx, m); }
+void MultTransposeMatrixdARB(Context& ctx, const GLdouble* m) { MultTransposeMatrixd(ctx, m); }
+
 void PushMatrix(Context& ctx) {
   MatrixStack& s = current_stack(ctx);
   if (s.stack.size() >= s.max_depth) return ctx.record_error(GL_STACK_OVERFLOW);

@@ -80,6 +80,8 @@ void Hint(Context& ctx, GLenum target, GLenum mode) {
     case GL_LINE_SMOOTH_HINT: ctx.hint_line = mode; break;
     case GL_POLYGON_SMOOTH_HINT: ctx.hint_polygon = mode; break;
     case GL_FOG_HINT: ctx.hint_fog = mode; break;
+    case GL_GENERATE_MIPMAP_HINT: ctx.hint_generate_mipmap = mode; break;
+    case GL_TEXTURE_COMPRESSION_HINT: ctx.hint_texture_compression = mode; break;
     default: ctx.record_error(GL_INVALID_ENUM);
   }
 }

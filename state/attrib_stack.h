@@ -10,6 +10,7 @@
 
 #include "raster/draw_state.h"
 #include "raster/vertex_transform.h"
+#include "state/multisample.h"
 #include "state/pixel_state.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
@@ -50,9 +51,10 @@ struct AttribFrame {
   GLuint stencil_value_mask, stencil_write_mask;
   float clear_color[4];
   VertexExtrasState extras;
+  MultisampleState multisample;  // GL_MULTISAMPLE_BIT
   double clear_depth;
   GLint clear_stencil;
-  GLenum hints[5];
+  GLenum hints[7];
   raster::Viewport viewport;
   GLenum draw_buffer, read_buffer;
   GLuint list_base;

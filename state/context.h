@@ -21,6 +21,7 @@
 #include "state/attrib_stack.h"
 #include "state/buffer_object.h"
 #include "state/display_list.h"
+#include "state/multisample.h"
 #include "state/drawable.h"
 #include "state/pixel_state.h"
 #include "state/query_object.h"
@@ -157,6 +158,7 @@ class Context {
   raster::Lighting lighting;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
   VertexExtrasState extras;  // fog, clip planes, texgen, secondary colour (state/api_fog.cpp...)
+  MultisampleState multisample;
   // Capabilities GL 1.1 accepts whose rendering Pineda does not do yet (fog, stipple,
   // smoothing, clip planes, texgen, evaluators): the enable bit is kept for glIsEnabled.
   std::unordered_map<GLenum, bool> unrendered_caps;
@@ -177,6 +179,7 @@ class Context {
   // Hints
   GLenum hint_perspective = GL_DONT_CARE, hint_point = GL_DONT_CARE, hint_line = GL_DONT_CARE,
          hint_polygon = GL_DONT_CARE, hint_fog = GL_DONT_CARE;
+  GLenum hint_generate_mipmap = GL_DONT_CARE, hint_texture_compression = GL_DONT_CARE;  // GL 1.3, 1.4
 
   // Client arrays and pixel storage
   ClientArray vertex_array, color_array, normal_array;

@@ -11,5 +11,8 @@ constexpr int kMaxTextureStackDepth = 10;
 constexpr float kPointSizeRange[2] = {1.f, 255.f};
 constexpr float kLineWidthRange[2] = {1.f, 255.f};
 constexpr int kSubpixelBits = 8;
+// glDrawRangeElements' recommended maximums (GL 1.2): Pineda has no limit; Mesa's values.
+constexpr int kMaxElementsVertices = 3000;
+constexpr int kMaxElementsIndices = 3000;
 
 }  // namespace pineda
