@@ -120,6 +120,7 @@ void Scissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
 namespace pineda::gl {
 void BlendColorEXT(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) { BlendColor(ctx, r, g, b, a); }
 void BlendEquationEXT(Context& ctx, GLenum mode) { BlendEquation(ctx, mode); }
+void BlendEquationSeparateEXT(Context& ctx, GLenum rgb, GLenum alpha) { BlendEquationSeparate(ctx, rgb, alpha); }
 void BlendFuncSeparateEXT(Context& ctx, GLenum sr, GLenum dr, GLenum sa, GLenum da) {
   BlendFuncSeparate(ctx, sr, dr, sa, da);
 }

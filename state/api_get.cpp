@@ -265,6 +265,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
   static const std::string kRenderer = "Pineda (software rasterizer)";
   static const std::string kExtensions =
       "GL_EXT_blend_color GL_EXT_blend_func_separate GL_EXT_blend_minmax GL_EXT_blend_subtract "
+      "GL_EXT_blend_equation_separate "
       "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
       "GL_EXT_stencil_wrap "

@@ -1,4 +1,8 @@
 // Per-fragment operations: stencil, alpha test, blending, logic op.
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -222,6 +226,29 @@ TEST_F(FragmentOpsTest, BlendEquations) {
     glRecti(0, 0, 2, 2);
     EXPECT_TRUE(near_rgba(pixel(1, 1), c.expected, 1)) << std::hex << c.eq;
   }
+}
+
+// GL_EXT_blend_equation_separate: the alpha equation apart from the colour one; a negative
+// reverse-subtract result clamps to 0 (piglit gl-1.0-blend-func uses the EXT name at GL 1.1).
+TEST_F(FragmentOpsTest, BlendEquationSeparateEXT) {
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  clear_to(100 / 255.f, 150 / 255.f, 50 / 255.f, 60 / 255.f);
+  glBlendEquationSeparateEXT(GL_FUNC_ADD, GL_FUNC_REVERSE_SUBTRACT);
+  glColor4ub(20, 30, 40, 80);
+  glRecti(0, 0, 2, 2);
+  EXPECT_TRUE(near_rgba(pixel(1, 1), {120, 180, 90, 0}));
+  GLint rgb = 0, alpha = 0;
+  glGetIntegerv(GL_BLEND_EQUATION_RGB, &rgb);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA, &alpha);
+  EXPECT_EQ(rgb, GL_FUNC_ADD);
+  EXPECT_EQ(alpha, GL_FUNC_REVERSE_SUBTRACT);
+  glBlendEquationSeparateEXT(GL_FUNC_ADD, GL_FUNC_SUBTRACT);
+  clear_to(100 / 255.f, 150 / 255.f, 50 / 255.f, 60 / 255.f);
+  glRecti(0, 0, 2, 2);
+  EXPECT_TRUE(near_rgba(pixel(1, 1), {120, 180, 90, 20}));
+  glBlendEquationSeparateEXT(GL_FUNC_ADD, GL_LINE);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
 }
 
 TEST_F(FragmentOpsTest, LogicOps) {

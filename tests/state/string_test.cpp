@@ -55,7 +55,7 @@ namespace {
 TEST_F(StringTest, AdvertisesTheImplementedExtensions) {
   const std::string ext = " " + get_string(GL_EXTENSIONS) + " ";
   for (const char* name : {"GL_EXT_blend_color", "GL_EXT_blend_minmax", "GL_EXT_blend_subtract",
-                           "GL_EXT_blend_func_separate", "GL_EXT_texture_edge_clamp", "GL_EXT_texture_env_add",
+                           "GL_EXT_blend_func_separate", "GL_EXT_blend_equation_separate", "GL_EXT_texture_edge_clamp", "GL_EXT_texture_env_add",
                            "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
                            "GL_ARB_multitexture", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
                            "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_EXT_bgra",
