@@ -148,12 +148,14 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   PrimSetup prim;
   if (!setup_line(wa, wb, line_width_, params(style), prim)) return;
   // The stipple counts whole pixels of major-axis distance from the first vertex on, across a
-  // strip, as llvmpipe (Mesa's draw module) does.
+  // strip, as llvmpipe (Mesa's draw module) does. It measures from the snapped positions that
+  // coverage uses (llvmpipe rasterizes each stipple dash from snapped ends too), so that a
+  // vertex on a pixel centre starts the pattern at that pixel despite rounding in the transform.
   LineCoverage& l = prim.line;
-  const double d_major = l.x_major ? wb.fx - wa.fx : wb.fy - wa.fy;
-  l.stipple_origin = static_cast<float>(l.x_major ? wa.fx : wa.fy);
-  l.stipple_step = d_major >= 0.0 ? 1 : -1;
-  l.stipple_length = static_cast<float>(std::max(std::fabs(wb.fx - wa.fx), std::fabs(wb.fy - wa.fy)));
+  const int64_t d_major = l.x_major ? wb.x - wa.x : wb.y - wa.y;
+  l.stipple_origin = static_cast<float>(l.x_major ? wa.x : wa.y) / kSubpixelOne;
+  l.stipple_step = d_major >= 0 ? 1 : -1;
+  l.stipple_length = static_cast<float>(std::max(std::llabs(wb.x - wa.x), std::llabs(wb.y - wa.y))) / kSubpixelOne;
   l.stipple_count = stipple_count_;
   stipple_count_ += l.stipple_length;
   emit(prim);

@@ -108,6 +108,39 @@ TEST_F(StippleTest, LineStippleState) {
   EXPECT_EQ(v, 0x1234);
 }
 
+// A 160-pixel window maps x = 10.5 just past the pixel centre in float; the pattern still
+// starts at that pixel, counted from the snapped vertex that coverage uses (piglit linestipple).
+class WideStippleTest : public StippleTest {
+ protected:
+  SurfaceSpec spec() const override { return {160, 160, 24, 8}; }
+};
+
+TEST_F(WideStippleTest, PatternStartsAtTheSnappedFirstVertex) {
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(1, 0x00ff);
+  glTranslatef(10, 10, 0);
+  glBegin(GL_LINES);
+  glVertex2f(0.5f, 2.5f);
+  glVertex2f(24.5f, 2.5f);
+  glEnd();
+  EXPECT_EQ(row(12).substr(8, 30), "001111111100000000111111110000");
+  glLineStipple(2, 0x838f);  // factor 2 along a strip: the count goes on at the corner
+  glBegin(GL_LINE_STRIP);
+  glVertex2f(0.5f, 32.5f);
+  glVertex2f(32.5f, 32.5f);
+  glVertex2f(32.5f, 33.5f);
+  glVertex2f(0.5f, 33.5f);
+  glEnd();
+  // Fragments 0..31 at x = 10..41 of row 42, 32 at the corner (x = 42), then 33..64 right to
+  // left on row 43 from x = 42 down to 11 (x = 10 holds the last vertex: not drawn).
+  auto on = [](int fragment) { return (0x838f >> ((fragment / 2) & 15)) & 1 ? '1' : '0'; };
+  std::string expected42, expected43 = "0";
+  for (int x = 10; x < 42; ++x) expected42 += on(x - 10);
+  for (int x = 11; x < 42; ++x) expected43 += on(33 + 42 - x);
+  EXPECT_EQ(row(42).substr(10, 32), expected42);
+  EXPECT_EQ(row(43).substr(10, 32), expected43);
+}
+
 // Rows of 4 bytes each, most significant bit = leftmost pixel.
 std::vector<GLubyte> stipple_of(GLubyte even_rows, GLubyte odd_rows) {
   std::vector<GLubyte> s(128);
