@@ -15,18 +15,7 @@ bool has_depth(const Drawable* d) { return d && d->framebuffer.depth.bits > 0; }
 bool has_stencil(const Drawable* d) { return d && d->framebuffer.stencil.bits > 0; }
 
 GLenum draw_pixels_error(const Context& ctx, GLenum format, GLenum type) {
-  const bool index = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
-  // As Mesa: a packed type the format does not fit is an invalid operation, whatever the format.
-  if (is_packed_pixel_type(type) && color_format_type_error(format, type) != GL_NO_ERROR) return GL_INVALID_OPERATION;
-  if (color_format_components(format) > 0) {
-    if (const GLenum error = color_format_type_error(format, type); error != GL_NO_ERROR) return error;
-  } else if (!index && format != GL_DEPTH_COMPONENT) {
-    return GL_INVALID_ENUM;
-  } else if (type == GL_BITMAP) {
-    if (!index) return GL_INVALID_ENUM;
-  } else if (pixel_element_size(type) == 0) {
-    return GL_INVALID_ENUM;
-  }
+  if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
   if (format == GL_DEPTH_COMPONENT && !has_depth(ctx.draw_drawable())) return GL_INVALID_OPERATION;
   if (format == GL_STENCIL_INDEX && !has_stencil(ctx.draw_drawable())) return GL_INVALID_OPERATION;
   return GL_NO_ERROR;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
+#include "state/bitmap_layout.h"
 #include "state/context.h"
 #include "state/pixel_format.h"
 #include "state/pixel_transfer.h"
@@ -33,8 +34,15 @@ void set_store(Context& ctx, GLenum pname, double value) {
   }
 }
 
-bool valid_read_format(GLenum format) {
-  return color_format_components(format) > 0 || format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX;
+// GL 1.5 spec 4.3.2: format/type as for DrawPixels; colour indices cannot be read from an
+// RGBA framebuffer, depth and stencil need their buffer.
+GLenum read_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  const Drawable* d = ctx.read_drawable();
+  if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;
+  if (format == GL_DEPTH_COMPONENT && (!d || d->framebuffer.depth.bits == 0)) return GL_INVALID_OPERATION;
+  if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0)) return GL_INVALID_OPERATION;
+  return GL_NO_ERROR;
 }
 
 // Reads a framebuffer pixel in RGBA floats.
@@ -61,20 +69,27 @@ void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pna
 void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                 void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (!valid_read_format(format) || pixel_type_size(type) == 0) return ctx.record_error(GL_INVALID_ENUM);
+  if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
-  if (format == GL_DEPTH_COMPONENT && (!d || d->framebuffer.depth.bits == 0)) return ctx.record_error(GL_INVALID_OPERATION);
-  if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0)) return ctx.record_error(GL_INVALID_OPERATION);
   if (!d || !pixels || width == 0 || height == 0) return;
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
-  const ImageLayout layout = image_layout(ctx.pack, width, format, type);
-  auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
   // Pixels outside the framebuffer are undefined in GL; Pineda leaves the memory untouched.
   const int x0 = std::max(x, 0), x1 = std::min<int64_t>(int64_t(x) + width, fb.width);
   const int y0 = std::max(y, 0), y1 = std::min<int64_t>(int64_t(y) + height, fb.height);
+  auto stencil_at = [&](int fx, int fy) {
+    return transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, fb.stencil.base[fb.stencil.stride * fy + fx]);
+  };
+  if (type == GL_BITMAP) {  // stencil indices, one bit each: the index's lowest bit
+    const BitmapLayout bits(ctx.pack, width);
+    for (int fy = y0; fy < y1; ++fy)
+      for (int fx = x0; fx < x1; ++fx)
+        bits.set_bit(static_cast<uint8_t*>(pixels), fx - x, fy - y, stencil_at(fx, fy) & 1);
+    return;
+  }
+  const ImageLayout layout = image_layout(ctx.pack, width, format, type);
+  auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
-  const int components = std::max(color_format_components(format), 1);
   const bool color_identity = color_transfer_is_identity(ctx.pixel_mode);
   for (int fy = y0; fy < y1; ++fy) {
     uint8_t* row = out + layout.row_stride * size_t(fy - y);
@@ -83,10 +98,9 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
       if (format == GL_DEPTH_COMPONENT) {
         double z = fb.depth.base[fb.depth.stride * fy + fx] / depth_max;
         z = transfer_depth(ctx.pixel_mode, z);
-        store_scalar(z, true, type, dst);
+        store_depth(z, type, dst);
       } else if (format == GL_STENCIL_INDEX) {
-        const int64_t s = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, fb.stencil.base[fb.stencil.stride * fy + fx]);
-        store_scalar(static_cast<double>(s), false, type, dst);
+        store_index(stencil_at(fx, fy), type, dst);
       } else {
         double rgba[4];
         read_color(fb.color, fx, fy, rgba);
@@ -94,7 +108,11 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
         if (!color_identity) transfer_read_color(ctx, rgba);
         store_color(rgba, format, type, dst);
       }
-      if (ctx.pack.swap_bytes) swap_component_bytes(dst, components, pixel_type_size(type));
+      if (!ctx.pack.swap_bytes) continue;
+      if (color_format_components(format) > 0)
+        swap_pixel_bytes(dst, format, type);
+      else
+        swap_component_bytes(dst, 1, pixel_type_size(type));
     }
   }
 }

@@ -98,6 +98,15 @@ GLenum color_format_type_error(GLenum format, GLenum type) {
   return fits ? GL_NO_ERROR : GL_INVALID_OPERATION;
 }
 
+GLenum pixel_rect_format_type_error(GLenum format, GLenum type) {
+  if (is_packed_pixel_type(type) && color_format_type_error(format, type) != GL_NO_ERROR) return GL_INVALID_OPERATION;
+  if (color_format_components(format) > 0) return color_format_type_error(format, type);
+  const bool index = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
+  if (!index && format != GL_DEPTH_COMPONENT) return GL_INVALID_ENUM;
+  if (type == GL_BITMAP) return index ? GL_NO_ERROR : GL_INVALID_ENUM;
+  return pixel_element_size(type) == 0 ? GL_INVALID_ENUM : GL_NO_ERROR;
+}
+
 // GL 1.1 spec 3.6.4: rows start at multiples of the alignment when elements are smaller.
 ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type) {
   ImageLayout l;
@@ -156,16 +165,18 @@ void swap_pixel_bytes(uint8_t* p, GLenum format, GLenum type) {
   swap_component_bytes(p, color_format_components(format), pixel_type_size(type));
 }
 
-void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst) {
-  if (normalized) return store_component(value, type, dst);
+void store_depth(double value, GLenum type, uint8_t* dst) { store_component(value, type, dst); }
+
+// GL 1.5 spec table 4.7: an index keeps as many low bits as the type has (7 for the signed ones).
+void store_index(int64_t index, GLenum type, uint8_t* dst) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(value)); break;
-    case GL_BYTE: put<GLbyte>(dst, GLbyte(value)); break;
-    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(value)); break;
-    case GL_SHORT: put<GLshort>(dst, GLshort(value)); break;
-    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(value)); break;
-    case GL_INT: put<GLint>(dst, GLint(value)); break;
-    case GL_FLOAT: put<GLfloat>(dst, GLfloat(value)); break;
+    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(index & 0xff)); break;
+    case GL_BYTE: put<GLbyte>(dst, GLbyte(index & 0x7f)); break;
+    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(index & 0xffff)); break;
+    case GL_SHORT: put<GLshort>(dst, GLshort(index & 0x7fff)); break;
+    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(index & 0xffffffff)); break;
+    case GL_INT: put<GLint>(dst, GLint(index & 0x7fffffff)); break;
+    case GL_FLOAT: put<GLfloat>(dst, GLfloat(index)); break;
   }
 }
 

@@ -26,6 +26,11 @@ int pixel_element_size(GLenum type);
 // an unknown format or type; GL_INVALID_OPERATION for a packed type the format does not fit
 // (3-component types need RGB, 4-component ones RGBA or BGRA).
 GLenum color_format_type_error(GLenum format, GLenum type);
+// GL_NO_ERROR when format/type can describe a pixel rectangle of glDrawPixels or glReadPixels:
+// the colour formats, COLOR_INDEX and STENCIL_INDEX (also with BITMAP) and DEPTH_COMPONENT.
+// GL_INVALID_ENUM for an unknown format or type, or BITMAP with another format;
+// GL_INVALID_OPERATION for a packed type the format does not fit, whatever the format (as Mesa).
+GLenum pixel_rect_format_type_error(GLenum format, GLenum type);
 
 // The byte layout of a width x height image in client memory.
 struct ImageLayout {
@@ -47,7 +52,9 @@ void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]);
 void swap_component_bytes(uint8_t* p, int count, int size);
 // Reverses the bytes of each element of one pixel of format/type (GL_*_SWAP_BYTES).
 void swap_pixel_bytes(uint8_t* p, GLenum format, GLenum type);
-// One value of a single-component image (depth, stencil), as the type's storage.
-void store_scalar(double value, bool normalized, GLenum type, uint8_t* dst);
+// A depth value in [0, 1] as a normalized component of `type`.
+void store_depth(double value, GLenum type, uint8_t* dst);
+// A colour or stencil index as `type` holds it (its low bits; float as is).
+void store_index(int64_t index, GLenum type, uint8_t* dst);
 
 }  // namespace pineda

@@ -74,26 +74,6 @@ std::vector<int64_t> unpack_indices(const PixelStore& store, int width, int heig
 
 }  // namespace
 
-BitmapLayout::BitmapLayout(const PixelStore& store, int width) : width_(std::max(width, 0)), lsb_first_(store.lsb_first) {
-  const size_t row_bits = store.row_length > 0 ? size_t(store.row_length) : size_t(width_);
-  const size_t align = size_t(store.alignment);
-  row_stride_ = (row_bits + 8 * align - 1) / (8 * align) * align;
-  first_row_ = size_t(std::max(store.skip_rows, 0)) * row_stride_;
-  skip_bits_ = std::max(store.skip_pixels, 0);
-}
-
-bool BitmapLayout::bit(const uint8_t* data, int i, int j) const {
-  const size_t bit = size_t(skip_bits_) + size_t(i);
-  const uint8_t byte = data[first_row_ + row_stride_ * size_t(j) + bit / 8];
-  const int shift = lsb_first_ ? int(bit % 8) : 7 - int(bit % 8);
-  return (byte >> shift) & 1;
-}
-
-size_t BitmapLayout::size(int height) const {
-  if (height <= 0 || width_ == 0) return 0;
-  return first_row_ + row_stride_ * size_t(height - 1) + (size_t(skip_bits_) + size_t(width_) + 7) / 8;
-}
-
 size_t client_image_size(const PixelStore& store, int width, int height, GLenum format, GLenum type) {
   if (width <= 0 || height <= 0) return 0;
   if (type == GL_BITMAP) return BitmapLayout(store, width).size(height);
