@@ -2,14 +2,12 @@
 
 #include "driver/egl_registry.h"
 #include "driver/egl_x11.h"
+#include "driver/thread_slot.h"
 #include "glapi/current.h"
 
 namespace pineda::egl {
 
-ThreadState& thread_state() {
-  thread_local ThreadState state;
-  return state;
-}
+ThreadState& thread_state() { return driver::thread_slot<ThreadState>(); }
 
 ThreadState::~ThreadState() {
   if (context) release_binding(*this);

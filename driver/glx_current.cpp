@@ -6,6 +6,7 @@
 #include "driver/glx_drawable.h"
 #include "driver/glx_error.h"
 #include "driver/glx_registry.h"
+#include "driver/thread_slot.h"
 #include "glapi/current.h"
 
 namespace pineda::glx {
@@ -111,10 +112,7 @@ void release(ThreadState& t, bool flush) {
 
 }  // namespace
 
-ThreadState& thread_state() {
-  thread_local ThreadState state;
-  return state;
-}
+ThreadState& thread_state() { return driver::thread_slot<ThreadState>(); }
 
 ThreadState::~ThreadState() { release(*this, false); }
 
