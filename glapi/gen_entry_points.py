@@ -126,10 +126,11 @@ def list_recording(cmd, flags):
         lines.append(f"    pineda::glapi::ListCopy<{element}> {n}_copy({n}, {count});")
         call_args.append(f"{n}_copy.get()")
     captures = ", ".join(n if n not in cmd.lens else f"{n}_copy" for _, n in cmd.params)
-    body = f"pineda::gl::{cmd.name[2:]}({', '.join(['c'] + call_args)});"
+    # The replayed context's name must not be a GL parameter's (glIndexd has one called `c`).
+    body = f"pineda::gl::{cmd.name[2:]}({', '.join(['list_ctx'] + call_args)});"
     if "inside_begin_end" not in flags:
-        body = ("if (c.inside_begin_end()) { c.record_error(GL_INVALID_OPERATION); return; } " + body)
-    lines.append(f"    ctx->record_list_command([{captures}](pineda::Context& c) {{ {body} }});")
+        body = ("if (list_ctx.inside_begin_end()) { list_ctx.record_error(GL_INVALID_OPERATION); return; } " + body)
+    lines.append(f"    ctx->record_list_command([{captures}](pineda::Context& list_ctx) {{ {body} }});")
     lines.append("    if (!ctx->executing_while_compiling()) return;")
     lines.append("  }")
     return lines

@@ -57,6 +57,7 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
     for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], ctx.fetched[i]);
   }
   draw_vertices(ctx, mode, ctx.fetched, rebased);
+  take_current_index(ctx, indices[count - 1]);  // GL leaves it indeterminate: the last element's
 }
 
 }  // namespace
@@ -72,6 +73,10 @@ void ColorPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const v
 
 void NormalPointer(Context& ctx, GLenum type, GLsizei stride, const void* ptr) {
   set_pointer(ctx, ctx.normal_array, 3, type, stride, ptr, {3}, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+void IndexPointer(Context& ctx, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(ctx, ctx.index_array, 1, type, stride, ptr, {1}, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
 void TexCoordPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
@@ -93,6 +98,7 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   ctx.fetched.resize(count);
   for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, ctx.fetched[i]);
   draw_vertices(ctx, mode, ctx.fetched, {});
+  take_current_index(ctx, size_t(first) + count - 1);  // GL leaves it indeterminate: the last element's
 }
 
 void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
@@ -121,6 +127,7 @@ void ArrayElement(Context& ctx, GLint i) {
   }
   if (ctx.normal_array.active()) std::copy(v.normal, v.normal + 3, ctx.current_normal);
   if (ctx.edge_flag_array.active()) ctx.current_edge_flag = v.edge_flag;
+  take_current_index(ctx, size_t(i));
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
     TextureUnitState& unit = ctx.texture_units[u];
     if (unit.texcoord_array.active())
@@ -169,7 +176,7 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
   if (layout->color) ctx.color_array = {true, layout->sc, layout->tc, s, base + layout->pc * f};
   ctx.normal_array.enabled = layout->normal;
   if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, base + layout->pn * f};
-  ctx.index_array = false;
+  ctx.index_array.enabled = false;
   ctx.edge_flag_array.enabled = false;
   ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, base + layout->pv * f};
   for (ClientArray* a : {&tex, &ctx.color_array, &ctx.normal_array, &ctx.vertex_array}) a->buffer = ctx.buffers.array;
@@ -182,6 +189,7 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
     case GL_VERTEX_ARRAY_POINTER: *params = const_cast<void*>(ctx.vertex_array.pointer); break;
     case GL_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.color_array.pointer); break;
     case GL_NORMAL_ARRAY_POINTER: *params = const_cast<void*>(ctx.normal_array.pointer); break;
+    case GL_INDEX_ARRAY_POINTER: *params = const_cast<void*>(ctx.index_array.pointer); break;
     case GL_EDGE_FLAG_ARRAY_POINTER: *params = const_cast<void*>(ctx.edge_flag_array.pointer); break;
     case GL_FOG_COORD_ARRAY_POINTER: *params = const_cast<void*>(ctx.fog_coord_array.pointer); break;
     case GL_SECONDARY_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.secondary_color_array.pointer); break;

@@ -53,6 +53,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4,
               f.current_texcoord[u].begin());
   f.current_edge_flag = ctx.current_edge_flag;
+  f.color_index = ctx.color_index;
   f.raster_pos = ctx.raster_pos;
   f.pixel_mode = ctx.pixel_mode;
   f.draw_state = ctx.draw_state;
@@ -157,6 +158,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     for (int u = 0; u < raster::kMaxTextureUnits; ++u)
       std::copy(f.current_texcoord[u].begin(), f.current_texcoord[u].end(), ctx.texture_units[u].current_texcoord);
     ctx.current_edge_flag = f.current_edge_flag;
+    ctx.color_index.current_index = f.color_index.current_index;
     ctx.raster_pos = f.raster_pos;
   }
   if (m & GL_POINT_BIT) {
@@ -245,6 +247,8 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.draw_buffer = f.draw_buffer;
     s.color_write = o.color_write;
     std::copy(f.clear_color, f.clear_color + 4, ctx.clear_color);
+    ctx.color_index.clear_index = f.color_index.clear_index;
+    ctx.color_index.write_mask = f.color_index.write_mask;
     restore_caps(ctx, f, GL_COLOR_BUFFER_BIT);
   }
   if (m & GL_HINT_BIT) {

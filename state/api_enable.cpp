@@ -59,7 +59,7 @@ bool* client_capability(Context& ctx, GLenum array) {
     case GL_COLOR_ARRAY: return &ctx.color_array.enabled;
     case GL_NORMAL_ARRAY: return &ctx.normal_array.enabled;
     case GL_TEXTURE_COORD_ARRAY: return &ctx.texture_units[ctx.client_active_texture].texcoord_array.enabled;
-    case GL_INDEX_ARRAY: return &ctx.index_array;
+    case GL_INDEX_ARRAY: return &ctx.index_array.enabled;
     case GL_EDGE_FLAG_ARRAY: return &ctx.edge_flag_array.enabled;
     default: return vertex_extras_client_capability(ctx, array);
   }

@@ -42,6 +42,7 @@ const ClientArray* client_array(Context& ctx, GLenum pname, ArrayField& field) {
       {GL_VERTEX_ARRAY_SIZE, GL_VERTEX_ARRAY_TYPE, GL_VERTEX_ARRAY_STRIDE, &ctx.vertex_array},
       {GL_COLOR_ARRAY_SIZE, GL_COLOR_ARRAY_TYPE, GL_COLOR_ARRAY_STRIDE, &ctx.color_array},
       {0, GL_NORMAL_ARRAY_TYPE, GL_NORMAL_ARRAY_STRIDE, &ctx.normal_array},
+      {0, GL_INDEX_ARRAY_TYPE, GL_INDEX_ARRAY_STRIDE, &ctx.index_array},
       {GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE, GL_TEXTURE_COORD_ARRAY_STRIDE,
        &ctx.texture_units[ctx.client_active_texture].texcoord_array},
   };
@@ -219,6 +220,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_pixel_state(ctx, pname, out)) return true;
   if (query_vertex_extras(ctx, pname, out)) return true;
   if (query_multisample(ctx, pname, out)) return true;
+  if (query_color_index(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);

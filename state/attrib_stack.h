@@ -11,6 +11,7 @@
 #include "raster/draw_state.h"
 #include "raster/vertex_transform.h"
 #include "state/multisample.h"
+#include "state/color_index.h"
 #include "state/pixel_state.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
@@ -35,6 +36,7 @@ struct AttribFrame {
   float current_color[4], current_normal[3];
   std::array<std::array<float, 4>, raster::kMaxTextureUnits> current_texcoord;
   bool current_edge_flag;
+  ColorIndexState color_index;  // current index: CURRENT_BIT; clear index and mask: COLOR_BUFFER_BIT
   RasterPosition raster_pos;
   // pixel mode
   PixelMode pixel_mode;

@@ -9,7 +9,7 @@ bool query_buffer_binding(const Context& ctx, GLenum pname, GLuint& name) {
   switch (pname) {
     case GL_ARRAY_BUFFER_BINDING: name = buffer_name(ctx.buffers.array); return true;
     case GL_ELEMENT_ARRAY_BUFFER_BINDING: name = buffer_name(ctx.buffers.element_array); return true;
-    case GL_INDEX_ARRAY_BUFFER_BINDING: name = 0; return true;  // colour-index arrays are not kept
+    case GL_INDEX_ARRAY_BUFFER_BINDING: array = &ctx.index_array; break;
     case GL_VERTEX_ARRAY_BUFFER_BINDING: array = &ctx.vertex_array; break;
     case GL_NORMAL_ARRAY_BUFFER_BINDING: array = &ctx.normal_array; break;
     case GL_COLOR_ARRAY_BUFFER_BINDING: array = &ctx.color_array; break;

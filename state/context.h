@@ -20,6 +20,7 @@
 #include "state/accum.h"
 #include "state/attrib_stack.h"
 #include "state/buffer_object.h"
+#include "state/color_index.h"
 #include "state/display_list.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
@@ -68,7 +69,7 @@ struct ClientAttribFrame {
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
   ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
-  bool index_array = false;
+  ClientArray index_array{.size = 1};
   std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
   GLuint client_active_texture = 0;
 };
@@ -138,6 +139,7 @@ class Context {
   float current_color[4] = {1, 1, 1, 1};
   float current_normal[3] = {0, 0, 1};
   bool current_edge_flag = true;
+  ColorIndexState color_index;  // current index, clear index, index mask (RGBA visuals ignore them)
   GLuint active_texture = 0, client_active_texture = 0;
 
   // Transform
@@ -185,7 +187,7 @@ class Context {
   ClientArray vertex_array, color_array, normal_array;
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};  // GLboolean flags
   ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
-  bool index_array = false;
+  ClientArray index_array{.size = 1};
   PixelStore pack, unpack;
 
   // Textures

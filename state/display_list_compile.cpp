@@ -2,6 +2,7 @@
 // vertex arrays become vertex data in the list, images become tightly packed copies.
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include "glapi/gl_entry_points.h"
 #include "state/buffer_draw.h"
@@ -17,7 +18,7 @@ namespace {
 // Which attributes came from enabled arrays; the others take the current values when the
 // list runs.
 struct ArraySources {
-  bool vertex = false, color = false, normal = false;
+  bool vertex = false, color = false, normal = false, index = false;
   bool texcoord[raster::kMaxTextureUnits] = {};
 };
 
@@ -26,6 +27,7 @@ ArraySources array_sources(const Context& ctx) {
   s.vertex = ctx.vertex_array.active();
   s.color = ctx.color_array.active();
   s.normal = ctx.normal_array.active();
+  s.index = ctx.index_array.active();
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
     s.texcoord[u] = ctx.texture_units[u].texcoord_array.active();
   return s;
@@ -40,15 +42,18 @@ void merge_current(const Context& ctx, const ArraySources& s, raster::VertexInpu
   v.edge_flag = ctx.current_edge_flag;
 }
 
-void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> vertices, GLenum error) {
+// `last_index`: the index array's value for the last vertex, which the draw leaves current.
+void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> vertices, GLenum error,
+                 std::optional<float> last_index = {}) {
   const ArraySources sources = array_sources(ctx);
-  ctx.record_list_command([mode, vertices = std::move(vertices), sources, error](Context& c) {
+  ctx.record_list_command([mode, vertices = std::move(vertices), sources, error, last_index](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     if (error != GL_NO_ERROR) return c.record_error(error);
     if (!sources.vertex || vertices.empty()) return;
     c.fetched = vertices;
     for (raster::VertexInput& v : c.fetched) merge_current(c, sources, v);
     draw_vertices(c, mode, c.fetched, {});
+    if (last_index) c.color_index.current_index = *last_index;
   });
 }
 
@@ -57,10 +62,14 @@ GLenum mode_error(GLenum mode) {
   return to_primitive(mode, p) ? GL_NO_ERROR : GL_INVALID_ENUM;
 }
 
+// Returns the last element's colour index (see record_draw).
 template <typename Index>
-void fetch_indexed(const Context& ctx, GLsizei count, const Index* indices, std::vector<raster::VertexInput>& out) {
+std::optional<float> fetch_indexed(const Context& ctx, GLsizei count, const Index* indices,
+                                   std::vector<raster::VertexInput>& out) {
   out.resize(count);
   for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], out[i]);
+  if (count == 0 || !ctx.index_array.active()) return {};
+  return fetch_index(ctx, indices[count - 1]);
 }
 
 // A tightly packed copy (alignment 1, no skips) of a client image under the current
@@ -96,8 +105,10 @@ void compile_ArrayElement(Context& ctx, GLint i) {
   raster::VertexInput v;
   if (i >= 0) fetch_vertex(ctx, size_t(i), v);
   const ArraySources sources = array_sources(ctx);
-  ctx.record_list_command([i, v, sources](Context& c) {
+  const float index = fetch_index(ctx, i >= 0 ? size_t(i) : 0);
+  ctx.record_list_command([i, v, sources, index](Context& c) {
     if (i < 0) return c.record_error(GL_INVALID_VALUE);
+    if (sources.index) c.color_index.current_index = index;
     if (sources.color) std::copy(v.color, v.color + 4, c.current_color);
     if (sources.normal) std::copy(v.normal, v.normal + 3, c.current_normal);
     for (int u = 0; u < raster::kMaxTextureUnits; ++u)
@@ -117,7 +128,9 @@ void compile_DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
     vertices.resize(count);
     for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, vertices[i]);
   }
-  record_draw(ctx, mode, std::move(vertices), error);
+  std::optional<float> last_index;
+  if (!vertices.empty() && ctx.index_array.active()) last_index = fetch_index(ctx, size_t(first) + count - 1);
+  record_draw(ctx, mode, std::move(vertices), error, last_index);
 }
 
 void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
@@ -126,14 +139,18 @@ void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type,
   if (error == GL_NO_ERROR && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
     error = GL_INVALID_ENUM;
   std::vector<raster::VertexInput> vertices;
+  std::optional<float> last_index;
   if (error == GL_NO_ERROR && count > 0 && array_sources(ctx).vertex)
     indices = element_indices(ctx, indices, size_t(count) * gl_type_size(type));
   if (error == GL_NO_ERROR && indices && array_sources(ctx).vertex) {
-    if (type == GL_UNSIGNED_BYTE) fetch_indexed(ctx, count, static_cast<const GLubyte*>(indices), vertices);
-    else if (type == GL_UNSIGNED_SHORT) fetch_indexed(ctx, count, static_cast<const GLushort*>(indices), vertices);
-    else fetch_indexed(ctx, count, static_cast<const GLuint*>(indices), vertices);
+    if (type == GL_UNSIGNED_BYTE)
+      last_index = fetch_indexed(ctx, count, static_cast<const GLubyte*>(indices), vertices);
+    else if (type == GL_UNSIGNED_SHORT)
+      last_index = fetch_indexed(ctx, count, static_cast<const GLushort*>(indices), vertices);
+    else
+      last_index = fetch_indexed(ctx, count, static_cast<const GLuint*>(indices), vertices);
   }
-  record_draw(ctx, mode, std::move(vertices), error);
+  record_draw(ctx, mode, std::move(vertices), error, last_index);
 }
 
 void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,

@@ -58,6 +58,16 @@ int gl_type_size(unsigned type) {
   }
 }
 
+float fetch_index(const Context& ctx, size_t index) {
+  float value = ctx.color_index.current_index;
+  if (ctx.index_array.active()) read_array(ctx.index_array, index, &value, false);
+  return value;
+}
+
+void take_current_index(Context& ctx, size_t index) {
+  if (ctx.index_array.active()) ctx.color_index.current_index = fetch_index(ctx, index);
+}
+
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
   if (ctx.vertex_array.active()) read_array(ctx.vertex_array, index, out.position, false);

@@ -11,6 +11,14 @@ struct ClientArray;
 // disabled ones.
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out);
 
+// The colour index of element `index` of the index array, or the current index when that
+// array is disabled.
+float fetch_index(const Context& ctx, size_t index);
+
+// glArrayElement's effect on the current index: element `index` of the index array becomes it
+// when that array is enabled.
+void take_current_index(Context& ctx, size_t index);
+
 // The `bytes` bytes of element `index` of `array`: in client memory, or in its buffer object
 // (null when they are not all inside the buffer's store).
 const uint8_t* array_element(const ClientArray& array, size_t index, size_t bytes);
