@@ -1,8 +1,9 @@
 // Display lists: glNewList/glEndList/glCallList(s)/glGenLists/glDeleteLists/glIsList/glListBase.
-#include <cstring>
+#include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/unaligned.h"
 
 namespace pineda::gl {
 namespace {
@@ -24,11 +25,11 @@ bool decode_names(GLsizei n, GLenum type, const void* lists, std::vector<GLuint>
     switch (type) {
       case GL_BYTE: out[i] = GLuint(GLint(reinterpret_cast<const GLbyte*>(b)[i])); break;
       case GL_UNSIGNED_BYTE: out[i] = b[i]; break;
-      case GL_SHORT: { GLshort v; std::memcpy(&v, b + 2 * i, 2); out[i] = GLuint(GLint(v)); break; }
-      case GL_UNSIGNED_SHORT: { GLushort v; std::memcpy(&v, b + 2 * i, 2); out[i] = v; break; }
-      case GL_INT: { GLint v; std::memcpy(&v, b + 4 * i, 4); out[i] = GLuint(v); break; }
-      case GL_UNSIGNED_INT: { GLuint v; std::memcpy(&v, b + 4 * i, 4); out[i] = v; break; }
-      case GL_FLOAT: { GLfloat v; std::memcpy(&v, b + 4 * i, 4); out[i] = GLuint(GLint(v)); break; }
+      case GL_SHORT: out[i] = GLuint(GLint(load_unaligned<GLshort>(b + 2 * i))); break;
+      case GL_UNSIGNED_SHORT: out[i] = load_unaligned<GLushort>(b + 2 * i); break;
+      case GL_INT: out[i] = GLuint(load_unaligned<GLint>(b + 4 * i)); break;
+      case GL_UNSIGNED_INT: out[i] = load_unaligned<GLuint>(b + 4 * i); break;
+      case GL_FLOAT: out[i] = GLuint(GLint(load_unaligned<GLfloat>(b + 4 * i))); break;
       case GL_2_BYTES: out[i] = b[2 * i] * 256u + b[2 * i + 1]; break;
       case GL_3_BYTES: out[i] = (b[3 * i] * 256u + b[3 * i + 1]) * 256u + b[3 * i + 2]; break;
       case GL_4_BYTES:

@@ -2,48 +2,37 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "state/context.h"
 #include "state/packed_pixel.h"
+#include "state/unaligned.h"
 
 namespace pineda {
 namespace {
-
-template <typename T>
-void put(uint8_t* dst, T v) {
-  std::memcpy(dst, &v, sizeof v);
-}
-template <typename T>
-T get(const uint8_t* src) {
-  T v;
-  std::memcpy(&v, src, sizeof v);
-  return v;
-}
 
 // GL's float -> normalized integer conversions, rounding to nearest; in double precision so
 // that 32-bit types (depth read as GL_UNSIGNED_INT) keep every bit.
 void store_component(double c, GLenum type, uint8_t* dst) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(std::lround(c * 255.0))); break;
-    case GL_BYTE: put<GLbyte>(dst, GLbyte(std::lround(c * 127.0))); break;
-    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(std::lround(c * 65535.0))); break;
-    case GL_SHORT: put<GLshort>(dst, GLshort(std::lround(c * 32767.0))); break;
-    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(std::llround(c * 4294967295.0))); break;
-    case GL_INT: put<GLint>(dst, GLint(std::llround(c * 2147483647.0))); break;
-    case GL_FLOAT: put<GLfloat>(dst, GLfloat(c)); break;
+    case GL_UNSIGNED_BYTE: store_unaligned<GLubyte>(dst, GLubyte(std::lround(c * 255.0))); break;
+    case GL_BYTE: store_unaligned<GLbyte>(dst, GLbyte(std::lround(c * 127.0))); break;
+    case GL_UNSIGNED_SHORT: store_unaligned<GLushort>(dst, GLushort(std::lround(c * 65535.0))); break;
+    case GL_SHORT: store_unaligned<GLshort>(dst, GLshort(std::lround(c * 32767.0))); break;
+    case GL_UNSIGNED_INT: store_unaligned<GLuint>(dst, GLuint(std::llround(c * 4294967295.0))); break;
+    case GL_INT: store_unaligned<GLint>(dst, GLint(std::llround(c * 2147483647.0))); break;
+    case GL_FLOAT: store_unaligned<GLfloat>(dst, GLfloat(c)); break;
   }
 }
 
 float load_component(const uint8_t* src, GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: return get<GLubyte>(src) / 255.f;
-    case GL_BYTE: return std::max(get<GLbyte>(src) / 127.f, -1.f);
-    case GL_UNSIGNED_SHORT: return get<GLushort>(src) / 65535.f;
-    case GL_SHORT: return std::max(get<GLshort>(src) / 32767.f, -1.f);
-    case GL_UNSIGNED_INT: return float(get<GLuint>(src) / 4294967295.0);
-    case GL_INT: return float(std::max(get<GLint>(src) / 2147483647.0, -1.0));
-    case GL_FLOAT: return get<GLfloat>(src);
+    case GL_UNSIGNED_BYTE: return load_unaligned<GLubyte>(src) / 255.f;
+    case GL_BYTE: return std::max(load_unaligned<GLbyte>(src) / 127.f, -1.f);
+    case GL_UNSIGNED_SHORT: return load_unaligned<GLushort>(src) / 65535.f;
+    case GL_SHORT: return std::max(load_unaligned<GLshort>(src) / 32767.f, -1.f);
+    case GL_UNSIGNED_INT: return float(load_unaligned<GLuint>(src) / 4294967295.0);
+    case GL_INT: return float(std::max(load_unaligned<GLint>(src) / 2147483647.0, -1.0));
+    case GL_FLOAT: return load_unaligned<GLfloat>(src);
     default: return 0.f;
   }
 }
@@ -170,13 +159,13 @@ void store_depth(double value, GLenum type, uint8_t* dst) { store_component(valu
 // GL 1.5 spec table 4.7: an index keeps as many low bits as the type has (7 for the signed ones).
 void store_index(int64_t index, GLenum type, uint8_t* dst) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: put<GLubyte>(dst, GLubyte(index & 0xff)); break;
-    case GL_BYTE: put<GLbyte>(dst, GLbyte(index & 0x7f)); break;
-    case GL_UNSIGNED_SHORT: put<GLushort>(dst, GLushort(index & 0xffff)); break;
-    case GL_SHORT: put<GLshort>(dst, GLshort(index & 0x7fff)); break;
-    case GL_UNSIGNED_INT: put<GLuint>(dst, GLuint(index & 0xffffffff)); break;
-    case GL_INT: put<GLint>(dst, GLint(index & 0x7fffffff)); break;
-    case GL_FLOAT: put<GLfloat>(dst, GLfloat(index)); break;
+    case GL_UNSIGNED_BYTE: store_unaligned<GLubyte>(dst, GLubyte(index & 0xff)); break;
+    case GL_BYTE: store_unaligned<GLbyte>(dst, GLbyte(index & 0x7f)); break;
+    case GL_UNSIGNED_SHORT: store_unaligned<GLushort>(dst, GLushort(index & 0xffff)); break;
+    case GL_SHORT: store_unaligned<GLshort>(dst, GLshort(index & 0x7fff)); break;
+    case GL_UNSIGNED_INT: store_unaligned<GLuint>(dst, GLuint(index & 0xffffffff)); break;
+    case GL_INT: store_unaligned<GLint>(dst, GLint(index & 0x7fffffff)); break;
+    case GL_FLOAT: store_unaligned<GLfloat>(dst, GLfloat(index)); break;
   }
 }
 

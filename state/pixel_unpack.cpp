@@ -6,28 +6,22 @@
 
 #include "state/pixel_format.h"
 #include "state/pixel_transfer.h"
+#include "state/unaligned.h"
 
 namespace pineda {
 namespace {
 
-template <typename T>
-T get(const uint8_t* src) {
-  T v;
-  std::memcpy(&v, src, sizeof v);
-  return v;
-}
-
 // An index component as its integer value (indices are not normalized).
 int64_t load_index(const uint8_t* src, GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: return get<GLubyte>(src);
-    case GL_BYTE: return get<GLbyte>(src);
-    case GL_UNSIGNED_SHORT: return get<GLushort>(src);
-    case GL_SHORT: return get<GLshort>(src);
-    case GL_UNSIGNED_INT: return get<GLuint>(src);
-    case GL_INT: return get<GLint>(src);
+    case GL_UNSIGNED_BYTE: return load_unaligned<GLubyte>(src);
+    case GL_BYTE: return load_unaligned<GLbyte>(src);
+    case GL_UNSIGNED_SHORT: return load_unaligned<GLushort>(src);
+    case GL_SHORT: return load_unaligned<GLshort>(src);
+    case GL_UNSIGNED_INT: return load_unaligned<GLuint>(src);
+    case GL_INT: return load_unaligned<GLint>(src);
     case GL_FLOAT: {
-      const float f = get<GLfloat>(src);
+      const float f = load_unaligned<GLfloat>(src);
       return std::isfinite(f) ? static_cast<int64_t>(std::clamp(f, -2147483648.f, 2147483647.f)) : 0;
     }
     default: return 0;

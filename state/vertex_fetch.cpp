@@ -1,30 +1,23 @@
 #include "state/vertex_fetch.h"
 
 #include <algorithm>
-#include <cstring>
 
 #include "state/context.h"
+#include "state/unaligned.h"
 
 namespace pineda {
 namespace {
 
-template <typename T>
-T load(const uint8_t* p) {
-  T v;
-  std::memcpy(&v, p, sizeof v);
-  return v;
-}
-
 float read_component(const uint8_t* p, GLenum type, bool normalize) {
   switch (type) {
-    case GL_BYTE: { auto v = load<GLbyte>(p); return normalize ? (2.f * v + 1.f) / 255.f : v; }
-    case GL_UNSIGNED_BYTE: { auto v = load<GLubyte>(p); return normalize ? v / 255.f : v; }
-    case GL_SHORT: { auto v = load<GLshort>(p); return normalize ? (2.f * v + 1.f) / 65535.f : v; }
-    case GL_UNSIGNED_SHORT: { auto v = load<GLushort>(p); return normalize ? v / 65535.f : v; }
-    case GL_INT: { auto v = load<GLint>(p); return normalize ? float((2.0 * v + 1.0) / 4294967295.0) : float(v); }
-    case GL_UNSIGNED_INT: { auto v = load<GLuint>(p); return normalize ? float(v / 4294967295.0) : float(v); }
-    case GL_FLOAT: return load<GLfloat>(p);
-    case GL_DOUBLE: return static_cast<float>(load<GLdouble>(p));
+    case GL_BYTE: { auto v = load_unaligned<GLbyte>(p); return normalize ? (2.f * v + 1.f) / 255.f : v; }
+    case GL_UNSIGNED_BYTE: { auto v = load_unaligned<GLubyte>(p); return normalize ? v / 255.f : v; }
+    case GL_SHORT: { auto v = load_unaligned<GLshort>(p); return normalize ? (2.f * v + 1.f) / 65535.f : v; }
+    case GL_UNSIGNED_SHORT: { auto v = load_unaligned<GLushort>(p); return normalize ? v / 65535.f : v; }
+    case GL_INT: { auto v = load_unaligned<GLint>(p); return normalize ? float((2.0 * v + 1.0) / 4294967295.0) : float(v); }
+    case GL_UNSIGNED_INT: { auto v = load_unaligned<GLuint>(p); return normalize ? float(v / 4294967295.0) : float(v); }
+    case GL_FLOAT: return load_unaligned<GLfloat>(p);
+    case GL_DOUBLE: return static_cast<float>(load_unaligned<GLdouble>(p));
     default: return 0.f;
   }
 }

@@ -1,23 +1,18 @@
 // User clip planes (GL 1.5 section 2.12): eye-space planes fixed by the modelview of their
 // specification; triangles and lines are cut, points culled; state, errors, attributes.
-#include "tests/e2e/support/gl_test.h"
-#include "tests/e2e/support/window_quad.h"
+#include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
 namespace {
 
 constexpr Rgba kWhite{255, 255, 255, 255};
 
-class ClipPlaneTest : public GlTest {
+class ClipPlaneTest : public PixelTest {
  protected:
-  SurfaceSpec spec() const override { return {16, 16, 24, 8}; }
   void SetUp() override {
-    GlTest::SetUp();
-    pixel_projection();
-    clear_to(0, 0, 0, 0);
+    PixelTest::SetUp();
     glColor3f(1, 1, 1);
   }
-  void full_quad() { draw_window_quad(16, 16); }
 };
 
 TEST_F(ClipPlaneTest, KeepsTheNonNegativeSide) {

@@ -7,19 +7,15 @@
 #include <cmath>
 #include <string>
 
-#include "tests/e2e/support/gl_test.h"
-#include "tests/e2e/support/window_quad.h"
+#include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
 namespace {
 
-class FogTest : public GlTest {
+class FogTest : public PixelTest {
  protected:
-  SurfaceSpec spec() const override { return {16, 16, 24, 8}; }
   void SetUp() override {
-    GlTest::SetUp();
-    pixel_projection();
-    clear_to(0, 0, 0, 0);
+    PixelTest::SetUp();
     const float blue[4] = {0, 0, 1, 1};
     glFogfv(GL_FOG_COLOR, blue);
     glEnable(GL_FOG);

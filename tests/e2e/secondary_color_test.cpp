@@ -4,22 +4,12 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include "tests/e2e/support/gl_test.h"
-#include "tests/e2e/support/window_quad.h"
+#include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
 namespace {
 
-class SecondaryColorTest : public GlTest {
- protected:
-  SurfaceSpec spec() const override { return {16, 16, 24, 8}; }
-  void SetUp() override {
-    GlTest::SetUp();
-    pixel_projection();
-    clear_to(0, 0, 0, 0);
-  }
-  void full_quad() { draw_window_quad(16, 16); }
-};
+using SecondaryColorTest = PixelTest;
 
 TEST_F(SecondaryColorTest, ColorSumAddsTheSecondaryColour) {
   glColor4f(0.25f, 0, 0, 0.5f);

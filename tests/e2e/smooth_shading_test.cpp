@@ -2,19 +2,14 @@
 // 1/255 of the analytic value at every pixel centre.
 #include <cmath>
 
-#include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
 namespace {
 
-class SmoothShadingTest : public GlTest {
+class SmoothShadingTest : public PixelTest {
  protected:
   SurfaceSpec spec() const override { return {64, 32, 24, 8}; }
-  void SetUp() override {
-    GlTest::SetUp();
-    pixel_projection();
-    clear_to(0, 0, 0, 0);
-  }
 };
 
 TEST_F(SmoothShadingTest, HorizontalRamp) {

@@ -3,8 +3,7 @@
 // store state; state, attributes, display lists.
 #include <vector>
 
-#include "tests/e2e/support/gl_test.h"
-#include "tests/e2e/support/window_quad.h"
+#include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
 namespace {
@@ -12,16 +11,12 @@ namespace {
 constexpr Rgba kWhite{255, 255, 255, 255};
 constexpr Rgba kBlack{0, 0, 0, 0};
 
-class StippleTest : public GlTest {
+class StippleTest : public PixelTest {
  protected:
-  SurfaceSpec spec() const override { return {16, 16, 24, 8}; }
   void SetUp() override {
-    GlTest::SetUp();
-    pixel_projection();
-    clear_to(0, 0, 0, 0);
+    PixelTest::SetUp();
     glColor3f(1, 1, 1);
   }
-  void full_quad() { draw_window_quad(16, 16); }
   // Which pixels of row y are white, as a string of 0/1 from x = 0.
   std::string row(int y) {
     const std::vector<uint8_t> all = read_all();

@@ -1,20 +1,16 @@
 // Texture coordinate generation (GL 1.5 section 2.11.4): object and eye linear planes, the
 // normal and reflection maps, sphere map; state, errors, attributes.
-#include "tests/e2e/support/gl_test.h"
-#include "tests/e2e/support/window_quad.h"
+#include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
 namespace {
 
 constexpr Rgba kRed{255, 0, 0, 255}, kGreen{0, 255, 0, 255};
 
-class TexGenTest : public GlTest {
+class TexGenTest : public PixelTest {
  protected:
-  SurfaceSpec spec() const override { return {16, 16, 24, 8}; }
   void SetUp() override {
-    GlTest::SetUp();
-    pixel_projection();
-    clear_to(0, 0, 0, 0);
+    PixelTest::SetUp();
     // Two texels: s < 0.5 red, s >= 0.5 green.
     const GLubyte texels[8] = {255, 0, 0, 255, 0, 255, 0, 255};
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
@@ -24,7 +20,6 @@ class TexGenTest : public GlTest {
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     glEnable(GL_TEXTURE_2D);
   }
-  void full_quad() { draw_window_quad(16, 16); }
 };
 
 TEST_F(TexGenTest, ObjectLinear) {
