@@ -108,11 +108,7 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
         if (!color_identity) transfer_read_color(ctx, rgba);
         store_color(rgba, format, type, dst);
       }
-      if (!ctx.pack.swap_bytes) continue;
-      if (color_format_components(format) > 0)
-        swap_pixel_bytes(dst, format, type);
-      else
-        swap_component_bytes(dst, 1, pixel_type_size(type));
+      if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);
     }
   }
 }

@@ -6,7 +6,7 @@
 #include "state/context.h"
 #include "state/limits.h"
 #include "state/pixel_format.h"
-#include "state/pixel_transfer.h"
+#include "state/pixel_unpack.h"
 #include "state/texture_format.h"
 
 namespace pineda::gl {
@@ -30,7 +30,7 @@ TextureObject* image_texture(Context& ctx, GLenum target) {
 }
 
 bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
-  const GLenum error = color_format_type_error(format, type);
+  const GLenum error = texture_image_format_type_error(format, type);
   if (error != GL_NO_ERROR) ctx.record_error(error);
   return error == GL_NO_ERROR;
 }
@@ -43,24 +43,12 @@ int max_level() { return int(std::log2(kMaxTextureSize)); }
 void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, int xoffset, int yoffset, int width,
                  int height, int border_x, int border_y, GLenum format, GLenum type, const void* pixels) {
   if (!pixels) return;
-  const int full_width = width + 2 * border_x;
-  const ImageLayout layout = image_layout(ctx.unpack, full_width, format, type);
-  const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
-  const bool transfer = !color_transfer_is_identity(ctx.pixel_mode);  // GL 1.5 3.8.1: as DrawPixels
+  const ColorImageReader source(ctx, width + 2 * border_x, format, type, pixels);  // GL 1.5 3.8.1: as DrawPixels
   for (int y = 0; y < height; ++y) {
-    const uint8_t* row = src + layout.row_stride * size_t(y + border_y) + layout.pixel_bytes * border_x;
     uint32_t* dst = level.texels.data() + size_t(yoffset + y) * level.width + xoffset;
     for (int x = 0; x < width; ++x) {
       float rgba[4];
-      const uint8_t* src_pixel = row + layout.pixel_bytes * x;
-      uint8_t swapped[16];  // at most 4 components of 4 bytes
-      if (ctx.unpack.swap_bytes) {
-        std::copy(src_pixel, src_pixel + layout.pixel_bytes, swapped);
-        swap_pixel_bytes(swapped, format, type);
-        src_pixel = swapped;
-      }
-      load_color(src_pixel, format, type, rgba);
-      if (transfer) transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
+      source.read(x + border_x, y + border_y, rgba);
       dst[x] = to_texel(rgba, storage);
     }
   }

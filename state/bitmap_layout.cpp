@@ -36,4 +36,15 @@ size_t BitmapLayout::size(int height) const {
   return first_row_ + row_stride_ * size_t(height - 1) + (size_t(skip_bits_) + size_t(width_) + 7) / 8;
 }
 
+std::vector<uint8_t> tight_bitmap_copy(const PixelStore& store, int width, int height, const void* data) {
+  PixelStore tight;
+  tight.alignment = 1;
+  const BitmapLayout from(store, width), to(tight, width);
+  std::vector<uint8_t> out(to.size(height), 0);
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) to.set_bit(out.data(), i, j, from.bit(bytes, i, j));
+  return out;
+}
+
 }  // namespace pineda

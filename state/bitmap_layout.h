@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 namespace pineda {
 
@@ -29,5 +30,9 @@ class BitmapLayout {
   int width_ = 0;
   bool lsb_first_ = false;
 };
+
+// A width x height bitmap read under `store`, copied as the default unpack state with
+// alignment 1 reads it: rows of whole bytes, most significant bit first.
+std::vector<uint8_t> tight_bitmap_copy(const PixelStore& store, int width, int height, const void* data);
 
 }  // namespace pineda

@@ -6,6 +6,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/buffer_draw.h"
+#include "state/bitmap_layout.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
@@ -77,8 +78,9 @@ std::optional<float> fetch_indexed(const Context& ctx, GLsizei count, const Inde
 std::vector<uint8_t> pack_image(const Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type,
                                 const void* pixels) {
   std::vector<uint8_t> out;
-  if (!pixels || width <= 0 || height <= 0 || color_format_type_error(format, type) != GL_NO_ERROR)
+  if (!pixels || width <= 0 || height <= 0 || texture_image_format_type_error(format, type) != GL_NO_ERROR)
     return out;
+  if (type == GL_BITMAP) return tight_bitmap_copy(ctx.unpack, width, height, pixels);
   const ImageLayout layout = image_layout(ctx.unpack, width, format, type);
   const size_t row = layout.pixel_bytes * size_t(width);
   out.resize(row * size_t(height));

@@ -96,6 +96,10 @@ GLenum pixel_rect_format_type_error(GLenum format, GLenum type) {
   return pixel_element_size(type) == 0 ? GL_INVALID_ENUM : GL_NO_ERROR;
 }
 
+GLenum texture_image_format_type_error(GLenum format, GLenum type) {
+  return format == GL_COLOR_INDEX ? pixel_rect_format_type_error(format, type) : color_format_type_error(format, type);
+}
+
 // GL 1.1 spec 3.6.4: rows start at multiples of the alignment when elements are smaller.
 ImageLayout image_layout(const PixelStore& store, int width, GLenum format, GLenum type) {
   ImageLayout l;
@@ -151,7 +155,7 @@ void swap_component_bytes(uint8_t* p, int count, int size) {
 
 void swap_pixel_bytes(uint8_t* p, GLenum format, GLenum type) {
   if (const PackedLayout* packed = packed_layout(type)) return swap_component_bytes(p, 1, packed->bytes);
-  swap_component_bytes(p, color_format_components(format), pixel_type_size(type));
+  swap_component_bytes(p, std::max(color_format_components(format), 1), pixel_type_size(type));  // indices, depth: 1
 }
 
 void store_depth(double value, GLenum type, uint8_t* dst) { store_component(value, type, dst); }

@@ -31,6 +31,9 @@ GLenum color_format_type_error(GLenum format, GLenum type);
 // GL_INVALID_ENUM for an unknown format or type, or BITMAP with another format;
 // GL_INVALID_OPERATION for a packed type the format does not fit, whatever the format (as Mesa).
 GLenum pixel_rect_format_type_error(GLenum format, GLenum type);
+// GL_NO_ERROR when format/type can describe a texture image (GL 1.5 3.8.1): a colour format
+// with its types, or COLOR_INDEX (BITMAP too); otherwise as pixel_rect_format_type_error.
+GLenum texture_image_format_type_error(GLenum format, GLenum type);
 
 // The byte layout of a width x height image in client memory.
 struct ImageLayout {
@@ -50,7 +53,8 @@ void store_color(const double rgba[4], GLenum format, GLenum type, uint8_t* dst)
 void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]);
 // Reverses the bytes of each of `count` components of `size` bytes (GL_*_SWAP_BYTES).
 void swap_component_bytes(uint8_t* p, int count, int size);
-// Reverses the bytes of each element of one pixel of format/type (GL_*_SWAP_BYTES).
+// Reverses the bytes of each element of one pixel of format/type (GL_*_SWAP_BYTES); a format
+// that is not a colour one (index, depth) has one component.
 void swap_pixel_bytes(uint8_t* p, GLenum format, GLenum type);
 // A depth value in [0, 1] as a normalized component of `type`.
 void store_depth(double value, GLenum type, uint8_t* dst);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "state/pixel_format.h"
 #include "state/pixel_transfer.h"
 #include "state/unaligned.h"
 
@@ -28,44 +27,6 @@ int64_t load_index(const uint8_t* src, GLenum type) {
   }
 }
 
-// Calls visit(i, j, bytes) for each pixel of a non-bitmap image; `bytes` already has its
-// component bytes swapped when UNPACK_SWAP_BYTES is on.
-template <typename Visit>
-void for_each_pixel(const PixelStore& store, int width, int height, GLenum format, GLenum type, const void* pixels,
-                    Visit visit) {
-  const ImageLayout layout = image_layout(store, width, format, type);
-  const bool color = color_format_components(format) > 0;
-  const auto* base = static_cast<const uint8_t*>(pixels) + layout.offset;
-  uint8_t swapped[64];
-  for (int j = 0; j < height; ++j) {
-    const uint8_t* row = base + layout.row_stride * size_t(j);
-    for (int i = 0; i < width; ++i) {
-      const uint8_t* p = row + layout.pixel_bytes * size_t(i);
-      if (store.swap_bytes && layout.pixel_bytes <= sizeof swapped) {
-        std::memcpy(swapped, p, layout.pixel_bytes);
-        if (color) swap_pixel_bytes(swapped, format, type);
-        else swap_component_bytes(swapped, 1, pixel_type_size(type));
-        p = swapped;
-      }
-      visit(i, j, p);
-    }
-  }
-}
-
-std::vector<int64_t> unpack_indices(const PixelStore& store, int width, int height, GLenum format, GLenum type,
-                                    const void* pixels) {
-  std::vector<int64_t> out(size_t(width) * size_t(height));
-  if (type == GL_BITMAP) {
-    const BitmapLayout bits(store, width);
-    for (int j = 0; j < height; ++j)
-      for (int i = 0; i < width; ++i) out[size_t(j) * width + i] = bits.bit(static_cast<const uint8_t*>(pixels), i, j);
-    return out;
-  }
-  for_each_pixel(store, width, height, format, type, pixels,
-                 [&](int i, int j, const uint8_t* p) { out[size_t(j) * width + i] = load_index(p, type); });
-  return out;
-}
-
 }  // namespace
 
 size_t client_image_size(const PixelStore& store, int width, int height, GLenum format, GLenum type) {
@@ -75,36 +36,70 @@ size_t client_image_size(const PixelStore& store, int width, int height, GLenum 
   return layout.end(height) + layout.pixel_bytes * size_t(width);
 }
 
+ClientImage::ClientImage(const PixelStore& store, int width, GLenum format, GLenum type, const void* pixels)
+    : format_(format),
+      type_(type),
+      data_(static_cast<const uint8_t*>(pixels)),
+      layout_(image_layout(store, width, format, type)),
+      bits_(store, width),
+      swap_(store.swap_bytes) {}
+
+const uint8_t* ClientImage::pixel(int i, int j, uint8_t* scratch) const {
+  const uint8_t* p = data_ + layout_.offset + layout_.row_stride * size_t(j) + layout_.pixel_bytes * size_t(i);
+  if (!swap_ || layout_.pixel_bytes > 16) return p;
+  std::memcpy(scratch, p, layout_.pixel_bytes);
+  swap_pixel_bytes(scratch, format_, type_);
+  return scratch;
+}
+
+int64_t ClientImage::index(int i, int j) const {
+  if (type_ == GL_BITMAP) return bits_.bit(data_, i, j);
+  uint8_t scratch[16];
+  return load_index(pixel(i, j, scratch), type_);
+}
+
+ColorImageReader::ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels)
+    : ctx_(ctx),
+      format_(format),
+      type_(type),
+      image_(ctx.unpack, width, format, type, pixels),
+      transfer_(!color_transfer_is_identity(ctx.pixel_mode)) {}
+
+void ColorImageReader::read(int i, int j, float rgba[4]) const {
+  if (format_ == GL_COLOR_INDEX) return index_to_rgba(ctx_.pixel_mode, ctx_.pixel_maps, image_.index(i, j), rgba);
+  uint8_t scratch[16];
+  load_color(image_.pixel(i, j, scratch), format_, type_, rgba);
+  if (transfer_) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, rgba);
+}
+
 std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
                                       const void* pixels) {
   std::vector<float> out(size_t(width) * size_t(height) * 4);
-  if (format == GL_COLOR_INDEX) {
-    const std::vector<int64_t> indices = unpack_indices(ctx.unpack, width, height, format, type, pixels);
-    for (size_t k = 0; k < indices.size(); ++k) index_to_rgba(ctx.pixel_mode, ctx.pixel_maps, indices[k], &out[4 * k]);
-    return out;
-  }
-  const bool identity = color_transfer_is_identity(ctx.pixel_mode);
-  for_each_pixel(ctx.unpack, width, height, format, type, pixels, [&](int i, int j, const uint8_t* p) {
-    float* rgba = &out[(size_t(j) * width + i) * 4];
-    load_color(p, format, type, rgba);
-    if (!identity) transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
-  });
+  const ColorImageReader reader(ctx, width, format, type, pixels);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) reader.read(i, j, &out[(size_t(j) * width + i) * 4]);
   return out;
 }
 
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels) {
   std::vector<double> out(size_t(width) * size_t(height));
-  for_each_pixel(ctx.unpack, width, height, GL_DEPTH_COMPONENT, type, pixels, [&](int i, int j, const uint8_t* p) {
-    float rgba[4];
-    load_color(p, GL_RED, type, rgba);
-    out[size_t(j) * width + i] = transfer_depth(ctx.pixel_mode, rgba[0]);
-  });
+  const ClientImage image(ctx.unpack, width, GL_DEPTH_COMPONENT, type, pixels);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      uint8_t scratch[16];
+      float rgba[4];
+      load_color(image.pixel(i, j, scratch), GL_RED, type, rgba);
+      out[size_t(j) * width + i] = transfer_depth(ctx.pixel_mode, rgba[0]);
+    }
   return out;
 }
 
 std::vector<int64_t> unpack_stencil_image(const Context& ctx, int width, int height, GLenum type, const void* pixels) {
-  std::vector<int64_t> out = unpack_indices(ctx.unpack, width, height, GL_STENCIL_INDEX, type, pixels);
-  for (int64_t& s : out) s = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, s);
+  std::vector<int64_t> out(size_t(width) * size_t(height));
+  const ClientImage image(ctx.unpack, width, GL_STENCIL_INDEX, type, pixels);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      out[size_t(j) * width + i] = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, image.index(i, j));
   return out;
 }
 
