@@ -15,7 +15,9 @@ bool texture_usable(const TextureImage* image) {
   if (!image || image->levels.empty()) return false;
   for (const TextureLevel& l : image->levels) {
     if (l.width <= 0 || l.height <= 0) return false;
-    if (l.texels.size() < static_cast<size_t>(l.width) * static_cast<size_t>(l.height)) return false;
+    if (l.depth <= 0 || (image->kind == TexKind::Cube && l.depth != 6)) return false;
+    if (l.texels.size() < static_cast<size_t>(l.width) * static_cast<size_t>(l.height) * static_cast<size_t>(l.depth))
+      return false;
   }
   return true;
 }
@@ -35,7 +37,14 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
     }
     d.units[d.num_units++] = static_cast<uint8_t>(u);
   }
-  d.planes = kColorPlanes + kTexPlanesPerUnit * d.num_units;
+  d.planes = kColorPlanes;
+  for (int k = 0; k < d.num_units; ++k) {
+    d.tex_plane[k] = static_cast<uint8_t>(d.planes);
+    d.planes += kTexPlanesPerUnit;
+    if (!d.state.texture_units[d.units[k]].reads_r()) continue;
+    d.r_plane[k] = static_cast<int8_t>(d.planes);
+    d.planes += kTexRPlanes;
+  }
   if (state.color_sum) {
     d.secondary_plane = d.planes;
     d.planes += kSecondaryPlanes;

@@ -37,6 +37,8 @@ struct DrawRecord {
 
   int num_units = 0;
   std::array<uint8_t, kMaxTextureUnits> units{};  // enabled texture units, in order
+  std::array<uint8_t, kMaxTextureUnits> tex_plane{};  // first plane (s, t, q) of each enabled unit, in order
+  std::array<int8_t, kMaxTextureUnits> r_plane{-1, -1, -1, -1};  // its r plane, -1 when not read
   int planes = kColorPlanes;                      // interpolated planes
   int secondary_plane = -1;                       // first secondary colour plane, -1 when unused
   int fog_plane = -1;                             // the fog coordinate's plane, -1 when unused

@@ -45,13 +45,18 @@ template <bool kTex, bool kFlat, bool kExtras>
     float texel[kMaxTextureUnits][4][4];  // [unit][pixel][channel]
     for (int k = 0; k < d.num_units; ++k) {
       const TextureUnit& unit = d.state.texture_units[d.units[k]];
-      const Plane* tp = &p.planes[kColorPlanes + kTexPlanesPerUnit * k];
+      const Plane* tp = &p.planes[d.tex_plane[k]];
       // (s/w) / (q/w) = s/q: 1/w cancels, so perspective needs no extra divide here.
       const F4 q = eval(tp[2], ox, oy);
-      float s[4], t[4];
+      float s[4], t[4], r[4];
       store4(s, eval(tp[0], ox, oy) / q);
       store4(t, eval(tp[1], ox, oy) / q);
-      sample_quad(*unit.image, unit.sampler, s, t, texel[d.units[k]]);
+      if (d.r_plane[k] < 0) {
+        sample_quad(*unit.image, unit.sampler, s, t, texel[d.units[k]]);
+        continue;
+      }
+      store4(r, eval(p.planes[d.r_plane[k]], ox, oy) / q);
+      sample_quad(*unit.image, unit.sampler, s, t, r, texel[d.units[k]]);
     }
     for (int i = 0; i < 4; ++i) {
       PixelTexels texels;

@@ -97,10 +97,11 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
   for (int k = 0; k < d.num_units; ++k) {
     const float* tc = &v.attr[kClipTexAttrs + 4 * d.units[k]];
-    float* out = &w.attr[kColorPlanes + kTexPlanesPerUnit * k];
+    float* out = &w.attr[d.tex_plane[k]];
     out[0] = tc[0];
     out[1] = tc[1];
     out[2] = tc[3];
+    if (d.r_plane[k] >= 0) w.attr[d.r_plane[k]] = tc[2];
   }
   if (d.secondary_plane >= 0)
     for (int i = 0; i < 3; ++i) w.attr[d.secondary_plane + i] = v.attr[kClipSecondaryAttrs + (back_color ? 3 : 0) + i];

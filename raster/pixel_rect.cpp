@@ -21,10 +21,11 @@ PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuff
   prim_.kind = CoverageKind::Point;
   for (int k = 0; k < record_.num_units; ++k) {
     const float* tc = texcoords[record_.units[k]];
-    Plane* planes = &prim_.planes[kColorPlanes + kTexPlanesPerUnit * k];
+    Plane* planes = &prim_.planes[record_.tex_plane[k]];
     planes[0].a0 = tc[0];
     planes[1].a0 = tc[1];
     planes[2].a0 = tc[3];  // q
+    if (record_.r_plane[k] >= 0) prim_.planes[record_.r_plane[k]].a0 = tc[2];
   }
   x1_ = fb.width;
   y1_ = fb.height;

@@ -8,9 +8,10 @@ namespace pineda::raster {
 
 constexpr int kColorPlanes = 4;
 constexpr int kTexPlanesPerUnit = 3;  // s, t, q
+constexpr int kTexRPlanes = 1;        // r, after q, for the units whose texture reads it
 constexpr int kSecondaryPlanes = 3;  // r, g, b of the colour sum
 constexpr int kFogPlanes = 1;
-constexpr int kMaxPlanes = kColorPlanes + kTexPlanesPerUnit * kMaxTextureUnits + kSecondaryPlanes + kFogPlanes;
+constexpr int kMaxPlanes = kColorPlanes + (kTexPlanesPerUnit + kTexRPlanes) * kMaxTextureUnits + kSecondaryPlanes + kFogPlanes;
 
 // Pixel rectangle, half-open: [x0, x1) x [y0, y1).
 struct PixelRect {
@@ -64,7 +65,7 @@ struct PrimSetup {
   float ref_x = 0.f, ref_y = 0.f;
   double z0 = 0.0, dzdx = 0.0, dzdy = 0.0;  // window depth in depth-buffer units
   Plane inv_w;
-  // r, g, b, a, then s, t, q per enabled unit (in unit order), then the secondary colour and
+  // r, g, b, a, then s, t, q (and r: DrawRecord::r_plane) per enabled unit (in unit order), then the secondary colour and
   // the fog coordinate when the draw uses them (DrawRecord::secondary_plane, fog_plane).
   Plane planes[kMaxPlanes];
   float flat_color[4] = {0, 0, 0, 0};

@@ -48,13 +48,14 @@ void quad_colors(const DrawRecord& d, const float flat_color[4], const Reference
     for (int c = 0; c < 4; ++c) out[i][c] = d.state.flat_shading ? flat_color[c] : clamp_unit(q.attr[c][i]);
   for (int k = 0; k < d.num_units; ++k) {
     const TextureUnit& unit = d.state.texture_units[d.units[k]];
-    const int base = kColorPlanes + kTexPlanesPerUnit * k;
-    float s[4], t[4], texel[4][4];
+    const int base = d.tex_plane[k], r_plane = d.r_plane[k];
+    float s[4], t[4], r[4] = {0, 0, 0, 0}, texel[4][4];
     for (int i = 0; i < 4; ++i) {
       s[i] = static_cast<float>(q.attr[base][i] / q.attr[base + 2][i]);
       t[i] = static_cast<float>(q.attr[base + 1][i] / q.attr[base + 2][i]);
+      if (r_plane >= 0) r[i] = static_cast<float>(q.attr[r_plane][i] / q.attr[base + 2][i]);
     }
-    sample_quad(*unit.image, unit.sampler, s, t, texel);
+    sample_quad(*unit.image, unit.sampler, s, t, r, texel);
     for (int i = 0; i < 4; ++i) {
       float frag[4];
       for (int c = 0; c < 4; ++c) frag[c] = static_cast<float>(out[i][c]);

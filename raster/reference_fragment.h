@@ -18,7 +18,7 @@ struct ReferenceQuad {
   int x = 0, y = 0;
   unsigned mask = 0;
   double z[4] = {};                  // window depth in depth-buffer units, before clamping
-  double attr[kMaxPlanes][4] = {};   // r, g, b, a, then s, t, q per enabled unit
+  double attr[kMaxPlanes][4] = {};   // r, g, b, a, then the texture planes (DrawRecord::tex_plane)
 };
 
 // Returns the pixels that passed every test up to depth.

@@ -6,8 +6,12 @@
 
 namespace pineda::raster {
 
-// s[i], t[i]: coordinates of quad pixel i (0: x,y  1: x+1,y  2: x,y+1  3: x+1,y+1).
+// s[i], t[i], r[i]: coordinates of quad pixel i (0: x,y  1: x+1,y  2: x,y+1  3: x+1,y+1);
+// r is read by Volume and Cube images only (null is fine for a Planar one).
 // out[i]: RGBA in [0, 1], as stored (the base format is applied by the texture environment).
+void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
+                 const float r[4], float out[4][4]);
+// The same for a Planar image.
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
                  float out[4][4]);
 

@@ -15,11 +15,18 @@ enum class TexBaseFormat : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity
 struct TextureLevel {
   int width = 0;
   int height = 0;
-  std::vector<uint32_t> texels;  // RGBA8, R in the lowest byte; row 0 first (t = 0)
+  // RGBA8, R in the lowest byte; row 0 first (t = 0), slice 0 first (r = 0, or the +X face)
+  std::vector<uint32_t> texels;
+  int depth = 1;  // slices of a 3D level; the six faces of a cube map level
 };
+
+// How the sampler addresses the image: 1D and 2D textures are Planar (s, t), 3D textures
+// Volume (s, t, r), cube maps Cube (the direction s, t, r selects a face).
+enum class TexKind : uint8_t { Planar, Volume, Cube };
 
 struct TextureImage {
   TexBaseFormat base_format = TexBaseFormat::RGBA;
+  TexKind kind = TexKind::Planar;
   std::vector<TextureLevel> levels;  // level 0 first; a complete chain when mipmapped
 };
 
@@ -49,6 +56,7 @@ struct Sampler {
   TexFilter mag_filter = TexFilter::Linear;
   TexWrap wrap_s = TexWrap::Repeat;
   TexWrap wrap_t = TexWrap::Repeat;
+  TexWrap wrap_r = TexWrap::Repeat;
   float border_color[4] = {0, 0, 0, 0};
   float min_lod = -1000.f, max_lod = 1000.f;
   float lod_bias = 0.f;  // the texture's and the unit's, added to lambda before the clamp
@@ -60,6 +68,9 @@ struct TextureUnit {
   TexEnvMode env_mode = TexEnvMode::Modulate;
   float env_color[4] = {0, 0, 0, 0};
   CombineState combine;  // read when env_mode is Combine
+
+  // Whether sampling reads the r coordinate, so that the draw interpolates it.
+  bool reads_r() const { return image && image->kind != TexKind::Planar; }
 };
 
 }  // namespace pineda::raster

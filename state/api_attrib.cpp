@@ -106,6 +106,8 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
     f.units[u].enabled_1d = ctx.texture_units[u].enabled_1d;
     f.units[u].enabled_2d = ctx.texture_units[u].enabled_2d;
+    f.units[u].enabled_3d = ctx.texture_units[u].enabled_3d;
+    f.units[u].enabled_cube = ctx.texture_units[u].enabled_cube;
   }
   if (mask & GL_TEXTURE_BIT) {
     f.active_texture = ctx.active_texture;
@@ -117,6 +119,10 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
       s.env = unit.env;
       s.params_1d = save_params(ctx, unit.bound_1d, GL_TEXTURE_1D);
       s.params_2d = save_params(ctx, unit.bound_2d, GL_TEXTURE_2D);
+      s.bound_3d = unit.bound_3d;
+      s.bound_cube = unit.bound_cube;
+      s.params_3d = save_params(ctx, unit.bound_3d, GL_TEXTURE_3D);
+      s.params_cube = save_params(ctx, unit.bound_cube, GL_TEXTURE_CUBE_MAP);
     }
   }
   return f;
@@ -144,6 +150,8 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
     ctx.texture_units[u].enabled_1d = f.units[u].enabled_1d;
     ctx.texture_units[u].enabled_2d = f.units[u].enabled_2d;
+    ctx.texture_units[u].enabled_3d = f.units[u].enabled_3d;
+    ctx.texture_units[u].enabled_cube = f.units[u].enabled_cube;
   }
   restore_caps(ctx, f, GL_ENABLE_BIT);
 }
@@ -268,12 +276,18 @@ void restore(Context& ctx, const AttribFrame& f) {
       const AttribFrame::Unit& saved = f.units[u];
       unit.enabled_1d = saved.enabled_1d;
       unit.enabled_2d = saved.enabled_2d;
+      unit.enabled_3d = saved.enabled_3d;
+      unit.enabled_cube = saved.enabled_cube;
       unit.env = saved.env;
       // Bindings to textures deleted since the push fall back to the default texture.
       unit.bound_1d = saved.bound_1d == 0 || ctx.textures.find(saved.bound_1d) ? saved.bound_1d : 0;
       unit.bound_2d = saved.bound_2d == 0 || ctx.textures.find(saved.bound_2d) ? saved.bound_2d : 0;
       restore_params(ctx, saved.params_1d);
       restore_params(ctx, saved.params_2d);
+      unit.bound_3d = saved.bound_3d == 0 || ctx.textures.find(saved.bound_3d) ? saved.bound_3d : 0;
+      unit.bound_cube = saved.bound_cube == 0 || ctx.textures.find(saved.bound_cube) ? saved.bound_cube : 0;
+      restore_params(ctx, saved.params_3d);
+      restore_params(ctx, saved.params_cube);
     }
     ctx.active_texture = f.active_texture;
     restore_caps(ctx, f, GL_TEXTURE_BIT);

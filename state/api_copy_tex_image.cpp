@@ -1,4 +1,4 @@
-// glCopyTexImage1D/2D and glCopyTexSubImage1D/2D: texture images from the read buffer.
+// glCopyTexImage1D/2D and glCopyTexSubImage1D/2D/3D: texture images from the read buffer.
 #include <algorithm>
 #include <vector>
 
@@ -88,6 +88,22 @@ void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
   with_tight_unpack(ctx, [&] {
     TexSubImage1D(ctx, target, level, xoffset, width, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
   });
+}
+
+// One slice (zoffset) of a 3D texture level from the read buffer.
+void CopyTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x,
+                       GLint y, GLsizei width, GLsizei height) {
+  if (!valid_copy_size(ctx, width, height)) return;
+  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
+  with_tight_unpack(ctx, [&] {
+    TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                  pixels.data());
+  });
+}
+
+void CopyTexSubImage3DEXT(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                          GLint x, GLint y, GLsizei width, GLsizei height) {
+  CopyTexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, x, y, width, height);
 }
 
 }  // namespace pineda::gl

@@ -45,6 +45,8 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_RESCALE_NORMAL: return &ctx.rescale_normal;
     case GL_TEXTURE_1D: return &ctx.texture_units[ctx.active_texture].enabled_1d;
     case GL_TEXTURE_2D: return &ctx.texture_units[ctx.active_texture].enabled_2d;
+    case GL_TEXTURE_3D: return &ctx.texture_units[ctx.active_texture].enabled_3d;
+    case GL_TEXTURE_CUBE_MAP: return &ctx.texture_units[ctx.active_texture].enabled_cube;
     default:
       if (bool* flag = vertex_extras_capability(ctx, cap)) return flag;
       if (bool* flag = multisample_capability(ctx, cap)) return flag;

@@ -85,6 +85,8 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_SCISSOR_BOX: out = ints({double(s.scissor.x), double(s.scissor.y), double(s.scissor.width), double(s.scissor.height)}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
+    case GL_MAX_3D_TEXTURE_SIZE: out = ints({kMax3DTextureSize}); return true;
+    case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out = ints({kMaxCubeMapTextureSize}); return true;
     case GL_MAX_MODELVIEW_STACK_DEPTH: out = ints({kMaxModelviewStackDepth}); return true;
     case GL_MAX_PROJECTION_STACK_DEPTH: out = ints({kMaxProjectionStackDepth}); return true;
     case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
@@ -180,17 +182,23 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_PACK_ROW_LENGTH: out = ints({double(ctx.pack.row_length)}); return true;
     case GL_PACK_SKIP_ROWS: out = ints({double(ctx.pack.skip_rows)}); return true;
     case GL_PACK_SKIP_PIXELS: out = ints({double(ctx.pack.skip_pixels)}); return true;
+    case GL_PACK_IMAGE_HEIGHT: out = ints({double(ctx.pack.image_height)}); return true;
+    case GL_PACK_SKIP_IMAGES: out = ints({double(ctx.pack.skip_images)}); return true;
     case GL_PACK_SWAP_BYTES: out = bools({double(ctx.pack.swap_bytes)}); return true;
     case GL_PACK_LSB_FIRST: out = bools({double(ctx.pack.lsb_first)}); return true;
     case GL_UNPACK_ALIGNMENT: out = ints({double(ctx.unpack.alignment)}); return true;
     case GL_UNPACK_ROW_LENGTH: out = ints({double(ctx.unpack.row_length)}); return true;
     case GL_UNPACK_SKIP_ROWS: out = ints({double(ctx.unpack.skip_rows)}); return true;
     case GL_UNPACK_SKIP_PIXELS: out = ints({double(ctx.unpack.skip_pixels)}); return true;
+    case GL_UNPACK_IMAGE_HEIGHT: out = ints({double(ctx.unpack.image_height)}); return true;
+    case GL_UNPACK_SKIP_IMAGES: out = ints({double(ctx.unpack.skip_images)}); return true;
     case GL_UNPACK_SWAP_BYTES: out = bools({double(ctx.unpack.swap_bytes)}); return true;
     case GL_UNPACK_LSB_FIRST: out = bools({double(ctx.unpack.lsb_first)}); return true;
     case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(ctx.edge_flag_array.stride)}); return true;
     case GL_TEXTURE_BINDING_1D: out = ints({double(unit.bound_1d)}); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(unit.bound_2d)}); return true;
+    case GL_TEXTURE_BINDING_3D: out = ints({double(unit.bound_3d)}); return true;
+    case GL_TEXTURE_BINDING_CUBE_MAP: out = ints({double(unit.bound_cube)}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = enums({double(ctx.hint_perspective)}); return true;
     case GL_POINT_SMOOTH_HINT: out = enums({double(ctx.hint_point)}); return true;
     case GL_LINE_SMOOTH_HINT: out = enums({double(ctx.hint_line)}); return true;
@@ -275,7 +283,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_EXT_fog_coord GL_EXT_secondary_color GL_EXT_separate_specular_color "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
-      "GL_SGIS_texture_lod GL_EXT_texture_lod_bias ";  // a trailing space, as Mesa (programs split on it)
+      "GL_SGIS_texture_lod GL_EXT_texture_lod_bias "
+      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

@@ -1,10 +1,8 @@
 // glGetTexImage: a texture level read back through the pack pixel store.
-#include <bit>
-
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
-#include "state/limits.h"
 #include "state/pixel_format.h"
+#include "state/texture_target.h"
 
 namespace pineda::gl {
 namespace {
@@ -24,27 +22,32 @@ void texel_rgba(uint32_t texel, raster::TexBaseFormat base, GLenum format, doubl
 
 }  // namespace
 
+// A 1D, 2D or 3D texture or one cube map face; no proxies.
 void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
+  ImageTarget t;
+  if (!image_target(target, t) || t.proxy) return ctx.record_error(GL_INVALID_ENUM);
   if (const GLenum error = color_format_type_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
-  constexpr int kMaxLevel = std::bit_width(unsigned(kMaxTextureSize)) - 1;
-  if (level < 0 || level > kMaxLevel) return ctx.record_error(GL_INVALID_VALUE);
-  const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
-  TextureObject& tex =
-      ctx.textures.get_or_create(target == GL_TEXTURE_2D ? unit.bound_2d : unit.bound_1d, target);
-  if (size_t(level) >= tex.levels.size() || tex.levels[level].width == 0 || !pixels) return;  // nothing defined
+  if (level < 0 || level > max_texture_level(t.kind)) return ctx.record_error(GL_INVALID_VALUE);
+  const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
+  const std::vector<TextureLevelData>& levels =
+      ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
+  if (size_t(level) >= levels.size() || levels[level].width == 0 || !pixels) return;  // nothing defined
   // The border texels of a bordered level are not kept: only the inner image is written.
-  const TextureLevelData& l = tex.levels[level];
+  const TextureLevelData& l = levels[level];
   const ImageLayout layout = image_layout(ctx.pack, l.width, format, type);
-  auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
-  for (int y = 0; y < l.height; ++y)
-    for (int x = 0; x < l.width; ++x) {
-      double rgba[4];
-      texel_rgba(l.texels[size_t(y) * l.width + x], l.base, format, rgba);
-      uint8_t* dst = out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x);
-      store_color(rgba, format, type, dst);
-      if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);
-    }
+  const size_t image_rows = ctx.pack.image_height > 0 ? size_t(ctx.pack.image_height) : size_t(l.height);
+  const size_t image_stride = layout.row_stride * image_rows;
+  const bool volume = t.kind == TexTarget::T3D;
+  auto* out = static_cast<uint8_t*>(pixels) + layout.offset + (volume ? size_t(ctx.pack.skip_images) * image_stride : 0);
+  for (int z = 0; z < l.depth; ++z)
+    for (int y = 0; y < l.height; ++y)
+      for (int x = 0; x < l.width; ++x) {
+        double rgba[4];
+        texel_rgba(l.texels[(size_t(z) * l.height + y) * l.width + x], l.base, format, rgba);
+        uint8_t* dst = out + image_stride * size_t(z) + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x);
+        store_color(rgba, format, type, dst);
+        if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);
+      }
 }
 
 }  // namespace pineda::gl

@@ -12,7 +12,9 @@ namespace pineda::gl {
 namespace {
 
 void set_store(Context& ctx, GLenum pname, double value) {
-  PixelStore& s = (pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT) ? ctx.pack : ctx.unpack;
+  const bool pack = (pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT) || pname == GL_PACK_SKIP_IMAGES ||
+                    pname == GL_PACK_IMAGE_HEIGHT;
+  PixelStore& s = pack ? ctx.pack : ctx.unpack;
   const GLint v = static_cast<GLint>(value);
   switch (pname) {
     case GL_PACK_SWAP_BYTES: case GL_UNPACK_SWAP_BYTES: s.swap_bytes = value != 0.0; return;
@@ -21,13 +23,16 @@ void set_store(Context& ctx, GLenum pname, double value) {
   }
   if (pname != GL_PACK_ROW_LENGTH && pname != GL_PACK_SKIP_ROWS && pname != GL_PACK_SKIP_PIXELS &&
       pname != GL_PACK_ALIGNMENT && pname != GL_UNPACK_ROW_LENGTH && pname != GL_UNPACK_SKIP_ROWS &&
-      pname != GL_UNPACK_SKIP_PIXELS && pname != GL_UNPACK_ALIGNMENT)
+      pname != GL_UNPACK_SKIP_PIXELS && pname != GL_UNPACK_ALIGNMENT && pname != GL_PACK_SKIP_IMAGES &&
+      pname != GL_PACK_IMAGE_HEIGHT && pname != GL_UNPACK_SKIP_IMAGES && pname != GL_UNPACK_IMAGE_HEIGHT)
     return ctx.record_error(GL_INVALID_ENUM);
   if (v < 0) return ctx.record_error(GL_INVALID_VALUE);
   switch (pname) {
     case GL_PACK_ROW_LENGTH: case GL_UNPACK_ROW_LENGTH: s.row_length = v; return;
     case GL_PACK_SKIP_ROWS: case GL_UNPACK_SKIP_ROWS: s.skip_rows = v; return;
     case GL_PACK_SKIP_PIXELS: case GL_UNPACK_SKIP_PIXELS: s.skip_pixels = v; return;
+    case GL_PACK_SKIP_IMAGES: case GL_UNPACK_SKIP_IMAGES: s.skip_images = v; return;
+    case GL_PACK_IMAGE_HEIGHT: case GL_UNPACK_IMAGE_HEIGHT: s.image_height = v; return;
     default:
       if (v != 1 && v != 2 && v != 4 && v != 8) return ctx.record_error(GL_INVALID_VALUE);
       s.alignment = v;

@@ -1,4 +1,4 @@
-// Texture objects, images and parameters (GL 1.1: 1D and 2D textures).
+// Texture objects, images and parameters (1D, 2D, 3D and cube map textures).
 #include <algorithm>
 #include <cmath>
 
@@ -14,19 +14,26 @@ namespace {
 
 using raster::TexBaseFormat;
 
-TextureObject* bound_texture(Context& ctx, GLenum target) {
-  TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
-  if (target == GL_TEXTURE_2D) return &ctx.textures.get_or_create(unit.bound_2d, GL_TEXTURE_2D);
-  if (target == GL_TEXTURE_1D) return &ctx.textures.get_or_create(unit.bound_1d, GL_TEXTURE_1D);
-  return nullptr;
+TextureObject& bound_texture(Context& ctx, TexTarget kind) {
+  const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], kind);
+  return ctx.textures.get_or_create(name, binding_enum(kind));
 }
 
-bool is_proxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D; }
-bool is_1d(GLenum target) { return target == GL_TEXTURE_1D || target == GL_PROXY_TEXTURE_1D; }
+// The texture a binding target (glTexParameter) names, or null for another enum.
+TextureObject* bound_texture(Context& ctx, GLenum target) {
+  TexTarget kind;
+  return binding_target(target, kind) ? &bound_texture(ctx, kind) : nullptr;
+}
 
-// The texture an image command or level query of `target` addresses: the bound one, or a proxy.
-TextureObject* image_texture(Context& ctx, GLenum target) {
-  return is_proxy(target) ? &ctx.textures.proxy(target) : bound_texture(ctx, target);
+// The texture an image command or level query addresses: the bound one, or a proxy.
+TextureObject& image_texture(Context& ctx, const ImageTarget& target) {
+  return target.proxy ? ctx.textures.proxy(target.kind) : bound_texture(ctx, target.kind);
+}
+
+// The image target of a command whose images have `dims` dimensions; false (INVALID_ENUM)
+// for any other target, and for proxies when `proxy_ok` is false.
+bool image_target_of(GLenum target, int dims, bool proxy_ok, ImageTarget& out) {
+  return image_target(target, out) && image_dimensions(out.kind) == dims && (proxy_ok || !out.proxy);
 }
 
 bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
@@ -35,68 +42,86 @@ bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
   return error == GL_NO_ERROR;
 }
 
-int max_level() { return int(std::log2(kMaxTextureSize)); }
+// A client image and the region of a texture level it fills.
+struct ClientBox {
+  int x = 0, y = 0, z = 0;  // the region's offset in the level
+  int width = 0, height = 0, depth = 1;
+  int border_x = 0, border_y = 0, border_z = 0;  // border texels of the source skipped on each side
+  bool volume = false;  // a 3D image: its slices follow IMAGE_HEIGHT and SKIP_IMAGES
+};
 
-// Copies a width x height client image into texels at (xoffset, yoffset) of `level`; the
-// source's border texels are skipped: `border_x` columns on each side, `border_y` rows
-// (a 1D texture has a border in width only).
-void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, int xoffset, int yoffset, int width,
-                 int height, int border_x, int border_y, GLenum format, GLenum type, const void* pixels) {
+// Copies a client image into the texels of `level` at the box's offset. A 3D image is read
+// as one tall 2D image whose slice k starts at row (SKIP_IMAGES + k) * IMAGE_HEIGHT (or the
+// image's height when IMAGE_HEIGHT is 0).
+void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, const ClientBox& box,
+                 GLenum format, GLenum type, const void* pixels) {
   if (!pixels) return;
-  const ColorImageReader source(ctx, width + 2 * border_x, format, type, pixels);  // GL 1.5 3.8.1: as DrawPixels
-  for (int y = 0; y < height; ++y) {
-    uint32_t* dst = level.texels.data() + size_t(yoffset + y) * level.width + xoffset;
-    for (int x = 0; x < width; ++x) {
-      float rgba[4];
-      source.read(x + border_x, y + border_y, rgba);
-      dst[x] = to_texel(rgba, storage);
+  const ColorImageReader source(ctx, box.width + 2 * box.border_x, format, type, pixels);  // GL 1.5 3.8.1
+  const int full_height = box.height + 2 * box.border_y;
+  const int64_t image_rows = ctx.unpack.image_height > 0 ? ctx.unpack.image_height : full_height;
+  const int64_t skip_images = box.volume ? ctx.unpack.skip_images : 0;
+  for (int z = 0; z < box.depth; ++z)
+    for (int y = 0; y < box.height; ++y) {
+      const int64_t row = (skip_images + z + box.border_z) * image_rows + y + box.border_y;
+      uint32_t* dst = &level.texels[(size_t(box.z + z) * level.height + size_t(box.y + y)) * level.width + box.x];
+      for (int x = 0; x < box.width; ++x) {
+        float rgba[4];
+        source.read(x + box.border_x, int(row), rgba);
+        dst[x] = to_texel(rgba, storage);
+      }
     }
-  }
 }
 
-void tex_image(Context& ctx, GLenum target, GLint level, GLint internal_format, GLsizei width, GLsizei height,
-               GLint border, GLenum format, GLenum type, const void* pixels) {
-  TextureObject* tex = image_texture(ctx, target);
-  if (!tex) return ctx.record_error(GL_INVALID_ENUM);
+// glTexImage1D/2D/3D: `target` already checked to have `dims` dimensions; height and depth
+// are 1 where the target has no such dimension.
+void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint internal_format, GLsizei width,
+               GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  const int dims = image_dimensions(target.kind);
   if (!valid_format_type(ctx, format, type)) return;
   const std::optional<TextureFormat> storage = texture_format(internal_format);
-  if (level < 0 || level > max_level() || !storage || (border != 0 && border != 1))
+  if (level < 0 || level > max_texture_level(target.kind) || !storage || (border != 0 && border != 1))
     return ctx.record_error(GL_INVALID_VALUE);
   const TexBaseFormat base = storage->base;
-  const int inner_w = width - 2 * border, inner_h = is_1d(target) ? 1 : height - 2 * border;
-  if (inner_w < 0 || inner_h < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (tex->levels.size() <= size_t(level)) tex->levels.resize(level + 1);
-  TextureLevelData& l = tex->levels[level];
-  const int level_max = kMaxTextureSize >> level;  // level l of a full chain is at most max >> l
-  const bool too_large = inner_w > level_max || inner_h > level_max;
-  if (is_proxy(target)) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
-    l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, border, internal_format, base, {}};
+  const int inner_w = width - 2 * border;
+  const int inner_h = dims >= 2 ? height - 2 * border : 1;
+  const int inner_d = dims == 3 ? depth - 2 * border : 1;
+  if (inner_w < 0 || inner_h < 0 || inner_d < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (target.kind == TexTarget::Cube && width != height) return ctx.record_error(GL_INVALID_VALUE);
+  TextureObject& tex = image_texture(ctx, target);
+  std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
+  if (levels.size() <= size_t(level)) levels.resize(level + 1);
+  TextureLevelData& l = levels[level];
+  const int level_max = max_texture_size(target.kind) >> level;  // level l of a full chain is at most max >> l
+  const bool too_large = inner_w > level_max || inner_h > level_max || inner_d > level_max;
+  if (target.proxy) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
+    l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, inner_d, border, internal_format, base, {}};
     return;
   }
   if (too_large) return ctx.record_error(GL_INVALID_VALUE);
-  l.width = inner_w;
-  l.height = inner_h;
-  l.border = border;
-  l.internal_format = internal_format;
-  l.base = base;
-  l.texels.assign(size_t(inner_w) * inner_h, 0u);
-  unpack_into(ctx, l, *storage, 0, 0, inner_w, inner_h, border, is_1d(target) ? 0 : border, format, type, pixels);
-  tex->level_changed(level);
+  l = TextureLevelData{inner_w, inner_h, inner_d, border, internal_format, base, {}};
+  l.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
+  const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
+                      dims == 3};
+  unpack_into(ctx, l, *storage, box, format, type, pixels);
+  tex.level_changed(level, target.face);
 }
 
-void tex_sub_image(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
-                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  TextureObject* tex = bound_texture(ctx, target);
-  if (!tex) return ctx.record_error(GL_INVALID_ENUM);
+// glTexSubImage1D/2D/3D into the bound texture of `target` (no proxies).
+void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                   GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
+  TextureObject& tex = image_texture(ctx, target);
   if (!valid_format_type(ctx, format, type)) return;
-  if (level < 0 || level > max_level() || width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (size_t(level) >= tex->levels.size() || tex->levels[level].width == 0)
-    return ctx.record_error(GL_INVALID_OPERATION);
-  TextureLevelData& l = tex->levels[level];
-  if (xoffset < 0 || yoffset < 0 || int64_t(xoffset) + width > l.width || int64_t(yoffset) + height > l.height)
+  if (level < 0 || level > max_texture_level(target.kind) || width < 0 || height < 0 || depth < 0)
     return ctx.record_error(GL_INVALID_VALUE);
-  unpack_into(ctx, l, *texture_format(l.internal_format), xoffset, yoffset, width, height, 0, 0, format, type, pixels);
-  tex->level_changed(level);
+  std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
+  if (size_t(level) >= levels.size() || levels[level].width == 0) return ctx.record_error(GL_INVALID_OPERATION);
+  TextureLevelData& l = levels[level];
+  if (xoffset < 0 || yoffset < 0 || zoffset < 0 || int64_t(xoffset) + width > l.width ||
+      int64_t(yoffset) + height > l.height || int64_t(zoffset) + depth > l.depth)
+    return ctx.record_error(GL_INVALID_VALUE);
+  const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, target.kind == TexTarget::T3D};
+  unpack_into(ctx, l, *texture_format(l.internal_format), box, format, type, pixels);
+  tex.level_changed(level, target.face);
 }
 
 // Sets one parameter; returns the error the spec names for a bad one.
@@ -116,9 +141,10 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
       break;
     case GL_TEXTURE_WRAP_S:
     case GL_TEXTURE_WRAP_T:
+    case GL_TEXTURE_WRAP_R:
       if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT)
         return GL_INVALID_ENUM;
-      (pname == GL_TEXTURE_WRAP_S ? p.wrap_s : p.wrap_t) = e;
+      (pname == GL_TEXTURE_WRAP_S ? p.wrap_s : pname == GL_TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = e;
       break;
     case GL_TEXTURE_BORDER_COLOR:
       for (int i = 0; i < 4; ++i) p.border_color[i] = std::clamp(v[i], 0.f, 1.f);
@@ -167,6 +193,7 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
     case GL_TEXTURE_MAG_FILTER: out[0] = float(p.mag_filter); return true;
     case GL_TEXTURE_WRAP_S: out[0] = float(p.wrap_s); return true;
     case GL_TEXTURE_WRAP_T: out[0] = float(p.wrap_t); return true;
+    case GL_TEXTURE_WRAP_R: out[0] = float(p.wrap_r); return true;
     case GL_TEXTURE_PRIORITY: out[0] = p.priority; colour = true; return true;
     case GL_TEXTURE_RESIDENT: out[0] = 1.f; return true;
     case GL_TEXTURE_MIN_LOD: out[0] = p.min_lod; return true;
@@ -184,17 +211,18 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
   }
 }
 
-bool get_tex_level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLint& out) {
-  TextureObject* tex = image_texture(ctx, target);
-  if (!tex) return false;
+bool get_tex_level_parameter(Context& ctx, const ImageTarget& target, GLint level, GLenum pname, GLint& out) {
+  const std::vector<TextureLevelData>& levels = image_texture(ctx, target).face_levels(target.face);
   const TextureLevelData empty;
-  const TextureLevelData& l = size_t(level) < tex->levels.size() ? tex->levels[level] : empty;
+  const TextureLevelData& l = size_t(level) < levels.size() ? levels[level] : empty;
+  const int dims = image_dimensions(target.kind);
   const std::optional<TextureFormat> storage = l.width > 0 ? texture_format(l.internal_format) : std::nullopt;
   const bool defined = storage.has_value();
   const TextureFormat sizes = storage.value_or(TextureFormat{});
   switch (pname) {
     case GL_TEXTURE_WIDTH: out = defined ? l.width + 2 * l.border : 0; return true;
-    case GL_TEXTURE_HEIGHT: out = defined ? (is_1d(target) ? 1 : l.height + 2 * l.border) : 0; return true;
+    case GL_TEXTURE_HEIGHT: out = defined ? (dims < 2 ? 1 : l.height + 2 * l.border) : 0; return true;
+    case GL_TEXTURE_DEPTH: out = defined ? (dims < 3 ? 1 : l.depth + 2 * l.border) : 0; return true;
     case GL_TEXTURE_BORDER: out = defined ? l.border : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: out = defined ? l.internal_format : 1; return true;
     case GL_TEXTURE_RED_SIZE: out = sizes.red; return true;
@@ -207,6 +235,22 @@ bool get_tex_level_parameter(Context& ctx, GLenum target, GLint level, GLenum pn
     case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: out = 0; return true;
     default: return false;
   }
+}
+
+// glGetTexLevelParameter's checks: the target (not TEXTURE_CUBE_MAP itself), then the level.
+bool level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLint& out) {
+  ImageTarget t;
+  if (!image_target(target, t)) {
+    ctx.record_error(GL_INVALID_ENUM);
+    return false;
+  }
+  if (level < 0 || level > max_texture_level(t.kind)) {
+    ctx.record_error(GL_INVALID_VALUE);
+    return false;
+  }
+  if (get_tex_level_parameter(ctx, t, level, pname, out)) return true;
+  ctx.record_error(GL_INVALID_ENUM);
+  return false;
 }
 
 }  // namespace
@@ -222,49 +266,76 @@ void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
   for (GLsizei i = 0; i < n; ++i) {
     const GLuint name = textures[i];
     if (name == 0) continue;
-    for (TextureUnitState& unit : ctx.texture_units) {  // deleting a bound texture binds 0
-      if (unit.bound_2d == name) unit.bound_2d = 0;
-      if (unit.bound_1d == name) unit.bound_1d = 0;
-    }
+    for (TextureUnitState& unit : ctx.texture_units)  // deleting a bound texture binds 0
+      for (int k = 0; k < kTexTargetCount; ++k)
+        if (GLuint& bound = bound_name(unit, TexTarget(k)); bound == name) bound = 0;
     ctx.textures.remove(name);
   }
 }
 
 void BindTexture(Context& ctx, GLenum target, GLuint texture) {
-  if (target != GL_TEXTURE_2D && target != GL_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
+  TexTarget kind;
+  if (!binding_target(target, kind)) return ctx.record_error(GL_INVALID_ENUM);
   if (texture != 0) {
     TextureObject* existing = ctx.textures.find(texture);
     if (existing && existing->target != 0 && existing->target != target) return ctx.record_error(GL_INVALID_OPERATION);
     ctx.textures.get_or_create(texture, target).target = target;
   }
-  TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
-  (target == GL_TEXTURE_2D ? unit.bound_2d : unit.bound_1d) = texture;
+  bound_name(ctx.texture_units[ctx.active_texture], kind) = texture;
 }
 
 GLboolean IsTexture(Context& ctx, GLuint texture) { return ctx.textures.is_texture(texture) ? GL_TRUE : GL_FALSE; }
 
-void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
-                GLint border, GLenum format, GLenum type, const void* pixels) {
-  if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
-  tex_image(ctx, target, level, internalformat, width, height, border, format, type, pixels);
-}
-
 void TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
                 GLenum format, GLenum type, const void* pixels) {
-  if (target != GL_TEXTURE_1D && target != GL_PROXY_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
-  tex_image(ctx, target, level, internalformat, width, 1, border, format, type, pixels);
+  ImageTarget t;
+  if (!image_target_of(target, 1, true, t)) return ctx.record_error(GL_INVALID_ENUM);
+  tex_image(ctx, t, level, internalformat, width, 1, 1, border, format, type, pixels);
 }
 
-void TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
-                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  if (target != GL_TEXTURE_2D) return ctx.record_error(GL_INVALID_ENUM);
-  tex_sub_image(ctx, target, level, xoffset, yoffset, width, height, format, type, pixels);
+void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                GLint border, GLenum format, GLenum type, const void* pixels) {
+  ImageTarget t;
+  if (!image_target_of(target, 2, true, t)) return ctx.record_error(GL_INVALID_ENUM);
+  tex_image(ctx, t, level, internalformat, width, height, 1, border, format, type, pixels);
+}
+
+void TexImage3D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  ImageTarget t;
+  if (!image_target_of(target, 3, true, t)) return ctx.record_error(GL_INVALID_ENUM);
+  tex_image(ctx, t, level, internalformat, width, height, depth, border, format, type, pixels);
+}
+
+void TexImage3DEXT(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height,
+                   GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  TexImage3D(ctx, target, level, GLint(internalformat), width, height, depth, border, format, type, pixels);
 }
 
 void TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type,
                    const void* pixels) {
-  if (target != GL_TEXTURE_1D) return ctx.record_error(GL_INVALID_ENUM);
-  tex_sub_image(ctx, target, level, xoffset, 0, width, 1, format, type, pixels);
+  ImageTarget t;
+  if (!image_target_of(target, 1, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  tex_sub_image(ctx, t, level, xoffset, 0, 0, width, 1, 1, format, type, pixels);
+}
+
+void TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  ImageTarget t;
+  if (!image_target_of(target, 2, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  tex_sub_image(ctx, t, level, xoffset, yoffset, 0, width, height, 1, format, type, pixels);
+}
+
+void TexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                   GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
+  ImageTarget t;
+  if (!image_target_of(target, 3, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  tex_sub_image(ctx, t, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
+}
+
+void TexSubImage3DEXT(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                      GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
+  TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
 }
 
 void TexParameterf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
@@ -301,16 +372,12 @@ void GetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params)
 }
 
 void GetTexLevelParameteriv(Context& ctx, GLenum target, GLint level, GLenum pname, GLint* params) {
-  if (level < 0 || level > max_level()) return ctx.record_error(GL_INVALID_VALUE);
   GLint v;
-  if (!get_tex_level_parameter(ctx, target, level, pname, v)) return ctx.record_error(GL_INVALID_ENUM);
-  if (params) *params = v;
+  if (level_parameter(ctx, target, level, pname, v) && params) *params = v;
 }
 void GetTexLevelParameterfv(Context& ctx, GLenum target, GLint level, GLenum pname, GLfloat* params) {
-  if (level < 0 || level > max_level()) return ctx.record_error(GL_INVALID_VALUE);
   GLint v;
-  if (!get_tex_level_parameter(ctx, target, level, pname, v)) return ctx.record_error(GL_INVALID_ENUM);
-  if (params) *params = GLfloat(v);
+  if (level_parameter(ctx, target, level, pname, v) && params) *params = GLfloat(v);
 }
 
 void PrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures, const GLfloat* priorities) {

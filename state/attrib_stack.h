@@ -66,6 +66,9 @@ struct AttribFrame {
     GLuint bound_1d, bound_2d;
     TexEnvState env;
     SavedTextureParams params_1d, params_2d;
+    bool enabled_3d, enabled_cube;
+    GLuint bound_3d, bound_cube;
+    SavedTextureParams params_3d, params_cube;
   };
   std::array<Unit, raster::kMaxTextureUnits> units;
   GLuint active_texture = 0;

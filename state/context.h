@@ -58,6 +58,7 @@ struct ClientArray {
 
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
+  GLint image_height = 0, skip_images = 0;  // 3D images only
   GLboolean swap_bytes = GL_FALSE, lsb_first = GL_FALSE;
 };
 
@@ -77,6 +78,8 @@ struct ClientAttribFrame {
 struct TextureUnitState {
   bool enabled_2d = false, enabled_1d = false;
   GLuint bound_2d = 0, bound_1d = 0;
+  bool enabled_3d = false, enabled_cube = false;
+  GLuint bound_3d = 0, bound_cube = 0;
   TexEnvState env;
   float current_texcoord[4] = {0, 0, 0, 1};
   ClientArray texcoord_array;

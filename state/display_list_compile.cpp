@@ -11,6 +11,7 @@
 #include "state/draw.h"
 #include "state/enum_translate.h"
 #include "state/pixel_format.h"
+#include "state/texture_target.h"
 #include "state/vertex_fetch.h"
 
 namespace pineda::gl {
@@ -74,18 +75,25 @@ std::optional<float> fetch_indexed(const Context& ctx, GLsizei count, const Inde
 }
 
 // A tightly packed copy (alignment 1, no skips) of a client image under the current
-// unpack state, or empty when the call is invalid or has no pixels.
+// unpack state, or empty when the call is invalid or has no pixels. A 3D image (`volume`)
+// has `depth` slices under IMAGE_HEIGHT and SKIP_IMAGES.
 std::vector<uint8_t> pack_image(const Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type,
-                                const void* pixels) {
+                                const void* pixels, GLsizei depth = 1, bool volume = false) {
   std::vector<uint8_t> out;
-  if (!pixels || width <= 0 || height <= 0 || texture_image_format_type_error(format, type) != GL_NO_ERROR)
+  if (!pixels || width <= 0 || height <= 0 || depth <= 0 || texture_image_format_type_error(format, type) != GL_NO_ERROR)
     return out;
-  if (type == GL_BITMAP) return tight_bitmap_copy(ctx.unpack, width, height, pixels);
+  // A 3D bitmap is copied as one tall image (IMAGE_HEIGHT and SKIP_IMAGES are not applied to it).
+  if (type == GL_BITMAP) return tight_bitmap_copy(ctx.unpack, width, height * depth, pixels);
   const ImageLayout layout = image_layout(ctx.unpack, width, format, type);
   const size_t row = layout.pixel_bytes * size_t(width);
-  out.resize(row * size_t(height));
-  const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset;
-  for (GLsizei y = 0; y < height; ++y) std::memcpy(out.data() + row * y, src + layout.row_stride * y, row);
+  const size_t image_rows = ctx.unpack.image_height > 0 ? size_t(ctx.unpack.image_height) : size_t(height);
+  const size_t image_stride = layout.row_stride * image_rows;
+  out.resize(row * size_t(height) * size_t(depth));
+  const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset +
+                    (volume ? size_t(ctx.unpack.skip_images) * image_stride : 0);
+  for (GLsizei z = 0; z < depth; ++z)
+    for (GLsizei y = 0; y < height; ++y)
+      std::memcpy(out.data() + row * (size_t(z) * height + y), src + image_stride * z + layout.row_stride * y, row);
   if (ctx.unpack.swap_bytes)  // the copy is replayed without SWAP_BYTES
     for (size_t at = 0; at < out.size(); at += layout.pixel_bytes) swap_pixel_bytes(out.data() + at, format, type);
   return out;
@@ -99,6 +107,11 @@ void with_packed_unpack(Context& c, Call call) {
   c.unpack.alignment = 1;
   call();
   c.unpack = saved;
+}
+
+bool is_proxy(GLenum target) {
+  ImageTarget t;
+  return image_target(target, t) && t.proxy;
 }
 
 }  // namespace
@@ -155,8 +168,11 @@ void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type,
   record_draw(ctx, mode, std::move(vertices), error, last_index);
 }
 
+// TexImage with a proxy target is executed at once, not compiled (GL 1.5 5.4).
 void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLsizei height, GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (is_proxy(target))
+    return TexImage2D(ctx, target, level, internalformat, width, height, border, format, type, pixels);
   auto image = pack_image(ctx, width, height, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
@@ -169,6 +185,7 @@ void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internal
 
 void compile_TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (is_proxy(target)) return TexImage1D(ctx, target, level, internalformat, width, border, format, type, pixels);
   auto image = pack_image(ctx, width, 1, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
@@ -199,6 +216,44 @@ void compile_TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffs
       TexSubImage1D(c, target, level, xoffset, width, format, type, image.empty() ? nullptr : image.data());
     });
   });
+}
+
+void compile_TexImage3D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
+                        GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (is_proxy(target))
+    return TexImage3D(ctx, target, level, internalformat, width, height, depth, border, format, type, pixels);
+  auto image = pack_image(ctx, width, height, format, type, pixels, depth, true);
+  ctx.record_list_command([=, image = std::move(image)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    with_packed_unpack(c, [&] {
+      TexImage3D(c, target, level, internalformat, width, height, depth, border, format, type,
+                 image.empty() ? nullptr : image.data());
+    });
+  });
+}
+
+void compile_TexImage3DEXT(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLsizei width,
+                           GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  compile_TexImage3D(ctx, target, level, GLint(internalformat), width, height, depth, border, format, type, pixels);
+}
+
+void compile_TexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                           GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                           const void* pixels) {
+  auto image = pack_image(ctx, width, height, format, type, pixels, depth, true);
+  ctx.record_list_command([=, image = std::move(image)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    with_packed_unpack(c, [&] {
+      TexSubImage3D(c, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type,
+                    image.empty() ? nullptr : image.data());
+    });
+  });
+}
+
+void compile_TexSubImage3DEXT(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                              GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
+                              const void* pixels) {
+  compile_TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
 }
 
 }  // namespace pineda::gl

@@ -47,10 +47,11 @@ int snapshot_textures(Context& ctx) {
     raster::TextureUnit& out = ctx.draw_state.texture_units[u];
     out.image.reset();
     TextureObject* tex = nullptr;
-    if (unit.enabled_2d)
-      tex = &ctx.textures.get_or_create(unit.bound_2d, GL_TEXTURE_2D);
-    else if (unit.enabled_1d)
-      tex = &ctx.textures.get_or_create(unit.bound_1d, GL_TEXTURE_1D);
+    for (TexTarget kind : {TexTarget::Cube, TexTarget::T3D, TexTarget::T2D, TexTarget::T1D}) {  // GL 1.3 3.8.15
+      if (!enabled_flag(unit, kind)) continue;
+      tex = &ctx.textures.get_or_create(bound_name(unit, kind), binding_enum(kind));
+      break;
+    }
     if (!tex) continue;
     out.image = tex->snapshot();
     if (!out.image) continue;

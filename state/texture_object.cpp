@@ -30,31 +30,76 @@ raster::TexWrap to_raster_wrap(GLenum w) {
 
 bool uses_mipmaps(GLenum min_filter) { return min_filter != GL_NEAREST && min_filter != GL_LINEAR; }
 
+// The rounded average of n texels per channel.
+template <size_t n>
+uint32_t average(const uint32_t (&texels)[n]) {
+  uint32_t out = 0;
+  for (int c = 0; c < 32; c += 8) {
+    uint32_t sum = n / 2;
+    for (uint32_t t : texels) sum += (t >> c) & 0xffu;
+    out |= (sum / n) << c;
+  }
+  return out;
+}
+
 // The next smaller level: each texel the rounded average of the 2x2 (or 2x1) texels it
-// covers, as Mesa's software mipmap generation computes it, in the level's stored bits.
+// covers, as Mesa's software mipmap generation computes it, in the level's stored bits; of
+// 2x2x2 texels for a 3D level.
 void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
   dst.width = std::max(1, src.width / 2);
   dst.height = std::max(1, src.height / 2);
+  dst.depth = std::max(1, src.depth / 2);
   dst.border = 0;
   dst.internal_format = src.internal_format;
   dst.base = src.base;
-  dst.texels.assign(size_t(dst.width) * dst.height, 0u);
+  dst.texels.assign(size_t(dst.width) * dst.height * dst.depth, 0u);
   const TextureFormat storage = texture_format(src.internal_format).value_or(TextureFormat{});
-  const int dx = src.width > 1 ? 1 : 0, dy = src.height > 1 ? 1 : 0;
-  for (int y = 0; y < dst.height; ++y)
-    for (int x = 0; x < dst.width; ++x) {
-      const int x0 = x * 2, y0 = y * 2;
-      const uint32_t* row0 = src.texels.data() + size_t(y0) * src.width;
-      const uint32_t* row1 = src.texels.data() + size_t(y0 + dy) * src.width;
-      const uint32_t quad[4] = {row0[x0], row0[x0 + dx], row1[x0], row1[x0 + dx]};
-      uint32_t out = 0;
-      for (int c = 0; c < 32; c += 8) {
-        uint32_t sum = 2;
-        for (uint32_t t : quad) sum += (t >> c) & 0xffu;
-        out |= (sum / 4) << c;
+  const int dx = src.width > 1 ? 1 : 0, dy = src.height > 1 ? 1 : 0, dz = src.depth > 1 ? 1 : 0;
+  auto at = [&](int x, int y, int z) { return src.texels[(size_t(z) * src.height + y) * src.width + x]; };
+  for (int z = 0; z < dst.depth; ++z)
+    for (int y = 0; y < dst.height; ++y)
+      for (int x = 0; x < dst.width; ++x) {
+        const int x0 = x * 2, y0 = y * 2, z0 = z * 2;
+        uint32_t& out = dst.texels[(size_t(z) * dst.height + y) * dst.width + x];
+        const uint32_t quad[4] = {at(x0, y0, z0), at(x0 + dx, y0, z0), at(x0, y0 + dy, z0), at(x0 + dx, y0 + dy, z0)};
+        if (src.depth == 1) {
+          out = requantize_texel(average(quad), storage);
+          continue;
+        }
+        const int z1 = z0 + dz;
+        const uint32_t box[8] = {quad[0], quad[1], quad[2], quad[3],
+                                 at(x0, y0, z1), at(x0 + dx, y0, z1), at(x0, y0 + dy, z1), at(x0 + dx, y0 + dy, z1)};
+        out = requantize_texel(average(box), storage);
       }
-      dst.texels[size_t(y) * dst.width + x] = requantize_texel(out, storage);
-    }
+}
+
+raster::TexKind image_kind(GLenum target) {
+  if (target == GL_TEXTURE_3D) return raster::TexKind::Volume;
+  if (target == GL_TEXTURE_CUBE_MAP) return raster::TexKind::Cube;
+  return raster::TexKind::Planar;
+}
+
+bool same_size(const TextureLevelData& a, int w, int h, int d, GLint internal_format) {
+  return a.width == w && a.height == h && a.depth == d && a.internal_format == internal_format;
+}
+
+// How many levels from `base` on form a complete chain (GL 1.5 3.8.10); 0 when incomplete.
+size_t complete_levels(const std::vector<TextureLevelData>& levels, size_t base, const TexParams& params) {
+  if (base >= levels.size() || levels[base].width <= 0 || levels[base].height <= 0 || levels[base].depth <= 0)
+    return 0;
+  if (!uses_mipmaps(params.min_filter)) return 1;
+  if (params.max_level < params.base_level) return 0;
+  int w = levels[base].width, h = levels[base].height, d = levels[base].depth;
+  size_t count = 1;
+  while ((w > 1 || h > 1 || d > 1) && base + count <= size_t(params.max_level)) {
+    w = std::max(1, w / 2);
+    h = std::max(1, h / 2);
+    d = std::max(1, d / 2);
+    const size_t l = base + count;
+    if (l >= levels.size() || !same_size(levels[l], w, h, d, levels[base].internal_format)) return 0;
+    ++count;
+  }
+  return count;
 }
 
 }  // namespace
@@ -65,6 +110,7 @@ raster::Sampler TextureObject::sampler() const {
   s.mag_filter = to_raster_filter(params.mag_filter);
   s.wrap_s = to_raster_wrap(params.wrap_s);
   s.wrap_t = to_raster_wrap(params.wrap_t);
+  s.wrap_r = to_raster_wrap(params.wrap_r);
   std::copy(params.border_color, params.border_color + 4, s.border_color);
   s.min_lod = params.min_lod;
   s.max_lod = params.max_lod;
@@ -74,52 +120,64 @@ raster::Sampler TextureObject::sampler() const {
 
 // GL 1.5 3.8.10 completeness: the base level exists with a non-zero size; when the
 // minification filter uses mipmaps, every level from the base down to 1x1 (or to MAX_LEVEL)
-// exists with halved sizes and the base level's internal format. The snapshot's level 0 is
-// the base level.
+// exists with halved sizes and the base level's internal format. A cube map is complete when
+// each face is and the faces' base levels are square, of one size and one internal format
+// (GL 1.3 3.8.10, "cube complete"). The snapshot's level 0 is the base level; a cube map level
+// holds the six faces as slices.
 std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
   if (snapshot_valid_) return snapshot_;
   snapshot_valid_ = true;
   snapshot_.reset();
   const size_t base = size_t(params.base_level);
-  if (base >= levels.size() || levels[base].width <= 0 || levels[base].height <= 0) return nullptr;
-  auto image = std::make_shared<raster::TextureImage>();
-  image->base_format = levels[base].base;
-  size_t count = 1;
-  if (uses_mipmaps(params.min_filter)) {
-    if (params.max_level < params.base_level) return nullptr;
-    int w = levels[base].width, h = levels[base].height;
-    while ((w > 1 || h > 1) && base + count <= size_t(params.max_level)) {
-      w = std::max(1, w / 2);
-      h = std::max(1, h / 2);
-      const size_t l = base + count;
-      if (l >= levels.size() || levels[l].width != w || levels[l].height != h ||
-          levels[l].internal_format != levels[base].internal_format)
+  const raster::TexKind kind = image_kind(target);
+  const int faces = kind == raster::TexKind::Cube ? kCubeFaces : 1;
+  const size_t count = complete_levels(levels, base, params);
+  if (count == 0) return nullptr;
+  if (kind == raster::TexKind::Cube) {
+    const TextureLevelData& b = levels[base];
+    if (b.width != b.height) return nullptr;
+    for (int f = 1; f < faces; ++f) {
+      const std::vector<TextureLevelData>& face = face_levels(f);
+      if (base >= face.size() || !same_size(face[base], b.width, b.height, b.depth, b.internal_format) ||
+          complete_levels(face, base, params) != count)
         return nullptr;
-      ++count;
     }
   }
+  auto image = std::make_shared<raster::TextureImage>();
+  image->base_format = levels[base].base;
+  image->kind = kind;
   image->levels.resize(count);
   for (size_t l = 0; l < count; ++l) {
-    image->levels[l].width = levels[base + l].width;
-    image->levels[l].height = levels[base + l].height;
-    image->levels[l].texels = levels[base + l].texels;
+    raster::TextureLevel& out = image->levels[l];
+    const TextureLevelData& in = levels[base + l];
+    out.width = in.width;
+    out.height = in.height;
+    out.depth = faces == 1 ? in.depth : faces;
+    out.texels.reserve(size_t(out.width) * out.height * out.depth);
+    for (int f = 0; f < faces; ++f) {
+      const std::vector<uint32_t>& texels = face_levels(f)[base + l].texels;
+      out.texels.insert(out.texels.end(), texels.begin(), texels.end());
+    }
   }
   snapshot_ = std::move(image);
   return snapshot_;
 }
 
-void TextureObject::level_changed(int level) {
+void TextureObject::level_changed(int level, int face) {
   changed();
-  if (!params.generate_mipmap || level != params.base_level || size_t(level) >= levels.size()) return;
-  for (size_t l = size_t(level); levels[l].width > 1 || levels[l].height > 1; ++l) {
-    if (levels.size() <= l + 1) levels.resize(l + 2);
-    downsample_level(levels[l], levels[l + 1]);
+  std::vector<TextureLevelData>& chain = face_levels(face);
+  if (!params.generate_mipmap || level != params.base_level || size_t(level) >= chain.size()) return;
+  for (size_t l = size_t(level); chain[l].width > 1 || chain[l].height > 1 || chain[l].depth > 1; ++l) {
+    if (chain.size() <= l + 1) chain.resize(l + 2);
+    downsample_level(chain[l], chain[l + 1]);
   }
 }
 
 TextureNamespace::TextureNamespace() {
-  default_2d_.target = GL_TEXTURE_2D;
-  default_1d_.target = GL_TEXTURE_1D;
+  for (int k = 0; k < kTexTargetCount; ++k) {
+    defaults_[k].target = binding_enum(TexTarget(k));
+    proxies_[k].target = binding_enum(TexTarget(k));
+  }
 }
 
 void TextureNamespace::generate(GLsizei n, GLuint* names) {
@@ -131,7 +189,8 @@ void TextureNamespace::generate(GLsizei n, GLuint* names) {
 }
 
 TextureObject& TextureNamespace::get_or_create(GLuint name, GLenum target) {
-  if (name == 0) return target == GL_TEXTURE_1D ? default_1d_ : default_2d_;
+  TexTarget kind = TexTarget::T2D;
+  if (name == 0) return binding_target(target, kind) ? defaults_[size_t(kind)] : defaults_[size_t(TexTarget::T2D)];
   auto& slot = objects_[name];
   if (!slot) {
     slot = std::make_unique<TextureObject>();

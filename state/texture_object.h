@@ -4,16 +4,18 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <array>
 #include <map>
 #include <memory>
 #include <vector>
 
 #include "raster/texture.h"
+#include "state/texture_target.h"
 
 namespace pineda {
 
 struct TextureLevelData {
-  GLint width = 0, height = 0, border = 0;
+  GLint width = 0, height = 0, depth = 1, border = 0;  // without the border
   GLint internal_format = 0;  // as the application gave it (for glGetTexLevelParameter)
   raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;  // what `texels` were reduced to
   std::vector<uint32_t> texels;
@@ -22,7 +24,7 @@ struct TextureLevelData {
 // What glTexParameter sets; glPushAttrib(GL_TEXTURE_BIT) saves it whole.
 struct TexParams {
   GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
-  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT, wrap_r = GL_REPEAT;
   float border_color[4] = {0, 0, 0, 0};
   float priority = 1.f;
   float min_lod = -1000.f, max_lod = 1000.f, lod_bias = 0.f;
@@ -32,16 +34,23 @@ struct TexParams {
 
 struct TextureObject {
   GLenum target = 0;  // 0 until first bound
-  std::vector<TextureLevelData> levels;  // index = level
+  std::vector<TextureLevelData> levels;  // index = level; a cube map's +X face
+  std::array<std::vector<TextureLevelData>, kCubeFaces - 1> other_faces;  // a cube map's -X to -Z faces
   TexParams params;
+
+  // The levels of cube face `face` (0: +X, as `levels`); face 0 for any other target.
+  std::vector<TextureLevelData>& face_levels(int face) { return face == 0 ? levels : other_faces[face - 1]; }
+  const std::vector<TextureLevelData>& face_levels(int face) const {
+    return face == 0 ? levels : other_faces[face - 1];
+  }
 
   // The image the sampler reads, or null when the texture is incomplete.
   std::shared_ptr<const raster::TextureImage> snapshot();
   raster::Sampler sampler() const;
   void changed() { snapshot_.reset(); snapshot_valid_ = false; }
-  // GL_GENERATE_MIPMAP: after `level` changed, rebuilds the levels below it when it is the
-  // base level and generation is on.
-  void level_changed(int level);
+  // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
+  // it when it is the base level and generation is on.
+  void level_changed(int level, int face = 0);
 
  private:
   std::shared_ptr<const raster::TextureImage> snapshot_;
@@ -57,15 +66,14 @@ class TextureNamespace {
   TextureObject* find(GLuint name);
   void remove(GLuint name);
   bool is_texture(GLuint name) const;
-  // The proxy object of GL_PROXY_TEXTURE_1D/2D: levels without texels, never bound.
-  TextureObject& proxy(GLenum target) { return target == GL_PROXY_TEXTURE_1D ? proxy_1d_ : proxy_2d_; }
+  // The proxy object of a kind (GL_PROXY_TEXTURE_*): levels without texels, never bound.
+  TextureObject& proxy(TexTarget kind) { return proxies_[size_t(kind)]; }
 
  private:
   std::map<GLuint, std::unique_ptr<TextureObject>> objects_;
   std::map<GLuint, bool> reserved_;  // generated names not bound yet
   GLuint next_name_ = 1;
-  TextureObject default_2d_, default_1d_;
-  TextureObject proxy_2d_, proxy_1d_;
+  std::array<TextureObject, kTexTargetCount> defaults_, proxies_;  // indexed by TexTarget
 };
 
 }  // namespace pineda

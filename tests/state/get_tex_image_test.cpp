@@ -76,7 +76,7 @@ TEST_F(GetTexImageTest, OneDimensionalAndErrors) {
   EXPECT_EQ(out[4], 4);
   EXPECT_EQ(out[7], 255);
   uint8_t untouched[4] = {9, 9, 9, 9};
-  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, untouched);
+  glGetTexImage(GL_TEXTURE_CUBE_MAP, 0, GL_RGBA, GL_UNSIGNED_BYTE, untouched);  // faces only
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glGetTexImage(GL_TEXTURE_1D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, untouched);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));

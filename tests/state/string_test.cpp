@@ -59,7 +59,8 @@ TEST_F(StringTest, AdvertisesTheImplementedExtensions) {
                            "GL_ARB_texture_border_clamp", "GL_ARB_texture_mirrored_repeat",
                            "GL_ARB_multitexture", "GL_ARB_texture_env_add", "GL_ARB_texture_env_combine",
                            "GL_ARB_texture_env_crossbar", "GL_ARB_texture_env_dot3", "GL_EXT_bgra",
-                           "GL_SGIS_generate_mipmap", "GL_SGIS_texture_lod", "GL_EXT_texture_lod_bias"})
+                           "GL_SGIS_generate_mipmap", "GL_SGIS_texture_lod", "GL_EXT_texture_lod_bias",
+                           "GL_EXT_texture3D", "GL_ARB_texture_cube_map", "GL_EXT_texture_cube_map"})
     EXPECT_NE(ext.find(std::string(" ") + name + " "), std::string::npos) << name;
 }
 

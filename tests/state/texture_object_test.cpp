@@ -70,7 +70,7 @@ TEST_F(TextureObjectTest, Errors) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glDeleteTextures(-1, &name);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
-  glBindTexture(GL_TEXTURE_3D, 5);
+  glBindTexture(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 5);  // a face, not a binding target
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   EXPECT_EQ(glIsTexture(5), GL_FALSE);
   // A texture keeps the dimensionality it was first bound with.
@@ -138,7 +138,7 @@ TEST_F(TextureObjectTest, ParameterErrorsChangeNothing) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexParameteri(GL_TEXTURE_2D, 0x1234, GL_NEAREST);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_CUBE_MAP_POSITIVE_X, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1.f);  // a vector parameter
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));

@@ -1,0 +1,64 @@
+// Level-of-detail arithmetic shared by the samplers (GL 1.5 3.8.8-3.8.9): lambda from the
+// squared scale factor, and the level(s) a filter reads at that lambda.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "raster/texture.h"
+
+namespace pineda::raster {
+
+// lambda = log2(rho) = log2(rho^2) / 2, with log2 taken piecewise linear between powers of
+// two (exact at them). GL allows approximating lambda; this is the approximation llvmpipe
+// uses, so that mipmap blends match it. -inf when rho is 0.
+inline float lambda_from_rho2(float rho2) {
+  if (!(rho2 > 0.f)) return rho2 == 0.f ? -INFINITY : NAN;
+  int e;
+  const float m = std::frexp(rho2, &e);  // rho2 = m * 2^e, m in [0.5, 1)
+  return 0.5f * (static_cast<float>(e - 1) + (2.f * m - 1.f));
+}
+
+inline bool is_linear(TexFilter f) {
+  return f == TexFilter::Linear || f == TexFilter::LinearMipmapNearest || f == TexFilter::LinearMipmapLinear;
+}
+
+// The levels a quad reads: `first` alone, or `first` and first + 1 blended by `blend`.
+struct LevelChoice {
+  int first = 0;
+  float blend = 0.f;
+  bool two = false;
+  bool linear = false;  // filtering within a level
+};
+
+// `lambda`: the quad's level of detail before bias and clamping; `max_level`: the last level
+// of the image (its levels are a complete chain when the filter mipmaps).
+inline LevelChoice choose_levels(const Sampler& sampler, float lambda, int max_level) {
+  if (std::isnan(lambda)) lambda = 0.f;
+  lambda = std::min(std::max(lambda + sampler.lod_bias, sampler.min_lod), sampler.max_lod);
+  if (!(lambda > -1e30f && lambda < 1e30f)) lambda = lambda > 0 ? 1e30f : -1e30f;
+  const TexFilter min = sampler.min_filter;
+  const bool mag_linear = sampler.mag_filter == TexFilter::Linear;
+  const float c = mag_linear && (min == TexFilter::NearestMipmapNearest || min == TexFilter::NearestMipmapLinear)
+                      ? 0.5f
+                      : 0.f;
+  LevelChoice out;
+  if (lambda <= c || min == TexFilter::Nearest || min == TexFilter::Linear) {
+    out.linear = lambda <= c ? mag_linear : min == TexFilter::Linear;
+    return out;
+  }
+  out.linear = is_linear(min);
+  if (min == TexFilter::NearestMipmapNearest || min == TexFilter::LinearMipmapNearest) {
+    out.first = lambda <= 0.5f ? 0 : std::min(static_cast<int>(std::ceil(std::min(lambda, 1e6f) + 0.5f)) - 1, max_level);
+    return out;
+  }
+  if (lambda >= static_cast<float>(max_level)) {
+    out.first = max_level;
+    return out;
+  }
+  out.first = static_cast<int>(std::floor(lambda));
+  out.blend = lambda - static_cast<float>(out.first);
+  out.two = true;
+  return out;
+}
+
+}  // namespace pineda::raster
