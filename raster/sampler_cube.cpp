@@ -18,6 +18,13 @@ int major_face(float rx, float ry, float rz) {
   return rz >= 0.f ? 4 : 5;
 }
 
+// The component of a direction along the major axis of `face`, signed so that it is positive
+// for directions on that face's side.
+float toward_face(int face, float rx, float ry, float rz) {
+  const float v = face < 2 ? rx : (face < 4 ? ry : rz);
+  return face & 1 ? -v : v;
+}
+
 // Table 3.19: the face coordinates of a direction on `face`.
 void face_coords(int face, float rx, float ry, float rz, float& s, float& t) {
   float sc = 0.f, tc = 0.f, ma = 1.f;
@@ -34,15 +41,32 @@ void face_coords(int face, float rx, float ry, float rz, float& s, float& t) {
   t = m > 0.f ? sane((tc / m + 1.f) * 0.5f) : 0.5f;
 }
 
-// The level of detail from the face coordinates of all four pixels on the face of pixel 0,
-// so that a quad straddling an edge still has one lambda.
-float cube_lambda(int size, int face, const float rx[4], const float ry[4], const float rz[4]) {
+// The level of detail from the face coordinates of all four pixels projected on `face`.
+float face_lambda(int size, int face, const float rx[4], const float ry[4], const float rz[4]) {
   float s[4], t[4];
   for (int i = 0; i < 4; ++i) face_coords(face, rx[i], ry[i], rz[i], s[i], t[i]);
   const float n = static_cast<float>(size);
   const float dudx = (s[1] - s[0]) * n, dvdx = (t[1] - t[0]) * n;
   const float dudy = (s[2] - s[0]) * n, dvdy = (t[2] - t[0]) * n;
   return lambda_from_rho2(std::max(dudx * dudx + dvdx * dvdx, dudy * dudy + dvdy * dvdy));
+}
+
+// The quad's level of detail: of the faces its pixels select, each one all four directions
+// point toward (so that the projection is smooth), the least distorted, i.e. the smallest
+// lambda. A quad reaching past a face's edge (helper pixels outside the primitive, or a
+// primitive across a cube edge) so keeps the lambda of the face it mostly lies on.
+float cube_lambda(int size, const int faces[4], const float rx[4], const float ry[4], const float rz[4]) {
+  float best = NAN;
+  for (int i = 0; i < 4; ++i) {
+    const int f = faces[i];
+    bool seen = false, toward = true;
+    for (int k = 0; k < i; ++k) seen = seen || faces[k] == f;
+    for (int k = 0; k < 4; ++k) toward = toward && toward_face(f, rx[k], ry[k], rz[k]) > 0.f;
+    if (seen || !toward) continue;
+    const float lambda = face_lambda(size, f, rx, ry, rz);
+    if (std::isnan(best) || lambda < best) best = lambda;
+  }
+  return std::isnan(best) ? face_lambda(size, faces[0], rx, ry, rz) : best;
 }
 
 }  // namespace
@@ -56,13 +80,13 @@ void sample_cube_quad(const TextureImage& image, const Sampler& sampler, const f
     rz[i] = sane(r_in[i]);
   }
   const int max_level = static_cast<int>(image.levels.size()) - 1;
-  const int face0 = major_face(rx[0], ry[0], rz[0]);
-  const LevelChoice choice = choose_levels(sampler, cube_lambda(image.levels[0].width, face0, rx, ry, rz), max_level);
+  int faces[4];
+  for (int i = 0; i < 4; ++i) faces[i] = major_face(rx[i], ry[i], rz[i]);
+  const LevelChoice choice = choose_levels(sampler, cube_lambda(image.levels[0].width, faces, rx, ry, rz), max_level);
   for (int i = 0; i < 4; ++i) {
-    const int face = major_face(rx[i], ry[i], rz[i]);
     float s, t;
-    face_coords(face, rx[i], ry[i], rz[i], s, t);
-    sample_slices(image, sampler, choice, s, t, 0.f, face, out[i]);
+    face_coords(faces[i], rx[i], ry[i], rz[i], s, t);
+    sample_slices(image, sampler, choice, s, t, 0.f, faces[i], out[i]);
   }
 }
 

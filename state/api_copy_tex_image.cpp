@@ -35,6 +35,15 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
   return out;
 }
 
+// glCopyTexImage takes the targets of glTexImage with `dims` dimensions but no proxy
+// (INVALID_ENUM, before any pixel is read).
+bool valid_copy_target(Context& ctx, GLenum target, int dims) {
+  ImageTarget t;
+  if (image_target(target, t) && !t.proxy && image_dimensions(t.kind) == dims) return true;
+  ctx.record_error(GL_INVALID_ENUM);
+  return false;
+}
+
 // Sizes no texture can have are rejected before any pixel is read.
 bool valid_copy_size(Context& ctx, GLsizei width, GLsizei height) {
   if (width >= 0 && height >= 0 && width <= kMaxTextureSize + 2 && height <= kMaxTextureSize + 2) return true;
@@ -56,7 +65,7 @@ void with_tight_unpack(Context& ctx, Upload upload) {
 
 void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                     GLsizei width, GLsizei height, GLint border) {
-  if (!valid_copy_size(ctx, width, height)) return;
+  if (!valid_copy_target(ctx, target, 2) || !valid_copy_size(ctx, width, height)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -66,7 +75,7 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
 
 void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                     GLsizei width, GLint border) {
-  if (!valid_copy_size(ctx, width, 1)) return;
+  if (!valid_copy_target(ctx, target, 1) || !valid_copy_size(ctx, width, 1)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
   with_tight_unpack(ctx, [&] {
     TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());

@@ -131,6 +131,33 @@ TEST_F(CubeMapTest, MipLevelChosenOnTheFace) {
   EXPECT_TRUE(near_rgba(pixel(2, 12), colours[1]));
 }
 
+// A face drawn at its level's size, 3x3 pixels at an odd position: the 2x2 quads reach past
+// the face's edges, where their outer pixels' directions select other faces; every pixel
+// still reads level 1 of the 6x6 / 3x3 / 1x1 chain (piglit cubemap npot).
+TEST_F(CubeMapTest, QuadsReachingPastAFaceEdgeKeepTheLevel) {
+  const Rgba colours[3] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}};
+  for (int level = 0, n = 6; level < 3; ++level, n = n == 6 ? 3 : 1)
+    for (GLenum face : kFaces) {
+      const std::vector<uint8_t> t = solid_texels(n * n, colours[level]);
+      glTexImage2D(face, level, GL_RGBA, n, n, 0, GL_RGBA, GL_UNSIGNED_BYTE, t.data());
+    }
+  glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  for (int f = 0; f < 6; ++f) {
+    const float x = float(1 + 5 * f), y = 5;
+    const Direction corner[4] = {toward(f, -1, -1), toward(f, 1, -1), toward(f, 1, 1), toward(f, -1, 1)};
+    const float vx[4] = {x, x + 3, x + 3, x}, vy[4] = {y, y, y + 3, y + 3};
+    glBegin(GL_QUADS);
+    for (int v = 0; v < 4; ++v) {
+      glTexCoord3f(corner[v].x, corner[v].y, corner[v].z);
+      glVertex2f(vx[v], vy[v]);
+    }
+    glEnd();
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        EXPECT_TRUE(near_rgba(pixel(int(x) + i, int(y) + j), colours[1])) << "face " << f << " " << i << "," << j;
+  }
+}
+
 TEST_F(CubeMapTest, IncompleteCubeDisablesTheUnit) {
   glColor4ub(7, 8, 9, 255);
   for (int f = 0; f < 5; ++f) {  // -Z missing
@@ -228,6 +255,14 @@ TEST_F(CubeMapTest, ErrorCodes) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glCopyTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, 0, GL_RGBA, 0, 0, 4, 2, 0);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glCopyTexImage2D(GL_PROXY_TEXTURE_CUBE_MAP, 0, GL_RGBA, 0, 0, 4, 4, 0);  // copies take no proxy
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glCopyTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glCopyTexImage1D(GL_PROXY_TEXTURE_1D, 0, GL_RGBA, 0, 0, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glCopyTexImage2D(GL_TEXTURE_CUBE_MAP, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, t.data());
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));  // the face has no image
   uint8_t out[16];
