@@ -16,7 +16,6 @@ bool cap_in_group(GLenum cap, GLbitfield group) {
     case GL_POLYGON_BIT: return cap == GL_POLYGON_SMOOTH || cap == GL_POLYGON_STIPPLE;
     case GL_FOG_BIT: return cap == GL_FOG;
     case GL_TRANSFORM_BIT: return cap >= GL_CLIP_PLANE0 && cap <= GL_CLIP_PLANE5;
-    case GL_EVAL_BIT: return (cap >= GL_MAP1_COLOR_4 && cap <= GL_MAP2_VERTEX_4) || cap == GL_AUTO_NORMAL;
     case GL_TEXTURE_BIT: return cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q;
     case GL_COLOR_BUFFER_BIT: return cap == GL_INDEX_LOGIC_OP;
     case GL_ENABLE_BIT: return true;  // every capability is also an enable bit
@@ -54,6 +53,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
               f.current_texcoord[u].begin());
   f.current_edge_flag = ctx.current_edge_flag;
   f.color_index = ctx.color_index;
+  f.eval = ctx.eval.attribs;
   f.raster_pos = ctx.raster_pos;
   f.pixel_mode = ctx.pixel_mode;
   f.draw_state = ctx.draw_state;
@@ -154,6 +154,9 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
     ctx.texture_units[u].enabled_cube = f.units[u].enabled_cube;
   }
   restore_caps(ctx, f, GL_ENABLE_BIT);
+  ctx.eval.attribs.map1_enabled = f.eval.map1_enabled;
+  ctx.eval.attribs.map2_enabled = f.eval.map2_enabled;
+  ctx.eval.attribs.auto_normal = f.eval.auto_normal;
 }
 
 void restore(Context& ctx, const AttribFrame& f) {
@@ -268,7 +271,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.hint_generate_mipmap = f.hints[5];
     ctx.hint_texture_compression = f.hints[6];
   }
-  if (m & GL_EVAL_BIT) restore_caps(ctx, f, GL_EVAL_BIT);
+  if (m & GL_EVAL_BIT) ctx.eval.attribs = f.eval;
   if (m & GL_LIST_BIT) ctx.list_base = f.list_base;
   if (m & GL_TEXTURE_BIT) {
     for (int u = 0; u < raster::kMaxTextureUnits; ++u) {

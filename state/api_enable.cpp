@@ -9,13 +9,7 @@ namespace {
 
 bool is_unrendered_cap(GLenum cap) {
   switch (cap) {
-    case GL_LINE_SMOOTH: case GL_POINT_SMOOTH: case GL_POLYGON_SMOOTH: case GL_AUTO_NORMAL:
-    case GL_MAP1_COLOR_4: case GL_MAP1_INDEX: case GL_MAP1_NORMAL: case GL_MAP1_TEXTURE_COORD_1:
-    case GL_MAP1_TEXTURE_COORD_2: case GL_MAP1_TEXTURE_COORD_3: case GL_MAP1_TEXTURE_COORD_4:
-    case GL_MAP1_VERTEX_3: case GL_MAP1_VERTEX_4: case GL_MAP2_COLOR_4: case GL_MAP2_INDEX:
-    case GL_MAP2_NORMAL: case GL_MAP2_TEXTURE_COORD_1: case GL_MAP2_TEXTURE_COORD_2:
-    case GL_MAP2_TEXTURE_COORD_3: case GL_MAP2_TEXTURE_COORD_4: case GL_MAP2_VERTEX_3:
-    case GL_MAP2_VERTEX_4: case GL_INDEX_LOGIC_OP:
+    case GL_LINE_SMOOTH: case GL_POINT_SMOOTH: case GL_POLYGON_SMOOTH: case GL_INDEX_LOGIC_OP:
       return true;
     default:
       return false;
@@ -49,6 +43,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_TEXTURE_CUBE_MAP: return &ctx.texture_units[ctx.active_texture].enabled_cube;
     default:
       if (bool* flag = vertex_extras_capability(ctx, cap)) return flag;
+      if (bool* flag = evaluator_capability(ctx.eval.attribs, cap)) return flag;
       if (bool* flag = multisample_capability(ctx, cap)) return flag;
       if (is_unrendered_cap(cap)) return &ctx.unrendered_caps[cap];
       return nullptr;

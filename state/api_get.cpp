@@ -229,6 +229,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_vertex_extras(ctx, pname, out)) return true;
   if (query_multisample(ctx, pname, out)) return true;
   if (query_color_index(ctx, pname, out)) return true;
+  if (query_evaluator(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);

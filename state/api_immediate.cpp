@@ -6,18 +6,13 @@
 #include "state/color_material.h"
 #include "state/component_convert.h"
 #include "state/context.h"
+#include "state/current_vertex.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
 
-namespace pineda::gl {
-namespace {
+namespace pineda {
 
-// GL's conversion of integer colour and normal components to floating point.
-inline float to_float(GLfloat v) { return v; }
-inline float to_float(GLdouble v) { return static_cast<float>(v); }
-
-void emit_vertex(Context& ctx, float x, float y, float z, float w) {
-  if (!ctx.in_begin_end) return;  // outside Begin/End a vertex has no effect
+raster::VertexInput current_vertex(const Context& ctx, float x, float y, float z, float w) {
   raster::VertexInput v;
   v.position[0] = x;
   v.position[1] = y;
@@ -30,7 +25,21 @@ void emit_vertex(Context& ctx, float x, float y, float z, float w) {
   v.edge_flag = ctx.current_edge_flag;
   std::copy(ctx.extras.current_secondary_color, ctx.extras.current_secondary_color + 3, v.secondary_color);
   v.fog_coord = ctx.extras.current_fog_coord;
-  ctx.immediate.push_back(v);
+  return v;
+}
+
+}  // namespace pineda
+
+namespace pineda::gl {
+namespace {
+
+// GL's conversion of integer colour and normal components to floating point.
+inline float to_float(GLfloat v) { return v; }
+inline float to_float(GLdouble v) { return static_cast<float>(v); }
+
+void emit_vertex(Context& ctx, float x, float y, float z, float w) {
+  if (!ctx.in_begin_end) return;  // outside Begin/End a vertex has no effect
+  ctx.immediate.push_back(current_vertex(ctx, x, y, z, w));
 }
 
 void set_color(Context& ctx, float r, float g, float b, float a) {

@@ -12,6 +12,7 @@
 #include "raster/vertex_transform.h"
 #include "state/multisample.h"
 #include "state/color_index.h"
+#include "state/evaluator.h"
 #include "state/pixel_state.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
@@ -36,6 +37,7 @@ struct AttribFrame {
   float current_color[4], current_normal[3];
   std::array<std::array<float, 4>, raster::kMaxTextureUnits> current_texcoord;
   bool current_edge_flag;
+  EvalAttribState eval;  // GL_EVAL_BIT; the map enables are also in GL_ENABLE_BIT
   ColorIndexState color_index;  // current index: CURRENT_BIT; clear index and mask: COLOR_BUFFER_BIT
   RasterPosition raster_pos;
   // pixel mode

@@ -24,6 +24,7 @@
 #include "state/display_list.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
+#include "state/evaluator.h"
 #include "state/pixel_state.h"
 #include "state/query_object.h"
 #include "state/select_feedback.h"
@@ -167,6 +168,7 @@ class Context {
   // Capabilities GL 1.1 accepts whose rendering Pineda does not do yet (fog, stipple,
   // smoothing, clip planes, texgen, evaluators): the enable bit is kept for glIsEnabled.
   std::unordered_map<GLenum, bool> unrendered_caps;
+  EvaluatorState eval;  // glMap/glMapGrid maps, grids and enables
 
   // Raw GL values for glGet
   GLenum depth_func = GL_LESS, alpha_func = GL_ALWAYS;
