@@ -78,8 +78,7 @@ void compile_CallLists(Context& ctx, GLsizei n, GLenum type, const void* lists) 
   std::vector<GLuint> names;
   const bool valid = n >= 0 && valid_call_lists_type(type);
   if (valid && lists) decode_names(n, type, lists, names);
-  ctx.record_list_command([n, valid, names](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+  ctx.record_list_command([n, valid, names](Context& c) {  // allowed between glBegin and glEnd
     if (!valid) return c.record_error(n < 0 ? GL_INVALID_VALUE : GL_INVALID_ENUM);
     call_names(c, names);
   });

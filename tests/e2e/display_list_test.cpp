@@ -79,5 +79,23 @@ TEST_F(DisplayListTest, TextureImagesAreReadAtCompileTime) {
   EXPECT_TRUE(near_rgba(pixel(1, 1), {0, 0, 255, 255}));
 }
 
+// glCallList and glCallLists may stand between glBegin and glEnd, also inside a list.
+TEST_F(DisplayListTest, CompiledCallListsBetweenBeginAndEnd) {
+  glNewList(5, GL_COMPILE);
+  glVertex2f(3.5f, 3.5f);
+  glEndList();
+  const GLuint names[1] = {5};
+  glNewList(6, GL_COMPILE);
+  glBegin(GL_POINTS);
+  glCallLists(1, GL_UNSIGNED_INT, names);
+  glEnd();
+  glEndList();
+  glColor3f(1, 1, 1);
+  glCallList(6);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 1);
+  EXPECT_TRUE(near_rgba(pixel(3, 3), {255, 255, 255, 255}));
+}
+
 }  // namespace
 }  // namespace pineda::test
