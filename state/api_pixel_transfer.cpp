@@ -24,8 +24,6 @@ float* transfer_float(PixelMode& m, GLenum pname) {
   }
 }
 
-GLint to_index(double v) { return static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0)); }
-
 void set_transfer(Context& ctx, GLenum pname, double value) {
   PixelMode& m = ctx.pixel_mode;
   if (float* f = transfer_float(m, pname)) {
@@ -35,8 +33,8 @@ void set_transfer(Context& ctx, GLenum pname, double value) {
   switch (pname) {
     case GL_MAP_COLOR: m.map_color = value != 0.0; return;
     case GL_MAP_STENCIL: m.map_stencil = value != 0.0; return;
-    case GL_INDEX_SHIFT: m.index_shift = to_index(value); return;
-    case GL_INDEX_OFFSET: m.index_offset = to_index(value); return;
+    case GL_INDEX_SHIFT: m.index_shift = round_int_param(value); return;
+    case GL_INDEX_OFFSET: m.index_offset = round_int_param(value); return;
     default: ctx.record_error(GL_INVALID_ENUM);
   }
 }

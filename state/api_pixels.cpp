@@ -15,7 +15,7 @@ void set_store(Context& ctx, GLenum pname, double value) {
   const bool pack = (pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT) || pname == GL_PACK_SKIP_IMAGES ||
                     pname == GL_PACK_IMAGE_HEIGHT;
   PixelStore& s = pack ? ctx.pack : ctx.unpack;
-  const GLint v = static_cast<GLint>(value);
+  const GLint v = round_int_param(value);  // GL 2.1 3.6.1: -0.9 is -1, an INVALID_VALUE row length
   switch (pname) {
     case GL_PACK_SWAP_BYTES: case GL_UNPACK_SWAP_BYTES: s.swap_bytes = value != 0.0; return;
     case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST: s.lsb_first = value != 0.0; return;

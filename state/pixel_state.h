@@ -3,12 +3,20 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "raster/texture.h"
 
 namespace pineda {
+
+// An integer parameter given as a float (glPixelStoref, glPixelTransferf): rounded to the
+// nearest integer whatever the FPU rounding mode, clamped to GLint; NaN is 0.
+inline GLint round_int_param(double v) {
+  return std::isnan(v) ? 0 : static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
+}
 
 // GL_CURRENT_RASTER_*: saved with GL_CURRENT_BIT.
 struct RasterPosition {

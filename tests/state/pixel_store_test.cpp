@@ -1,4 +1,6 @@
 // glPixelStore: every parameter, its type conversions and its errors.
+#include <cfenv>
+
 #include "tests/e2e/support/gl_test.h"
 #include "tests/state/get_helpers.h"
 
@@ -22,6 +24,32 @@ TEST_F(PixelStoreTest, IntegerParametersReadBack) {
   for (GLenum p : pnames) EXPECT_EQ(get_int(p), value++) << std::hex << p;
   glPixelStoref(GL_PACK_ROW_LENGTH, 17.f);
   EXPECT_EQ(get_int(GL_PACK_ROW_LENGTH), 17);
+}
+
+// GL 2.1 3.6.1: a float is rounded to the nearest integer, whatever the FPU rounding mode
+// (piglit roundmode-pixelstore); -0.9 rounds to -1, an invalid row length.
+TEST_F(PixelStoreTest, FloatValuesRoundToNearestInAnyRoundingMode) {
+  const int saved = std::fegetround();
+  for (int mode : {FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO, FE_TONEAREST}) {
+    std::fesetround(mode);
+    glPixelStoref(GL_UNPACK_ROW_LENGTH, 2.2f);
+    EXPECT_EQ(get_int(GL_UNPACK_ROW_LENGTH), 2) << mode;
+    glPixelStoref(GL_UNPACK_ROW_LENGTH, 2.8f);
+    EXPECT_EQ(get_int(GL_UNPACK_ROW_LENGTH), 3) << mode;
+    glPixelStoref(GL_UNPACK_ROW_LENGTH, -0.1f);
+    EXPECT_EQ(get_int(GL_UNPACK_ROW_LENGTH), 0) << mode;
+    glPixelStoref(GL_PACK_ALIGNMENT, 3.9f);
+    EXPECT_EQ(get_int(GL_PACK_ALIGNMENT), 4) << mode;
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    glPixelStoref(GL_UNPACK_ROW_LENGTH, -0.9f);
+    EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE)) << mode;
+    EXPECT_EQ(get_int(GL_UNPACK_ROW_LENGTH), 0) << mode;
+  }
+  std::fesetround(saved);
+  glPixelTransferf(GL_INDEX_OFFSET, -2.6f);
+  EXPECT_EQ(get_int(GL_INDEX_OFFSET), -3);
+  glPixelStoref(GL_UNPACK_SKIP_ROWS, 1e20f);  // clamped, not undefined
+  EXPECT_EQ(get_int(GL_UNPACK_SKIP_ROWS), 2147483647);
 }
 
 TEST_F(PixelStoreTest, AlignmentAcceptsOneTwoFourEight) {
