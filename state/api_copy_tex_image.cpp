@@ -51,6 +51,13 @@ bool valid_copy_size(Context& ctx, GLsizei width, GLsizei height) {
   return false;
 }
 
+// GL 1.1 3.8.2: CopyTexImage takes the internal formats of TexImage but 1, 2, 3 and 4.
+bool valid_copy_internal_format(Context& ctx, GLenum internalformat) {
+  if (internalformat < 1 || internalformat > 4) return true;
+  ctx.record_error(GL_INVALID_ENUM);
+  return false;
+}
+
 // Runs `upload` with a tightly packed unpack state, then restores the application's.
 template <typename Upload>
 void with_tight_unpack(Context& ctx, Upload upload) {
@@ -65,7 +72,9 @@ void with_tight_unpack(Context& ctx, Upload upload) {
 
 void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                     GLsizei width, GLsizei height, GLint border) {
-  if (!valid_copy_target(ctx, target, 2) || !valid_copy_size(ctx, width, height)) return;
+  if (!valid_copy_target(ctx, target, 2) || !valid_copy_internal_format(ctx, internalformat) ||
+      !valid_copy_size(ctx, width, height))
+    return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -75,7 +84,9 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
 
 void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                     GLsizei width, GLint border) {
-  if (!valid_copy_target(ctx, target, 1) || !valid_copy_size(ctx, width, 1)) return;
+  if (!valid_copy_target(ctx, target, 1) || !valid_copy_internal_format(ctx, internalformat) ||
+      !valid_copy_size(ctx, width, 1))
+    return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
   with_tight_unpack(ctx, [&] {
     TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());

@@ -87,6 +87,7 @@ void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint inter
   const int inner_d = dims == 3 ? depth - 2 * border : 1;
   if (inner_w < 0 || inner_h < 0 || inner_d < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (target.kind == TexTarget::Cube && width != height) return ctx.record_error(GL_INVALID_VALUE);
+  const GLint recorded_format = stored_internal_format(internal_format);
   TextureObject& tex = image_texture(ctx, target);
   std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
   if (levels.size() <= size_t(level)) levels.resize(level + 1);
@@ -94,11 +95,11 @@ void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint inter
   const int level_max = max_texture_size(target.kind) >> level;  // level l of a full chain is at most max >> l
   const bool too_large = inner_w > level_max || inner_h > level_max || inner_d > level_max;
   if (target.proxy) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
-    l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, inner_d, border, internal_format, base, {}};
+    l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, base, {}};
     return;
   }
   if (too_large) return ctx.record_error(GL_INVALID_VALUE);
-  l = TextureLevelData{inner_w, inner_h, inner_d, border, internal_format, base, {}};
+  l = TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, base, {}};
   l.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
   const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
                       dims == 3};

@@ -52,11 +52,28 @@ uint32_t quantize(uint32_t v, int bits) {
   return widen((v * max + 127) / 255, max);
 }
 
+GLint generic_compressed_base(GLint internal_format) {
+  switch (internal_format) {
+    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
+    case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
+    case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
+    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+    case GL_COMPRESSED_RGB: return GL_RGB;
+    case GL_COMPRESSED_RGBA: return GL_RGBA;
+    default: return 0;
+  }
+}
+
 }  // namespace
+
+GLint stored_internal_format(GLint internal_format) {
+  const GLint base = generic_compressed_base(internal_format);
+  return base ? base : internal_format;
+}
 
 // Mesa's choices (llvmpipe, probed with glGetTexLevelParameter), with 8 bits for those it keeps wider.
 std::optional<TextureFormat> texture_format(GLint internal_format) {
-  switch (internal_format) {
+  switch (stored_internal_format(internal_format)) {
     case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_ALPHA12: case GL_ALPHA16:
       return luminance_alpha(0, 8);
     case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:

@@ -25,6 +25,11 @@ struct TextureFormat {
 // nullopt when `internal_format` is not one.
 std::optional<TextureFormat> texture_format(GLint internal_format);
 
+// The internal format a level records (TEXTURE_INTERNAL_FORMAT): GL 1.3's generic compressed
+// formats (COMPRESSED_RGB, ...) become their base format, as the spec says when no specific
+// compressed format is chosen; any other is kept as given.
+GLint stored_internal_format(GLint internal_format);
+
 // An RGBA colour reduced to the components the format keeps and quantized to its bits, as an
 // RGBA8 texel (R in the lowest byte).
 uint32_t to_texel(const float rgba[4], const TextureFormat& format);

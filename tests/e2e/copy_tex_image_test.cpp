@@ -1,6 +1,8 @@
 // glCopyTexImage and glCopyTexSubImage: texels from the framebuffer.
 #include "tests/e2e/support/gl_test.h"
 
+#include <GL/glext.h>
+
 namespace pineda::test {
 namespace {
 
@@ -111,6 +113,47 @@ TEST_F(CopyTexImageTest, Errors) {
   glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
   glEnd();
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+}
+
+// GL 1.1 3.8.2: "internalformat may not be specified as 1, 2, 3, or 4" (piglit copyteximage).
+TEST_F(CopyTexImageTest, OneToFourAreNotInternalFormatsOfCopies) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  for (GLenum format = 1; format <= 4; ++format) {
+    glCopyTexImage2D(GL_TEXTURE_2D, 0, format, 0, 0, 2, 2, 0);
+    EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM)) << format;
+    glCopyTexImage1D(GL_TEXTURE_1D, 0, format, 0, 0, 2, 0);
+    EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM)) << format;
+  }
+  GLint w = 0, internal = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+  EXPECT_EQ(w, 4);  // the image before the failed copies
+  EXPECT_EQ(internal, GL_RGBA);
+}
+
+// GL 1.3's generic compressed formats are stored uncompressed: the level records the base
+// format, as the spec says when the GL chooses no compressed format.
+TEST_F(CopyTexImageTest, GenericCompressedFormatsStoreTheirBaseFormat) {
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 12, 10, 8, 12, 0);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(texture_image(8, 12), read(12, 10, 8, 12));
+  GLint internal = 0, red = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &red);
+  EXPECT_EQ(internal, GL_RGBA);
+  EXPECT_EQ(red, 8);
+  const GLenum generic[6][2] = {{GL_COMPRESSED_ALPHA, GL_ALPHA},
+                                {GL_COMPRESSED_LUMINANCE, GL_LUMINANCE},
+                                {GL_COMPRESSED_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA},
+                                {GL_COMPRESSED_INTENSITY, GL_INTENSITY},
+                                {GL_COMPRESSED_RGB, GL_RGB},
+                                {GL_COMPRESSED_RGBA, GL_RGBA}};
+  for (const auto& g : generic) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(g[0]), 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &internal);
+    EXPECT_EQ(internal, GLint(g[1]));
+  }
 }
 
 TEST_F(CopyTexImageTest, KeepsTheApplicationsUnpackState) {
