@@ -78,3 +78,38 @@ TEST_F(ProxyTextureTest, ArgumentErrorsStillApply) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+struct FormatTypeError {
+  GLenum format, type, error;
+};
+
+// A packed type the format does not fit is INVALID_OPERATION whatever the format, depth
+// included (piglit proxy-texture); an unknown format or type, or BITMAP with a colour format,
+// INVALID_ENUM. Each leaves the proxy as it was (as llvmpipe answers each).
+TEST_F(ProxyTextureTest, FormatTypeMismatchesAreErrorsThatChangeNothing) {
+  const FormatTypeError cases[] = {
+      {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_8_8_8_8, GL_INVALID_OPERATION},
+      {GL_STENCIL_INDEX, GL_UNSIGNED_BYTE_3_3_2, GL_INVALID_OPERATION},
+      {GL_LUMINANCE, GL_UNSIGNED_SHORT_5_6_5, GL_INVALID_OPERATION},
+      {GL_RGBA, GL_UNSIGNED_BYTE_3_3_2, GL_INVALID_OPERATION},
+      {GL_BGR, GL_UNSIGNED_SHORT_5_6_5, GL_INVALID_OPERATION},
+      {GL_RGBA, GL_BITMAP, GL_INVALID_ENUM},
+      {GL_RGBA, 0x1234, GL_INVALID_ENUM},
+      {0x1234, GL_UNSIGNED_BYTE, GL_INVALID_ENUM},
+  };
+  glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_FLOAT, nullptr);
+  for (const FormatTypeError& c : cases) {
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, c.format, c.type, nullptr);
+    EXPECT_EQ(glGetError(), c.error) << std::hex << c.format << " " << c.type;
+    EXPECT_EQ(level_param(GL_PROXY_TEXTURE_2D, GL_TEXTURE_WIDTH), 8);
+    const uint8_t texel[16] = {};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, c.format, c.type, texel);
+    EXPECT_EQ(glGetError(), c.error) << std::hex << c.format << " " << c.type;
+  }
+}
+
+}  // namespace
+}  // namespace pineda::test
