@@ -117,6 +117,29 @@ TEST_F(TexImageIndexTest, DisplayListsKeepBitmapsAsCompiled) {
   EXPECT_EQ(level(), colors_of({3, 2, 1, 0, 0, 1, 2, 3}));
 }
 
+// A 1x1 bitmap texture compiled and executed in a list, drawn, read back; then the list
+// called again (piglit gl-1.1-read-pixels-after-display-list).
+TEST_F(TexImageIndexTest, BitmapTextureFromAListDrawsItsIndexColour) {
+  pixel_projection();
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  for (const uint8_t byte : {uint8_t(0x8f), uint8_t(0x7f)}) {
+    clear_to(1, 1, 1, 1);
+    glNewList(1, GL_COMPILE_AND_EXECUTE);
+    glEnable(GL_TEXTURE_2D);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_COLOR_INDEX, GL_BITMAP, &byte);
+    glRecti(0, 0, 1, 1);
+    glDisable(GL_TEXTURE_2D);
+    glEndList();
+    const Rgba want = kIndex[byte >> 7];  // the first bit
+    EXPECT_EQ(pixel(0, 0), want) << int(byte);
+    clear_to(1, 1, 1, 1);
+    glCallList(1);
+    EXPECT_EQ(pixel(0, 0), want) << int(byte);
+  }
+}
+
 TEST_F(TexImageIndexTest, FormatAndTypeErrors) {
   const uint8_t data[16] = {};
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 2, 0, GL_RGBA, GL_BITMAP, data);
