@@ -105,16 +105,20 @@ uint32_t requantize_texel(uint32_t texel, const TextureFormat& format) {
   return out;
 }
 
-uint32_t to_texel(const float rgba[4], const TextureFormat& format) {
-  float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
-  switch (format.base) {
-    case TexBaseFormat::Alpha: c[0] = c[1] = c[2] = 0.f; break;
-    case TexBaseFormat::Luminance: c[1] = c[2] = c[0]; c[3] = 1.f; break;
-    case TexBaseFormat::LuminanceAlpha: c[1] = c[2] = c[0]; break;
-    case TexBaseFormat::Intensity: c[1] = c[2] = c[3] = c[0]; break;
-    case TexBaseFormat::RGB: c[3] = 1.f; break;
+void reduce_to_base_format(float rgba[4], raster::TexBaseFormat base) {
+  switch (base) {
+    case TexBaseFormat::Alpha: rgba[0] = rgba[1] = rgba[2] = 0.f; break;
+    case TexBaseFormat::Luminance: rgba[1] = rgba[2] = rgba[0]; rgba[3] = 1.f; break;
+    case TexBaseFormat::LuminanceAlpha: rgba[1] = rgba[2] = rgba[0]; break;
+    case TexBaseFormat::Intensity: rgba[1] = rgba[2] = rgba[3] = rgba[0]; break;
+    case TexBaseFormat::RGB: rgba[3] = 1.f; break;
     case TexBaseFormat::RGBA: break;
   }
+}
+
+uint32_t to_texel(const float rgba[4], const TextureFormat& format) {
+  float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
+  reduce_to_base_format(c, format.base);
   uint32_t texel = 0;
   for (int i = 0; i < 4; ++i) {
     const int bits = channel_bits(format, i);

@@ -30,6 +30,10 @@ std::optional<TextureFormat> texture_format(GLint internal_format);
 // compressed format is chosen; any other is kept as given.
 GLint stored_internal_format(GLint internal_format);
 
+// An RGBA colour as a texel of the base format holds it (GL 1.5 table 3.15): missing colour
+// components 0, missing alpha 1, luminance in R, G and B, intensity in all four.
+void reduce_to_base_format(float rgba[4], raster::TexBaseFormat base);
+
 // An RGBA colour reduced to the components the format keeps and quantized to its bits, as an
 // RGBA8 texel (R in the lowest byte).
 uint32_t to_texel(const float rgba[4], const TextureFormat& format);

@@ -111,7 +111,12 @@ raster::Sampler TextureObject::sampler() const {
   s.wrap_s = to_raster_wrap(params.wrap_s);
   s.wrap_t = to_raster_wrap(params.wrap_t);
   s.wrap_r = to_raster_wrap(params.wrap_r);
+  // GL 1.5 3.8.8: the border colour is taken as a texel of the texture's internal format.
   std::copy(params.border_color, params.border_color + 4, s.border_color);
+  const size_t base = size_t(params.base_level);
+  if (base < levels.size()) reduce_to_base_format(s.border_color, levels[base].base);
+  // A 1D texture has no t: its one row is read whatever t is (no border above or below).
+  if (target == GL_TEXTURE_1D) s.wrap_t = raster::TexWrap::Repeat;
   s.min_lod = params.min_lod;
   s.max_lod = params.max_lod;
   s.lod_bias = params.lod_bias;
