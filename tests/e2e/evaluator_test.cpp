@@ -302,6 +302,31 @@ TEST_F(EvaluatorLightingTest, AutoNormalFollowsTheOrientationOfUAndV) {
   EXPECT_EQ(lit_red(), 0);
 }
 
+TEST_F(EvaluatorLightingTest, DegenerateSurfaceHasAZeroNormal) {
+  // Every control point on one line: dp/du x dp/dv = 0, so no diffuse light (alpha stays 1).
+  const GLfloat points[12] = {4.5f, 4.5f, 0, 4.5f, 4.5f, 0, 28.5f, 4.5f, 0, 28.5f, 4.5f, 0};
+  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 6, 2, 0, 1, 3, 2, points);
+  glEnable(GL_MAP2_VERTEX_3);
+  glEnable(GL_AUTO_NORMAL);
+  glMapGrid2f(2, 0, 1, 1, 0, 1);
+  glEvalMesh2(GL_POINT, 0, 2, 0, 1);
+  EXPECT_EQ(count_pixels({0, 0, 0, 255}), 3);
+  EXPECT_TRUE(near_rgba(pixel(16, 4), {0, 0, 0, 255}));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(EvaluatorTest, NonFiniteDomainDrawsNothing) {
+  const GLfloat points[6] = {4.5f, 4.5f, 0, 8.5f, 4.5f, 0};
+  glMap1f(GL_MAP1_VERTEX_3, NAN, 1, 3, 2, points);  // accepted: u1 != u2
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glEnable(GL_MAP1_VERTEX_3);
+  glMapGrid1f(4, 0, INFINITY);
+  glEvalMesh1(GL_LINE, 0, 4);
+  glEvalMesh1(GL_POINT, 0, 4);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(count_pixels(kWhite), 0);
+}
+
 TEST_F(EvaluatorTest, GetMapReturnsTheCopiedControlPoints) {
   GLdouble colors[15] = {0.5, 1, 2.5, -2.5, 99, 3, 4, 5, 6, 99, 7, 8, 9, 10, 99};  // stride 5
   glMap1d(GL_MAP1_COLOR_4, -1, 3, 5, 3, colors);
