@@ -33,12 +33,12 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
   if (type == GL_COLOR) {
     image.kind = PixelRectImage::Kind::Color;
     image.color.assign(4 * n, 0.f);
-  } else if (type == GL_DEPTH) {
-    image.kind = PixelRectImage::Kind::Depth;
-    image.depth.assign(n, 0.0);
   } else {
-    image.kind = PixelRectImage::Kind::Stencil;
-    image.stencil.assign(n, 0);
+    image.kind = type == GL_DEPTH     ? PixelRectImage::Kind::Depth
+                 : type == GL_STENCIL ? PixelRectImage::Kind::Stencil
+                                      : PixelRectImage::Kind::DepthStencil;
+    if (type != GL_STENCIL) image.depth.assign(n, 0.0);
+    if (type != GL_DEPTH) image.stencil.assign(n, 0);
   }
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
   const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
@@ -58,11 +58,12 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
         rgba[2] = p[bgra ? 0 : 2] / 255.f;
         rgba[3] = p[3] / 255.f;
         transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
-      } else if (type == GL_DEPTH) {
-        image.depth[k] = transfer_depth(ctx.pixel_mode, fb.depth.base[fb.depth.stride * sy + sx] / depth_max);
-      } else {
-        image.stencil[k] = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, fb.stencil.base[fb.stencil.stride * sy + sx]);
+        continue;
       }
+      if (type != GL_STENCIL)
+        image.depth[k] = transfer_depth(ctx.pixel_mode, fb.depth.base[fb.depth.stride * sy + sx] / depth_max);
+      if (type != GL_DEPTH)
+        image.stencil[k] = transfer_stencil(ctx.pixel_mode, ctx.pixel_maps, fb.stencil.base[fb.stencil.stride * sy + sx]);
     }
   }
   return image;
@@ -91,11 +92,14 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
 
 void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return ctx.record_error(GL_INVALID_ENUM);
+  // GL_DEPTH_STENCIL: EXT_packed_depth_stencil's copy of both, as Mesa takes it at any version.
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
+    return ctx.record_error(GL_INVALID_ENUM);
   const Drawable* draw = ctx.draw_drawable();
   const Drawable* read = ctx.read_drawable();
-  if (type == GL_DEPTH && (!has_depth(draw) || !has_depth(read))) return ctx.record_error(GL_INVALID_OPERATION);
-  if (type == GL_STENCIL && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
+  const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
+  if (depth && (!has_depth(draw) || !has_depth(read))) return ctx.record_error(GL_INVALID_OPERATION);
+  if (stencil && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
   if (!ctx.raster_pos.valid || width == 0 || height == 0 || !draw || !read) return;
   ctx.finish();
   draw_pixel_rect(ctx, read_rect(ctx, ctx.read_framebuffer(), x, y, width, height, type));

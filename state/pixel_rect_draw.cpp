@@ -61,6 +61,10 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
           case PixelRectImage::Kind::Stencil:
             writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
             break;
+          case PixelRectImage::Kind::DepthStencil:
+            writer.fragment(x, y, rp.color, image.depth[k]);
+            writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
+            break;
         }
       }
     }

@@ -10,12 +10,14 @@
 namespace pineda {
 
 struct PixelRectImage {
-  enum class Kind { Color, Depth, Stencil };
+  // DepthStencil (glCopyPixels of GL_DEPTH_STENCIL): a fragment with the depth, then the
+  // stencil index written as a Stencil image writes it.
+  enum class Kind { Color, Depth, Stencil, DepthStencil };
   Kind kind = Kind::Color;
   int width = 0, height = 0;
   std::vector<float> color;      // Color: RGBA per pixel, bottom row first
-  std::vector<double> depth;     // Depth: one value per pixel in [0, 1]
-  std::vector<int64_t> stencil;  // Stencil: one index per pixel
+  std::vector<double> depth;     // Depth, DepthStencil: one value per pixel in [0, 1]
+  std::vector<int64_t> stencil;  // Stencil, DepthStencil: one index per pixel
   std::vector<uint8_t> present;  // empty, or 0 for pixels that produce no fragment
 };
 

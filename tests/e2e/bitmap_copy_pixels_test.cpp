@@ -189,6 +189,51 @@ TEST_F(CopyPixelsTest, DepthAndStencil) {
   EXPECT_EQ(s, 7);
 }
 
+// GL_DEPTH_STENCIL (EXT_packed_depth_stencil; piglit depthstencil-default_fb-copypixels)
+// copies both: depth through the fragment's depth, stencil written as GL_STENCIL writes it
+// (not by the stencil test's operation).
+TEST_F(CopyPixelsTest, DepthStencilCopiesBoth) {
+  glClearDepth(0.25);
+  glClearStencil(7);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glScissor(0, 0, 2, 1);
+  glEnable(GL_SCISSOR_TEST);
+  glClearDepth(0.75);
+  glClearStencil(0x33);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0x55, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  glWindowPos2i(5, 5);
+  glCopyPixels(0, 0, 2, 1, GL_DEPTH_STENCIL);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLuint z[3] = {};
+  glReadPixels(5, 5, 3, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, z);
+  EXPECT_EQ(z[0] >> 8, uint32_t(0.75 * 16777215 + 0.5));
+  EXPECT_EQ(z[1] >> 8, uint32_t(0.75 * 16777215 + 0.5));
+  EXPECT_EQ(z[2] >> 8, uint32_t(0.25 * 16777215 + 0.5));  // outside the copy
+  GLubyte s[3] = {};
+  glReadPixels(5, 5, 3, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+  EXPECT_EQ(s[0], 0x33);
+  EXPECT_EQ(s[1], 0x33);
+  EXPECT_EQ(s[2], 7);
+}
+
+class CopyPixelsWithoutStencilTest : public BitmapTest {
+ protected:
+  SurfaceSpec spec() const override { return {8, 8, 24, 0}; }
+};
+
+TEST_F(CopyPixelsWithoutStencilTest, DepthStencilNeedsBothBuffers) {
+  glCopyPixels(0, 0, 1, 1, GL_DEPTH_STENCIL);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glCopyPixels(0, 0, 1, 1, GL_DEPTH);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(CopyPixelsTest, Errors) {
   glCopyPixels(0, 0, -1, 1, GL_COLOR);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
