@@ -154,3 +154,4 @@ TEST_F(TexImageIndexTest, FormatAndTypeErrors) {
 
 }  // namespace
 }  // namespace pineda::test
+
