@@ -32,6 +32,12 @@ int64_t snap(double window) {
 // such a vertex has no window position and drops its primitive.
 bool has_window_position(const WinVert& v) { return std::isfinite(v.inv_w) && std::isfinite(v.fx) && std::isfinite(v.fy); }
 
+// glPolygonOffset's r, the smallest resolvable difference, in depth-buffer steps. One step is not
+// always resolvable: positions are floats, and near the near plane (eye distance just above 1) a
+// float distance moves window z by 2^-23, two steps of a 24-bit buffer. llvmpipe's r is also two
+// steps (piglit gl-1.4-polygon-offset measures it against the separation it can draw).
+constexpr double kResolvableDepthSteps = 2.0;
+
 }  // namespace
 
 GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool reference)
@@ -191,7 +197,7 @@ double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool en
   for (size_t i = 1; i + 1 < window.size(); ++i)
     if (depth_slopes(window[0], window[i], window[i + 1], dzdx, dzdy)) break;
   const double slope = std::max(std::fabs(dzdx), std::fabs(dzdy));
-  const double offset = s.offset_factor * slope + s.offset_units;
+  const double offset = s.offset_factor * slope + kResolvableDepthSteps * s.offset_units;
   return std::isfinite(offset) ? offset : 0.0;
 }
 

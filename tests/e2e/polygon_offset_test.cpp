@@ -23,6 +23,12 @@ class PolygonOffsetTest : public GlTest {
     glVertex3f(-1, 1, z);
     glEnd();
   }
+  // The 24-bit depth step at pixel (8, 8).
+  uint32_t depth_step() {
+    GLuint d = 0;
+    glReadPixels(8, 8, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &d);
+    return d >> 8;
+  }
 };
 
 TEST_F(PolygonOffsetTest, NegativeUnitsPullACoplanarPolygonInFront) {
@@ -35,6 +41,23 @@ TEST_F(PolygonOffsetTest, NegativeUnitsPullACoplanarPolygonInFront) {
   glPolygonOffset(0, -2);
   quad(0.2f);
   EXPECT_TRUE(near_rgba(pixel(8, 8), {0, 255, 0, 255}));
+}
+
+// r, the depth one unit moves, is two depth-buffer steps (as llvmpipe): one step is not
+// resolvable for float positions near the near plane (piglit gl-1.4-polygon-offset).
+TEST_F(PolygonOffsetTest, OneUnitIsTwoDepthSteps) {
+  glDepthFunc(GL_ALWAYS);
+  quad(0.0f);
+  const uint32_t base = depth_step();
+  EXPECT_EQ(base, 8388608u);  // 0.5 * (2^24 - 1), rounded
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(0, 1);
+  quad(0.0f);
+  EXPECT_EQ(depth_step(), base + 2);
+  glPolygonOffset(0, -3);
+  quad(0.0f);
+  EXPECT_EQ(depth_step(), base - 6);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 TEST_F(PolygonOffsetTest, OffsetAppliesOnlyToEnabledModes) {

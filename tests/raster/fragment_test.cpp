@@ -137,7 +137,7 @@ TEST(Fragment, DepthIsLinearInWindowSpace) {
   for (int x = 0; x < 64; ++x) EXPECT_EQ(fb.depth_at(x, 0), static_cast<uint32_t>((x + 0.5) / 64 * 65535 + 0.5)) << x;
 }
 
-TEST(Fragment, PolygonOffsetUnitsMoveByDepthUnits) {
+TEST(Fragment, PolygonOffsetUnitsMoveByTwoDepthSteps) {
   Target t(16);
   const float c[4] = {1, 1, 1, 1};
   t.clear(c);
@@ -148,7 +148,7 @@ TEST(Fragment, PolygonOffsetUnitsMoveByDepthUnits) {
   s.offset_units = 3.f;
   s.offset_factor = 10.f;  // flat polygon: no slope
   t.quad(s, c, 0.f);
-  EXPECT_EQ(t.fb.depth_at(1, 2), static_cast<uint32_t>(0.5 * 65535 + 3 + 0.5));
+  EXPECT_EQ(t.fb.depth_at(1, 2), 32767u + 2 * 3 + 1);  // 0.5 * 65535 rounded up, one unit is two steps
 }
 
 struct StencilCase {
