@@ -54,8 +54,12 @@ void set_fog_coord(Context& ctx, double c) { ctx.extras.current_fog_coord = stat
 
 }  // namespace
 
-void Fogf(Context& ctx, GLenum pname, GLfloat param) { set_fog(ctx, pname, param, nullptr); }
-void Fogi(Context& ctx, GLenum pname, GLint param) { set_fog(ctx, pname, param, nullptr); }
+// FOG_COLOR given to a scalar form is (param, 0, 0, 0), as in Mesa.
+void Fogf(Context& ctx, GLenum pname, GLfloat param) {
+  const GLfloat color[4] = {param, 0, 0, 0};
+  set_fog(ctx, pname, param, color);
+}
+void Fogi(Context& ctx, GLenum pname, GLint param) { Fogf(ctx, pname, GLfloat(param)); }
 
 void Fogfv(Context& ctx, GLenum pname, const GLfloat* params) {
   if (!params) return;

@@ -114,15 +114,11 @@ bool is_colour_param(GLenum pname) {
          pname == GL_AMBIENT_AND_DIFFUSE || pname == GL_LIGHT_MODEL_AMBIENT;
 }
 
-bool is_scalar_light_param(GLenum pname) {
-  return pname == GL_SPOT_EXPONENT || pname == GL_SPOT_CUTOFF || pname == GL_CONSTANT_ATTENUATION ||
-         pname == GL_LINEAR_ATTENUATION || pname == GL_QUADRATIC_ATTENUATION;
-}
-
 }  // namespace
 
+// The scalar forms take a vector parameter as (param, 0, 0, 0), as Mesa does (the GL 1.x
+// spec gives no error for it, and programs and piglit rely on it).
 void Lightf(Context& ctx, GLenum l, GLenum pname, GLfloat param) {
-  if (!is_scalar_light_param(pname)) return ctx.record_error(GL_INVALID_ENUM);
   const GLfloat v[4] = {param, 0, 0, 0};
   light(ctx, l, pname, v);
 }
@@ -138,7 +134,6 @@ void Lightiv(Context& ctx, GLenum l, GLenum pname, const GLint* params) {
 }
 
 void LightModelf(Context& ctx, GLenum pname, GLfloat param) {
-  if (pname == GL_LIGHT_MODEL_AMBIENT) return ctx.record_error(GL_INVALID_ENUM);
   const GLfloat v[4] = {param, 0, 0, 0};
   light_model(ctx, pname, v);
 }
@@ -154,7 +149,6 @@ void LightModeliv(Context& ctx, GLenum pname, const GLint* params) {
 }
 
 void Materialf(Context& ctx, GLenum face, GLenum pname, GLfloat param) {
-  if (pname != GL_SHININESS) return ctx.record_error(GL_INVALID_ENUM);
   const GLfloat v[4] = {param, 0, 0, 0};
   material(ctx, face, pname, v);
 }

@@ -113,8 +113,7 @@ int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
 }  // namespace
 
 void TexEnvf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
-  if (pname == GL_TEXTURE_ENV_COLOR) return ctx.record_error(GL_INVALID_ENUM);
-  const GLfloat v[4] = {param, 0, 0, 0};
+  const GLfloat v[4] = {param, 0, 0, 0};  // a vector parameter takes (param, 0, 0, 0), as in Mesa
   tex_env(ctx, target, pname, v);
 }
 void TexEnvi(Context& ctx, GLenum target, GLenum pname, GLint param) { TexEnvf(ctx, target, pname, GLfloat(param)); }

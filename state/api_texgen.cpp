@@ -53,12 +53,10 @@ void set_vector(Context& ctx, GLenum coord, GLenum pname, const T* params) {
   }
 }
 
+// A plane given to a scalar form is (param, 0, 0, 0), as in Mesa.
 void set_scalar(Context& ctx, GLenum coord, GLenum pname, double param) {
-  if (pname != GL_TEXTURE_GEN_MODE) {
-    if (coord_state(ctx, coord)) ctx.record_error(GL_INVALID_ENUM);
-    return;
-  }
-  set_mode(ctx, coord, param);
+  const double v[4] = {param, 0, 0, 0};
+  set_vector(ctx, coord, pname, v);
 }
 
 template <typename T>

@@ -339,12 +339,24 @@ void TexSubImage3DEXT(Context& ctx, GLenum target, GLint level, GLint xoffset, G
   TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
 }
 
+// The border colour takes only the vector forms, but a display list holds the scalar forms as
+// vector ones with (param, 0, 0, 0), so there they are accepted, as in Mesa.
 void TexParameterf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
-  if (is_vector_tex_param(pname)) return ctx.record_error(GL_INVALID_ENUM);
+  if (is_vector_tex_param(pname) && !ctx.compiling_list()) return ctx.record_error(GL_INVALID_ENUM);
   const GLfloat v[4] = {param, 0, 0, 0};
   tex_parameter(ctx, target, pname, v);
 }
 void TexParameteri(Context& ctx, GLenum target, GLenum pname, GLint param) { TexParameterf(ctx, target, pname, GLfloat(param)); }
+void compile_TexParameterf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
+  ctx.record_list_command([=](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    const GLfloat v[4] = {param, 0, 0, 0};
+    tex_parameter(c, target, pname, v);
+  });
+}
+void compile_TexParameteri(Context& ctx, GLenum target, GLenum pname, GLint param) {
+  compile_TexParameterf(ctx, target, pname, GLfloat(param));
+}
 void TexParameterfv(Context& ctx, GLenum target, GLenum pname, const GLfloat* params) {
   if (params) tex_parameter(ctx, target, pname, params);
 }

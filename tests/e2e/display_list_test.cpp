@@ -97,5 +97,34 @@ TEST_F(DisplayListTest, CompiledCallListsBetweenBeginAndEnd) {
   EXPECT_TRUE(near_rgba(pixel(3, 3), {255, 255, 255, 255}));
 }
 
+// Mesa compiles the scalar glTexParameter forms as vector ones with (param, 0, 0, 0), so in a
+// list the border colour takes them; outside a list it does not (INVALID_ENUM).
+TEST_F(DisplayListTest, ScalarBorderColourIsAVectorInAList) {
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glNewList(7, GL_COMPILE_AND_EXECUTE);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.5f);
+  glEndList();
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLfloat border[4] = {9, 9, 9, 9};
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  EXPECT_EQ(border[0], 0.5f);
+  EXPECT_EQ(border[1], 0.f);
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, zero);
+  glNewList(8, GL_COMPILE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1);
+  glEndList();
+  glCallList(8);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  EXPECT_EQ(border[0], 1.f);
+  EXPECT_EQ(border[3], 0.f);
+  glBegin(GL_POINTS);
+  glCallList(8);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+}
+
 }  // namespace
 }  // namespace pineda::test

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "tests/e2e/support/pixel_test.h"
 
@@ -154,8 +155,10 @@ TEST_F(FogTest, QueriesAndErrors) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glFogi(GL_FOG_MODE, GL_LINE);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glFogf(GL_FOG_COLOR, 1.f);  // a vector parameter
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glFogf(GL_FOG_COLOR, 0.5f);  // a vector parameter: (0.5, 0, 0, 0), as in Mesa
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glGetFloatv(GL_FOG_COLOR, color);
+  EXPECT_EQ(std::vector<GLfloat>(color, color + 4), (std::vector<GLfloat>{0.5f, 0, 0, 0}));
   glFogi(GL_FOG_COORD_SRC, GL_LINEAR);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glFogf(GL_FOG_START, 2.f);

@@ -1,5 +1,7 @@
 // Texture coordinate generation (GL 1.5 section 2.11.4): object and eye linear planes, the
 // normal and reflection maps, sphere map; state, errors, attributes.
+#include <vector>
+
 #include "tests/e2e/support/pixel_test.h"
 
 namespace pineda::test {
@@ -122,8 +124,10 @@ TEST_F(TexGenTest, ErrorsAndQueries) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexGeni(GL_S + 4, GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glTexGenf(GL_S, GL_OBJECT_PLANE, 1.f);  // a vector parameter
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glTexGenf(GL_S, GL_OBJECT_PLANE, 2.f);  // a vector parameter: (2, 0, 0, 0), as in Mesa
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glGetTexGendv(GL_S, GL_OBJECT_PLANE, plane);
+  EXPECT_EQ(std::vector<GLdouble>(plane, plane + 4), (std::vector<GLdouble>{2, 0, 0, 0}));
   glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);
   glGetTexGeniv(GL_R, GL_TEXTURE_GEN_MODE, &mode);
   EXPECT_EQ(mode, GL_REFLECTION_MAP);

@@ -122,8 +122,9 @@ TEST_F(LightingStateTest, ParameterErrorsChangeNothing) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glLightf(GL_LIGHT0, GL_LINEAR_ATTENUATION, -0.5f);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
-  glLightf(GL_LIGHT0, GL_POSITION, 1.f);  // a vector parameter
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glLightf(GL_LIGHT0 + 1, GL_POSITION, 3.f);  // a vector parameter: (3, 0, 0, 0), as in Mesa
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(light(GL_LIGHT0 + 1, GL_POSITION, 4), (Floats{3, 0, 0, 0}));
   glLightf(GL_LIGHT0 + 8, GL_SPOT_EXPONENT, 1.f);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glLightf(GL_LIGHT0, 0x1234, 1.f);
@@ -145,11 +146,12 @@ TEST_F(LightingStateTest, LightModel) {
   EXPECT_EQ(get_floats(GL_LIGHT_MODEL_AMBIENT, 4), (Floats{0.5f, 0.25f, 0.125f, 1.f}));
   EXPECT_EQ(get_bool(GL_LIGHT_MODEL_LOCAL_VIEWER), GL_TRUE);
   EXPECT_EQ(get_bool(GL_LIGHT_MODEL_TWO_SIDE), GL_TRUE);
-  glLightModelf(GL_LIGHT_MODEL_AMBIENT, 1.f);  // a vector parameter
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glLightModeli(0x1234, 0);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   EXPECT_EQ(get_floats(GL_LIGHT_MODEL_AMBIENT, 4)[0], 0.5f);
+  glLightModelf(GL_LIGHT_MODEL_AMBIENT, 0.75f);  // a vector parameter: (0.75, 0, 0, 0), as in Mesa
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_floats(GL_LIGHT_MODEL_AMBIENT, 4), (Floats{0.75f, 0, 0, 0}));
 }
 
 TEST_F(LightingStateTest, MaterialFaces) {
@@ -173,9 +175,10 @@ TEST_F(LightingStateTest, MaterialFaces) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glMaterialfv(GL_LEFT, GL_DIFFUSE, red);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glMaterialf(GL_FRONT, GL_DIFFUSE, 1.f);  // a vector parameter
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   EXPECT_EQ(material(GL_FRONT, GL_SHININESS, 1), (Floats{64}));
+  glMaterialf(GL_FRONT, GL_DIFFUSE, 0.5f);  // a vector parameter: (0.5, 0, 0, 0), as in Mesa
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(material(GL_FRONT, GL_DIFFUSE, 4), (Floats{0.5f, 0, 0, 0}));
   GLfloat v = 3;
   glGetMaterialfv(GL_FRONT_AND_BACK, GL_SHININESS, &v);  // the query needs one face
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));

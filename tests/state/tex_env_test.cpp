@@ -1,4 +1,6 @@
 // glTexEnv and glGetTexEnv.
+#include <vector>
+
 #include "tests/e2e/support/gl_test.h"
 #include "tests/state/get_helpers.h"
 
@@ -71,8 +73,11 @@ TEST_F(TexEnvTest, ErrorsChangeNothing) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexEnvi(GL_TEXTURE_ENV, 0x1234, GL_REPLACE);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, 1.f);  // a vector parameter
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, 0.5f);  // a vector parameter: (0.5, 0, 0, 0), as in Mesa
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLfloat env_color[4];
+  glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env_color);
+  EXPECT_EQ(std::vector<GLfloat>(env_color, env_color + 4), (std::vector<GLfloat>{0.5f, 0, 0, 0}));
   EXPECT_EQ(mode(), GL_DECAL);
   GLint m = 99;
   glGetTexEnviv(GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, &m);
