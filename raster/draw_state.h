@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "raster/point_size.h"
 #include "raster/sample_counter.h"
 #include "raster/texture.h"
 
@@ -90,6 +91,7 @@ struct DrawState {
   bool offset_fill = false, offset_line = false, offset_point = false;
   float offset_factor = 0.f, offset_units = 0.f;
   float point_size = 1.f;
+  PointParameters point_params;  // with attenuation, the size comes per vertex (ClipVertex::point_size)
   float line_width = 1.f;
   bool flat_shading = false;  // GL_FLAT: the provoking vertex's colour for the whole primitive
   uint32_t clip_planes = 0;   // bit i: user clip plane i enabled (ClipVertex::clip_distance[i])

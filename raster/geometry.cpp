@@ -67,7 +67,8 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
   volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
   line_width_ = rounded_size(s.line_width, kMaxLineWidth);
-  point_size_ = rounded_size(s.point_size, kMaxPointSize);
+  point_size_ = rounded_size(derived_point_size(s.point_params, s.point_size, 0.f), kMaxPointSize);
+  point_size_per_vertex_ = s.point_params.attenuated();
 }
 
 ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
@@ -168,7 +169,11 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   emit(prim);
 }
 
-void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
+int GeometryStage::point_size_of(const ClipVertex& v) const {
+  return point_size_per_vertex_ ? rounded_size(v.point_size, kMaxPointSize) : point_size_;
+}
+
+void GeometryStage::draw_point(const ClipVert& v, const Style& style, int size) {
   const double x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
   // A point is drawn when its centre is inside the clip volume.
   if (!(w > 0.0 && -w <= x && x <= w && -w <= y && y <= w && -w <= z && z <= w)) return;
@@ -177,12 +182,12 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style) {
   const WinVert wv = to_window(v, style.back_facing);
   if (!has_window_position(wv)) return;
   PrimSetup prim;
-  if (setup_point(wv, point_size_, params(style), prim)) emit(prim);
+  if (setup_point(wv, size, params(style), prim)) emit(prim);
 }
 
 void GeometryStage::point(const ClipVertex& v) {
   if (!active_ || !finite_position(v)) return;
-  draw_point(to_clip(v), style_for(v, false));
+  draw_point(to_clip(v), style_for(v, false), point_size_of(v));
 }
 
 void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) {
@@ -255,7 +260,7 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
   } else {
     style.depth_offset = polygon_offset(window_, s.offset_point);
     for (size_t i = 0; i < n; ++i)
-      if (edge_flags[i]) draw_point(in_[i], style);
+      if (edge_flags[i]) draw_point(in_[i], style, point_size_of(*v[i]));
   }
 }
 

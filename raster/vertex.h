@@ -32,6 +32,7 @@ struct ClipVertex {
   float secondary[3] = {0, 0, 0};
   float back_secondary[3] = {0, 0, 0};
   float fog = 0.f;  // the fog coordinate c: |z_eye| or the vertex's fog coordinate
+  float point_size = 1.f;  // the derived size, when the point size is attenuated
   // Eye-space distance to each enabled user clip plane (>= 0 is inside).
   float clip_distance[kMaxClipPlanes] = {};
 };

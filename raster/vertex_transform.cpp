@@ -105,7 +105,7 @@ Needs needs_of(const Transform& t) {
     n.texgen |= x.texgen[u].any();
     n.normal |= x.texgen[u].needs_normal();
   }
-  n.eye = t.lighting.enabled || (x.fog && !x.fog_from_coord) || x.clip_planes != 0 || n.texgen;
+  n.eye = t.lighting.enabled || (x.fog && !x.fog_from_coord) || x.clip_planes != 0 || n.texgen || x.point_attenuation;
   return n;
 }
 
@@ -153,6 +153,7 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
         for (int c = 0; c < 3; ++c) o.secondary[c] = o.back_secondary[c] = std::clamp(v.secondary_color[c], 0.f, 1.f);
     }
     if (x.fog) o.fog = std::fabs(x.fog_from_coord ? v.fog_coord : eye4.z);
+    if (x.point_attenuation) o.point_size = derived_point_size(x.point, x.point_size, std::fabs(eye4.z));
     for (uint32_t planes = x.clip_planes; planes; planes &= planes - 1) {
       const int p = __builtin_ctz(planes);
       o.clip_distance[p] = glm::dot(x.clip_plane_eye[p], eye4);

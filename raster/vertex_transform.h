@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/point_size.h"
 #include "raster/texgen.h"
 #include "raster/texture.h"
 #include "raster/vertex.h"
@@ -55,6 +56,9 @@ struct VertexExtras {
   uint32_t clip_planes = 0;     // bit i: ClipVertex::clip_distance[i] is read
   std::array<glm::vec4, kMaxClipPlanes> clip_plane_eye{};  // eye coordinates
   std::array<TexGen, kMaxTextureUnits> texgen;
+  bool point_attenuation = false;  // ClipVertex::point_size is read
+  PointParameters point;
+  float point_size = 1.f;  // glPointSize
 };
 
 struct Transform {

@@ -174,6 +174,7 @@ void restore(Context& ctx, const AttribFrame& f) {
   }
   if (m & GL_POINT_BIT) {
     s.point_size = o.point_size;
+    s.point_params = o.point_params;
     restore_caps(ctx, f, GL_POINT_BIT);
   }
   if (m & GL_LINE_BIT) {

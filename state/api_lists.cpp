@@ -107,7 +107,7 @@ size_t list_param_count(GLenum pname) {
     case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT: case GL_TEXTURE_BORDER_COLOR:
     case GL_TEXTURE_ENV_COLOR: case GL_FOG_COLOR: case GL_OBJECT_PLANE: case GL_EYE_PLANE:
       return 4;
-    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES: return 3;
+    case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES: case GL_POINT_DISTANCE_ATTENUATION: return 3;
     default: return 1;
   }
 }

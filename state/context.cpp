@@ -1,5 +1,7 @@
 #include "state/context.h"
 
+#include "state/limits.h"
+
 namespace pineda {
 
 Context::Context(const ContextAttribs& attribs)
@@ -8,6 +10,7 @@ Context::Context(const ContextAttribs& attribs)
   projection.max_depth = 10;
   lighting.lights[0].diffuse = glm::vec4(1);
   lighting.lights[0].specular = glm::vec4(1);
+  draw_state.point_params.size_max = kPointSizeRange[1];
 }
 
 Context::~Context() = default;

@@ -6,6 +6,7 @@
 
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/point_parameters.h"
 #include "state/select_feedback.h"
 #include "state/vertex_extras_snapshot.h"
 
@@ -36,6 +37,7 @@ raster::Transform build_transform(Context& ctx, int texture_units) {
     t.texture_matrix_identity[u] = is_identity(t.texture_matrix[u]);
   }
   snapshot_vertex_extras(ctx, t, texture_units);
+  snapshot_point_parameters(ctx, t);
   return t;
 }
 
