@@ -5,6 +5,7 @@
 
 #include "raster/mip_selection.h"
 #include "raster/quad_vector.h"
+#include "raster/sampler_depth.h"
 #include "raster/sampler_volume.h"
 #include "raster/texel_addressing.h"
 
@@ -151,6 +152,7 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
 
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
                  float out[4][4]) {
+  if (image.depth) return sample_depth_quad(image, sampler, s, t, nullptr, out);
   if (sampler.wrap_s == TexWrap::Repeat && sampler.wrap_t == TexWrap::Repeat)
     sample_quad_wrapped<true>(image, sampler, s, t, out);
   else
@@ -160,7 +162,8 @@ void sample_quad(const TextureImage& image, const Sampler& sampler, const float 
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
                  const float r[4], float out[4][4]) {
   switch (image.kind) {
-    case TexKind::Planar: return sample_quad(image, sampler, s, t, out);
+    case TexKind::Planar:
+      return image.depth ? sample_depth_quad(image, sampler, s, t, r, out) : sample_quad(image, sampler, s, t, out);
     case TexKind::Volume: return sample_volume_quad(image, sampler, s, t, r, out);
     case TexKind::Cube: return sample_cube_quad(image, sampler, s, t, r, out);
   }

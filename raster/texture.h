@@ -5,6 +5,8 @@
 #include <memory>
 #include <vector>
 
+#include "raster/compare_func.h"
+
 namespace pineda::raster {
 
 constexpr int kMaxTextureUnits = 4;
@@ -25,7 +27,10 @@ struct TextureLevel {
 enum class TexKind : uint8_t { Planar, Volume, Cube };
 
 struct TextureImage {
+  // For a depth texture (`depth`) the texels are float depths in [0, 1] and the base format
+  // (Luminance, Intensity or Alpha: DEPTH_TEXTURE_MODE) says where the sampled value goes.
   TexBaseFormat base_format = TexBaseFormat::RGBA;
+  bool depth = false;
   TexKind kind = TexKind::Planar;
   std::vector<TextureLevel> levels;  // level 0 first; a complete chain when mipmapped
 };
@@ -60,6 +65,10 @@ struct Sampler {
   float border_color[4] = {0, 0, 0, 0};
   float min_lod = -1000.f, max_lod = 1000.f;
   float lod_bias = 0.f;  // the texture's and the unit's, added to lambda before the clamp
+  // GL 1.4 3.8.14 (ARB_shadow): a depth texture's texels are compared with r / q, each
+  // before filtering, and give 0 or 1.
+  bool compare = false;
+  CompareFunc compare_func = CompareFunc::LessEqual;
 };
 
 struct TextureUnit {
@@ -70,7 +79,7 @@ struct TextureUnit {
   CombineState combine;  // read when env_mode is Combine
 
   // Whether sampling reads the r coordinate, so that the draw interpolates it.
-  bool reads_r() const { return image && image->kind != TexKind::Planar; }
+  bool reads_r() const { return image && (image->kind != TexKind::Planar || (image->depth && sampler.compare)); }
 };
 
 }  // namespace pineda::raster

@@ -1,16 +1,33 @@
 // glCopyTexImage1D/2D and glCopyTexSubImage1D/2D/3D: texture images from the read buffer.
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/limits.h"
+#include "state/texture_format.h"
+#include "state/texture_target.h"
 
 namespace pineda::gl {
 namespace {
 
 // The read drawable's pixels in [x, x + width) x [y, y + height) as tight RGBA8 rows, bottom
 // row first; pixels outside the drawable read as zero (GL leaves them undefined).
+// Calls visit(fx, fy, index) for each pixel of [x, x + width) x [y, y + height) inside the
+// framebuffer; index counts the rectangle's pixels row by row, bottom row first.
+template <typename Visit>
+void for_each_read_pixel(const raster::Framebuffer& fb, GLint x, GLint y, GLsizei width, GLsizei height, Visit visit) {
+  for (GLsizei row = 0; row < height; ++row) {
+    const int64_t fy = int64_t(y) + row;
+    if (fy < 0 || fy >= fb.height) continue;
+    for (GLsizei col = 0; col < width; ++col) {
+      const int64_t fx = int64_t(x) + col;
+      if (fx >= 0 && fx < fb.width) visit(fx, fy, size_t(row) * width + col);
+    }
+  }
+}
+
 std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
   std::vector<uint8_t> out(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 4, 0);
   const Drawable* d = ctx.read_drawable();
@@ -18,20 +35,14 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
   const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
-  for (GLsizei row = 0; row < height; ++row) {
-    const int64_t fy = int64_t(y) + row;
-    if (fy < 0 || fy >= fb.height) continue;
-    for (GLsizei col = 0; col < width; ++col) {
-      const int64_t fx = int64_t(x) + col;
-      if (fx < 0 || fx >= fb.width) continue;
-      const uint8_t* p = fb.color.base + fb.color.stride * fy + 4 * fx;
-      uint8_t* o = &out[(size_t(row) * width + col) * 4];
-      o[0] = p[bgra ? 2 : 0];
-      o[1] = p[1];
-      o[2] = p[bgra ? 0 : 2];
-      o[3] = d->alpha_bits ? p[3] : 255;
-    }
-  }
+  for_each_read_pixel(fb, x, y, width, height, [&](int64_t fx, int64_t fy, size_t i) {
+    const uint8_t* p = fb.color.base + fb.color.stride * fy + 4 * fx;
+    uint8_t* o = &out[i * 4];
+    o[0] = p[bgra ? 2 : 0];
+    o[1] = p[1];
+    o[2] = p[bgra ? 0 : 2];
+    o[3] = d->alpha_bits ? p[3] : 255;
+  });
   return out;
 }
 
@@ -41,6 +52,38 @@ bool valid_copy_target(Context& ctx, GLenum target, int dims) {
   ImageTarget t;
   if (image_target(target, t) && !t.proxy && image_dimensions(t.kind) == dims) return true;
   ctx.record_error(GL_INVALID_ENUM);
+  return false;
+}
+
+// The read drawable's depth values in the same rectangle as floats in [0, 1]; outside the
+// drawable, zero.
+std::vector<float> read_depth(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
+  std::vector<float> out(size_t(std::max(width, 0)) * size_t(std::max(height, 0)), 0.f);
+  ctx.finish();
+  const raster::Framebuffer fb = ctx.read_framebuffer();
+  const double max = std::ldexp(1.0, fb.depth.bits) - 1.0;
+  for_each_read_pixel(fb, x, y, width, height, [&](int64_t fx, int64_t fy, size_t i) {
+    out[i] = static_cast<float>(fb.depth.base[fb.depth.stride * fy + fx] / max);
+  });
+  return out;
+}
+
+bool is_depth_format(GLint internal_format) { return texture_format(internal_format).value_or(TextureFormat{}).depth > 0; }
+
+// Whether the level a glCopyTexSubImage writes is a depth image (read from the depth buffer).
+bool depth_level(Context& ctx, GLenum target, GLint level) {
+  ImageTarget t;
+  if (!image_target(target, t) || t.proxy || level < 0) return false;
+  const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
+  const std::vector<TextureLevelData>& levels = ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
+  return size_t(level) < levels.size() && levels[level].width > 0 && is_depth_format(levels[level].internal_format);
+}
+
+// A depth copy needs a depth buffer to read (Mesa: INVALID_OPERATION).
+bool has_read_depth(Context& ctx) {
+  const Drawable* d = ctx.read_drawable();
+  if (d && d->framebuffer.depth.bits > 0) return true;
+  ctx.record_error(GL_INVALID_OPERATION);
   return false;
 }
 
@@ -75,6 +118,14 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
   if (!valid_copy_target(ctx, target, 2) || !valid_copy_internal_format(ctx, internalformat) ||
       !valid_copy_size(ctx, width, height))
     return;
+  if (is_depth_format(GLint(internalformat))) {
+    if (!has_read_depth(ctx)) return;
+    const std::vector<float> depths = read_depth(ctx, x, y, width, height);
+    return with_tight_unpack(ctx, [&] {
+      TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_DEPTH_COMPONENT, GL_FLOAT,
+                 depths.data());
+    });
+  }
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -87,6 +138,13 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
   if (!valid_copy_target(ctx, target, 1) || !valid_copy_internal_format(ctx, internalformat) ||
       !valid_copy_size(ctx, width, 1))
     return;
+  if (is_depth_format(GLint(internalformat))) {
+    if (!has_read_depth(ctx)) return;
+    const std::vector<float> depths = read_depth(ctx, x, y, width, 1);
+    return with_tight_unpack(ctx, [&] {
+      TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    });
+  }
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
   with_tight_unpack(ctx, [&] {
     TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
@@ -96,6 +154,13 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
 void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
                        GLsizei width, GLsizei height) {
   if (!valid_copy_size(ctx, width, height)) return;
+  if (depth_level(ctx, target, level)) {
+    if (!has_read_depth(ctx)) return;
+    const std::vector<float> depths = read_depth(ctx, x, y, width, height);
+    return with_tight_unpack(ctx, [&] {
+      TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    });
+  }
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
@@ -104,6 +169,13 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
 
 void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
   if (!valid_copy_size(ctx, width, 1)) return;
+  if (depth_level(ctx, target, level)) {
+    if (!has_read_depth(ctx)) return;
+    const std::vector<float> depths = read_depth(ctx, x, y, width, 1);
+    return with_tight_unpack(ctx, [&] {
+      TexSubImage1D(ctx, target, level, xoffset, width, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
+    });
+  }
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
   with_tight_unpack(ctx, [&] {
     TexSubImage1D(ctx, target, level, xoffset, width, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());

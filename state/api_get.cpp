@@ -232,6 +232,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_color_index(ctx, pname, out)) return true;
   if (query_evaluator(ctx, pname, out)) return true;
   if (query_point_parameters(ctx, pname, out)) return true;
+  if (query_compressed_formats(pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);
@@ -283,6 +284,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
       "GL_EXT_stencil_wrap "
       "GL_ARB_transpose_matrix GL_ARB_multisample GL_ARB_point_parameters GL_EXT_point_parameters "
+      "GL_ARB_texture_compression GL_ARB_depth_texture GL_ARB_shadow GL_EXT_shadow_funcs "
       "GL_EXT_fog_coord GL_EXT_secondary_color GL_EXT_separate_specular_color "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "

@@ -1,7 +1,10 @@
 // glGetTexImage: a texture level read back through the pack pixel store.
+#include <bit>
+
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/pixel_format.h"
+#include "state/texture_format.h"
 #include "state/texture_target.h"
 
 namespace pineda::gl {
@@ -20,18 +23,27 @@ void texel_rgba(uint32_t texel, raster::TexBaseFormat base, GLenum format, doubl
   }
 }
 
+bool is_depth_level(const TextureLevelData& l) {
+  return texture_format(l.internal_format).value_or(TextureFormat{}).depth > 0;
+}
+
 }  // namespace
 
 // A 1D, 2D or 3D texture or one cube map face; no proxies.
 void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
   ImageTarget t;
   if (!image_target(target, t) || t.proxy) return ctx.record_error(GL_INVALID_ENUM);
-  if (const GLenum error = color_format_type_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
+  const GLenum error = format == GL_DEPTH_COMPONENT ? pixel_rect_format_type_error(format, type)
+                                                    : color_format_type_error(format, type);
+  if (error != GL_NO_ERROR) return ctx.record_error(error);
   if (level < 0 || level > max_texture_level(t.kind)) return ctx.record_error(GL_INVALID_VALUE);
   const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
   const std::vector<TextureLevelData>& levels =
       ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
-  if (size_t(level) >= levels.size() || levels[level].width == 0 || !pixels) return;  // nothing defined
+  if (size_t(level) >= levels.size() || levels[level].width == 0) return;  // nothing defined
+  const bool depth_texture = is_depth_level(levels[level]);
+  if (depth_texture != (format == GL_DEPTH_COMPONENT)) return ctx.record_error(GL_INVALID_OPERATION);  // as Mesa
+  if (!pixels) return;
   // The border texels of a bordered level are not kept: only the inner image is written.
   const TextureLevelData& l = levels[level];
   const ImageLayout layout = image_layout(ctx.pack, l.width, format, type);
@@ -43,10 +55,16 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
     for (int y = 0; y < l.height; ++y)
       for (int x = 0; x < l.width; ++x) {
         double rgba[4];
-        texel_rgba(l.texels[(size_t(z) * l.height + y) * l.width + x], l.base, format, rgba);
+        const uint32_t texel = l.texels[(size_t(z) * l.height + y) * l.width + x];
         uint8_t* dst = out + image_stride * size_t(z) + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x);
-        store_color(rgba, format, type, dst);
-        if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);
+        if (depth_texture) {  // one component, converted as RED is
+          rgba[0] = std::bit_cast<float>(texel);
+          store_color(rgba, GL_RED, type, dst);
+        } else {
+          texel_rgba(texel, l.base, format, rgba);
+          store_color(rgba, format, type, dst);
+        }
+        if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, depth_texture ? GL_RED : format, type);
       }
 }
 

@@ -4,6 +4,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/enum_translate.h"
 #include "state/limits.h"
 #include "state/pixel_format.h"
 #include "state/pixel_unpack.h"
@@ -72,6 +73,29 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
     }
 }
 
+// The same for a depth texture (1D or 2D): DEPTH_COMPONENT data through DEPTH_SCALE/BIAS,
+// rounded to the format's bits.
+void unpack_depth_into(Context& ctx, TextureLevelData& level, int bits, const ClientBox& box, GLenum type,
+                       const void* pixels) {
+  if (!pixels) return;
+  const int full_width = box.width + 2 * box.border_x, full_height = box.height + 2 * box.border_y;
+  const std::vector<double> depths = unpack_depth_image(ctx, full_width, full_height, type, pixels);
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x)
+      level.texels[size_t(box.y + y) * level.width + box.x + x] =
+          depth_texel(depths[size_t(y + box.border_y) * full_width + x + box.border_x], bits);
+}
+
+// GL 1.4 3.8.1: depth data only for depth formats and the other way round; depth formats on
+// 1D and 2D textures only (Mesa's INVALID_OPERATION for both).
+bool valid_depth_use(Context& ctx, const TextureFormat& storage, TexTarget kind, GLenum format) {
+  const bool depth = storage.depth > 0;
+  if (depth == (format == GL_DEPTH_COMPONENT) && (!depth || kind == TexTarget::T1D || kind == TexTarget::T2D))
+    return true;
+  ctx.record_error(GL_INVALID_OPERATION);
+  return false;
+}
+
 // glTexImage1D/2D/3D: `target` already checked to have `dims` dimensions; height and depth
 // are 1 where the target has no such dimension.
 void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint internal_format, GLsizei width,
@@ -88,6 +112,7 @@ void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint inter
   if (inner_w < 0 || inner_h < 0 || inner_d < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (target.kind == TexTarget::Cube && width != height) return ctx.record_error(GL_INVALID_VALUE);
   const GLint recorded_format = stored_internal_format(internal_format);
+  if (!valid_depth_use(ctx, *storage, target.kind, format)) return;
   TextureObject& tex = image_texture(ctx, target);
   std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
   if (levels.size() <= size_t(level)) levels.resize(level + 1);
@@ -103,7 +128,10 @@ void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint inter
   l.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
   const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
                       dims == 3};
-  unpack_into(ctx, l, *storage, box, format, type, pixels);
+  if (storage->depth)
+    unpack_depth_into(ctx, l, storage->depth, box, type, pixels);
+  else
+    unpack_into(ctx, l, *storage, box, format, type, pixels);
   tex.level_changed(level, target.face);
 }
 
@@ -120,8 +148,13 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   if (xoffset < 0 || yoffset < 0 || zoffset < 0 || int64_t(xoffset) + width > l.width ||
       int64_t(yoffset) + height > l.height || int64_t(zoffset) + depth > l.depth)
     return ctx.record_error(GL_INVALID_VALUE);
+  const TextureFormat storage = *texture_format(l.internal_format);
+  if (!valid_depth_use(ctx, storage, target.kind, format)) return;
   const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, target.kind == TexTarget::T3D};
-  unpack_into(ctx, l, *texture_format(l.internal_format), box, format, type, pixels);
+  if (storage.depth)
+    unpack_depth_into(ctx, l, storage.depth, box, type, pixels);
+  else
+    unpack_into(ctx, l, storage, box, format, type, pixels);
   tex.level_changed(level, target.face);
 }
 
@@ -167,6 +200,20 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
       if (e != GL_TRUE && e != GL_FALSE) return GL_INVALID_ENUM;
       p.generate_mipmap = e == GL_TRUE;
       return GL_NO_ERROR;
+    case GL_DEPTH_TEXTURE_MODE:
+      if (e != GL_LUMINANCE && e != GL_INTENSITY && e != GL_ALPHA) return GL_INVALID_ENUM;
+      p.depth_mode = e;
+      break;
+    case GL_TEXTURE_COMPARE_MODE:
+      if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE) return GL_INVALID_ENUM;
+      p.compare_mode = e;
+      break;
+    case GL_TEXTURE_COMPARE_FUNC: {
+      raster::CompareFunc f;
+      if (!to_compare_func(e, f)) return GL_INVALID_ENUM;
+      p.compare_func = e;
+      break;
+    }
     default:
       return GL_INVALID_ENUM;
   }
@@ -203,6 +250,9 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
     case GL_TEXTURE_BASE_LEVEL: out[0] = float(p.base_level); return true;
     case GL_TEXTURE_MAX_LEVEL: out[0] = float(p.max_level); return true;
     case GL_GENERATE_MIPMAP: out[0] = p.generate_mipmap ? 1.f : 0.f; return true;
+    case GL_DEPTH_TEXTURE_MODE: out[0] = float(p.depth_mode); return true;
+    case GL_TEXTURE_COMPARE_MODE: out[0] = float(p.compare_mode); return true;
+    case GL_TEXTURE_COMPARE_FUNC: out[0] = float(p.compare_func); return true;
     case GL_TEXTURE_BORDER_COLOR:
       std::copy(p.border_color, p.border_color + 4, out);
       count = 4;
@@ -232,8 +282,9 @@ bool get_tex_level_parameter(Context& ctx, const ImageTarget& target, GLint leve
     case GL_TEXTURE_ALPHA_SIZE: out = sizes.alpha; return true;
     case GL_TEXTURE_LUMINANCE_SIZE: out = sizes.luminance; return true;
     case GL_TEXTURE_INTENSITY_SIZE: out = sizes.intensity; return true;
-    // No colour format has depth or stencil; Mesa answers these in any version.
-    case GL_TEXTURE_DEPTH_SIZE: case GL_TEXTURE_STENCIL_SIZE: out = 0; return true;
+    case GL_TEXTURE_DEPTH_SIZE: out = sizes.depth; return true;
+    case GL_TEXTURE_STENCIL_SIZE: out = 0; return true;  // Mesa answers it in any version
+    case GL_TEXTURE_COMPRESSED: out = GL_FALSE; return true;  // no image is ever compressed
     default: return false;
   }
 }
@@ -247,6 +298,15 @@ bool level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLi
   }
   if (level < 0 || level > max_texture_level(t.kind)) {
     ctx.record_error(GL_INVALID_VALUE);
+    return false;
+  }
+  if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) {
+    // Only compressed images have it, and none is: INVALID_OPERATION for a defined level (as
+    // Mesa), 0 for an undefined one.
+    const std::vector<TextureLevelData>& levels = image_texture(ctx, t).face_levels(t.face);
+    out = 0;
+    if (size_t(level) >= levels.size() || levels[level].width == 0) return true;
+    ctx.record_error(GL_INVALID_OPERATION);
     return false;
   }
   if (get_tex_level_parameter(ctx, t, level, pname, out)) return true;

@@ -25,4 +25,7 @@ inline GetValues get_floats(std::initializer_list<double> v) { return {GetKind::
 // Raster position, pixel transfer, zoom and pixel-map sizes (api_get_pixel_state.cpp).
 bool query_pixel_state(Context& ctx, unsigned pname, GetValues& out);
 
+// NUM_COMPRESSED_TEXTURE_FORMATS and COMPRESSED_TEXTURE_FORMATS (api_compressed_texture.cpp).
+bool query_compressed_formats(unsigned pname, GetValues& out);
+
 }  // namespace pineda

@@ -98,7 +98,7 @@ GLenum pixel_rect_format_type_error(GLenum format, GLenum type) {
 
 GLenum texture_image_format_type_error(GLenum format, GLenum type) {
   if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
-  return format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX ? GL_INVALID_ENUM : GL_NO_ERROR;
+  return format == GL_STENCIL_INDEX ? GL_INVALID_ENUM : GL_NO_ERROR;
 }
 
 // GL 1.1 spec 3.6.4: rows start at multiples of the alignment when elements are smaller.

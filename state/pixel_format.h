@@ -32,9 +32,9 @@ GLenum color_format_type_error(GLenum format, GLenum type);
 // GL_INVALID_OPERATION for a packed type the format does not fit, whatever the format (as Mesa).
 GLenum pixel_rect_format_type_error(GLenum format, GLenum type);
 // GL_NO_ERROR when format/type can describe a texture image (GL 1.5 3.8.1): a colour format
-// with its types, or COLOR_INDEX (BITMAP too). Otherwise the error of
+// with its types, COLOR_INDEX (BITMAP too) or DEPTH_COMPONENT. Otherwise the error of
 // pixel_rect_format_type_error (a packed type the format does not fit is INVALID_OPERATION
-// whatever the format, as Mesa), or INVALID_ENUM for depth or stencil data.
+// whatever the format, as Mesa), or INVALID_ENUM for stencil data.
 GLenum texture_image_format_type_error(GLenum format, GLenum type);
 
 // The byte layout of a width x height image in client memory.

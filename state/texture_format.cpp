@@ -3,6 +3,7 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace pineda {
@@ -20,6 +21,12 @@ TextureFormat luminance_alpha(uint8_t l, uint8_t a) {
   TextureFormat f;
   f.base = a ? (l ? TexBaseFormat::LuminanceAlpha : TexBaseFormat::Alpha) : TexBaseFormat::Luminance;
   f.luminance = l, f.alpha = a;
+  return f;
+}
+TextureFormat depth_format(uint8_t bits) {
+  TextureFormat f;
+  f.base = TexBaseFormat::Luminance;  // DEPTH_TEXTURE_MODE decides it when the texture is sampled
+  f.depth = bits;
   return f;
 }
 TextureFormat intensity() {
@@ -95,8 +102,17 @@ std::optional<TextureFormat> texture_format(GLint internal_format) {
     case GL_RGB10_A2: return rgba(TexBaseFormat::RGBA, 8, 8, 8, 2);
     case 4: case GL_RGBA: case GL_RGBA8: case GL_RGBA12: case GL_RGBA16:
       return rgba(TexBaseFormat::RGBA, 8, 8, 8, 8);
+    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24: return depth_format(24);
+    case GL_DEPTH_COMPONENT16: return depth_format(16);
+    case GL_DEPTH_COMPONENT32: return depth_format(32);
     default: return std::nullopt;
   }
+}
+
+uint32_t depth_texel(double depth, int bits) {
+  const double max = std::ldexp(1.0, bits) - 1.0;
+  const double d = std::clamp(depth, 0.0, 1.0);
+  return std::bit_cast<uint32_t>(static_cast<float>(std::floor(d * max) / max));  // truncated, as Mesa packs
 }
 
 uint32_t requantize_texel(uint32_t texel, const TextureFormat& format) {

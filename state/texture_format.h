@@ -19,6 +19,9 @@ struct TextureFormat {
   raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;
   // Bits stored per component, as glGetTexLevelParameter's TEXTURE_*_SIZE report them.
   uint8_t red = 0, green = 0, blue = 0, alpha = 0, luminance = 0, intensity = 0;
+  // A depth format (GL 1.4, ARB_depth_texture): its bits, 0 for a colour format. Its texels
+  // hold the depth as a float's bits (depth_texel).
+  uint8_t depth = 0;
 };
 
 // The storage of a colour internal format (1..4, the base formats and the sized ones), or
@@ -33,6 +36,10 @@ GLint stored_internal_format(GLint internal_format);
 // An RGBA colour as a texel of the base format holds it (GL 1.5 table 3.15): missing colour
 // components 0, missing alpha 1, luminance in R, G and B, intensity in all four.
 void reduce_to_base_format(float rgba[4], raster::TexBaseFormat base);
+
+// A depth in [0, 1] truncated to `bits` bits (as Mesa's Z16/Z24/Z32 packing), as a depth
+// format's texel.
+uint32_t depth_texel(double depth, int bits);
 
 // An RGBA colour reduced to the components the format keeps and quantized to its bits, as an
 // RGBA8 texel (R in the lowest byte).

@@ -1,7 +1,9 @@
 #include "state/texture_object.h"
 
 #include <algorithm>
+#include <bit>
 
+#include "state/enum_translate.h"
 #include "state/texture_format.h"
 
 namespace pineda {
@@ -62,6 +64,12 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
         const int x0 = x * 2, y0 = y * 2, z0 = z * 2;
         uint32_t& out = dst.texels[(size_t(z) * dst.height + y) * dst.width + x];
         const uint32_t quad[4] = {at(x0, y0, z0), at(x0 + dx, y0, z0), at(x0, y0 + dy, z0), at(x0 + dx, y0 + dy, z0)};
+        if (storage.depth) {  // depth texels are floats (only 1D and 2D textures have them)
+          float sum = 0.f;
+          for (uint32_t t : quad) sum += std::bit_cast<float>(t);
+          out = depth_texel(sum / 4.f, storage.depth);
+          continue;
+        }
         if (src.depth == 1) {
           out = requantize_texel(average(quad), storage);
           continue;
@@ -120,6 +128,8 @@ raster::Sampler TextureObject::sampler() const {
   s.min_lod = params.min_lod;
   s.max_lod = params.max_lod;
   s.lod_bias = params.lod_bias;
+  s.compare = params.compare_mode == GL_COMPARE_R_TO_TEXTURE;
+  to_compare_func(params.compare_func, s.compare_func);
   return s;
 }
 
@@ -150,6 +160,11 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
   }
   auto image = std::make_shared<raster::TextureImage>();
   image->base_format = levels[base].base;
+  image->depth = texture_format(levels[base].internal_format).value_or(TextureFormat{}).depth > 0;
+  if (image->depth)
+    image->base_format = params.depth_mode == GL_INTENSITY ? raster::TexBaseFormat::Intensity
+                         : params.depth_mode == GL_ALPHA   ? raster::TexBaseFormat::Alpha
+                                                           : raster::TexBaseFormat::Luminance;
   image->kind = kind;
   image->levels.resize(count);
   for (size_t l = 0; l < count; ++l) {

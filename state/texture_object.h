@@ -30,6 +30,8 @@ struct TexParams {
   float min_lod = -1000.f, max_lod = 1000.f, lod_bias = 0.f;
   GLint base_level = 0, max_level = 1000;
   bool generate_mipmap = false;
+  // GL 1.4 depth textures and shadow comparison
+  GLenum depth_mode = GL_LUMINANCE, compare_mode = GL_NONE, compare_func = GL_LEQUAL;
 };
 
 struct TextureObject {

@@ -78,8 +78,8 @@ TEST_F(GetTexImageTest, OneDimensionalAndErrors) {
   uint8_t untouched[4] = {9, 9, 9, 9};
   glGetTexImage(GL_TEXTURE_CUBE_MAP, 0, GL_RGBA, GL_UNSIGNED_BYTE, untouched);  // faces only
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glGetTexImage(GL_TEXTURE_1D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, untouched);
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glGetTexImage(GL_TEXTURE_1D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE, untouched);  // depth of a colour texture
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_BITMAP, untouched);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glGetTexImage(GL_TEXTURE_1D, -1, GL_RGBA, GL_UNSIGNED_BYTE, untouched);

@@ -84,7 +84,9 @@ TEST_F(Gl14GetsTest, MipmapAndCompressionHints) {
 // The GL 1.3/1.4 extensions whose behaviour the tests of this branch check.
 TEST_F(Gl14GetsTest, AdvertisesTheExtensions) {
   const std::string ext = " " + std::string(reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS))) + " ";
-  for (const char* name : {"GL_ARB_transpose_matrix", "GL_ARB_multisample", "GL_ARB_point_parameters", "GL_EXT_point_parameters"})
+  for (const char* name : {"GL_ARB_transpose_matrix", "GL_ARB_multisample", "GL_ARB_point_parameters",
+                           "GL_EXT_point_parameters", "GL_ARB_texture_compression", "GL_ARB_depth_texture",
+                           "GL_ARB_shadow", "GL_EXT_shadow_funcs"})
     EXPECT_NE(ext.find(std::string(" ") + name + " "), std::string::npos) << name;
 }
 
