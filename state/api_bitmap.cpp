@@ -42,7 +42,7 @@ void Bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloat 
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
   RasterPosition& rp = ctx.raster_pos;
   if (!rp.valid) return;
-  if (bitmap && width > 0 && height > 0 && ctx.draw_drawable())
+  if (!pixel_rect_feedback(ctx, GL_BITMAP_TOKEN) && bitmap && width > 0 && height > 0 && ctx.draw_drawable())
     ctx.render_to_draw_buffers([&] { draw_bitmap(ctx, width, height, xorig, yorig, bitmap); });
   rp.window[0] += xmove;
   rp.window[1] += ymove;

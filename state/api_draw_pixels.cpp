@@ -74,7 +74,8 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
 void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (const GLenum error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
-  if (!ctx.raster_pos.valid || !pixels || width == 0 || height == 0 || !ctx.draw_drawable()) return;
+  if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_DRAW_PIXEL_TOKEN)) return;
+  if (!pixels || width == 0 || height == 0 || !ctx.draw_drawable()) return;
   PixelRectImage image;
   image.width = width;
   image.height = height;
@@ -100,7 +101,8 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
   if (depth && (!has_depth(draw) || !has_depth(read))) return ctx.record_error(GL_INVALID_OPERATION);
   if (stencil && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
-  if (!ctx.raster_pos.valid || width == 0 || height == 0 || !draw || !read) return;
+  if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_COPY_PIXEL_TOKEN)) return;
+  if (width == 0 || height == 0 || !draw || !read) return;
   ctx.finish();
   draw_pixel_rect(ctx, read_rect(ctx, ctx.read_framebuffer(), x, y, width, height, type));
 }

@@ -39,6 +39,7 @@ void set_raster_pos(Context& ctx, double x, double y, double z, double w) {
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) std::copy(out.texcoord[u], out.texcoord[u] + 4, rp.texcoord[u]);
   rp.distance = ctx.extras.fog_coord_source == GL_FOG_COORDINATE ? ctx.extras.current_fog_coord
                                                                  : static_cast<float>(glm::length(glm::dvec3(eye)));
+  raster_pos_select_hit(ctx);
 }
 
 // GL 1.4 2.13: x and y are window coordinates as given, z is clamped to [0, 1] and mapped
@@ -55,6 +56,7 @@ void set_window_pos(Context& ctx, double x, double y, double z) {
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4, rp.texcoord[u]);
   rp.distance = ctx.extras.fog_coord_source == GL_FOG_COORDINATE ? ctx.extras.current_fog_coord : 0.f;
+  raster_pos_select_hit(ctx);
 }
 
 }  // namespace

@@ -25,13 +25,20 @@ class SelectSink final : public raster::FeedbackSink {
   }
 
  private:
-  void hit(const raster::FeedbackVertex& v) {
-    rm_.hit = true;
-    rm_.hit_min_z = std::min(rm_.hit_min_z, v.window[2]);
-    rm_.hit_max_z = std::max(rm_.hit_max_z, v.window[2]);
-  }
+  void hit(const raster::FeedbackVertex& v) { rm_.hit_at(v.window[2]); }
   RenderModeState& rm_;
 };
+
+// GL 1.1 table 5.2: what each feedback type writes per vertex.
+void feedback_vertex(RenderModeState& rm, const raster::FeedbackVertex& v) {
+  const GLenum type = rm.feedback_type;
+  const int coords = type == GL_2D ? 2 : (type == GL_4D_COLOR_TEXTURE ? 4 : 3);
+  for (int i = 0; i < coords; ++i) rm.feedback_value(v.window[i]);
+  if (type == GL_2D || type == GL_3D) return;
+  for (int i = 0; i < 4; ++i) rm.feedback_value(v.color[i]);
+  if (type == GL_3D_COLOR) return;
+  for (int i = 0; i < 4; ++i) rm.feedback_value(v.texcoord[i]);
+}
 
 class FeedbackTokens final : public raster::FeedbackSink {
  public:
@@ -52,16 +59,7 @@ class FeedbackTokens final : public raster::FeedbackSink {
   }
 
  private:
-  // GL 1.1 table 5.2: what each feedback type writes per vertex.
-  void vertex(const raster::FeedbackVertex& v) {
-    const GLenum type = rm_.feedback_type;
-    const int coords = type == GL_2D ? 2 : (type == GL_4D_COLOR_TEXTURE ? 4 : 3);
-    for (int i = 0; i < coords; ++i) rm_.feedback_value(v.window[i]);
-    if (type == GL_2D || type == GL_3D) return;
-    for (int i = 0; i < 4; ++i) rm_.feedback_value(v.color[i]);
-    if (type == GL_3D_COLOR) return;
-    for (int i = 0; i < 4; ++i) rm_.feedback_value(v.texcoord[i]);
-  }
+  void vertex(const raster::FeedbackVertex& v) { feedback_vertex(rm_, v); }
   RenderModeState& rm_;
 };
 
@@ -77,6 +75,26 @@ void RenderModeState::write_hit_record() {
   hit = false;
   hit_min_z = 1.0;
   hit_max_z = 0.0;
+}
+
+bool pixel_rect_feedback(Context& ctx, GLenum token) {
+  RenderModeState& rm = ctx.render_mode;
+  if (rm.mode == GL_RENDER) return false;
+  const RasterPosition& rp = ctx.raster_pos;
+  if (rm.mode != GL_FEEDBACK || !rp.valid) return true;
+  raster::FeedbackVertex v;
+  for (int i = 0; i < 4; ++i) {
+    v.window[i] = rp.window[i];
+    v.color[i] = rp.color[i];
+    v.texcoord[i] = rp.texcoord[0][i];
+  }
+  rm.feedback_value(token);
+  feedback_vertex(rm, v);
+  return true;
+}
+
+void raster_pos_select_hit(Context& ctx) {
+  if (ctx.render_mode.mode == GL_SELECT && ctx.raster_pos.valid) ctx.render_mode.hit_at(ctx.raster_pos.window[2]);
 }
 
 void select_feedback_draw(Context& ctx, const raster::DrawState& state, raster::Primitive mode,

@@ -44,9 +44,23 @@ struct RenderModeState {
     if (select_count < size_t(select_size)) select_buffer[select_count] = v;
     ++select_count;
   }
+  // Counts a hit at window depth z for the pending hit record.
+  void hit_at(double z) {
+    hit = true;
+    hit_min_z = z < hit_min_z ? z : hit_min_z;
+    hit_max_z = z > hit_max_z ? z : hit_max_z;
+  }
   // Writes the pending hit record (GL 1.1 5.2), if any.
   void write_hit_record();
 };
+
+// glBitmap, glDrawPixels and glCopyPixels outside RENDER mode (GL 1.1 5.3): in FEEDBACK mode
+// `token` and the current raster position as its vertex, when the position is valid; in SELECT
+// mode nothing (GL 1.1 appendix B, corollary 6). False in RENDER mode: the caller draws.
+bool pixel_rect_feedback(Context& ctx, GLenum token);
+
+// A valid raster position is a selection hit at its depth (GL 1.1 5.2).
+void raster_pos_select_hit(Context& ctx);
 
 // Instead of rasterizing: hits (SELECT) or feedback tokens (FEEDBACK) for the primitives.
 void select_feedback_draw(Context& ctx, const raster::DrawState& state, raster::Primitive mode,
