@@ -1,6 +1,7 @@
 // Cube maps (GL 1.3): the face and the face coordinates a direction selects (table 3.19),
 // wrap modes applied within a face, mipmaps, cube completeness, per-face images, generated
 // mipmaps, NORMAL_MAP and REFLECTION_MAP texture coordinates, and the error codes.
+#include <limits>
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
@@ -97,6 +98,21 @@ TEST_F(CubeMapTest, EachFaceAndTexelSelectedByDirection) {
         square(x, y, {3 * d.x, 3 * d.y, 3 * d.z});
         EXPECT_TRUE(near_rgba(pixel(int(x), int(y)), face_texel(f, i, j))) << "face " << f << " " << i << "," << j;
       }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// A zero, NaN or infinite direction still samples a defined texel: each reads as the +X
+// face's centre, s = t = 0.5 (NEAREST: texel (1, 1) of the 2x2 face).
+TEST_F(CubeMapTest, DegenerateDirectionsReadADefinedTexel) {
+  load_faces(2);
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const Direction cases[] = {{0, 0, 0}, {nan, nan, nan}, {inf, 0, 0}, {nan, 0, 0}};
+  int i = 0;
+  for (const Direction& d : cases) {
+    square(float(3 * i), 0, d);
+    EXPECT_TRUE(near_rgba(pixel(3 * i, 0), face_texel(0, 1, 1))) << "case " << i;
+    ++i;
+  }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
