@@ -5,7 +5,7 @@
 namespace pineda::driver {
 
 inline constexpr int kMaxGLMajor = 1;
-inline constexpr int kMaxGLMinor = 1;
+inline constexpr int kMaxGLMinor = 5;
 // 0: no OpenGL ES yet. 2 offers ES 2.0 through EGL (EGL_OPENGL_ES_API, EGL_OPENGL_ES2_BIT).
 inline constexpr int kMaxGLESMajor = 0;
 

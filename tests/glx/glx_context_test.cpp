@@ -17,7 +17,7 @@ GLXContext create_attribs(Display* dpy, GLXFBConfig config, std::vector<int> att
 
 TEST_F(GlxContextTest, CreateContextAttribsVersions) {
   GLXFBConfig config = rgba8(true, true);
-  for (auto [major, minor] : {std::pair{1, 0}, {1, 1}}) {
+  for (auto [major, minor] : {std::pair{1, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}, {1, 5}}) {
     GLXContext ctx = create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major,
                                                   GLX_CONTEXT_MINOR_VERSION_ARB, minor});
     EXPECT_NE(ctx, nullptr) << major << "." << minor;

@@ -16,7 +16,7 @@ std::string get_string(GLenum name) {
 
 TEST_F(StringTest, VersionStartsWithOneOnePineda) {
   const std::string version = get_string(GL_VERSION);
-  EXPECT_EQ(version.rfind("1.1 Pineda", 0), 0u) << version;
+  EXPECT_EQ(version.rfind("1.5 Pineda", 0), 0u) << version;
 }
 
 TEST_F(StringTest, RendererAndVendorNamePineda) {
