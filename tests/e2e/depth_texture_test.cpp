@@ -200,7 +200,7 @@ TEST_F(DepthTextureStateTest, FormatsAndSizes) {
     EXPECT_EQ(level_param(GL_TEXTURE_LUMINANCE_SIZE), 0);
     EXPECT_EQ(level_param(GL_TEXTURE_RED_SIZE), 0);
   }
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_FLOAT, d);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_FLOAT, nullptr);  // d holds 4 floats, not 16
   EXPECT_EQ(level_param(GL_TEXTURE_DEPTH_SIZE), 0);
 }
 
@@ -261,7 +261,7 @@ TEST_F(DepthTextureStateTest, FormatMismatchesAreInvalidOperations) {
   float out[16];
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, out);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_FLOAT, d);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_FLOAT, nullptr);  // d holds 4 floats, not 16
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, d);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, out);
