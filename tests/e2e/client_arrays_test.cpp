@@ -1,5 +1,6 @@
 // Client arrays: DrawArrays, DrawElements, ArrayElement and InterleavedArrays draw exactly
 // what the same vertices draw in immediate mode.
+#define GL_GLEXT_PROTOTYPES  // the GL_EXT_vertex_array names
 #include <algorithm>
 #include <vector>
 
@@ -64,6 +65,29 @@ TEST_F(ClientArraysTest, DrawArraysEqualsImmediateMode) {
   glDrawArrays(GL_TRIANGLE_FAN, 0, 6);
   EXPECT_EQ(read_all(), reference);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// GL_EXT_vertex_array: the same arrays under the extension's names, with their `count`.
+TEST_F(ClientArraysTest, ExtVertexArrayEqualsImmediateMode) {
+  const auto reference = immediate_reference(GL_TRIANGLE_FAN, {0, 1, 2, 3, 4, 5});
+  clear_to(0, 0, 0, 0);
+  const Vertex* base = kVertices.data();
+  glTexCoordPointerEXT(2, GL_FLOAT, sizeof(Vertex), 6, &base->s);
+  glColorPointerEXT(4, GL_FLOAT, sizeof(Vertex), 6, &base->r);
+  glVertexPointerEXT(3, GL_FLOAT, sizeof(Vertex), 6, &base->x);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glDrawArraysEXT(GL_TRIANGLE_FAN, 0, 6);
+  EXPECT_EQ(read_all(), reference);
+  void* pointer = nullptr;
+  glGetPointervEXT(GL_VERTEX_ARRAY_POINTER, &pointer);
+  EXPECT_EQ(pointer, static_cast<const void*>(&base->x));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glVertexPointerEXT(3, GL_FLOAT, 0, -1, &base->s);  // a negative count: nothing changes
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glGetPointervEXT(GL_VERTEX_ARRAY_POINTER, &pointer);
+  EXPECT_EQ(pointer, static_cast<const void*>(&base->x));
 }
 
 TEST_F(ClientArraysTest, DrawArraysWithFirst) {
