@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -190,7 +191,8 @@ class DepthTextureStateTest : public GlTest {
 };
 
 TEST_F(DepthTextureStateTest, FormatsAndSizes) {
-  const float d[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+  float d[16];  // 2x2 RGBA floats at most
+  std::fill(d, d + 16, 0.5f);
   struct Case { GLenum format; GLint bits; };
   for (const Case c : {Case{GL_DEPTH_COMPONENT, 24}, Case{GL_DEPTH_COMPONENT16, 16}, Case{GL_DEPTH_COMPONENT24, 24},
                        Case{GL_DEPTH_COMPONENT32, 32}}) {
@@ -245,7 +247,7 @@ TEST_F(DepthTextureStateTest, ParametersAndTheirErrors) {
 }
 
 TEST_F(DepthTextureStateTest, FormatMismatchesAreInvalidOperations) {
-  const float d[8] = {};
+  const float d[16] = {};  // 2x2 RGBA floats at most
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_DEPTH_COMPONENT, GL_FLOAT, d);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 2, 2, 0, GL_RGBA, GL_FLOAT, d);
