@@ -10,7 +10,8 @@ jobs=$(nproc)
 ctest --test-dir "$root/build" -j"$jobs" --output-on-failure
 
 timeout 600 python3 "$root/conformance/run.py" --platform glx --lib-dir "$root/build/lib" \
-  --group 'spec@!opengl 1.0' --group 'spec@!opengl 1.1' --expected-total 311
+  --group 'spec@!opengl 1.0' --group 'spec@!opengl 1.1' --group 'spec@!opengl 1.2' \
+  --group 'spec@!opengl 1.3' --group 'spec@!opengl 1.4' --group 'spec@!opengl 1.5' --expected-total 373
 
 "$root/scripts/build.sh" "$root/build-asan" -DPINEDA_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
