@@ -1,4 +1,6 @@
 // glXGetProcAddress(ARB): every implemented GL function and the GLX functions below.
+#include "driver/glx_proc_address.h"
+
 #include "driver/glx_objects.h"
 
 #include <cstring>
@@ -68,15 +70,18 @@ const Entry kGlxFunctions[] = {
 void* lookup(const GLubyte* name) {
   if (!name) return nullptr;
   const char* n = reinterpret_cast<const char*>(name);
-  if (std::strncmp(n, "glX", 3) == 0) {
-    for (const Entry& e : kGlxFunctions)
-      if (std::strcmp(e.name, n) == 0) return e.function;
-    return nullptr;
-  }
+  if (std::strncmp(n, "glX", 3) == 0) return lookup_glx_proc(n);
   return glapi::lookup_gl_proc(n);
 }
 
 }  // namespace
+
+void* lookup_glx_proc(const char* name) {
+  for (const Entry& e : kGlxFunctions)
+    if (std::strcmp(e.name, name) == 0) return e.function;
+  return nullptr;
+}
+
 }  // namespace pineda::glx
 
 PINEDA_GLX_EXPORT __GLXextFuncPtr glXGetProcAddressARB(const GLubyte* name) {

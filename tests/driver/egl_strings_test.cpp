@@ -5,6 +5,8 @@
 #include <string>
 
 #include "egl_fixture.h"
+// After gtest: Xlib defines macros (None, Bool) that gtest's headers use as names.
+#include <GL/glx.h>
 
 namespace {
 
@@ -56,6 +58,18 @@ TEST(EglProcAddress, KnownEglAndGlFunctions) {
             reinterpret_cast<__eglMustCastToProperFunctionPointerType>(&glClear));
   EXPECT_EQ(eglGetProcAddress("glGetError"),
             reinterpret_cast<__eglMustCastToProperFunctionPointerType>(&glGetError));
+}
+
+// apitrace's eglretrace resolves glXGetCurrentDisplay through eglGetProcAddress (glvnd's libEGL
+// answers any gl-prefixed name); the one library has it, so it is handed out.
+TEST(EglProcAddress, GlxFunctionsOfTheSameLibrary) {
+  auto proc = eglGetProcAddress("glXGetCurrentDisplay");
+  EXPECT_EQ(proc, reinterpret_cast<__eglMustCastToProperFunctionPointerType>(&glXGetCurrentDisplay));
+  ASSERT_NE(proc, nullptr);
+  EXPECT_EQ(reinterpret_cast<Display* (*)()>(proc)(), nullptr);  // no GLX context is current
+  EXPECT_EQ(eglGetProcAddress("glXSwapBuffers"),
+            reinterpret_cast<__eglMustCastToProperFunctionPointerType>(&glXSwapBuffers));
+  EXPECT_EQ(eglGetProcAddress("glXNoSuchFunction"), nullptr);
 }
 
 TEST(EglProcAddress, UnknownNamesAreNull) {
