@@ -89,6 +89,9 @@ def run_piglit(driver, platform, groups, args, lib_dir):
         cmd += ["-x", x]
     cmd.append(results_dir)
     if platform != "surfaceless_egl":
+        # -noreset: without it Xvfb resets whenever its last client leaves, and a client that
+        # connects during the reset gets "XOpenDisplay failed". With -j 2 and short tests that
+        # happens several times a run, GL or not (plain Xlib programs hit it too).
         cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"] + cmd
     print(f"[{driver}] {' '.join(cmd)}", flush=True)
     start = time.time()
@@ -148,6 +151,9 @@ def passes_on_retry(test, platform, env):
     if not cmd:
         return False
     if platform != "surfaceless_egl":
+        # -noreset: without it Xvfb resets whenever its last client leaves, and a client that
+        # connects during the reset gets "XOpenDisplay failed". With -j 2 and short tests that
+        # happens several times a run, GL or not (plain Xlib programs hit it too).
         cmd = ["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24 -noreset"] + cmd
     env = dict(env, PIGLIT_PLATFORM=platform)
     try:
