@@ -52,6 +52,8 @@ const uint8_t* ClientImage::pixel(int i, int j, uint8_t* scratch) const {
   return scratch;
 }
 
+const uint8_t* ClientImage::row(int j) const { return data_ + layout_.offset + layout_.row_stride * size_t(j); }
+
 int64_t ClientImage::index(int i, int j) const {
   if (type_ == GL_BITMAP) return bits_.bit(data_, i, j);
   uint8_t scratch[16];
@@ -70,6 +72,11 @@ void ColorImageReader::read(int i, int j, float rgba[4]) const {
   uint8_t scratch[16];
   load_color(image_.pixel(i, j, scratch), format_, type_, rgba);
   if (transfer_) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, rgba);
+}
+
+const uint8_t* ColorImageReader::rgba8_row(int j) const {
+  if (format_ != GL_RGBA || type_ != GL_UNSIGNED_BYTE || transfer_) return nullptr;  // SWAP_BYTES: single bytes
+  return image_.row(j);
 }
 
 std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,

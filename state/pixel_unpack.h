@@ -25,6 +25,8 @@ class ClientImage {
   const uint8_t* pixel(int i, int j, uint8_t* scratch) const;
   // Pixel i of row j as an index: the bit of a BITMAP, or the value of an index type.
   int64_t index(int i, int j) const;
+  // The first byte of row j (its pixels follow at the format's pixel size). Not for BITMAP.
+  const uint8_t* row(int j) const;
 
  private:
   GLenum format_, type_;
@@ -42,6 +44,9 @@ class ColorImageReader {
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
   // Pixel i of row j as RGBA in [0, 1].
   void read(int i, int j, float rgba[4]) const;
+  // Row j as RGBA8 bytes when the image is GL_RGBA / GL_UNSIGNED_BYTE and no pixel transfer
+  // applies, so that read() would give byte / 255 exactly; null otherwise.
+  const uint8_t* rgba8_row(int j) const;
 
  private:
   const Context& ctx_;

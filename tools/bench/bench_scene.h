@@ -33,5 +33,6 @@ std::unique_ptr<BenchScene> createTextured(int width, int height);
 std::unique_ptr<BenchScene> createLitMesh(int width, int height);
 std::unique_ptr<BenchScene> createGears(int width, int height);
 std::unique_ptr<BenchScene> createStateChanges(int width, int height);
+std::unique_ptr<BenchScene> createCopyBlur(int width, int height);
 
 }  // namespace pineda::bench

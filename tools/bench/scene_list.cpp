@@ -11,6 +11,7 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
       {"lit_mesh", "smooth-shaded torus and sphere, GL_LIGHTING with 2 lights, specular", createLitMesh},
       {"gears", "pineda-demo's glxgears-like gears (display lists, lighting)", createGears},
       {"state_changes", "6144 one-quad draw calls changing colour, blend, depth func, texture", createStateChanges},
+      {"copy_blur", "blur by glCopyTexSubImage2D of the frame, blended back shifted, 4 times a frame", createCopyBlur},
   };
   return scenes;
 }
