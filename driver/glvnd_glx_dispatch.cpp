@@ -44,6 +44,8 @@ Function fetch(__GLXvendorInfo* vendor, Stub stub) {
   return reinterpret_cast<Function>(exports().fetchDispatchEntry(vendor, index));
 }
 
+// Debian 12's libGLX (libglvnd 1.6.0) dispatches glXCreateContextAttribsARB itself; a libGLX
+// that does not know the function asks the vendor for this stub (Mesa's vendor has one too).
 GLXContext create_context_attribs(Display* dpy, GLXFBConfig config, GLXContext share,
                                   Bool direct, const int* attribs) {
   __GLXvendorInfo* vendor = config ? exports().vendorFromFBConfig(dpy, config) : nullptr;
