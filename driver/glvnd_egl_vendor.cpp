@@ -1,7 +1,6 @@
-// __egl_Main: Pineda as an EGL vendor library of libglvnd (glvnd/libeglabi.h).
-//
-// libEGL_pineda.so.0 is another name of libpineda.so.0, for the reason given in
-// glvnd_glx_vendor.cpp: one file mapped, one copy of the state, whichever way a program comes.
+// Pineda as an EGL vendor library of libglvnd (glvnd/libeglabi.h): libEGL_pineda.so.0's
+// __egl_Main (driver/glvnd/vendor_egl_main.cpp) hands over to pineda_glvnd_egl_main here, in
+// libpineda.so.0.
 //
 // libEGL calls every core EGL function and the EXT platform-surface functions through
 // getProcAddress and builds libGLdispatch's GL table the same way. Pineda offers no EGL display
@@ -9,6 +8,7 @@
 #include <glvnd/libeglabi.h>
 
 #include "driver/gl_version.h"
+#include "driver/glvnd/vendor_main.h"
 #include "glapi/proc_table.h"
 
 #define PINEDA_EGL_VENDOR_EXPORT extern "C" __attribute__((visibility("default")))
@@ -46,8 +46,9 @@ void set_dispatch_index(const char*, int) {}
 }  // namespace
 }  // namespace pineda::egl
 
-PINEDA_EGL_VENDOR_EXPORT EGLBoolean __egl_Main(uint32_t version, const __EGLapiExports*,
-                                               __EGLvendorInfo*, __EGLapiImports* imports) {
+PINEDA_EGL_VENDOR_EXPORT EGLBoolean pineda_glvnd_egl_main(uint32_t version,
+                                                          const __EGLapiExports*, __EGLvendorInfo*,
+                                                          __EGLapiImports* imports) {
   using namespace pineda::egl;
   if (EGL_VENDOR_ABI_GET_MAJOR_VERSION(version) != EGL_VENDOR_ABI_MAJOR_VERSION) return EGL_FALSE;
   imports->getPlatformDisplay = get_platform_display;

@@ -1,10 +1,6 @@
-// __glx_Main: Pineda as a GLX vendor library of libglvnd (glvnd/libglxabi.h).
-//
-// libGLX_pineda.so.0 is another name of libpineda.so.0 (a link to the same file, like
-// libGL.so.1), so a program that reaches Pineda through libglvnd and also through Pineda's own
-// names still maps one file and has one copy of the state. A separate thin vendor library could
-// not call into libpineda.so.0: its calls to glX* would bind to libglvnd's libGLX, which the
-// program loaded first.
+// Pineda as a GLX vendor library of libglvnd (glvnd/libglxabi.h): libGLX_pineda.so.0's
+// __glx_Main (driver/glvnd/vendor_glx_main.cpp) hands over to pineda_glvnd_glx_main here, in
+// libpineda.so.0, so that the state stays in the one library every name of Pineda maps.
 //
 // libGLX calls the GLX 1.4 functions through getProcAddress and builds libGLdispatch's GL table
 // the same way. GLX extension functions are unknown to it: for those, getDispatchAddress hands it
@@ -13,6 +9,7 @@
 
 #include <glvnd/libglxabi.h>
 
+#include "driver/glvnd/vendor_main.h"
 #include "driver/glvnd_glx_dispatch.h"
 
 namespace pineda::glx {
@@ -36,8 +33,8 @@ void set_dispatch_index(const GLubyte* name, int index) {
 }  // namespace
 }  // namespace pineda::glx
 
-PINEDA_GLX_EXPORT Bool __glx_Main(uint32_t version, const __GLXapiExports* exports,
-                                  __GLXvendorInfo* vendor, __GLXapiImports* imports) {
+PINEDA_GLX_EXPORT Bool pineda_glvnd_glx_main(uint32_t version, const __GLXapiExports* exports,
+                                             __GLXvendorInfo*, __GLXapiImports* imports) {
   using namespace pineda::glx;
   if (GLX_VENDOR_ABI_GET_MAJOR_VERSION(version) != GLX_VENDOR_ABI_MAJOR_VERSION) return False;
   glvnd_set_exports(exports);

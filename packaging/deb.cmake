@@ -1,7 +1,7 @@
 # `cpack -G DEB` in a build configured with -DCMAKE_INSTALL_PREFIX=/usr makes
 # pineda_<version>_amd64.deb (scripts/package-test.sh builds and checks it). The package adds
 # files beside Mesa's and replaces none:
-#   /usr/lib/x86_64-linux-gnu/libGLX_pineda.so.0, libEGL_pineda.so.0   libglvnd's vendor names
+#   /usr/lib/x86_64-linux-gnu/libGLX_pineda.so.0, libEGL_pineda.so.0   libglvnd's vendor libraries
 #   /usr/lib/x86_64-linux-gnu/pineda/   libpineda.so.0, its libGL/libEGL/libOSMesa names, pkgconfig
 #   /usr/share/pineda/egl_vendor.d/50_pineda.json   selected only by __EGL_VENDOR_LIBRARY_FILENAMES
 #   /usr/bin/pineda-run, pineda-bench, ...

@@ -115,9 +115,9 @@ int main(void) {
   dl_iterate_phdr(note_object, &loaded);
   if (!loaded.pineda_vendor) return fail("libEGL_pineda.so.0 is not loaded");
   if (!loaded.libegl) return fail("libEGL.so.1 is not loaded");
-  /* Of the two, only Pineda's libEGL.so.1 (a name of libpineda.so.0) has the vendor entry. */
+  /* Of the two, only Pineda's libEGL.so.1 (a name of libpineda.so.0) has Pineda's entries. */
   void* libegl = dlopen(loaded.libegl, RTLD_LAZY | RTLD_NOLOAD);
-  if (!libegl || dlsym(libegl, "__egl_Main")) {
+  if (!libegl || dlsym(libegl, "pineda_glvnd_egl_main")) {
     printf("FAIL: libEGL.so.1 (%s) is Pineda's, not libglvnd's\n", loaded.libegl);
     return 1;
   }

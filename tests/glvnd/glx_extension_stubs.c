@@ -2,7 +2,8 @@
  * with __GLX_VENDOR_LIBRARY_NAME=pineda, glXGetProcAddressARB hands out Pineda's dispatch stubs
  * (driver/glvnd_glx_dispatch.cpp), which must reach Pineda's functions for the right vendor:
  * glXSwapIntervalEXT by drawable, the MESA and SGI swap-interval calls by current context;
- * a context from glXCreateContextAttribsARB must be Pineda's. Run under Xvfb. Exit 0 and "PASS" when all hold. */
+ * a context from glXCreateContextAttribsARB must be Pineda's. Run under Xvfb. Exit 0 and "PASS"
+ * when all hold. */
 #define _GNU_SOURCE
 #include <GL/gl.h>
 #include <GL/glx.h>
@@ -16,12 +17,13 @@ static int fail(const char* what) {
   return 1;
 }
 
-/* The stub lives in the object libGLX loaded as the vendor, not in a libGL.so.1 of Pineda's. */
+/* The stub lives in libpineda.so.0, loaded by name as the vendor library's dependency (a
+ * libGL.so.1 of Pineda's would be the same file under the name libGL.so.1). */
 static int from_vendor_library(void (*function)(void)) {
   Dl_info info;
   if (!function || !dladdr((void*)function, &info) || !info.dli_fname) return 0;
   const char* slash = strrchr(info.dli_fname, '/');
-  return strcmp(slash ? slash + 1 : info.dli_fname, "libGLX_pineda.so.0") == 0;
+  return strcmp(slash ? slash + 1 : info.dli_fname, "libpineda.so.0") == 0;
 }
 
 #define GET(type, name) ((type)glXGetProcAddressARB((const GLubyte*)#name))
@@ -50,10 +52,12 @@ int main(void) {
   void (*stubs[])(void) = {(void (*)(void))swap_interval_ext, (void (*)(void))swap_interval_mesa,
                            (void (*)(void))get_swap_interval, (void (*)(void))swap_interval_sgi};
   for (unsigned i = 0; i < sizeof stubs / sizeof stubs[0]; ++i)
-    if (!from_vendor_library(stubs[i])) return fail("a swap-interval function is not Pineda's stub");
+    if (!from_vendor_library(stubs[i]))
+      return fail("a swap-interval function is not Pineda's stub");
 
   /* No context current yet: the stubs find no vendor and answer as the extensions say. */
-  if (swap_interval_mesa(1) != GLX_BAD_CONTEXT) return fail("glXSwapIntervalMESA without a context");
+  if (swap_interval_mesa(1) != GLX_BAD_CONTEXT)
+    return fail("glXSwapIntervalMESA without a context");
   if (get_swap_interval() != 0) return fail("glXGetSwapIntervalMESA without a context");
 
   const int context_attribs[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 5,

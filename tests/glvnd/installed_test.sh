@@ -1,6 +1,6 @@
 #!/bin/sh
 # installed_test.sh BUILD_DIR PREFIX EGL_PROGRAM: `cmake --install BUILD_DIR --prefix PREFIX`
-# lays out the vendor names, the vendor file and the private library folder, and the installed
+# lays out the vendor libraries, the vendor file and the private library folder, and the installed
 # pineda-run takes the vendor way by default (the library-path way with --library-path).
 set -u
 build=$1
@@ -12,9 +12,12 @@ fail() {
 }
 rm -rf "$prefix"
 cmake --install "$build" --prefix "$prefix" > /dev/null || fail "cmake --install"
+# The vendor libraries: their file name is their soname; they find libpineda.so.0 in pineda/.
 for name in libGLX_pineda.so.0 libEGL_pineda.so.0; do
-  target=$(readlink "$prefix/lib/$name")
-  [ "$target" = pineda/libpineda.so.0 ] || fail "$prefix/lib/$name links to '$target'"
+  dynamic=$(readelf -d "$prefix/lib/$name") || fail "no $prefix/lib/$name"
+  echo "$dynamic" | grep -q "(SONAME) *Library soname: \[$name\]" || fail "$name: $dynamic"
+  echo "$dynamic" | grep -q "(NEEDED) *Shared library: \[libpineda.so.0\]" || fail "$name: $dynamic"
+  echo "$dynamic" | grep -q "R.*PATH) *Library r.*path: \[\$ORIGIN/pineda\]" || fail "$name: $dynamic"
 done
 [ ! -e "$prefix/lib/libGL.so.1" ] || fail "libGL.so.1 beside the vendor libraries"
 [ -e "$prefix/lib/pineda/libGL.so.1" ] || fail "no libGL.so.1 in $prefix/lib/pineda"
