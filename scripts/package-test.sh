@@ -80,6 +80,10 @@ apt_in_root install --no-install-recommends "/tmp/$(basename "$deb")"
 echo "== dpkg -L pineda"
 in_root 'dpkg -L pineda'
 
+echo "== every file named *pineda* belongs to the package (ldconfig made none of its own)"
+unowned=$(in_root 'find / -xdev -name "*pineda*" -not -path "/tmp/*" -not -path "/var/lib/dpkg/*" |
+  while read -r f; do dpkg -S "$f" > /dev/null 2>&1 || echo "$f"; done')
+[ -z "$unowned" ] || fail "files no package owns: $unowned"
 echo "== Mesa's and libglvnd's files untouched (dpkg --verify)"
 changed=$(in_root "dpkg --verify $glvnd_packages")
 [ -z "$changed" ] || fail "changed: $changed"
