@@ -3,8 +3,9 @@
 // libpineda.so.0, so that the state stays in the one library every name of Pineda maps.
 //
 // libGLX calls the GLX 1.4 functions through getProcAddress and builds libGLdispatch's GL table
-// the same way. GLX extension functions are unknown to it: for those, getDispatchAddress hands it
-// the vendor-neutral stubs of glvnd_glx_dispatch.cpp.
+// the same way. For a GLX extension function it does not know (Debian 12's libGLX knows
+// glXCreateContextAttribsARB, not the swap-interval ones), getDispatchAddress hands it the
+// vendor-neutral stubs of glvnd_glx_dispatch.cpp.
 #include "driver/glx_objects.h"
 
 #include <glvnd/libglxabi.h>
