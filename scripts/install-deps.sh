@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3 git
   khronos-api librust-khronos-api-dev   # gl.xml (khronos-api) and egl.xml (the registry crate's copy)
-  libegl-dev libgl-dev libgles-dev mesa-common-dev libosmesa6-dev libx11-dev libxext-dev mesa-utils
+  libegl-dev libgl-dev libgles-dev mesa-common-dev libosmesa6-dev libglvnd-core-dev libopengl-dev libx11-dev libxext-dev mesa-utils
   xvfb xauth   # xvfb-run needs xauth, which xvfb only recommends (and we install without recommends)
   piglit waffle-utils   # conformance/run.py (piglit only recommends waffle-utils, whose wflinfo its runner calls)
   libglm-dev libpng-dev libgtest-dev googletest
