@@ -1,7 +1,7 @@
 #pragma once
 // A benchmark scene: GL 1.1 calls only. Each scene runs in a fresh context, so it sets up
-// everything it needs in its constructor and assumes GL's initial state. Scenes must leave
-// the stencil buffer alone: the bench counts rasterized fragments with it.
+// everything it needs in its constructor and assumes GL's initial state. The bench counts
+// rasterized fragments with the stencil buffer, so a scene that uses it says so (and gets no count).
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -15,6 +15,7 @@ class BenchScene {
   virtual void draw(int frame) = 0;
   // Triangles submitted per frame, quads and strips counted as the triangles they make.
   virtual long trianglesPerFrame() const = 0;
+  virtual bool drawsWithStencil() const { return false; }
 };
 
 struct BenchSceneEntry {
@@ -34,5 +35,7 @@ std::unique_ptr<BenchScene> createLitMesh(int width, int height);
 std::unique_ptr<BenchScene> createGears(int width, int height);
 std::unique_ptr<BenchScene> createStateChanges(int width, int height);
 std::unique_ptr<BenchScene> createCopyBlur(int width, int height);
+std::unique_ptr<BenchScene> createWireframe(int width, int height);
+std::unique_ptr<BenchScene> createStencilReflection(int width, int height);
 
 }  // namespace pineda::bench

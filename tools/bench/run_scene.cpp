@@ -68,7 +68,10 @@ bool runScene(const BenchSceneEntry& entry, const RunSettings& settings, const s
   for (int frame = 1; frame <= settings.frames; ++frame) times.push_back(drawTimed(*scene, frame));
   result.medianMs = times.empty() ? result.firstMs : median(times);
   reportGlError(entry, "in the timed frames");
-  countFragments(*scene, settings.width, settings.height, result);
+  if (scene->drawsWithStencil())
+    result.fragments = -1;
+  else
+    countFragments(*scene, settings.width, settings.height, result);
   return tools::writePng(pngPath, image, error);
 }
 
