@@ -13,7 +13,7 @@
 namespace pineda::es1_test {
 namespace {
 
-constexpr EGLint kES1Renderable[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT, EGL_NONE};
+constexpr EGLint kES1Renderable[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
 
 std::string gl_string(GLenum name) {
   const GLubyte* s = glGetString(name);
