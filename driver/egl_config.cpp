@@ -12,8 +12,13 @@
 namespace pineda::egl {
 namespace {
 
-// RGBA8888 with each depth/stencil combination the rasterizer stores.
-constexpr EGLint kRenderable = EGL_OPENGL_BIT | (driver::kHasGLES2 ? EGL_OPENGL_ES2_BIT : 0);
+// RGBA8888 with each depth/stencil combination the rasterizer stores; every config serves
+// every API.
+constexpr EGLint kRenderable = EGL_OPENGL_BIT | (driver::kHasGLES1 ? EGL_OPENGL_ES_BIT : 0) |
+                               (driver::kHasGLES2 ? EGL_OPENGL_ES2_BIT : 0);
+// EGL_CONFORMANT claims only desktop OpenGL, as before ES: the ES 1.1 context lacks paletted
+// compressed textures, which ES 1.1 requires.
+constexpr EGLint kConformant = EGL_OPENGL_BIT;
 constexpr Config kConfigs[] = {
     {1, 8, 8, 8, 8, 0, 0, EGL_PBUFFER_BIT, kRenderable},  {2, 8, 8, 8, 8, 0, 8, EGL_PBUFFER_BIT, kRenderable},
     {3, 8, 8, 8, 8, 16, 0, EGL_PBUFFER_BIT, kRenderable}, {4, 8, 8, 8, 8, 24, 0, EGL_PBUFFER_BIT, kRenderable},
@@ -144,8 +149,8 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
     case EGL_STENCIL_SIZE: *value = c.stencil; return true;
     case EGL_CONFIG_ID: *value = c.id; return true;
     case EGL_SURFACE_TYPE: *value = c.surface_type; return true;
-    case EGL_RENDERABLE_TYPE:
-    case EGL_CONFORMANT: *value = c.renderable_type; return true;
+    case EGL_RENDERABLE_TYPE: *value = c.renderable_type; return true;
+    case EGL_CONFORMANT: *value = c.renderable_type & kConformant; return true;
     case EGL_COLOR_BUFFER_TYPE: *value = EGL_RGB_BUFFER; return true;
     case EGL_CONFIG_CAVEAT: *value = EGL_NONE; return true;
     case EGL_TRANSPARENT_TYPE: *value = EGL_NONE; return true;

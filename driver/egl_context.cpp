@@ -62,7 +62,7 @@ EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
 }  // namespace
 
 EGLBoolean BindAPI(EGLenum api) {
-  const bool supported = api == EGL_OPENGL_API || (api == EGL_OPENGL_ES_API && driver::kHasGLES2);
+  const bool supported = api == EGL_OPENGL_API || (api == EGL_OPENGL_ES_API && driver::kHasGLES);
   if (!supported) return fail(EGL_BAD_PARAMETER, EGL_FALSE);
   thread_state().api = api;
   return succeed(EGL_TRUE);
@@ -92,7 +92,7 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
                                : driver::gl_version_supported(request.major, request.minor);
   if (!version_ok) return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
   // A config that cannot render the API: EGL 1.5, 3.7.1.
-  const EGLint needed = gles ? EGL_OPENGL_ES2_BIT : EGL_OPENGL_BIT;
+  const EGLint needed = !gles ? EGL_OPENGL_BIT : request.major == 1 ? EGL_OPENGL_ES_BIT : EGL_OPENGL_ES2_BIT;
   if (!(c->renderable_type & needed)) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
   // No robust buffer access, no reset notification.
   if (request.robust || request.reset_strategy != EGL_NO_RESET_NOTIFICATION)
@@ -103,7 +103,7 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   object->api = api;
   if (gles) {
     object->major = request.major;
-    object->minor = request.minor;
+    object->minor = request.major == 1 ? 1 : request.minor;
   } else {
     // GL may return a later version compatible with the one asked for: the highest one.
     object->major = driver::kMaxGLMajor;

@@ -27,7 +27,7 @@ const char* QueryString(EGLDisplay dpy, EGLint name) {
   switch (name) {
     case EGL_VENDOR: return succeed("Pineda");
     case EGL_VERSION: return succeed("1.5 Pineda");
-    case EGL_CLIENT_APIS: return succeed(driver::kHasGLES2 ? "OpenGL OpenGL_ES" : "OpenGL");
+    case EGL_CLIENT_APIS: return succeed(driver::kHasGLES ? "OpenGL OpenGL_ES" : "OpenGL");
     case EGL_EXTENSIONS: return succeed(kDisplayExtensions);
     default: return fail<const char*>(EGL_BAD_PARAMETER, nullptr);
   }

@@ -9,7 +9,7 @@
 namespace pineda::egl {
 
 // EGL 1.5, 3.7: OpenGL ES when it is supported, otherwise none.
-inline constexpr EGLenum kInitialApi = driver::kHasGLES2 ? EGL_OPENGL_ES_API : EGL_NONE;
+inline constexpr EGLenum kInitialApi = driver::kHasGLES ? EGL_OPENGL_ES_API : EGL_NONE;
 
 struct ThreadState final : glapi::FlushListener {
   EGLint error = EGL_SUCCESS;

@@ -6,10 +6,13 @@ namespace pineda::driver {
 
 inline constexpr int kMaxGLMajor = 1;
 inline constexpr int kMaxGLMinor = 5;
-// 0: no OpenGL ES yet. 2 offers ES 2.0 through EGL (EGL_OPENGL_ES_API, EGL_OPENGL_ES2_BIT).
-inline constexpr int kMaxGLESMajor = 0;
+// OpenGL ES 1.1 (the common profile) through EGL: EGL_OPENGL_ES_API, EGL_OPENGL_ES_BIT.
+inline constexpr bool kHasGLES1 = true;
+// 2 offers ES 2.0 through EGL (EGL_OPENGL_ES2_BIT) once it exists.
+inline constexpr int kMaxGLESMajor = 1;
 
 inline constexpr bool kHasGLES2 = kMaxGLESMajor >= 2;
+inline constexpr bool kHasGLES = kHasGLES1 || kHasGLES2;
 
 // A version GL defines (1.0-1.5, 2.0-2.1, 3.0-3.3, 4.0-4.6).
 constexpr bool is_gl_version(int major, int minor) {
@@ -22,8 +25,9 @@ constexpr bool gl_version_supported(int major, int minor) {
          (major < kMaxGLMajor || (major == kMaxGLMajor && minor <= kMaxGLMinor));
 }
 
-// Only ES 2.0 is planned (no ES 1.x; ES 3 once the constant grows).
+// ES 1.0 and 1.1 (a 1.0 request gets 1.1, which is backward compatible) and, later, ES 2.0.
 constexpr bool gles_version_supported(int major, int minor) {
+  if (major == 1) return kHasGLES1 && (minor == 0 || minor == 1);
   return major == 2 && minor == 0 && kHasGLES2;
 }
 

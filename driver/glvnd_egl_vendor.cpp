@@ -27,7 +27,7 @@ EGLDisplay get_platform_display(EGLenum platform, void* native, const EGLAttrib*
 }
 
 EGLBoolean supports_api(EGLenum api) {
-  return api == EGL_OPENGL_API || (api == EGL_OPENGL_ES_API && driver::kHasGLES2);
+  return api == EGL_OPENGL_API || (api == EGL_OPENGL_ES_API && driver::kHasGLES);
 }
 
 const char* vendor_string(int name) {

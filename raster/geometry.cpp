@@ -68,7 +68,7 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
   line_width_ = rounded_size(s.line_width, kMaxLineWidth);
   point_size_ = rounded_size(derived_point_size(s.point_params, s.point_size, 0.f), kMaxPointSize);
-  point_size_per_vertex_ = s.point_params.attenuated();
+  point_size_per_vertex_ = s.point_params.per_vertex();
 }
 
 ClipVert GeometryStage::to_clip(const ClipVertex& v) const {

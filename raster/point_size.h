@@ -11,9 +11,12 @@ struct PointParameters {
   float size_min = 0.f, size_max = float(kMaxPointSize);  // state/ starts it at its reported range
   float fade_threshold = 1.f;  // fades only under multisampling, which single-sampled buffers never do
   float attenuation[3] = {1.f, 0.f, 0.f};  // a, b, c of 1 / (a + b d + c d^2)
+  bool size_per_vertex = false;  // each vertex brings its size (OpenGL ES 1.1's point size array)
 
   // Whether the size depends on the vertex's distance (else one size serves the whole draw).
   bool attenuated() const { return attenuation[0] != 1.f || attenuation[1] != 0.f || attenuation[2] != 0.f; }
+  // Whether each vertex gets its own size (ClipVertex::point_size).
+  bool per_vertex() const { return attenuated() || size_per_vertex; }
 };
 
 // size * sqrt(1 / (a + b d + c d^2)), clamped to [size_min, size_max]. `eye_distance` is

@@ -16,6 +16,7 @@ struct VertexInput {
   float texcoord[kMaxTextureUnits][4] = {};
   float secondary_color[3] = {0, 0, 0};
   float fog_coord = 0.f;
+  float point_size = 1.f;  // read when PointParameters::size_per_vertex (OES_point_size_array)
   bool edge_flag = true;
 };
 

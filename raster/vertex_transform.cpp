@@ -153,7 +153,8 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
         for (int c = 0; c < 3; ++c) o.secondary[c] = o.back_secondary[c] = std::clamp(v.secondary_color[c], 0.f, 1.f);
     }
     if (x.fog) o.fog = std::fabs(x.fog_from_coord ? v.fog_coord : eye4.z);
-    if (x.point_attenuation) o.point_size = derived_point_size(x.point, x.point_size, std::fabs(eye4.z));
+    if (x.point_attenuation)
+      o.point_size = derived_point_size(x.point, x.point.size_per_vertex ? v.point_size : x.point_size, std::fabs(eye4.z));
     for (uint32_t planes = x.clip_planes; planes; planes &= planes - 1) {
       const int p = __builtin_ctz(planes);
       o.clip_distance[p] = glm::dot(x.clip_plane_eye[p], eye4);

@@ -6,6 +6,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/buffer_draw.h"
 #include "state/color_material.h"
+#include "state/es1/es1_enums.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
@@ -62,16 +63,23 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
 
 }  // namespace
 
+// OpenGL ES 1.1 (table 2.4) takes its own sizes and types: GL_FIXED, bytes, no doubles or ints.
 void VertexPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  if (ctx.es1())
+    return set_pointer(ctx, ctx.vertex_array, size, type, stride, ptr, {2, 3, 4}, {GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT});
   set_pointer(ctx, ctx.vertex_array, size, type, stride, ptr, {2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
 void ColorPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  if (ctx.es1())
+    return set_pointer(ctx, ctx.color_array, size, type, stride, ptr, {4}, {GL_UNSIGNED_BYTE, GL_FIXED, GL_FLOAT});
   set_pointer(ctx, ctx.color_array, size, type, stride, ptr, {3, 4},
               {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
 }
 
 void NormalPointer(Context& ctx, GLenum type, GLsizei stride, const void* ptr) {
+  if (ctx.es1())
+    return set_pointer(ctx, ctx.normal_array, 3, type, stride, ptr, {3}, {GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT});
   set_pointer(ctx, ctx.normal_array, 3, type, stride, ptr, {3}, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
@@ -80,6 +88,9 @@ void IndexPointer(Context& ctx, GLenum type, GLsizei stride, const void* ptr) {
 }
 
 void TexCoordPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  if (ctx.es1())
+    return set_pointer(ctx, ctx.texture_units[ctx.client_active_texture].texcoord_array, size, type, stride, ptr,
+                       {2, 3, 4}, {GL_BYTE, GL_SHORT, GL_FIXED, GL_FLOAT});
   set_pointer(ctx, ctx.texture_units[ctx.client_active_texture].texcoord_array, size, type, stride, ptr,
               {1, 2, 3, 4}, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
@@ -195,6 +206,10 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
     case GL_SECONDARY_COLOR_ARRAY_POINTER: *params = const_cast<void*>(ctx.secondary_color_array.pointer); break;
     case GL_TEXTURE_COORD_ARRAY_POINTER:
       *params = const_cast<void*>(ctx.texture_units[ctx.client_active_texture].texcoord_array.pointer);
+      break;
+    case GL_POINT_SIZE_ARRAY_POINTER_OES:
+      if (!ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
+      *params = const_cast<void*>(ctx.point_size_array.pointer);
       break;
     default: ctx.record_error(GL_INVALID_ENUM);
   }

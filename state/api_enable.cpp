@@ -2,6 +2,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/capabilities.h"
 #include "state/color_material.h"
+#include "state/es1/es1_enums.h"
 #include "state/context.h"
 
 namespace pineda {
@@ -58,6 +59,7 @@ bool* client_capability(Context& ctx, GLenum array) {
     case GL_TEXTURE_COORD_ARRAY: return &ctx.texture_units[ctx.client_active_texture].texcoord_array.enabled;
     case GL_INDEX_ARRAY: return &ctx.index_array.enabled;
     case GL_EDGE_FLAG_ARRAY: return &ctx.edge_flag_array.enabled;
+    case GL_POINT_SIZE_ARRAY_OES: return ctx.es1() ? &ctx.point_size_array.enabled : nullptr;
     default: return vertex_extras_client_capability(ctx, array);
   }
 }

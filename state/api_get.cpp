@@ -10,6 +10,7 @@
 #include "state/accum.h"
 #include "state/capabilities.h"
 #include "state/render_mode_get.h"
+#include "state/es1/es1_enums.h"
 #include "state/context.h"
 #include "state/get_values.h"
 #include "state/vertex_extras_get.h"
@@ -46,6 +47,7 @@ const ClientArray* client_array(Context& ctx, GLenum pname, ArrayField& field) {
       {0, GL_INDEX_ARRAY_TYPE, GL_INDEX_ARRAY_STRIDE, &ctx.index_array},
       {GL_TEXTURE_COORD_ARRAY_SIZE, GL_TEXTURE_COORD_ARRAY_TYPE, GL_TEXTURE_COORD_ARRAY_STRIDE,
        &ctx.texture_units[ctx.client_active_texture].texcoord_array},
+      {0, GL_POINT_SIZE_ARRAY_TYPE_OES, GL_POINT_SIZE_ARRAY_STRIDE_OES, ctx.es1() ? &ctx.point_size_array : nullptr},
   };
   for (const Entry& e : entries) {
     if (pname == e.size && e.size) field = ArrayField::Size;
@@ -233,6 +235,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_evaluator(ctx, pname, out)) return true;
   if (query_point_parameters(ctx, pname, out)) return true;
   if (query_compressed_formats(pname, out)) return true;
+  if (ctx.es1() && query_es1(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);
@@ -257,6 +260,8 @@ void get(Context& ctx, GLenum pname, T* params, Convert convert) {
 }
 
 std::string version_string(const Context& ctx) {
+  // OpenGL ES 1.1, 6.1.5: "OpenGL ES-CM 1.1" (the common profile), then vendor information.
+  if (ctx.es1()) return std::string("OpenGL ES-CM 1.1 Pineda ") + PINEDA_VERSION_STRING;
   return std::to_string(ctx.attribs().major) + "." + std::to_string(ctx.attribs().minor) + " Pineda " +
          PINEDA_VERSION_STRING;
 }
@@ -298,7 +303,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       if (ctx.version_string.empty()) ctx.version_string = version_string(ctx);
       return reinterpret_cast<const GLubyte*>(ctx.version_string.c_str());
     }
-    case GL_EXTENSIONS: return reinterpret_cast<const GLubyte*>(kExtensions.c_str());
+    case GL_EXTENSIONS:
+      return reinterpret_cast<const GLubyte*>(ctx.es1() ? glapi::kES1Extensions : kExtensions.c_str());
     default: ctx.record_error(GL_INVALID_ENUM); return nullptr;
   }
 }
@@ -309,3 +315,9 @@ void Flush(Context& ctx) { ctx.finish(); }
 void Finish(Context& ctx) { ctx.finish(); }
 
 }  // namespace pineda::gl
+
+namespace pineda {
+
+bool query_get_values(Context& ctx, unsigned pname, GetValues& out) { return gl::query(ctx, pname, out); }
+
+}  // namespace pineda

@@ -1,6 +1,7 @@
 #include "state/buffer_get.h"
 
 #include "state/context.h"
+#include "state/es1/es1_enums.h"
 
 namespace pineda {
 
@@ -16,6 +17,10 @@ bool query_buffer_binding(const Context& ctx, GLenum pname, GLuint& name) {
     case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: array = &ctx.edge_flag_array; break;
     case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: array = &ctx.secondary_color_array; break;
     case GL_FOG_COORD_ARRAY_BUFFER_BINDING: array = &ctx.fog_coord_array; break;
+    case GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES:
+      if (!ctx.es1()) return false;
+      array = &ctx.point_size_array;
+      break;
     case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING:
       array = &ctx.texture_units[ctx.client_active_texture].texcoord_array;
       break;

@@ -92,6 +92,8 @@ class Context {
   ~Context();
 
   const ContextAttribs& attribs() const { return attribs_; }
+  // An OpenGL ES 1.x context: the ES 1.1 subset of the API, with its enums (glapi/).
+  bool es1() const { return attribs_.gles && attribs_.major == 1; }
 
   // Window-system binding (driver/). A null drawable is a surfaceless context.
   void make_current(Drawable* draw, Drawable* read);
@@ -108,8 +110,12 @@ class Context {
 
   // Errors: the first one is kept until glGetError reads it.
   void record_error(GLenum error) {
+    ++errors_recorded_;
     if (error_ == GL_NO_ERROR) error_ = error;
   }
+  // Counts every recorded error, kept or not: a wrapper compares it around a call to learn
+  // whether the call failed (state/es1/).
+  uint64_t errors_recorded() const { return errors_recorded_; }
   GLenum take_error() {
     GLenum e = error_;
     error_ = GL_NO_ERROR;
@@ -193,6 +199,7 @@ class Context {
   ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};  // GLboolean flags
   ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
   ClientArray index_array{.size = 1};
+  ClientArray point_size_array{.size = 1};  // OpenGL ES 1.1 (OES_point_size_array)
   PixelStore pack, unpack;
 
   // Textures
@@ -229,6 +236,7 @@ class Context {
 
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;
+  uint64_t errors_recorded_ = 0;
   std::unique_ptr<raster::Renderer> renderer_;
   Drawable* draw_ = nullptr;
   Drawable* read_ = nullptr;

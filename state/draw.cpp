@@ -89,6 +89,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
   const int texture_units = snapshot_textures(ctx);
+  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
   // Feedback reports unit 0's coordinates even when no texture is enabled.
   const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
   raster::Transform transform = build_transform(ctx, feedback ? std::max(texture_units, 1) : texture_units);

@@ -25,6 +25,12 @@ inline GetValues get_floats(std::initializer_list<double> v) { return {GetKind::
 // Raster position, pixel transfer, zoom and pixel-map sizes (api_get_pixel_state.cpp).
 bool query_pixel_state(Context& ctx, unsigned pname, GetValues& out);
 
+// What glGet* returns for `pname` before conversion (api_get.cpp); false for an unknown pname.
+bool query_get_values(Context& ctx, unsigned pname, GetValues& out);
+
+// The queries only OpenGL ES 1.1 has (state/es1/es1_get.cpp).
+bool query_es1(Context& ctx, unsigned pname, GetValues& out);
+
 // NUM_COMPRESSED_TEXTURE_FORMATS and COMPRESSED_TEXTURE_FORMATS (api_compressed_texture.cpp).
 bool query_compressed_formats(unsigned pname, GetValues& out);
 

@@ -20,7 +20,7 @@ bool query_point_parameters(Context& ctx, unsigned pname, GetValues& out) {
 
 void snapshot_point_parameters(const Context& ctx, raster::Transform& t) {
   const raster::DrawState& s = ctx.draw_state;
-  t.extras.point_attenuation = s.point_params.attenuated();
+  t.extras.point_attenuation = s.point_params.per_vertex();
   t.extras.point = s.point_params;
   t.extras.point_size = s.point_size;
 }

@@ -18,6 +18,7 @@ float read_component(const uint8_t* p, GLenum type, bool normalize) {
     case GL_UNSIGNED_INT: { auto v = load_unaligned<GLuint>(p); return normalize ? float(v / 4294967295.0) : float(v); }
     case GL_FLOAT: return load_unaligned<GLfloat>(p);
     case GL_DOUBLE: return static_cast<float>(load_unaligned<GLdouble>(p));
+    case GL_FIXED: return static_cast<float>(load_unaligned<GLfixed>(p)) / 65536.f;  // OpenGL ES 1.1
     default: return 0.f;
   }
 }
@@ -45,7 +46,7 @@ int gl_type_size(unsigned type) {
   switch (type) {
     case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
     case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_FIXED: return 4;
     case GL_DOUBLE: return 8;
     default: return 0;
   }
@@ -86,6 +87,7 @@ void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
     read_array(ctx.secondary_color_array, index, out.secondary_color, true);
   else
     std::copy(ctx.extras.current_secondary_color, ctx.extras.current_secondary_color + 3, out.secondary_color);
+  if (ctx.point_size_array.active()) read_array(ctx.point_size_array, index, &out.point_size, false);
   if (ctx.fog_coord_array.active())
     read_array(ctx.fog_coord_array, index, &out.fog_coord, false);
   else

@@ -56,9 +56,9 @@ TEST_F(EglConfig, EveryConfigIsRgba8888PbufferOpenGL) {
     EXPECT_EQ(attrib(c, EGL_ALPHA_SIZE), 8);
     EXPECT_EQ(attrib(c, EGL_BUFFER_SIZE), 32);
     EXPECT_EQ(attrib(c, EGL_SURFACE_TYPE), EGL_PBUFFER_BIT);
-    const EGLint apis = EGL_OPENGL_BIT | (offers_gles() ? EGL_OPENGL_ES2_BIT : 0);
+    const EGLint apis = EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT | (offers_gles2() ? EGL_OPENGL_ES2_BIT : 0);
     EXPECT_EQ(attrib(c, EGL_RENDERABLE_TYPE), apis);
-    EXPECT_EQ(attrib(c, EGL_CONFORMANT), apis);
+    EXPECT_EQ(attrib(c, EGL_CONFORMANT), EGL_OPENGL_BIT);
     EXPECT_EQ(attrib(c, EGL_COLOR_BUFFER_TYPE), EGL_RGB_BUFFER);
     EXPECT_EQ(attrib(c, EGL_CONFIG_CAVEAT), EGL_NONE);
     EXPECT_EQ(attrib(c, EGL_SAMPLES), 0);
@@ -106,14 +106,15 @@ TEST_F(EglConfig, DontCareIgnoresAnAttribute) {
   EXPECT_EQ(configs, expected);
 }
 
-TEST_F(EglConfig, ESOnlyWhenOfferedAndNoWindows) {
+TEST_F(EglConfig, ES2OnlyWhenOfferedAndNoWindows) {
   EXPECT_EQ(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
                     EGL_NONE})
                 .size(),
-            offers_gles() ? 7u : 0u);
-  EXPECT_TRUE(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT,
-                      EGL_NONE})
-                  .empty());
+            offers_gles2() ? 7u : 0u);
+  EXPECT_EQ(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT,
+                    EGL_NONE})
+                .size(),
+            7u);
   EXPECT_TRUE(choose({EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                       EGL_NONE})
                   .empty());

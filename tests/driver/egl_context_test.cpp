@@ -11,14 +11,9 @@ using EglContext = EglTest;
 
 TEST_F(EglContext, BindApi) {
   EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_API);
-  if (offers_gles()) {
-    EXPECT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
-    EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_ES_API);
-    EXPECT_TRUE(eglBindAPI(EGL_OPENGL_API));
-  } else {
-    EXPECT_FALSE(eglBindAPI(EGL_OPENGL_ES_API));
-    EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
-  }
+  EXPECT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
+  EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_ES_API);
+  EXPECT_TRUE(eglBindAPI(EGL_OPENGL_API));
   EXPECT_FALSE(eglBindAPI(EGL_OPENVG_API));
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
   EXPECT_FALSE(eglBindAPI(0x1234));
@@ -26,7 +21,7 @@ TEST_F(EglContext, BindApi) {
   EXPECT_EQ(eglQueryAPI(), EGL_OPENGL_API);
 }
 
-TEST_F(EglContext, InitialApiIsESOrNone) {
+TEST_F(EglContext, InitialApiIsES) {
   EGLConfig cfg = config();
   EGLint api = 0, error = 0;
   EGLContext ctx = nullptr;
@@ -37,20 +32,19 @@ TEST_F(EglContext, InitialApiIsESOrNone) {
     error = eglGetError();
     if (ctx) eglDestroyContext(dpy, ctx);
   }).join();
-  if (offers_gles()) {
-    EXPECT_EQ(api, EGL_OPENGL_ES_API);
+  EXPECT_EQ(api, EGL_OPENGL_ES_API);
+  if (offers_gles2()) {
     EXPECT_NE(ctx, EGL_NO_CONTEXT);
     EXPECT_EQ(error, EGL_SUCCESS);
   } else {
-    // No API is bound: creating a context is EGL_BAD_MATCH.
-    EXPECT_EQ(api, EGL_NONE);
+    // ES 1.1 only: an ES 2.0 context is EGL_BAD_MATCH.
     EXPECT_EQ(ctx, EGL_NO_CONTEXT);
     EXPECT_EQ(error, EGL_BAD_MATCH);
   }
 }
 
 TEST_F(EglContext, ES20Contexts) {
-  if (!offers_gles()) GTEST_SKIP() << "OpenGL ES is not offered yet";
+  if (!offers_gles2()) GTEST_SKIP() << "OpenGL ES 2.0 is not offered yet";
   ASSERT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
   EGLConfig cfg = config();
   const EGLint es2[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
@@ -63,9 +57,7 @@ TEST_F(EglContext, ES20Contexts) {
   EXPECT_EQ(value, 2);
   EGLSurface s = pbuffer(cfg, 8, 8);
   EXPECT_TRUE(eglMakeCurrent(dpy, s, s, ctx));
-  // ES 1.x (the default version) and ES 3 are not offered.
-  EXPECT_EQ(context(cfg), EGL_NO_CONTEXT);
-  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
+  // ES 3 is not offered (ES 1.1: tests/es1/).
   const EGLint es3[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
   EXPECT_EQ(context(cfg, es3), EGL_NO_CONTEXT);
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);

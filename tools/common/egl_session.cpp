@@ -66,8 +66,19 @@ bool EglSession::open(int width, int height, std::string& error) {
   return freshContext(error);
 }
 
-bool EglSession::freshContext(std::string& error) {
+bool EglSession::freshContext(std::string& error, bool es1) {
   destroyContext();
+  if (es1) {
+    const EGLint es1Attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 1, EGL_NONE};
+    eglBindAPI(EGL_OPENGL_ES_API);
+    context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, es1Attribs);
+    eglBindAPI(EGL_OPENGL_API);
+    if (context_ == EGL_NO_CONTEXT) {
+      error = eglError("eglCreateContext (OpenGL ES 1.1)");
+      return false;
+    }
+    return makeCurrent(error);
+  }
   const EGLint versioned[] = {EGL_CONTEXT_MAJOR_VERSION, 1, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
   context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, versioned);
   if (context_ == EGL_NO_CONTEXT)  // EGL 1.4 without EGL_KHR_create_context
@@ -76,6 +87,10 @@ bool EglSession::freshContext(std::string& error) {
     error = eglError("eglCreateContext (OpenGL 1.1)");
     return false;
   }
+  return makeCurrent(error);
+}
+
+bool EglSession::makeCurrent(std::string& error) {
   if (!eglMakeCurrent(display_, surface_, surface_, context_)) {
     error = eglError("eglMakeCurrent");
     return false;

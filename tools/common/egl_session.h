@@ -1,6 +1,6 @@
 #pragma once
 // Headless EGL: a display (surfaceless platform when available), an RGBA8 + depth 24 +
-// stencil 8 pbuffer, and desktop OpenGL 1.1 contexts made current on it.
+// stencil 8 pbuffer, and desktop OpenGL 1.1 (or OpenGL ES 1.1) contexts made current on it.
 #include <EGL/egl.h>
 
 #include <string>
@@ -16,10 +16,12 @@ class EglSession {
 
   // Returns false and sets `error` on failure.
   bool open(int width, int height, std::string& error);
-  // Replaces the current context with a new one, so each scene starts from GL's initial state.
-  bool freshContext(std::string& error);
+  // Replaces the current context with a new one, so each scene starts from GL's initial state;
+  // an OpenGL ES 1.1 one when `es1`.
+  bool freshContext(std::string& error, bool es1 = false);
 
  private:
+  bool makeCurrent(std::string& error);
   void destroyContext();
 
   EGLDisplay display_ = EGL_NO_DISPLAY;

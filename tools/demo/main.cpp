@@ -104,7 +104,8 @@ int run(const Options& options) {
     if (!options.scenes.empty() &&
         std::find(options.scenes.begin(), options.scenes.end(), entry.name) == options.scenes.end())
       continue;
-    if (!firstScene && !session.freshContext(error)) {
+    // Each scene but the first gets a fresh context; an ES 1.1 scene always gets its own.
+    if ((!firstScene || entry.es1) && !session.freshContext(error, entry.es1)) {
       std::fprintf(stderr, "pineda-demo: %s\n", error.c_str());
       return 1;
     }

@@ -1,5 +1,5 @@
 #pragma once
-// A demo scene: GL 1.1 calls (and ARB_multitexture where a scene says so). Each scene runs in a fresh context, so it sets up
+// A demo scene: GL 1.1 calls (and ARB_multitexture where a scene says so), or OpenGL ES 1.1 ones. Each scene runs in a fresh context, so it sets up
 // everything it needs in its constructor and assumes GL's initial state.
 #include <memory>
 #include <string_view>
@@ -17,6 +17,7 @@ class Scene {
 struct SceneEntry {
   std::string_view name;
   std::unique_ptr<Scene> (*create)(int width, int height);
+  bool es1 = false;  // an OpenGL ES 1.1 scene (GLES/gl.h), run in an ES 1.1 context
 };
 
 const std::vector<SceneEntry>& allScenes();
@@ -29,5 +30,6 @@ int gearsTrianglesPerFrame();  // for pineda-bench, which draws the same gears
 std::unique_ptr<Scene> createBlend(int width, int height);
 std::unique_ptr<Scene> createLinesPoints(int width, int height);
 std::unique_ptr<Scene> createLitFog(int width, int height);
+std::unique_ptr<Scene> createEs1Fixed(int width, int height);
 
 }  // namespace pineda::demo
