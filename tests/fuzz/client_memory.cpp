@@ -1,11 +1,26 @@
 #include "tests/fuzz/client_memory.h"
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cstdlib>
 
 namespace pineda::fuzz {
 
-ClientMemory::ClientMemory() : arrays(64 * 1024), feedback(4096), selection(4096) {
-  for (size_t i = 0; i < arrays.size(); ++i) arrays[i] = uint8_t(i * 37 + 11);
+GuardedBytes::GuardedBytes() : page_(size_t(sysconf(_SC_PAGESIZE))) {
+  const size_t pages = (kSize + page_ - 1) / page_;
+  void* p = mmap(nullptr, (pages + 2) * page_, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) abort();
+  mapping_ = static_cast<uint8_t*>(p);
+  if (mprotect(mapping_ + page_, pages * page_, PROT_READ | PROT_WRITE) != 0) abort();
+  data_ = mapping_ + page_ + pages * page_ - kSize;  // ends where the second guard page starts
+}
+
+GuardedBytes::~GuardedBytes() { munmap(mapping_, ((kSize + page_ - 1) / page_ + 2) * page_); }
+
+ClientMemory::ClientMemory() : feedback(4096), selection(4096) {
+  for (size_t i = 0; i < arrays.size(); ++i) arrays.data()[i] = uint8_t(i * 37 + 11);
 }
 
 size_t image_footprint(bool pack, int64_t width, int64_t height, int64_t depth) {

@@ -15,10 +15,29 @@ constexpr int kArrayOffsetMax = 256;
 constexpr int kArrayStrideMax = 64;
 constexpr int kMaxVertexIndex = 999;
 
+// 64 KiB between two inaccessible pages: a read past either end faults even in code that
+// AddressSanitizer does not instrument.
+class GuardedBytes {
+ public:
+  GuardedBytes();
+  ~GuardedBytes();
+  GuardedBytes(const GuardedBytes&) = delete;
+  GuardedBytes& operator=(const GuardedBytes&) = delete;
+
+  uint8_t* data() const { return data_; }
+  size_t size() const { return kSize; }
+
+ private:
+  static constexpr size_t kSize = 64 * 1024;
+  uint8_t* mapping_ = nullptr;
+  uint8_t* data_ = nullptr;
+  size_t page_ = 0;
+};
+
 struct ClientMemory {
   ClientMemory();
 
-  std::vector<uint8_t> arrays;  // vertex arrays, images, list names, map points: 64 KiB, read only
+  GuardedBytes arrays;  // vertex arrays, images, list names, map points: read only
   std::vector<GLfloat> feedback;  // glFeedbackBuffer's, kept until the next one
   std::vector<GLuint> selection;  // glSelectBuffer's
   int calls_to_lists_in_list = 0;  // glCallList(s) compiled into the list being built

@@ -133,6 +133,32 @@ const void* array_pointer(FuzzInput& in, const ClientMemory& memory) {
   return memory.arrays.data() + in.offset(kArrayOffsetMax);
 }
 
+// Whether a client array takes its data from buffer `name`. Deleting that buffer resets the
+// array's binding to 0 (GL 1.5 2.9), and the array's offset then reads as a client pointer:
+// an application error the fuzzer must not make.
+bool array_uses_buffer(GLuint name) {
+  constexpr GLenum kBindings[] = {GL_VERTEX_ARRAY_BUFFER_BINDING,    GL_COLOR_ARRAY_BUFFER_BINDING,
+                                  GL_NORMAL_ARRAY_BUFFER_BINDING,    GL_INDEX_ARRAY_BUFFER_BINDING,
+                                  GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, GL_FOG_COORD_ARRAY_BUFFER_BINDING,
+                                  GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING};
+  GLint bound = 0;
+  for (GLenum binding : kBindings) {
+    glGetIntegerv(binding, &bound);
+    if (GLuint(bound) == name) return true;
+  }
+  GLint units = 0, active = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_UNITS, &units);
+  glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &active);
+  bool used = false;
+  for (GLint u = 0; u < units && !used; ++u) {
+    glClientActiveTexture(GL_TEXTURE0 + u);
+    glGetIntegerv(GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, &bound);
+    used = GLuint(bound) == name;
+  }
+  glClientActiveTexture(GLenum(active));
+  return used;
+}
+
 // A stride for client arrays: up to kArrayStrideMax, sometimes negative (rejected).
 GLsizei array_stride(FuzzInput& in) {
   const GLsizei s = in.bounded_size(kArrayStrideMax / 4);
@@ -575,7 +601,9 @@ const GlCall kCalls[] = {
     {"glUnmapBuffer", [](FuzzInput& in, ClientMemory&) { glUnmapBuffer(in.enumeration(kBufferTargets)); }},
     {"glDeleteBuffers",
      [](FuzzInput& in, ClientMemory&) {
-       const GLuint names[2] = {in.name(), in.name()};
+       GLuint names[2] = {in.name(), in.name()};
+       for (GLuint& name : names)
+         if (name != 0 && array_uses_buffer(name)) name = 0;  // 0 is skipped
        glDeleteBuffers(in.bounded_size(2), names);
      }},
     {"glMap1f",
