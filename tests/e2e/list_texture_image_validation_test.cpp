@@ -52,6 +52,7 @@ TEST_F(ListTextureImageValidationTest, TexImagesAboveMaxSizeAreInvalidValueAsImm
   auto image2d = [&] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8193, 1 << 20, 0, GL_RGBA, GL_FLOAT, p); };
   auto image3d = [&] { glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 4, 4, 100000, 0, GL_RGBA, GL_UNSIGNED_BYTE, p); };
   auto level5 = [&] { glTexImage2D(GL_TEXTURE_2D, 5, GL_RGBA, 8192, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, p); };
+  auto square32k = [&] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 32768, 32768, 0, GL_RGBA, GL_FLOAT, p); };
   EXPECT_EQ(immediate_error(image1d), GLenum(GL_INVALID_VALUE));
   EXPECT_EQ(compiled_error(image1d), GLenum(GL_INVALID_VALUE));
   EXPECT_EQ(immediate_error(image2d), GLenum(GL_INVALID_VALUE));
@@ -60,6 +61,8 @@ TEST_F(ListTextureImageValidationTest, TexImagesAboveMaxSizeAreInvalidValueAsImm
   EXPECT_EQ(compiled_error(image3d), GLenum(GL_INVALID_VALUE));
   EXPECT_EQ(immediate_error(level5), GLenum(GL_INVALID_VALUE));
   EXPECT_EQ(compiled_error(level5), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(immediate_error(square32k), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(compiled_error(square32k), GLenum(GL_INVALID_VALUE));
 }
 
 TEST_F(ListTextureImageValidationTest, InvalidTypeCopiesNothingAndIsInvalidEnum) {
