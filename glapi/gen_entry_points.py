@@ -193,6 +193,21 @@ def api_gate(cmd, flags, es1_commands):
     return lines
 
 
+def out_of_memory_guard(cmd, body):
+    """The body in the one place where an allocation the machine cannot hold is caught: it
+    records GL_OUT_OF_MEMORY (GL 1.5 2.5). The implementation allocates before it changes
+    state, so the state stays as it was before the failing allocation."""
+    lines = ["  try {"] + ["  " + line for line in body]
+    lines += ["  } catch (const std::bad_alloc&) {",
+              "    ctx->record_error(GL_OUT_OF_MEMORY);",
+              "  } catch (const std::length_error&) {  // a size beyond what a std::vector can hold",
+              "    ctx->record_error(GL_OUT_OF_MEMORY);",
+              "  }"]
+    if cmd.ret != "void":
+        lines.append("  return {};")
+    return lines
+
+
 def zero_return(cmd):
     return "return;" if cmd.ret == "void" else "return {};"
 
@@ -255,7 +270,7 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
           f'inline constexpr const char* kES1Extensions = "{" ".join(es1_extensions)} ";',
           "", "}  // namespace pineda::glapi", ""]
 
-    c = [HEADER_NOTE, "#include <algorithm>", "#include <cstring>", "#include <iterator>", "",
+    c = [HEADER_NOTE, "#include <algorithm>", "#include <cstring>", "#include <iterator>", "#include <new>", "#include <stdexcept>", "",
          '#include "glapi/gl_entry_points.h"', '#include "glapi/current.h"',
          '#include "glapi/flush_listener.h"', '#include "glapi/list_copy.h"', '#include "glapi/proc_table.h"',
          '#include "state/context.h"', "",
@@ -265,21 +280,22 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
         c.append(f"PINEDA_EXPORT {cmd.ret} GLAPIENTRY {cmd.name}({cmd.param_decls()}) {{")
         c.append("  pineda::Context* ctx = pineda::current_context();")
         c.append(f"  if (!ctx) {zero_return(cmd)}")
-        c += api_gate(cmd, flags, es1_commands)
-        c += list_recording(cmd, flags)
+        body = api_gate(cmd, flags, es1_commands)
+        body += list_recording(cmd, flags)
         if "inside_begin_end" not in flags:
-            c.append("  if (ctx->inside_begin_end()) {")
-            c.append("    ctx->record_error(GL_INVALID_OPERATION);")
-            c.append(f"    {zero_return(cmd)}")
-            c.append("  }")
+            body.append("  if (ctx->inside_begin_end()) {")
+            body.append("    ctx->record_error(GL_INVALID_OPERATION);")
+            body.append(f"    {zero_return(cmd)}")
+            body.append("  }")
         call = f"pineda::gl::{impl_name(cmd, flags)}({args})"
         if cmd.name in FLUSH_FUNCTIONS:
-            c.append(f"  {call};")
-            c.append("  pineda::glapi::notify_flushed(*ctx);")
+            body.append(f"  {call};")
+            body.append("  pineda::glapi::notify_flushed(*ctx);")
         elif cmd.ret == "void":
-            c.append(f"  {call};")
+            body.append(f"  {call};")
         else:
-            c.append(f"  return {call};")
+            body.append(f"  return {call};")
+        c += out_of_memory_guard(cmd, body)
         c.append("}")
         c.append("")
     c += ["namespace pineda::glapi {", "", proc_table("lookup_gl_proc", [cmd for cmd, _ in selected]),

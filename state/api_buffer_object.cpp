@@ -97,14 +97,7 @@ void BufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data, 
   if (!valid_usage(usage)) return ctx.record_error(GL_INVALID_ENUM);
   BufferObject* b = bound_buffer(ctx, target);
   if (!b) return;
-  std::vector<uint8_t> store;
-  try {
-    store.resize(size_t(size));
-  } catch (const std::bad_alloc&) {
-    return ctx.record_error(GL_OUT_OF_MEMORY);
-  } catch (const std::length_error&) {
-    return ctx.record_error(GL_OUT_OF_MEMORY);
-  }
+  std::vector<uint8_t> store(static_cast<size_t>(size));  // allocated first: running out of memory leaves the buffer as it was
   if (data && size > 0) std::memcpy(store.data(), data, size_t(size));
   b->data = std::move(store);  // a mapped buffer is unmapped by its new store (as Mesa does)
   b->usage = usage;

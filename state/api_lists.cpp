@@ -12,9 +12,12 @@ void call_list(Context& ctx, GLuint name) {
   if (ctx.list_depth >= kMaxListNesting) return;
   std::shared_ptr<const DisplayList> list = ctx.lists.find(name);
   if (!list) return;  // calling an undefined list does nothing
-  ++ctx.list_depth;
+  struct Nesting {  // left even when a command runs out of memory
+    int& depth;
+    explicit Nesting(int& d) : depth(++d) {}
+    ~Nesting() { --depth; }
+  } nesting(ctx.list_depth);
   for (const ListCommand& command : list->commands) command(ctx);
-  --ctx.list_depth;
 }
 
 // The list-name offsets of glCallLists, decoded by type; false for an invalid type.

@@ -1,6 +1,7 @@
 // glPixelTransfer, glPixelZoom, glPixelMap and glGetPixelMap (GL 1.5 spec 3.6.3, 6.1.3).
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
@@ -46,11 +47,16 @@ bool is_index_map(GLenum map) { return map == GL_PIXEL_MAP_I_TO_I || map == GL_P
 bool needs_power_of_two(GLenum map) { return map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_I_TO_A; }
 
 // `normalize_max`: the integer type's maximum (colour maps read unsigned integers as [0, 1]).
+GLenum pixel_map_error(GLenum map, GLsizei size) {
+  if (!is_pixel_map(map)) return GL_INVALID_ENUM;
+  if (size < 1 || size > kMaxPixelMapTable) return GL_INVALID_VALUE;
+  if (needs_power_of_two(map) && (size & (size - 1)) != 0) return GL_INVALID_VALUE;
+  return GL_NO_ERROR;
+}
+
 template <typename T>
 void set_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
-  if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM);
-  if (size < 1 || size > kMaxPixelMapTable) return ctx.record_error(GL_INVALID_VALUE);
-  if (needs_power_of_two(map) && (size & (size - 1)) != 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (const GLenum error = pixel_map_error(map, size); error != GL_NO_ERROR) return ctx.record_error(error);
   if (!values) return;
   std::vector<float>& table = ctx.pixel_maps[map];
   table.resize(size_t(size));
@@ -59,6 +65,19 @@ void set_map(Context& ctx, GLenum map, GLsizei size, const T* values, double nor
     table[i] = is_index_map(map) ? static_cast<float>(v)
                                  : std::clamp(static_cast<float>(v / normalize_max), 0.f, 1.f);
   }
+}
+
+// The values are copied at compile time only when the call is valid: `size` may be anything.
+template <typename T>
+void compile_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
+  const GLenum error = pixel_map_error(map, size);
+  std::vector<T> copy;
+  if (error == GL_NO_ERROR && values) copy.assign(values, values + size);
+  ctx.record_list_command([=, copy = std::move(copy)](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (error != GL_NO_ERROR) return c.record_error(error);
+    set_map(c, map, size, copy.empty() ? nullptr : copy.data(), normalize_max);
+  });
 }
 
 template <typename T>
@@ -92,6 +111,16 @@ void PixelMapuiv(Context& ctx, GLenum map, GLsizei mapsize, const GLuint* values
 }
 void PixelMapusv(Context& ctx, GLenum map, GLsizei mapsize, const GLushort* values) {
   set_map(ctx, map, mapsize, values, 65535.0);
+}
+
+void compile_PixelMapfv(Context& ctx, GLenum map, GLsizei mapsize, const GLfloat* values) {
+  compile_map(ctx, map, mapsize, values, 1.0);
+}
+void compile_PixelMapuiv(Context& ctx, GLenum map, GLsizei mapsize, const GLuint* values) {
+  compile_map(ctx, map, mapsize, values, 4294967295.0);
+}
+void compile_PixelMapusv(Context& ctx, GLenum map, GLsizei mapsize, const GLushort* values) {
+  compile_map(ctx, map, mapsize, values, 65535.0);
 }
 
 void GetPixelMapfv(Context& ctx, GLenum map, GLfloat* values) { get_map(ctx, map, values, 1.0); }

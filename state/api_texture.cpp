@@ -9,6 +9,7 @@
 #include "state/limits.h"
 #include "state/pixel_format.h"
 #include "state/pixel_unpack.h"
+#include "state/tex_image_checks.h"
 #include "state/texture_format.h"
 
 namespace pineda::gl {
@@ -68,14 +69,14 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
     for (int y = 0; y < box.height; ++y) {
       const int64_t row = (skip_images + z + box.border_z) * image_rows + y + box.border_y;
       uint32_t* dst = &level.texels[(size_t(box.z + z) * level.height + size_t(box.y + y)) * level.width + box.x];
-      if (const uint8_t* bytes = full_rgba8 ? source.rgba8_row(int(row)) : nullptr) {
+      if (const uint8_t* bytes = full_rgba8 ? source.rgba8_row(row) : nullptr) {
         // What to_texel makes of byte / 255 in every channel: the byte (texels are RGBA8, R lowest).
         std::memcpy(dst, bytes + 4 * size_t(box.border_x), 4 * size_t(box.width));
         continue;
       }
       for (int x = 0; x < box.width; ++x) {
         float rgba[4];
-        source.read(x + box.border_x, int(row), rgba);
+        source.read(x + box.border_x, row, rgba);
         dst[x] = to_texel(rgba, storage);
       }
     }
@@ -94,52 +95,47 @@ void unpack_depth_into(Context& ctx, TextureLevelData& level, int bits, const Cl
           depth_texel(depths[size_t(y + box.border_y) * full_width + x + box.border_x], bits);
 }
 
-// GL 1.4 3.8.1: depth data only for depth formats and the other way round; depth formats on
-// 1D and 2D textures only (Mesa's INVALID_OPERATION for both).
 bool valid_depth_use(Context& ctx, const TextureFormat& storage, TexTarget kind, GLenum format) {
-  const bool depth = storage.depth > 0;
-  if (depth == (format == GL_DEPTH_COMPONENT) && (!depth || kind == TexTarget::T1D || kind == TexTarget::T2D))
-    return true;
+  if (depth_use_allowed(storage, kind, format)) return true;
   ctx.record_error(GL_INVALID_OPERATION);
   return false;
 }
 
-// glTexImage1D/2D/3D: `target` already checked to have `dims` dimensions; height and depth
-// are 1 where the target has no such dimension.
-void tex_image(Context& ctx, const ImageTarget& target, GLint level, GLint internal_format, GLsizei width,
+// glTexImage1D/2D/3D: height and depth are 1 where the target has no such dimension.
+void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint internal_format, GLsizei width,
                GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
-  const int dims = image_dimensions(target.kind);
-  if (!valid_format_type(ctx, format, type)) return;
-  const std::optional<TextureFormat> storage = texture_format(internal_format);
-  if (level < 0 || level > max_texture_level(target.kind) || !storage || (border != 0 && border != 1))
-    return ctx.record_error(GL_INVALID_VALUE);
-  const TexBaseFormat base = storage->base;
+  const GLenum error =
+      tex_image_error(target_enum, dims, level, internal_format, width, height, depth, border, format, type);
+  if (error != GL_NO_ERROR) return ctx.record_error(error);
+  ImageTarget target;
+  image_target(target_enum, target);
+  const TextureFormat storage = *texture_format(internal_format);
   const int inner_w = width - 2 * border;
   const int inner_h = dims >= 2 ? height - 2 * border : 1;
   const int inner_d = dims == 3 ? depth - 2 * border : 1;
-  if (inner_w < 0 || inner_h < 0 || inner_d < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (target.kind == TexTarget::Cube && width != height) return ctx.record_error(GL_INVALID_VALUE);
   const GLint recorded_format = stored_internal_format(internal_format);
-  if (!valid_depth_use(ctx, *storage, target.kind, format)) return;
   TextureObject& tex = image_texture(ctx, target);
   std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
-  if (levels.size() <= size_t(level)) levels.resize(level + 1);
-  TextureLevelData& l = levels[level];
-  const int level_max = max_texture_size(target.kind) >> level;  // level l of a full chain is at most max >> l
-  const bool too_large = inner_w > level_max || inner_h > level_max || inner_d > level_max;
+  const int level_max = max_texture_size(target.kind) >> level;
   if (target.proxy) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
-    l = too_large ? TextureLevelData{} : TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, base, {}};
+    if (levels.size() <= size_t(level)) levels.resize(level + 1);
+    const bool too_large = inner_w > level_max || inner_h > level_max || inner_d > level_max;
+    levels[level] = too_large ? TextureLevelData{}
+                              : TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
     return;
   }
-  if (too_large) return ctx.record_error(GL_INVALID_VALUE);
-  l = TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, base, {}};
-  l.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
+  // Allocated before the level changes, so that running out of memory leaves the texture as it was.
+  TextureLevelData image{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
+  image.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
+  if (levels.size() <= size_t(level)) levels.resize(level + 1);
+  TextureLevelData& l = levels[level];
+  l = std::move(image);
   const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
                       dims == 3};
-  if (storage->depth)
-    unpack_depth_into(ctx, l, storage->depth, box, type, pixels);
+  if (storage.depth)
+    unpack_depth_into(ctx, l, storage.depth, box, type, pixels);
   else
-    unpack_into(ctx, l, *storage, box, format, type, pixels);
+    unpack_into(ctx, l, storage, box, format, type, pixels);
   tex.level_changed(level, target.face);
 }
 
@@ -357,23 +353,17 @@ GLboolean IsTexture(Context& ctx, GLuint texture) { return ctx.textures.is_textu
 
 void TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
                 GLenum format, GLenum type, const void* pixels) {
-  ImageTarget t;
-  if (!image_target_of(target, 1, true, t)) return ctx.record_error(GL_INVALID_ENUM);
-  tex_image(ctx, t, level, internalformat, width, 1, 1, border, format, type, pixels);
+  tex_image(ctx, target, 1, level, internalformat, width, 1, 1, border, format, type, pixels);
 }
 
 void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                 GLint border, GLenum format, GLenum type, const void* pixels) {
-  ImageTarget t;
-  if (!image_target_of(target, 2, true, t)) return ctx.record_error(GL_INVALID_ENUM);
-  tex_image(ctx, t, level, internalformat, width, height, 1, border, format, type, pixels);
+  tex_image(ctx, target, 2, level, internalformat, width, height, 1, border, format, type, pixels);
 }
 
 void TexImage3D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                 GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
-  ImageTarget t;
-  if (!image_target_of(target, 3, true, t)) return ctx.record_error(GL_INVALID_ENUM);
-  tex_image(ctx, t, level, internalformat, width, height, depth, border, format, type, pixels);
+  tex_image(ctx, target, 3, level, internalformat, width, height, depth, border, format, type, pixels);
 }
 
 void TexImage3DEXT(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLsizei width, GLsizei height,

@@ -14,7 +14,7 @@ BitmapLayout::BitmapLayout(const PixelStore& store, int width) : width_(std::max
   skip_bits_ = std::max(store.skip_pixels, 0);
 }
 
-size_t BitmapLayout::byte_of(int i, int j) const {
+size_t BitmapLayout::byte_of(int i, int64_t j) const {
   return first_row_ + row_stride_ * size_t(j) + (size_t(skip_bits_) + size_t(i)) / 8;
 }
 
@@ -23,9 +23,9 @@ int BitmapLayout::shift_of(int i) const {
   return lsb_first_ ? bit : 7 - bit;
 }
 
-bool BitmapLayout::bit(const uint8_t* data, int i, int j) const { return (data[byte_of(i, j)] >> shift_of(i)) & 1; }
+bool BitmapLayout::bit(const uint8_t* data, int i, int64_t j) const { return (data[byte_of(i, j)] >> shift_of(i)) & 1; }
 
-void BitmapLayout::set_bit(uint8_t* data, int i, int j, bool value) const {
+void BitmapLayout::set_bit(uint8_t* data, int i, int64_t j, bool value) const {
   uint8_t& byte = data[byte_of(i, j)];
   const uint8_t mask = uint8_t(1u << shift_of(i));
   byte = value ? uint8_t(byte | mask) : uint8_t(byte & ~mask);

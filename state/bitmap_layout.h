@@ -13,15 +13,15 @@ struct PixelStore;
 class BitmapLayout {
  public:
   BitmapLayout(const PixelStore& store, int width);
-  bool bit(const uint8_t* data, int i, int j) const;
+  bool bit(const uint8_t* data, int i, int64_t j) const;
   // Sets or clears one bit, leaving the others of its byte as they are.
-  void set_bit(uint8_t* data, int i, int j, bool value) const;
+  void set_bit(uint8_t* data, int i, int64_t j, bool value) const;
   // Bytes from `data` that a width x height image reads.
   size_t size(int height) const;
 
  private:
   // The byte of pixel (i, j) and the bit's position in it.
-  size_t byte_of(int i, int j) const;
+  size_t byte_of(int i, int64_t j) const;
   int shift_of(int i) const;
 
   size_t row_stride_ = 0;

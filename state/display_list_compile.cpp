@@ -1,16 +1,15 @@
 // The calls that read client memory are compiled by reading it now (GL 1.1 spec 5.4):
 // vertex arrays become vertex data in the list, images become tightly packed copies.
 #include <algorithm>
-#include <cstring>
 #include <optional>
 
 #include "glapi/gl_entry_points.h"
 #include "state/buffer_draw.h"
-#include "state/bitmap_layout.h"
 #include "state/context.h"
 #include "state/draw.h"
 #include "state/enum_translate.h"
-#include "state/pixel_format.h"
+#include "state/packed_image.h"
+#include "state/tex_image_checks.h"
 #include "state/texture_target.h"
 #include "state/vertex_fetch.h"
 
@@ -74,39 +73,11 @@ std::optional<float> fetch_indexed(const Context& ctx, GLsizei count, const Inde
   return fetch_index(ctx, indices[count - 1]);
 }
 
-// A tightly packed copy (alignment 1, no skips) of a client image under the current
-// unpack state, or empty when the call is invalid or has no pixels. A 3D image (`volume`)
-// has `depth` slices under IMAGE_HEIGHT and SKIP_IMAGES.
-std::vector<uint8_t> pack_image(const Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type,
-                                const void* pixels, GLsizei depth = 1, bool volume = false) {
-  std::vector<uint8_t> out;
-  if (!pixels || width <= 0 || height <= 0 || depth <= 0 || texture_image_format_type_error(format, type) != GL_NO_ERROR)
-    return out;
-  // A 3D bitmap is copied as one tall image (IMAGE_HEIGHT and SKIP_IMAGES are not applied to it).
-  if (type == GL_BITMAP) return tight_bitmap_copy(ctx.unpack, width, height * depth, pixels);
-  const ImageLayout layout = image_layout(ctx.unpack, width, format, type);
-  const size_t row = layout.pixel_bytes * size_t(width);
-  const size_t image_rows = ctx.unpack.image_height > 0 ? size_t(ctx.unpack.image_height) : size_t(height);
-  const size_t image_stride = layout.row_stride * image_rows;
-  out.resize(row * size_t(height) * size_t(depth));
-  const auto* src = static_cast<const uint8_t*>(pixels) + layout.offset +
-                    (volume ? size_t(ctx.unpack.skip_images) * image_stride : 0);
-  for (GLsizei z = 0; z < depth; ++z)
-    for (GLsizei y = 0; y < height; ++y)
-      std::memcpy(out.data() + row * (size_t(z) * height + y), src + image_stride * z + layout.row_stride * y, row);
-  if (ctx.unpack.swap_bytes)  // the copy is replayed without SWAP_BYTES
-    for (size_t at = 0; at < out.size(); at += layout.pixel_bytes) swap_pixel_bytes(out.data() + at, format, type);
-  return out;
-}
-
-// Runs `call` with a default unpack state, so that a packed copy is read as it was stored.
-template <typename Call>
-void with_packed_unpack(Context& c, Call call) {
-  const PixelStore saved = c.unpack;
-  c.unpack = PixelStore{};
-  c.unpack.alignment = 1;
-  call();
-  c.unpack = saved;
+// A copy of the pixels a texture image call reads, or empty when it reads none.
+std::vector<uint8_t> texture_pixels(const Context& ctx, bool reads, GLsizei width, GLsizei height, GLsizei depth,
+                                    bool volume, GLenum format, GLenum type, const void* pixels) {
+  if (!reads || !pixels || width == 0 || height == 0 || depth == 0) return {};
+  return pack_client_image(ctx.unpack, width, height, depth, volume, format, type, pixels);
 }
 
 bool is_proxy(GLenum target) {
@@ -168,12 +139,16 @@ void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type,
   record_draw(ctx, mode, std::move(vertices), error, last_index);
 }
 
+// The texture image calls copy the client pixels only when they read them: the argument checks
+// that depend on no state come first, and the list runs the call with all its checks.
 // TexImage with a proxy target is executed at once, not compiled (GL 1.5 5.4).
 void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLsizei height, GLint border, GLenum format, GLenum type, const void* pixels) {
   if (is_proxy(target))
     return TexImage2D(ctx, target, level, internalformat, width, height, border, format, type, pixels);
-  auto image = pack_image(ctx, width, height, format, type, pixels);
+  const bool reads = tex_image_error(target, 2, level, internalformat, width, height, 1, border, format, type) ==
+                     GL_NO_ERROR;
+  auto image = texture_pixels(ctx, reads, width, height, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     with_packed_unpack(c, [&] {
@@ -186,7 +161,9 @@ void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internal
 void compile_TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLint border, GLenum format, GLenum type, const void* pixels) {
   if (is_proxy(target)) return TexImage1D(ctx, target, level, internalformat, width, border, format, type, pixels);
-  auto image = pack_image(ctx, width, 1, format, type, pixels);
+  const bool reads = tex_image_error(target, 1, level, internalformat, width, 1, 1, border, format, type) ==
+                     GL_NO_ERROR;
+  auto image = texture_pixels(ctx, reads, width, 1, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     with_packed_unpack(c, [&] {
@@ -197,7 +174,8 @@ void compile_TexImage1D(Context& ctx, GLenum target, GLint level, GLint internal
 
 void compile_TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
                            GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  auto image = pack_image(ctx, width, height, format, type, pixels);
+  const bool reads = tex_sub_image_may_read(target, 2, level, width, height, 1, format, type);
+  auto image = texture_pixels(ctx, reads, width, height, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     with_packed_unpack(c, [&] {
@@ -209,7 +187,8 @@ void compile_TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffs
 
 void compile_TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
                            GLenum type, const void* pixels) {
-  auto image = pack_image(ctx, width, 1, format, type, pixels);
+  const bool reads = tex_sub_image_may_read(target, 1, level, width, 1, 1, format, type);
+  auto image = texture_pixels(ctx, reads, width, 1, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     with_packed_unpack(c, [&] {
@@ -222,7 +201,9 @@ void compile_TexImage3D(Context& ctx, GLenum target, GLint level, GLint internal
                         GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
   if (is_proxy(target))
     return TexImage3D(ctx, target, level, internalformat, width, height, depth, border, format, type, pixels);
-  auto image = pack_image(ctx, width, height, format, type, pixels, depth, true);
+  const bool reads = tex_image_error(target, 3, level, internalformat, width, height, depth, border, format,
+                                     type) == GL_NO_ERROR;
+  auto image = texture_pixels(ctx, reads, width, height, depth, true, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     with_packed_unpack(c, [&] {
@@ -240,7 +221,8 @@ void compile_TexImage3DEXT(Context& ctx, GLenum target, GLint level, GLenum inte
 void compile_TexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
                            GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type,
                            const void* pixels) {
-  auto image = pack_image(ctx, width, height, format, type, pixels, depth, true);
+  const bool reads = tex_sub_image_may_read(target, 3, level, width, height, depth, format, type);
+  auto image = texture_pixels(ctx, reads, width, height, depth, true, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     with_packed_unpack(c, [&] {

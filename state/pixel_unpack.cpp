@@ -44,7 +44,7 @@ ClientImage::ClientImage(const PixelStore& store, int width, GLenum format, GLen
       bits_(store, width),
       swap_(store.swap_bytes) {}
 
-const uint8_t* ClientImage::pixel(int i, int j, uint8_t* scratch) const {
+const uint8_t* ClientImage::pixel(int i, int64_t j, uint8_t* scratch) const {
   const uint8_t* p = data_ + layout_.offset + layout_.row_stride * size_t(j) + layout_.pixel_bytes * size_t(i);
   if (!swap_ || layout_.pixel_bytes > 16) return p;
   std::memcpy(scratch, p, layout_.pixel_bytes);
@@ -52,9 +52,9 @@ const uint8_t* ClientImage::pixel(int i, int j, uint8_t* scratch) const {
   return scratch;
 }
 
-const uint8_t* ClientImage::row(int j) const { return data_ + layout_.offset + layout_.row_stride * size_t(j); }
+const uint8_t* ClientImage::row(int64_t j) const { return data_ + layout_.offset + layout_.row_stride * size_t(j); }
 
-int64_t ClientImage::index(int i, int j) const {
+int64_t ClientImage::index(int i, int64_t j) const {
   if (type_ == GL_BITMAP) return bits_.bit(data_, i, j);
   uint8_t scratch[16];
   return load_index(pixel(i, j, scratch), type_);
@@ -67,14 +67,14 @@ ColorImageReader::ColorImageReader(const Context& ctx, int width, GLenum format,
       image_(ctx.unpack, width, format, type, pixels),
       transfer_(!color_transfer_is_identity(ctx.pixel_mode)) {}
 
-void ColorImageReader::read(int i, int j, float rgba[4]) const {
+void ColorImageReader::read(int i, int64_t j, float rgba[4]) const {
   if (format_ == GL_COLOR_INDEX) return index_to_rgba(ctx_.pixel_mode, ctx_.pixel_maps, image_.index(i, j), rgba);
   uint8_t scratch[16];
   load_color(image_.pixel(i, j, scratch), format_, type_, rgba);
   if (transfer_) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, rgba);
 }
 
-const uint8_t* ColorImageReader::rgba8_row(int j) const {
+const uint8_t* ColorImageReader::rgba8_row(int64_t j) const {
   if (format_ != GL_RGBA || type_ != GL_UNSIGNED_BYTE || transfer_) return nullptr;  // SWAP_BYTES: single bytes
   return image_.row(j);
 }

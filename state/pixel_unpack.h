@@ -22,11 +22,11 @@ class ClientImage {
   ClientImage(const PixelStore& store, int width, GLenum format, GLenum type, const void* pixels);
   // The bytes of pixel i of row j, with their elements swapped (into `scratch`, 16 bytes)
   // under SWAP_BYTES. Not for BITMAP.
-  const uint8_t* pixel(int i, int j, uint8_t* scratch) const;
+  const uint8_t* pixel(int i, int64_t j, uint8_t* scratch) const;
   // Pixel i of row j as an index: the bit of a BITMAP, or the value of an index type.
-  int64_t index(int i, int j) const;
+  int64_t index(int i, int64_t j) const;
   // The first byte of row j (its pixels follow at the format's pixel size). Not for BITMAP.
-  const uint8_t* row(int j) const;
+  const uint8_t* row(int64_t j) const;
 
  private:
   GLenum format_, type_;
@@ -43,10 +43,10 @@ class ColorImageReader {
   // `width`: pixels in a row of the image.
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
   // Pixel i of row j as RGBA in [0, 1].
-  void read(int i, int j, float rgba[4]) const;
+  void read(int i, int64_t j, float rgba[4]) const;
   // Row j as RGBA8 bytes when the image is GL_RGBA / GL_UNSIGNED_BYTE and no pixel transfer
   // applies, so that read() would give byte / 255 exactly; null otherwise.
-  const uint8_t* rgba8_row(int j) const;
+  const uint8_t* rgba8_row(int64_t j) const;
 
  private:
   const Context& ctx_;

@@ -47,7 +47,8 @@ uint32_t average(const uint32_t (&texels)[n]) {
 // The next smaller level: each texel the rounded average of the 2x2 (or 2x1) texels it
 // covers, as Mesa's software mipmap generation computes it, in the level's stored bits; of
 // 2x2x2 texels for a 3D level.
-void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
+void downsample_level(const TextureLevelData& src, TextureLevelData& level) {
+  TextureLevelData dst;  // built aside: running out of memory leaves `level` as it was
   dst.width = std::max(1, src.width / 2);
   dst.height = std::max(1, src.height / 2);
   dst.depth = std::max(1, src.depth / 2);
@@ -79,6 +80,7 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& dst) {
                                  at(x0, y0, z1), at(x0 + dx, y0, z1), at(x0, y0 + dy, z1), at(x0 + dx, y0 + dy, z1)};
         out = requantize_texel(average(box), storage);
       }
+  level = std::move(dst);
 }
 
 raster::TexKind image_kind(GLenum target) {
@@ -187,6 +189,8 @@ void TextureObject::level_changed(int level, int face) {
   changed();
   std::vector<TextureLevelData>& chain = face_levels(face);
   if (!params.generate_mipmap || level != params.base_level || size_t(level) >= chain.size()) return;
+  // An image with a zero width, height or depth has no texels to derive levels from.
+  if (chain[level].width == 0 || chain[level].height == 0 || chain[level].depth == 0) return;
   for (size_t l = size_t(level); chain[l].width > 1 || chain[l].height > 1 || chain[l].depth > 1; ++l) {
     if (chain.size() <= l + 1) chain.resize(l + 2);
     downsample_level(chain[l], chain[l + 1]);

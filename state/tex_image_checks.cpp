@@ -1,0 +1,51 @@
+#include "state/tex_image_checks.h"
+
+#include <optional>
+
+#include "state/pixel_format.h"
+
+namespace pineda {
+namespace {
+
+bool image_target_of(GLenum target, int dims, bool proxy_ok, ImageTarget& out) {
+  return image_target(target, out) && image_dimensions(out.kind) == dims && (proxy_ok || !out.proxy);
+}
+
+}  // namespace
+
+bool depth_use_allowed(const TextureFormat& storage, TexTarget kind, GLenum format) {
+  const bool depth = storage.depth > 0;
+  return depth == (format == GL_DEPTH_COMPONENT) && (!depth || kind == TexTarget::T1D || kind == TexTarget::T2D);
+}
+
+GLenum tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
+                       GLsizei depth, GLint border, GLenum format, GLenum type) {
+  ImageTarget t;
+  if (!image_target_of(target, dims, true, t)) return GL_INVALID_ENUM;
+  if (const GLenum error = texture_image_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  const std::optional<TextureFormat> storage = texture_format(internal_format);
+  if (level < 0 || level > max_texture_level(t.kind) || !storage || (border != 0 && border != 1))
+    return GL_INVALID_VALUE;
+  const int64_t inner_w = int64_t(width) - 2 * border;
+  const int64_t inner_h = dims >= 2 ? int64_t(height) - 2 * border : 1;
+  const int64_t inner_d = dims == 3 ? int64_t(depth) - 2 * border : 1;
+  if (inner_w < 0 || inner_h < 0 || inner_d < 0) return GL_INVALID_VALUE;
+  if (t.kind == TexTarget::Cube && width != height) return GL_INVALID_VALUE;
+  if (!depth_use_allowed(*storage, t.kind, format)) return GL_INVALID_OPERATION;
+  const int level_max = max_texture_size(t.kind) >> level;  // level l of a full chain is at most max >> l
+  if (!t.proxy && (inner_w > level_max || inner_h > level_max || inner_d > level_max)) return GL_INVALID_VALUE;
+  return GL_NO_ERROR;
+}
+
+bool tex_sub_image_may_read(GLenum target, int dims, GLint level, GLsizei width, GLsizei height, GLsizei depth,
+                            GLenum format, GLenum type) {
+  ImageTarget t;
+  if (!image_target_of(target, dims, false, t) || texture_image_format_type_error(format, type) != GL_NO_ERROR)
+    return false;
+  if (level < 0 || level > max_texture_level(t.kind)) return false;
+  // The region lies inside a level, whose sizes are at most max >> level.
+  const int level_max = max_texture_size(t.kind) >> level;
+  return width >= 0 && height >= 0 && depth >= 0 && width <= level_max && height <= level_max && depth <= level_max;
+}
+
+}  // namespace pineda
