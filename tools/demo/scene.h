@@ -29,5 +29,6 @@ int gearsTrianglesPerFrame();  // for pineda-bench, which draws the same gears
 std::unique_ptr<Scene> createBlend(int width, int height);
 std::unique_ptr<Scene> createLinesPoints(int width, int height);
 std::unique_ptr<Scene> createLitFog(int width, int height);
+std::unique_ptr<Scene> createSmooth(int width, int height);
 
 }  // namespace pineda::demo

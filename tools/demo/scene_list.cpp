@@ -6,7 +6,7 @@ const std::vector<SceneEntry>& allScenes() {
   static const std::vector<SceneEntry> scenes = {
       {"triangles", createTriangles}, {"cube", createCube},   {"textured", createTextured},
       {"gears", createGears},         {"blend", createBlend}, {"lines_points", createLinesPoints},
-      {"lit_fog", createLitFog},
+      {"lit_fog", createLitFog},     {"smooth", createSmooth},
   };
   return scenes;
 }
