@@ -29,6 +29,11 @@ double disc_quadrant(double a, double b, double r) {
 }  // namespace
 
 double square_in_disc(double x, double y, double r) {
+  // Squares wholly outside or inside the disc (most of them) need no integral.
+  const double near_x = std::clamp(0.0, x, x + 1.0), near_y = std::clamp(0.0, y, y + 1.0);
+  if (near_x * near_x + near_y * near_y >= r * r) return 0.0;
+  const double far_x = std::max(std::fabs(x), std::fabs(x + 1.0)), far_y = std::max(std::fabs(y), std::fabs(y + 1.0));
+  if (far_x * far_x + far_y * far_y <= r * r) return 1.0;
   const double area = disc_quadrant(x, y, r) - disc_quadrant(x + 1.0, y, r) - disc_quadrant(x, y + 1.0, r) +
                       disc_quadrant(x + 1.0, y + 1.0, r);
   return std::clamp(area, 0.0, 1.0);
@@ -105,6 +110,17 @@ PixelRect smooth_bounds(const SmoothShape& s) {
   auto lo = [&](double v) { return static_cast<int>(std::floor(std::clamp(v - 0.5, -limit, limit))); };
   auto hi = [&](double v) { return static_cast<int>(std::floor(std::clamp(v - 0.5, -limit, limit))) + 1; };
   return {lo(min_x), lo(min_y), hi(max_x), hi(max_y)};
+}
+
+void smooth_row_span(const SmoothShape& s, int y, int& x0, int& x1) {
+  const double dy = s.y1 - s.y0;
+  if (std::fabs(dy) < 1.0) return;  // flat lines (and points) keep their bounding box
+  const double dx = s.x1 - s.x0;
+  // A pixel whose centre is farther than w/2 + sqrt(2)/2 from the line's axis misses it.
+  const double reach = (0.5 * s.size + 0.70711) * std::sqrt(dx * dx + dy * dy) / std::fabs(dy);
+  const double axis_x = s.x0 + (y + 0.5 - s.y0) * dx / dy;
+  x0 = std::max(x0, static_cast<int>(std::floor(std::max(axis_x - reach - 0.5, -1e9))));
+  x1 = std::min(x1, static_cast<int>(std::ceil(std::min(axis_x + reach + 0.5, 1e9))));
 }
 
 }  // namespace pineda::raster

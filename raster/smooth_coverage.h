@@ -24,4 +24,7 @@ void smooth_quad_coverage(const PrimSetup& p, int x, int y, float out[4]);
 // The pixels whose coverage can be above zero.
 PixelRect smooth_bounds(const SmoothShape& s);
 
+// Narrows [x0, x1) to the pixels of row y that a steep line's rectangle can reach.
+void smooth_row_span(const SmoothShape& s, int y, int& x0, int& x1);
+
 }  // namespace pineda::raster

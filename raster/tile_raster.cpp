@@ -190,9 +190,12 @@ void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& s
 // Antialiased points and lines: the pixels whose coverage is above zero.
 void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
   TileMask mask{area};
-  for (int y = area.y0; y < area.y1; ++y)
-    for (int x = area.x0; x < area.x1; ++x)
+  for (int y = area.y0; y < area.y1; ++y) {
+    int x0 = area.x0, x1 = area.x1;
+    if (p.kind == CoverageKind::Line) smooth_row_span(p.smooth, y, x0, x1);
+    for (int x = x0; x < x1; ++x)
       if (smooth_coverage(p, x, y) > 0.0) mask.set(x, y);
+  }
   emit_mask(mask, sink);
 }
 
