@@ -71,7 +71,8 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.key.blend = state.blend || state.logic_op_enabled;
   d.key.blend_over = state.blend && !state.logic_op_enabled && is_blend_over(state.blend_state);
   d.key.flat = state.flat_shading;
-  d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled;
+  d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled ||
+                 state.point_smooth || state.line_smooth;
   d.key.count_samples = state.sample_counter != nullptr;
   d.routine = select_quad_routine(d.key);
   return d;

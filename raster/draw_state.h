@@ -92,6 +92,7 @@ struct DrawState {
   float point_size = 1.f;
   PointParameters point_params;  // with attenuation, the size comes per vertex (ClipVertex::point_size)
   float line_width = 1.f;
+  bool point_smooth = false, line_smooth = false;  // antialiased: coverage multiplies alpha
   bool flat_shading = false;  // GL_FLAT: the provoking vertex's colour for the whole primitive
   uint32_t clip_planes = 0;   // bit i: user clip plane i enabled (ClipVertex::clip_distance[i])
   LineStipple line_stipple;

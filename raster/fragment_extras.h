@@ -1,11 +1,12 @@
 // The fixed-function stages a draw may add around texturing, for the routines whose key has
-// `extras`: line and polygon stipple (fragments never generated), the colour sum and fog
-// (GL 1.5 sections 3.4.2, 3.5.2, 3.9 and 3.10).
+// `extras`: line and polygon stipple (fragments never generated), the colour sum, fog and the
+// coverage of antialiased points and lines (GL 1.5 sections 3.4.2, 3.5.2, 3.9, 3.10 and 3.12).
 #pragma once
 #include <cmath>
 
 #include "raster/draw_record.h"
 #include "raster/quad_vector.h"
+#include "raster/smooth_coverage.h"
 
 namespace pineda::raster {
 
@@ -70,6 +71,15 @@ inline void apply_color_sum_and_fog(const DrawRecord& d, const PrimSetup& p, F4 
   }
   f = clamp01(f);
   for (int k = 0; k < 3; ++k) c[k] = f * c[k] + (splat(1.f) - f) * fog.color[k];
+}
+
+// GL 1.5 section 3.12: the coverage of an antialiased primitive multiplies the fragment's
+// alpha, after fog. `alpha` holds the quad at (x, y).
+inline void apply_coverage(const PrimSetup& p, int x, int y, F4& alpha) {
+  if (!(p.smooth.size > 0.0)) return;
+  float coverage[4];
+  smooth_quad_coverage(p, x, y, coverage);
+  alpha *= load4(coverage);
 }
 
 }  // namespace pineda::raster

@@ -321,6 +321,11 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     if (!mask) continue;
     // Offsets from the reference point (exact while the primitive stays near the framebuffer).
     const F4 ox = ox0 + splat(static_cast<float>(2 * q));
+    auto colors = [&] {
+      QuadColor col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
+      if constexpr (kExtras) apply_coverage(p, qx, y, col.c[3]);
+      return col;
+    };
     auto depth_and_stencil = [&] {
       if constexpr (kDepth && !kStencil) mask = depth_only(d, p, fb, qx, y, mask, ox, oy);
       else if constexpr (kStencil) mask = depth_stencil<kDepth, kStencil>(d, p, fb, qx, y, mask, ox, oy);
@@ -328,10 +333,10 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     if (early_tests) {
       depth_and_stencil();
       if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
-      if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy));
+      if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, colors());
       continue;
     }
-    const QuadColor col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
+    const QuadColor col = colors();
     for (int i = 0; i < 4; ++i)
       if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
     depth_and_stencil();

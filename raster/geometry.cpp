@@ -20,6 +20,12 @@ int rounded_size(float size, int max) {
   return static_cast<int>(std::min(std::floor(size + 0.5f), static_cast<float>(max)));
 }
 
+// Antialiased sizes are kept to 1/256 pixel (GL_SMOOTH_*_GRANULARITY), at least one pixel.
+double smooth_size(float size, int max) {
+  if (!(size >= 1.f)) return 1.0;
+  return std::min(std::round(double{size} * kSubpixelOne) / kSubpixelOne, static_cast<double>(max));
+}
+
 int clamp_to_int(int64_t v) { return static_cast<int>(std::clamp<int64_t>(v, INT32_MIN, INT32_MAX)); }
 
 int64_t snap(double window) {
@@ -66,8 +72,10 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   volume_.y_min = (-kGuardBand - vp_y_) / vp_half_h_ - 1.0;
   volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
   volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
-  line_width_ = rounded_size(s.line_width, kMaxLineWidth);
-  point_size_ = rounded_size(derived_point_size(s.point_params, s.point_size, 0.f), kMaxPointSize);
+  line_width_ = s.line_width;
+  point_size_ = derived_point_size(s.point_params, s.point_size, 0.f);
+  line_smooth_ = s.line_smooth;
+  point_smooth_ = s.point_smooth;
   point_size_per_vertex_ = s.point_params.per_vertex();
 }
 
@@ -154,7 +162,9 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
   if (!has_window_position(wa) || !has_window_position(wb)) return;
   PrimSetup prim;
-  if (!setup_line(wa, wb, line_width_, params(style), prim)) return;
+  const bool covered = line_smooth_ ? setup_smooth_line(wa, wb, smooth_size(line_width_, kMaxLineWidth), params(style), prim)
+                                    : setup_line(wa, wb, rounded_size(line_width_, kMaxLineWidth), params(style), prim);
+  if (!covered) return;
   // The stipple counts whole pixels of major-axis distance from the first vertex on, across a
   // strip, as llvmpipe (Mesa's draw module) does. It measures from the snapped positions that
   // coverage uses (llvmpipe rasterizes each stipple dash from snapped ends too), so that a
@@ -169,11 +179,11 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   emit(prim);
 }
 
-int GeometryStage::point_size_of(const ClipVertex& v) const {
-  return point_size_per_vertex_ ? rounded_size(v.point_size, kMaxPointSize) : point_size_;
+float GeometryStage::point_size_of(const ClipVertex& v) const {
+  return point_size_per_vertex_ ? v.point_size : point_size_;
 }
 
-void GeometryStage::draw_point(const ClipVert& v, const Style& style, int size) {
+void GeometryStage::draw_point(const ClipVert& v, const Style& style, float size) {
   const double x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
   // A point is drawn when its centre is inside the clip volume.
   if (!(w > 0.0 && -w <= x && x <= w && -w <= y && y <= w && -w <= z && z <= w)) return;
@@ -182,7 +192,9 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style, int size) 
   const WinVert wv = to_window(v, style.back_facing);
   if (!has_window_position(wv)) return;
   PrimSetup prim;
-  if (setup_point(wv, size, params(style), prim)) emit(prim);
+  const bool covered = point_smooth_ ? setup_smooth_point(wv, smooth_size(size, kMaxPointSize), params(style), prim)
+                                     : setup_point(wv, rounded_size(size, kMaxPointSize), params(style), prim);
+  if (covered) emit(prim);
 }
 
 void GeometryStage::point(const ClipVertex& v) {

@@ -50,6 +50,13 @@ struct LineCoverage {
   int stipple_step = 1;
 };
 
+// An antialiased point or line: the shape whose area in each pixel is the fragment's coverage
+// (raster/smooth_coverage.h). Positions are the snapped ones, in pixels.
+struct SmoothShape {
+  double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // the point's centre (x0, y0), or the line's ends
+  double size = 0;                         // the point's diameter or the line's width; 0: aliased
+};
+
 enum class CoverageKind : uint8_t { Triangle, Line, Point };
 
 struct PrimSetup {
@@ -61,6 +68,7 @@ struct PrimSetup {
 
   EdgeFunction edges[3];
   LineCoverage line;
+  SmoothShape smooth;
 
   float ref_x = 0.f, ref_y = 0.f;
   double z0 = 0.0, dzdx = 0.0, dzdy = 0.0;  // window depth in depth-buffer units

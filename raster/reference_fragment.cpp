@@ -63,7 +63,10 @@ void quad_colors(const DrawRecord& d, const float flat_color[4], const Reference
       for (int c = 0; c < 4; ++c) out[i][c] = frag[c];
     }
   }
-  for (int i = 0; i < 4; ++i) color_sum_and_fog(d, q, i, out[i]);
+  for (int i = 0; i < 4; ++i) {
+    color_sum_and_fog(d, q, i, out[i]);
+    out[i][3] *= q.coverage[i];  // GL 1.5 section 3.12
+  }
 }
 
 // Stencil and depth for one pixel; false when the fragment is discarded.

@@ -19,6 +19,7 @@ struct ReferenceQuad {
   unsigned mask = 0;
   double z[4] = {};                  // window depth in depth-buffer units, before clamping
   double attr[kMaxPlanes][4] = {};   // r, g, b, a, then the texture planes (DrawRecord::tex_plane)
+  double coverage[4] = {1, 1, 1, 1};  // of an antialiased point or line, multiplied into alpha
 };
 
 // Returns the pixels that passed every test up to depth.

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "raster/raster_limits.h"
+#include "raster/smooth_coverage.h"
 
 namespace pineda::raster {
 namespace {
@@ -64,6 +65,22 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
 bool in_diamond(int64_t x, int64_t y) {
   const int64_t fx = x & (kSubpixelOne - 1), fy = y & (kSubpixelOne - 1);
   return std::llabs(2 * fx - kSubpixelOne) + std::llabs(2 * fy - kSubpixelOne) < kSubpixelOne;
+}
+
+// Attributes vary along the major axis only: every fragment of a column (row) of a wide line
+// gets the value of the line's centre there, as for a width-1 line.
+void line_planes(const WinVert& a, const WinVert& b, bool x_major, const SetupParams& params, PrimSetup& out) {
+  double major = x_major ? b.fx - a.fx : b.fy - a.fy;
+  if (!(std::fabs(major) > 1e-9)) major = static_cast<double>(x_major ? b.x - a.x : b.y - a.y) / kSubpixelOne;
+  const WinVert* v[2] = {&a, &b};
+  interpolation_planes(
+      v, 2, params,
+      [&](const double* f, double& gx, double& gy) {
+        const double g = (f[1] - f[0]) / major;
+        gx = x_major ? g : 0.0;
+        gy = x_major ? 0.0 : g;
+      },
+      out);
 }
 
 }  // namespace
@@ -169,19 +186,21 @@ bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams
   out.kind = CoverageKind::Line;
   copy_common(params, out);
 
-  // Attributes vary along the major axis only: every fragment of a column (row) of a wide
-  // line gets the value of the line's centre there, as for a width-1 line.
-  double major = l.x_major ? b.fx - a.fx : b.fy - a.fy;
-  if (!(std::fabs(major) > 1e-9)) major = static_cast<double>(l.x_major ? dx : dy) / kSubpixelOne;
-  const WinVert* v[2] = {&a, &b};
-  interpolation_planes(
-      v, 2, params,
-      [&](const double* f, double& gx, double& gy) {
-        const double g = (f[1] - f[0]) / major;
-        gx = l.x_major ? g : 0.0;
-        gy = l.x_major ? 0.0 : g;
-      },
-      out);
+  line_planes(a, b, l.x_major, params, out);
+  return true;
+}
+
+bool setup_smooth_line(const WinVert& a, const WinVert& b, double width, const SetupParams& params, PrimSetup& out) {
+  const int64_t dx = b.x - a.x, dy = b.y - a.y;
+  if (dx == 0 && dy == 0) return false;
+  out.smooth = {static_cast<double>(a.x) / kSubpixelOne, static_cast<double>(a.y) / kSubpixelOne,
+                static_cast<double>(b.x) / kSubpixelOne, static_cast<double>(b.y) / kSubpixelOne, width};
+  out.bounds = intersect(smooth_bounds(out.smooth), params.clip);
+  if (out.bounds.empty()) return false;
+  out.kind = CoverageKind::Line;
+  out.line = {a.x, a.y, b.x, b.y, 1, std::llabs(dx) >= std::llabs(dy), 0, -1};  // the stipple's axis
+  copy_common(params, out);
+  line_planes(a, b, out.line.x_major, params, out);
   return true;
 }
 
@@ -193,6 +212,18 @@ bool setup_point(const WinVert& v, int size, const SetupParams& params, PrimSetu
   const PixelRect box{static_cast<int>(left), static_cast<int>(bottom), static_cast<int>(left + size),
                       static_cast<int>(bottom + size)};
   out.bounds = intersect(box, params.clip);
+  if (out.bounds.empty()) return false;
+  out.kind = CoverageKind::Point;
+  copy_common(params, out);
+  constant_planes(v, params, out);
+  return true;
+}
+
+
+bool setup_smooth_point(const WinVert& v, double size, const SetupParams& params, PrimSetup& out) {
+  const double x = static_cast<double>(v.x) / kSubpixelOne, y = static_cast<double>(v.y) / kSubpixelOne;
+  out.smooth = {x, y, x, y, size};
+  out.bounds = intersect(smooth_bounds(out.smooth), params.clip);
   if (out.bounds.empty()) return false;
   out.kind = CoverageKind::Point;
   copy_common(params, out);

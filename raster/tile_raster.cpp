@@ -5,6 +5,7 @@
 
 #include "raster/raster_limits.h"
 #include "raster/setup.h"
+#include "raster/smooth_coverage.h"
 
 namespace pineda::raster {
 namespace {
@@ -138,6 +139,22 @@ struct TileMask {
   }
 };
 
+void emit_mask(const TileMask& mask, const QuadSink& sink) {
+  const PixelRect& area = mask.area;
+  const int x0 = area.x0 & ~1;
+  const int count = (area.x1 - x0 + 1) / 2;
+  uint8_t masks[kMaxQuadsPerRow];
+  for (int y = area.y0 & ~1; y < area.y1; y += 2) {
+    for (int q = 0; q < count; ++q) {
+      unsigned m = 0;
+      for (int i = 0; i < 4; ++i)
+        if (mask.get(x0 + 2 * q + (i & 1), y + (i >> 1))) m |= 1u << i;
+      masks[q] = static_cast<uint8_t>(m);
+    }
+    sink.row(x0, y, count, masks);
+  }
+}
+
 // First pixel of the span across the line at major coordinate `m` (a column for x-major lines).
 int64_t span_start(const LineCoverage& l, int m) {
   const int64_t c = int64_t{m} * kSubpixelOne + kSubpixelHalf;
@@ -167,18 +184,19 @@ void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& s
       else mask.set(static_cast<int>(n), m);
     }
   }
-  const int x0 = area.x0 & ~1;
-  const int count = (area.x1 - x0 + 1) / 2;
-  uint8_t masks[kMaxQuadsPerRow];
-  for (int y = area.y0 & ~1; y < area.y1; y += 2) {
-    for (int q = 0; q < count; ++q) {
-      unsigned m = 0;
-      for (int i = 0; i < 4; ++i)
-        if (mask.get(x0 + 2 * q + (i & 1), y + (i >> 1))) m |= 1u << i;
-      masks[q] = static_cast<uint8_t>(m);
-    }
-    sink.row(x0, y, count, masks);
+  emit_mask(mask, sink);
+}
+
+// Antialiased points and lines: the pixels whose coverage is above zero.
+void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+  TileMask mask{area};
+  for (int y = area.y0; y < area.y1; ++y) {
+    int x0 = area.x0, x1 = area.x1;
+    if (p.kind == CoverageKind::Line) smooth_row_span(p.smooth, y, x0, x1);
+    for (int x = x0; x < x1; ++x)
+      if (smooth_coverage(p, x, y) > 0.0) mask.set(x, y);
   }
+  emit_mask(mask, sink);
 }
 
 }  // namespace
@@ -191,6 +209,10 @@ uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const 
   const PixelRect area = intersect(prim.bounds, tile);
   if (area.empty()) return 0;
   const QuadSink sink{prim, draw, fb};
+  if (prim.smooth.size > 0.0) {
+    rasterize_smooth(prim, area, sink);
+    return sink.samples_passed;
+  }
   switch (prim.kind) {
     case CoverageKind::Triangle: rasterize_triangle(prim, area, sink); break;
     case CoverageKind::Line: rasterize_line(prim, area, sink); break;

@@ -28,6 +28,7 @@ struct Material {
   glm::vec4 ambient{0.2f, 0.2f, 0.2f, 1}, diffuse{0.8f, 0.8f, 0.8f, 1};
   glm::vec4 specular{0, 0, 0, 1}, emission{0, 0, 0, 1};
   float shininess = 0.f;
+  glm::vec3 color_indexes{0, 1, 1};  // ambient, diffuse, specular: only reported (RGBA lighting)
 };
 
 // Which material colours follow the current colour (glColorMaterial).

@@ -141,6 +141,8 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   s.offset_fill = o.offset_fill;
   s.offset_line = o.offset_line;
   s.offset_point = o.offset_point;
+  s.point_smooth = o.point_smooth;
+  s.line_smooth = o.line_smooth;
   ctx.enable_cull = f.enable_cull;
   ctx.lighting.enabled = f.lighting.enabled;
   for (int i = 0; i < raster::kMaxLights; ++i) ctx.lighting.lights[i].enabled = f.lighting.lights[i].enabled;
@@ -175,10 +177,12 @@ void restore(Context& ctx, const AttribFrame& f) {
   if (m & GL_POINT_BIT) {
     s.point_size = o.point_size;
     s.point_params = o.point_params;
+    s.point_smooth = o.point_smooth;
     restore_caps(ctx, f, GL_POINT_BIT);
   }
   if (m & GL_LINE_BIT) {
     s.line_width = o.line_width;
+    s.line_smooth = o.line_smooth;
     restore_caps(ctx, f, GL_LINE_BIT);
   }
   if (m & GL_POLYGON_BIT) {

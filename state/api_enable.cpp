@@ -10,7 +10,7 @@ namespace {
 
 bool is_unrendered_cap(GLenum cap) {
   switch (cap) {
-    case GL_LINE_SMOOTH: case GL_POINT_SMOOTH: case GL_POLYGON_SMOOTH: case GL_INDEX_LOGIC_OP:
+    case GL_POLYGON_SMOOTH: case GL_INDEX_LOGIC_OP:
       return true;
     default:
       return false;
@@ -31,6 +31,8 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_DITHER: return &s.dither;
     case GL_SCISSOR_TEST: return &s.scissor_test;
     case GL_STENCIL_TEST: return &s.stencil_test;
+    case GL_POINT_SMOOTH: return &s.point_smooth;
+    case GL_LINE_SMOOTH: return &s.line_smooth;
     case GL_POLYGON_OFFSET_FILL: return &s.offset_fill;
     case GL_POLYGON_OFFSET_LINE: return &s.offset_line;
     case GL_POLYGON_OFFSET_POINT: return &s.offset_point;

@@ -141,11 +141,13 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_TEXTURE_STACK_DEPTH: out = ints({double(ctx.texture_matrix[ctx.active_texture].stack.size())}); return true;
     case GL_POINT_SIZE: out = floats({s.point_size}); return true;
     case GL_POINT_SIZE_RANGE: out = floats({kPointSizeRange[0], kPointSizeRange[1]}); return true;
-    case GL_POINT_SIZE_GRANULARITY: out = floats({1.0}); return true;
+    // GL_POINT_SIZE_* are GL_SMOOTH_POINT_SIZE_* (and lines alike): antialiased sizes are kept to
+    // 1/256 pixel; aliased ones are rounded to whole pixels.
+    case GL_POINT_SIZE_GRANULARITY: out = floats({kSmoothSizeGranularity}); return true;
     case GL_ALIASED_POINT_SIZE_RANGE: out = floats({kPointSizeRange[0], kPointSizeRange[1]}); return true;
     case GL_LINE_WIDTH: out = floats({s.line_width}); return true;
     case GL_LINE_WIDTH_RANGE: out = floats({kLineWidthRange[0], kLineWidthRange[1]}); return true;
-    case GL_LINE_WIDTH_GRANULARITY: out = floats({1.0}); return true;
+    case GL_LINE_WIDTH_GRANULARITY: out = floats({kSmoothSizeGranularity}); return true;
     case GL_ALIASED_LINE_WIDTH_RANGE: out = floats({kLineWidthRange[0], kLineWidthRange[1]}); return true;
     case GL_MAX_ELEMENTS_VERTICES: out = ints({kMaxElementsVertices}); return true;
     case GL_MAX_ELEMENTS_INDICES: out = ints({kMaxElementsIndices}); return true;

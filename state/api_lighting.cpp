@@ -93,7 +93,7 @@ void material(Context& ctx, GLenum face, GLenum pname, const GLfloat* v) {
       case GL_EMISSION: m->emission = vec4_of(v); break;
       case GL_AMBIENT_AND_DIFFUSE: m->ambient = m->diffuse = vec4_of(v); break;
       case GL_SHININESS: m->shininess = v[0]; break;
-      case GL_COLOR_INDEXES: break;  // colour-index lighting: Pineda is RGBA only
+      case GL_COLOR_INDEXES: m->color_indexes = glm::vec3(v[0], v[1], v[2]); break;
       default: break;                // rejected above
     }
   }
@@ -220,7 +220,7 @@ bool material_value(Context& ctx, GLenum face, GLenum pname, glm::vec4& v) {
     case GL_SPECULAR: v = m.specular; break;
     case GL_EMISSION: v = m.emission; break;
     case GL_SHININESS: v.x = m.shininess; break;
-    case GL_COLOR_INDEXES: break;
+    case GL_COLOR_INDEXES: v = glm::vec4(m.color_indexes, 0.f); break;
     default: ctx.record_error(GL_INVALID_ENUM); return false;
   }
   return true;

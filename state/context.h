@@ -165,7 +165,6 @@ class Context {
   GLenum cull_face_mode = GL_BACK, front_face = GL_CCW;
   GLenum polygon_mode_front = GL_FILL, polygon_mode_back = GL_FILL;
   GLenum shade_model = GL_SMOOTH;
-  bool point_smooth = false, line_smooth = false, polygon_smooth = false;
   bool line_stipple = false, polygon_stipple = false;
   raster::Lighting lighting;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;

@@ -12,6 +12,7 @@ constexpr int kMaxProjectionStackDepth = 10;
 constexpr int kMaxTextureStackDepth = 10;
 constexpr float kPointSizeRange[2] = {1.f, 255.f};
 constexpr float kLineWidthRange[2] = {1.f, 255.f};
+constexpr float kSmoothSizeGranularity = 1.f / 256.f;  // raster::kSubpixelOne
 constexpr int kSubpixelBits = 8;
 // glDrawRangeElements' recommended maximums (GL 1.2): Pineda has no limit; Mesa's values.
 constexpr int kMaxElementsVertices = 3000;

@@ -21,6 +21,16 @@ struct TexGenCoordState {
   glm::dvec4 eye_plane{0, 0, 0, 0};  // as stored: multiplied by the inverse modelview
 };
 
+// GL 1.5 table 6.17: S's object and eye planes start as (1, 0, 0, 0), T's as (0, 1, 0, 0),
+// R's and Q's as 0. The eye planes were given under the identity modelview, whose inverse
+// leaves them as they are.
+inline std::array<TexGenCoordState, 4> initial_texgen_coords() {
+  std::array<TexGenCoordState, 4> c{};
+  c[0].object_plane = c[0].eye_plane = glm::dvec4(1, 0, 0, 0);
+  c[1].object_plane = c[1].eye_plane = glm::dvec4(0, 1, 0, 0);
+  return c;
+}
+
 struct VertexExtrasState {
   // Fog (its rendering values are in draw_state.fog)
   GLenum fog_mode = GL_EXP;
@@ -37,7 +47,11 @@ struct VertexExtrasState {
   std::array<bool, raster::kMaxClipPlanes> clip_plane_enabled{};
 
   // Texture coordinate generation, per texture unit: s, t, r, q
-  std::array<std::array<TexGenCoordState, 4>, raster::kMaxTextureUnits> texgen{};
+  std::array<std::array<TexGenCoordState, 4>, raster::kMaxTextureUnits> texgen = [] {
+    std::array<std::array<TexGenCoordState, 4>, raster::kMaxTextureUnits> t;
+    t.fill(initial_texgen_coords());
+    return t;
+  }();
 };
 
 }  // namespace pineda

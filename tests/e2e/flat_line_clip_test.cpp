@@ -39,7 +39,10 @@ TEST_F(FlatLineClipTest, ClippedFlatLineHasTheLastVertexColour) {
       for (const GLuint* order : {forward, backward}) {
         clear_to(0, 0, 0, 1);
         glDrawElements(GL_LINES, 2, GL_UNSIGNED_INT, order);
-        const Rgba expected = order == forward ? Rgba{0, 255, 0, 255} : Rgba{255, 0, 0, 255};
+        Rgba expected = order == forward ? Rgba{0, 255, 0, 255} : Rgba{255, 0, 0, 255};
+        // The line lies on the boundary of rows 15 and 16: smooth at width 1, each row is half
+        // covered, and the coverage is the written alpha.
+        if (smooth && width == 1.f) expected[3] = 128;
         const std::vector<Rgba> row = lit_row();
         ASSERT_EQ(row.size(), size_t(32)) << "width " << width << " smooth " << smooth;
         for (int x = 0; x < 32; ++x)

@@ -115,7 +115,7 @@ TEST_F(TexGenTest, ErrorsAndQueries) {
   EXPECT_EQ(mode, GL_EYE_LINEAR);
   GLdouble plane[4];
   glGetTexGendv(GL_S, GL_OBJECT_PLANE, plane);
-  EXPECT_EQ(plane[0], 0.0);
+  EXPECT_EQ(plane[0], 1.0);  // S's default plane is (1, 0, 0, 0)
   glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexGeni(GL_Q, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP);

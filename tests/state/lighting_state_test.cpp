@@ -185,6 +185,16 @@ TEST_F(LightingStateTest, MaterialFaces) {
   EXPECT_EQ(v, 3.f);
 }
 
+TEST_F(LightingStateTest, ColorIndexesAreKeptPerFace) {
+  const GLfloat indexes[3] = {2, 5, 9};
+  glMaterialfv(GL_FRONT, GL_COLOR_INDEXES, indexes);
+  EXPECT_EQ(material(GL_FRONT, GL_COLOR_INDEXES, 3), (Floats{2, 5, 9}));
+  EXPECT_EQ(material(GL_BACK, GL_COLOR_INDEXES, 3), (Floats{0, 1, 1}));
+  GLint i[3] = {0, 0, 0};
+  glGetMaterialiv(GL_FRONT, GL_COLOR_INDEXES, i);
+  EXPECT_EQ(i[2], 9);
+}
+
 TEST_F(LightingStateTest, MaterialInsideBeginEndIsAllowed) {
   const GLfloat blue[4] = {0, 0, 1, 1};
   glBegin(GL_POINTS);

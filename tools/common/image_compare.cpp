@@ -14,7 +14,7 @@ ImageDifference compareImages(const Image& a, const Image& b, Image* diff) {
     diff->rgba.assign(a.rgba.size(), 0);
   }
   ImageDifference result;
-  long within1 = 0, differing = 0;
+  long within1 = 0, within8 = 0, differing = 0;
   double squaredError = 0;
   const long pixels = long(a.width) * a.height;
   for (long p = 0; p < pixels; ++p) {
@@ -28,6 +28,7 @@ ImageDifference compareImages(const Image& a, const Image& b, Image* diff) {
     }
     result.maxDiff = std::max(result.maxDiff, pixelMax);
     within1 += pixelMax <= 1;
+    within8 += pixelMax <= 8;
     differing += pixelMax > 0;
     if (diff) {
       std::uint8_t* out = &diff->rgba[p * 4];
@@ -44,6 +45,7 @@ ImageDifference compareImages(const Image& a, const Image& b, Image* diff) {
   }
   const double count = std::max(1.0, double(pixels));
   result.within1Share = within1 / count;
+  result.within8Share = within8 / count;
   result.differShare = differing / count;
   const double mse = squaredError / (count * 4);
   result.psnr = mse == 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);

@@ -7,6 +7,7 @@ namespace pineda::tools {
 struct ImageDifference {
   int maxDiff = 0;          // largest difference of any channel of any pixel
   double within1Share = 0;  // pixels whose every channel differs by at most 1
+  double within8Share = 0;  // ... by at most 8
   double differShare = 0;   // pixels with any channel differing
   double psnr = 0;          // dB over all four channels; +infinity when identical
 };

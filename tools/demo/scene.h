@@ -31,5 +31,6 @@ std::unique_ptr<Scene> createBlend(int width, int height);
 std::unique_ptr<Scene> createLinesPoints(int width, int height);
 std::unique_ptr<Scene> createLitFog(int width, int height);
 std::unique_ptr<Scene> createEs1Fixed(int width, int height);
+std::unique_ptr<Scene> createSmooth(int width, int height);
 
 }  // namespace pineda::demo

@@ -59,6 +59,7 @@ int main(int argc, char** argv) {
 
   std::printf("max channel difference: %d\n", stats.maxDiff);
   std::printf("pixels within 1/255: %.4f%%\n", 100.0 * stats.within1Share);
+  std::printf("pixels within 8/255: %.4f%%\n", 100.0 * stats.within8Share);
   std::printf("pixels differing: %.4f%%\n", 100.0 * stats.differShare);
   if (std::isinf(stats.psnr))
     std::printf("PSNR: inf dB\n");

@@ -1,0 +1,126 @@
+#include "raster/smooth_coverage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pineda::raster {
+namespace {
+
+// Area of the disc (radius r, at the origin) above the line Y = b.
+double disc_above(double b, double r) {
+  if (b >= r) return 0.0;
+  if (b <= -r) return std::numbers::pi * r * r;
+  if (b < 0.0) return std::numbers::pi * r * r - disc_above(-b, r);
+  return r * r * std::acos(b / r) - b * std::sqrt(r * r - b * b);
+}
+
+// Area of the disc in the quadrant X >= a, Y >= b.
+double disc_quadrant(double a, double b, double r) {
+  if (a < 0.0) return disc_above(b, r) - disc_quadrant(-a, b, r);
+  if (b < 0.0) return disc_above(a, r) - disc_quadrant(a, -b, r);
+  if (a * a + b * b >= r * r) return 0.0;
+  // The integral over [a, xm] of sqrt(r^2 - x^2) - b, xm where the circle meets Y = b.
+  const double xm = std::sqrt(r * r - b * b);
+  auto primitive = [r](double x) { return 0.5 * (x * std::sqrt(std::max(r * r - x * x, 0.0)) + r * r * std::asin(std::min(x / r, 1.0))); };
+  return primitive(xm) - primitive(a) - b * (xm - a);
+}
+
+}  // namespace
+
+double square_in_disc(double x, double y, double r) {
+  // Squares wholly outside or inside the disc (most of them) need no integral.
+  const double near_x = std::clamp(0.0, x, x + 1.0), near_y = std::clamp(0.0, y, y + 1.0);
+  if (near_x * near_x + near_y * near_y >= r * r) return 0.0;
+  const double far_x = std::max(std::fabs(x), std::fabs(x + 1.0)), far_y = std::max(std::fabs(y), std::fabs(y + 1.0));
+  if (far_x * far_x + far_y * far_y <= r * r) return 1.0;
+  const double area = disc_quadrant(x, y, r) - disc_quadrant(x + 1.0, y, r) - disc_quadrant(x, y + 1.0, r) +
+                      disc_quadrant(x + 1.0, y + 1.0, r);
+  return std::clamp(area, 0.0, 1.0);
+}
+
+double square_in_rectangle(double x, double y, const SmoothShape& line) {
+  const double dx = line.x1 - line.x0, dy = line.y1 - line.y0;
+  const double length = std::sqrt(dx * dx + dy * dy);
+  const double ux = dx / length, uy = dy / length;
+  // The square's corners relative to the middle of the line, clipped (Sutherland-Hodgman) to
+  // |along| <= length / 2 and |across| <= width / 2 in the line's frame.
+  const double mx = 0.5 * (line.x0 + line.x1), my = 0.5 * (line.y0 + line.y1);
+  double px[8] = {x - mx, x + 1 - mx, x + 1 - mx, x - mx}, py[8] = {y - my, y - my, y + 1 - my, y + 1 - my};
+  int n = 4;
+  const double half[2] = {0.5 * length, 0.5 * line.size};
+  for (int plane = 0; plane < 4 && n > 0; ++plane) {
+    // Keep s * (the coordinate along axis a) <= half[a].
+    const bool along = plane < 2;
+    const double s = plane & 1 ? -1.0 : 1.0, limit = half[along ? 0 : 1];
+    auto value = [&](int i) { return s * (along ? px[i] * ux + py[i] * uy : px[i] * uy - py[i] * ux) - limit; };
+    double qx[8], qy[8];
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      const int j = (i + 1) % n;
+      const double vi = value(i), vj = value(j);
+      if (vi <= 0.0) {
+        qx[m] = px[i];
+        qy[m++] = py[i];
+      }
+      if ((vi < 0.0 && vj > 0.0) || (vi > 0.0 && vj < 0.0)) {
+        const double t = vi / (vi - vj);
+        qx[m] = px[i] + t * (px[j] - px[i]);
+        qy[m++] = py[i] + t * (py[j] - py[i]);
+      }
+    }
+    n = m;
+    for (int i = 0; i < n; ++i) {
+      px[i] = qx[i];
+      py[i] = qy[i];
+    }
+  }
+  double twice_area = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    twice_area += px[i] * py[j] - px[j] * py[i];
+  }
+  return std::clamp(0.5 * twice_area, 0.0, 1.0);
+}
+
+double smooth_coverage(const PrimSetup& p, int x, int y) {
+  const SmoothShape& s = p.smooth;
+  if (p.kind == CoverageKind::Point) return square_in_disc(x - s.x0, y - s.y0, 0.5 * s.size);
+  return square_in_rectangle(x, y, s);
+}
+
+void smooth_quad_coverage(const PrimSetup& p, int x, int y, float out[4]) {
+  for (int i = 0; i < 4; ++i) out[i] = static_cast<float>(smooth_coverage(p, x + (i & 1), y + (i >> 1)));
+}
+
+PixelRect smooth_bounds(const SmoothShape& s) {
+  // The shape grown by half a pixel holds every pixel centre whose square it touches.
+  double reach_x = 0.5 * s.size + 0.5, reach_y = reach_x;
+  double min_x = std::min(s.x0, s.x1), max_x = std::max(s.x0, s.x1);
+  double min_y = std::min(s.y0, s.y1), max_y = std::max(s.y0, s.y1);
+  if (s.x0 != s.x1 || s.y0 != s.y1) {  // a line also reaches half a pixel past its ends
+    reach_x += 0.5;
+    reach_y += 0.5;
+  }
+  min_x -= reach_x;
+  max_x += reach_x;
+  min_y -= reach_y;
+  max_y += reach_y;
+  const double limit = 1e9;  // window positions stay far inside; this keeps the casts defined
+  auto lo = [&](double v) { return static_cast<int>(std::floor(std::clamp(v - 0.5, -limit, limit))); };
+  auto hi = [&](double v) { return static_cast<int>(std::floor(std::clamp(v - 0.5, -limit, limit))) + 1; };
+  return {lo(min_x), lo(min_y), hi(max_x), hi(max_y)};
+}
+
+void smooth_row_span(const SmoothShape& s, int y, int& x0, int& x1) {
+  const double dy = s.y1 - s.y0;
+  if (std::fabs(dy) < 1.0) return;  // flat lines (and points) keep their bounding box
+  const double dx = s.x1 - s.x0;
+  // A pixel whose centre is farther than w/2 + sqrt(2)/2 from the line's axis misses it.
+  const double reach = (0.5 * s.size + 0.70711) * std::sqrt(dx * dx + dy * dy) / std::fabs(dy);
+  const double axis_x = s.x0 + (y + 0.5 - s.y0) * dx / dy;
+  x0 = std::max(x0, static_cast<int>(std::floor(std::max(axis_x - reach - 0.5, -1e9))));
+  x1 = std::min(x1, static_cast<int>(std::ceil(std::min(axis_x + reach + 0.5, 1e9))));
+}
+
+}  // namespace pineda::raster
