@@ -4,6 +4,7 @@ expectation lists in conformance/expectations/.
 
   conformance/run.py --group 'spec@!opengl 1.0' [--group ...] [--platform x11_egl]
                      [--driver pineda|llvmpipe] [--compare llvmpipe] [--html]
+                     [--via library-path|vendor]
 
 Results go to out/conformance/<driver>-<platform>/ (piglit's own results.json.bz2 and a
 summary.txt). Exit status: 0 when every result is as expected, 1 on a regression or an
@@ -41,13 +42,19 @@ def ensure_llvmpipe():
                        check=True, env=env)
 
 
-def driver_env(driver, platform, lib_dir):
+def driver_env(driver, platform, lib_dir, via="library-path"):
     env = dict(os.environ)
     env.pop("LD_LIBRARY_PATH", None)
     if driver == "pineda":
         if not os.path.exists(os.path.join(lib_dir, "libGL.so.1")):
             sys.exit(f"error: Pineda's libraries are not in {lib_dir}: build first (scripts/build.sh)")
-        env["LD_LIBRARY_PATH"] = os.path.abspath(lib_dir)  # piglit runs tests from another directory
+        if via == "vendor":  # the system's libglvnd loads Pineda as its GLX and EGL vendor
+            vendor_dir = os.path.join(os.path.abspath(lib_dir), "glvnd")
+            env["LD_LIBRARY_PATH"] = vendor_dir  # holds only libGLX_pineda.so.0, libEGL_pineda.so.0
+            env["__GLX_VENDOR_LIBRARY_NAME"] = "pineda"
+            env["__EGL_VENDOR_LIBRARY_FILENAMES"] = os.path.join(vendor_dir, "50_pineda.json")
+        else:
+            env["LD_LIBRARY_PATH"] = os.path.abspath(lib_dir)  # piglit runs tests from another directory
     else:
         env.update(LIBGL_ALWAYS_SOFTWARE="1", GALLIUM_DRIVER="llvmpipe")
     if platform == "surfaceless_egl":
@@ -78,9 +85,10 @@ def load_results(results_dir, final=True):
 
 
 def run_piglit(driver, platform, groups, args, lib_dir):
-    results_dir = os.path.join(ROOT, "out", "conformance", f"{driver}-{platform}")
+    via = f"-{args.via}" if driver == "pineda" and args.via != "library-path" else ""
+    results_dir = os.path.join(ROOT, "out", "conformance", f"{driver}{via}-{platform}")
     shutil.rmtree(results_dir, ignore_errors=True)
-    env = driver_env(driver, platform, lib_dir)
+    env = driver_env(driver, platform, lib_dir, args.via)
     cmd = ["piglit", "run", args.profile, "-p", platform, "-j", str(args.jobs), "-l", "dummy",
            "--timeout", str(args.timeout)]
     for r in group_regex(groups):
@@ -249,6 +257,9 @@ def main():
     p.add_argument("--expected-total", type=int, default=0, help="test count, for the progress estimate")
     p.add_argument("--html", action="store_true", help="also write piglit's HTML summary")
     p.add_argument("--lib-dir", default=os.path.join(ROOT, "build", "lib"))
+    p.add_argument("--via", choices=("library-path", "vendor"), default="library-path",
+                   help="how piglit reaches Pineda: its libraries first on the library path, or the "
+                        "system's libglvnd with Pineda as the vendor (LIB_DIR/glvnd)")
     p.add_argument("--update-expectations", action="store_true",
                    help="rewrite the fails and skips lists from this run (review the diff before committing)")
     p.add_argument("--results", help="use this earlier results folder instead of running piglit")
@@ -290,7 +301,7 @@ def main():
     if args.update_expectations:
         write_expectations(results["pineda"], args.platform, args.group)
     regressions, unexpected, changed = check_expectations(results["pineda"], args.platform)
-    env = driver_env("pineda", args.platform, args.lib_dir)
+    env = driver_env("pineda", args.platform, args.lib_dir, args.via)
     flaky = [(n, r) for n, r in regressions if passes_on_retry(results["pineda"][n], args.platform, env)]
     regressions = [x for x in regressions if x not in flaky]
     for name, result in flaky:
