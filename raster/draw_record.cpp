@@ -40,10 +40,18 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.planes = kColorPlanes;
   for (int k = 0; k < d.num_units; ++k) {
     d.tex_plane[k] = static_cast<uint8_t>(d.planes);
+    const TextureUnit& unit = d.state.texture_units[d.units[k]];
+    d.fast_sampler[k] = select_bilinear8_sampler(*unit.image, unit.sampler);
     d.planes += kTexPlanesPerUnit;
     if (!d.state.texture_units[d.units[k]].reads_r()) continue;
     d.r_plane[k] = static_cast<int8_t>(d.planes);
     d.planes += kTexRPlanes;
+  }
+  if (d.num_units == 1) {
+    const TextureUnit& unit = d.state.texture_units[d.units[0]];
+    const TexBaseFormat format = unit.image->base_format;
+    d.modulate_in_lanes = d.fast_sampler[0] && unit.env_mode == TexEnvMode::Modulate &&
+                          (format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB);
   }
   if (state.color_sum) {
     d.secondary_plane = d.planes;
