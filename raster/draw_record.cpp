@@ -26,7 +26,7 @@ uint8_t stencil_ref(int ref) { return static_cast<uint8_t>(std::clamp(ref, 0, 25
 
 }  // namespace
 
-DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path) {
   DrawRecord d;
   d.state = state;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
@@ -41,7 +41,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   for (int k = 0; k < d.num_units; ++k) {
     d.tex_plane[k] = static_cast<uint8_t>(d.planes);
     const TextureUnit& unit = d.state.texture_units[d.units[k]];
-    d.fast_sampler[k] = select_bilinear8_sampler(*unit.image, unit.sampler);
+    d.fast_sampler[k] = select_bilinear8_sampler(*unit.image, unit.sampler, path);
     d.planes += kTexPlanesPerUnit;
     if (!d.state.texture_units[d.units[k]].reads_r()) continue;
     d.r_plane[k] = static_cast<int8_t>(d.planes);
@@ -81,7 +81,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.key.flat = state.flat_shading;
   d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled;
   d.key.count_samples = state.sample_counter != nullptr;
-  d.routine = select_quad_routine(d.key);
+  d.routine = select_quad_routine(d.key, path);
   return d;
 }
 

@@ -55,6 +55,7 @@ struct DrawRecord {
   bool color_write_all = true;
 };
 
-DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb);
+// `path`: which copy of the fragment routine and samplers runs.
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

@@ -402,17 +402,12 @@ constexpr auto make_extras_table(std::integer_sequence<int, kIndex...>) {
 constexpr auto kExtrasRoutines = make_extras_table<false>(std::make_integer_sequence<int, 64>{});
 constexpr auto kExtrasRoutinesAvx2 = make_extras_table<true>(std::make_integer_sequence<int, 64>{});
 
-bool cpu_has_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-}
-
 }  // namespace
 
 QuadRoutine select_quad_routine(const FragmentKey& key, SimdPath path) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
                    (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0) | (key.count_samples ? 64 : 0);
-  const bool avx2 = path == SimdPath::Best && cpu_has_avx2();
+  const bool avx2 = uses_avx2(path);
   if (key.extras) return (avx2 ? kExtrasRoutinesAvx2 : kExtrasRoutines)[extras_index(bits)];
   return (avx2 ? kRoutinesAvx2 : kRoutines)[bits];
 }

@@ -68,7 +68,8 @@ template <TexWrap kWrapS, TexWrap kWrapT>
 }
 
 template <TexWrap kWrapS, TexWrap kWrapT>
-void sample_bilinear8(const TextureImage& image, const Sampler& sampler, F4 s_in, F4 t_in, F4 out[4]) {
+[[gnu::always_inline]] inline void sample_body(const TextureImage& image, const Sampler& sampler, F4 s_in, F4 t_in,
+                                               F4 out[4]) {
   const F4 s = sane4(s_in), t = sane4(t_in);
   float sa[4], ta[4];
   store4(sa, s);
@@ -87,24 +88,43 @@ void sample_bilinear8(const TextureImage& image, const Sampler& sampler, F4 s_in
   for (int c = 0; c < 4; ++c) out[c] = __builtin_convertvector(v[c], F4) * (1.f / 65536.f) * (1.f / 255.f);
 }
 
+// The baseline copy and an AVX2 one (native 32-bit multiplies and lane inserts); integers only,
+// so both give the same texels.
+template <TexWrap kWrapS, TexWrap kWrapT>
+void sample_bilinear8(const TextureImage& image, const Sampler& sampler, F4 s, F4 t, F4 out[4]) {
+  sample_body<kWrapS, kWrapT>(image, sampler, s, t, out);
+}
+
+template <TexWrap kWrapS, TexWrap kWrapT>
+[[gnu::target("avx2")]] void sample_bilinear8_avx2(const TextureImage& image, const Sampler& sampler, F4 s, F4 t,
+                                                   F4 out[4]) {
+  sample_body<kWrapS, kWrapT>(image, sampler, s, t, out);
+}
+
+template <TexWrap kWrapS, TexWrap kWrapT>
+QuadSampler for_path(bool avx2) {
+  return avx2 ? &sample_bilinear8_avx2<kWrapS, kWrapT> : &sample_bilinear8<kWrapS, kWrapT>;
+}
+
 template <TexWrap kWrapS>
-QuadSampler for_wrap_t(TexWrap t) {
-  return t == TexWrap::Repeat ? &sample_bilinear8<kWrapS, TexWrap::Repeat> : &sample_bilinear8<kWrapS, TexWrap::ClampToEdge>;
+QuadSampler for_wrap_t(TexWrap t, bool avx2) {
+  return t == TexWrap::Repeat ? for_path<kWrapS, TexWrap::Repeat>(avx2) : for_path<kWrapS, TexWrap::ClampToEdge>(avx2);
 }
 
 bool wrap_supported(TexWrap w) { return w == TexWrap::Repeat || w == TexWrap::ClampToEdge; }
 
 }  // namespace
 
-QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler) {
+QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {
   if (image.depth || image.kind != TexKind::Planar) return nullptr;
   const TexFilter min = sampler.min_filter;
   if (sampler.mag_filter != TexFilter::Linear ||
       !(min == TexFilter::Linear || min == TexFilter::LinearMipmapNearest || min == TexFilter::LinearMipmapLinear))
     return nullptr;
   if (!wrap_supported(sampler.wrap_s) || !wrap_supported(sampler.wrap_t)) return nullptr;
-  return sampler.wrap_s == TexWrap::Repeat ? for_wrap_t<TexWrap::Repeat>(sampler.wrap_t)
-                                           : for_wrap_t<TexWrap::ClampToEdge>(sampler.wrap_t);
+  const bool avx2 = uses_avx2(path);
+  return sampler.wrap_s == TexWrap::Repeat ? for_wrap_t<TexWrap::Repeat>(sampler.wrap_t, avx2)
+                                           : for_wrap_t<TexWrap::ClampToEdge>(sampler.wrap_t, avx2);
 }
 
 }  // namespace pineda::raster

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "raster/quad_vector.h"
+#include "raster/simd_path.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -16,6 +17,7 @@ using QuadSampler = void (*)(const TextureImage& image, const Sampler& sampler, 
 // only colour Planar images whose filters are linear within a level (LINEAR magnification;
 // LINEAR, LINEAR_MIPMAP_NEAREST or LINEAR_MIPMAP_LINEAR minification) with REPEAT or
 // CLAMP_TO_EDGE on s and t qualify.
-QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler);
+QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler,
+                                     SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster
