@@ -26,7 +26,7 @@ uint8_t stencil_ref(int ref) { return static_cast<uint8_t>(std::clamp(ref, 0, 25
 
 }  // namespace
 
-DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path) {
   DrawRecord d;
   d.state = state;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
@@ -40,10 +40,18 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.planes = kColorPlanes;
   for (int k = 0; k < d.num_units; ++k) {
     d.tex_plane[k] = static_cast<uint8_t>(d.planes);
+    const TextureUnit& unit = d.state.texture_units[d.units[k]];
+    d.fast_sampler[k] = select_bilinear8_sampler(*unit.image, unit.sampler, path);
     d.planes += kTexPlanesPerUnit;
     if (!d.state.texture_units[d.units[k]].reads_r()) continue;
     d.r_plane[k] = static_cast<int8_t>(d.planes);
     d.planes += kTexRPlanes;
+  }
+  if (d.num_units == 1) {
+    const TextureUnit& unit = d.state.texture_units[d.units[0]];
+    const TexBaseFormat format = unit.image->base_format;
+    d.modulate_in_lanes = d.fast_sampler[0] && unit.env_mode == TexEnvMode::Modulate &&
+                          (format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB);
   }
   if (state.color_sum) {
     d.secondary_plane = d.planes;
@@ -74,7 +82,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb) {
   d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled ||
                  state.point_smooth || state.line_smooth;
   d.key.count_samples = state.sample_counter != nullptr;
-  d.routine = select_quad_routine(d.key);
+  d.routine = select_quad_routine(d.key, path);
   return d;
 }
 

@@ -7,6 +7,7 @@
 #include "raster/draw_state.h"
 #include "raster/framebuffer.h"
 #include "raster/prim_setup.h"
+#include "raster/sampler_bilinear8.h"
 
 namespace pineda::raster {
 
@@ -39,6 +40,9 @@ struct DrawRecord {
   std::array<uint8_t, kMaxTextureUnits> units{};  // enabled texture units, in order
   std::array<uint8_t, kMaxTextureUnits> tex_plane{};  // first plane (s, t, q) of each enabled unit, in order
   std::array<int8_t, kMaxTextureUnits> r_plane{-1, -1, -1, -1};  // its r plane, -1 when not read
+  std::array<QuadSampler, kMaxTextureUnits> fast_sampler{};  // of each enabled unit, in order; null: sample_quad
+  // One unit, its fast sampler, MODULATE of an RGB or RGBA texture: the quad is textured in lanes.
+  bool modulate_in_lanes = false;
   int planes = kColorPlanes;                      // interpolated planes
   int secondary_plane = -1;                       // first secondary colour plane, -1 when unused
   int fog_plane = -1;                             // the fog coordinate's plane, -1 when unused
@@ -51,6 +55,7 @@ struct DrawRecord {
   bool color_write_all = true;
 };
 
-DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb);
+// `path`: which copy of the fragment routine and samplers runs.
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

@@ -41,6 +41,17 @@ template <bool kTex, bool kFlat, bool kExtras>
   }
 
   if constexpr (kTex) {
+    if (d.modulate_in_lanes) {
+      const TextureUnit& unit = d.state.texture_units[d.units[0]];
+      const Plane* tp = &p.planes[d.tex_plane[0]];
+      const F4 q = eval(tp[2], ox, oy);
+      F4 texel[4];
+      d.fast_sampler[0](*unit.image, unit.sampler, eval(tp[0], ox, oy) / q, eval(tp[1], ox, oy) / q, texel);
+      const int channels = unit.image->base_format == TexBaseFormat::RGBA ? 4 : 3;
+      for (int c = 0; c < channels; ++c) col.c[c] *= texel[c];
+      if constexpr (kExtras) apply_color_sum_and_fog(d, p, ox, oy, col.c);
+      return col;
+    }
     // Every unit is sampled before any environment runs: COMBINE may read any unit's texel.
     float texel[kMaxTextureUnits][4][4];  // [unit][pixel][channel]
     for (int k = 0; k < d.num_units; ++k) {
@@ -48,6 +59,13 @@ template <bool kTex, bool kFlat, bool kExtras>
       const Plane* tp = &p.planes[d.tex_plane[k]];
       // (s/w) / (q/w) = s/q: 1/w cancels, so perspective needs no extra divide here.
       const F4 q = eval(tp[2], ox, oy);
+      if (d.fast_sampler[k]) {
+        F4 lanes[4];
+        d.fast_sampler[k](*unit.image, unit.sampler, eval(tp[0], ox, oy) / q, eval(tp[1], ox, oy) / q, lanes);
+        for (int i = 0; i < 4; ++i)
+          for (int c = 0; c < 4; ++c) texel[d.units[k]][i][c] = lanes[c][i];
+        continue;
+      }
       float s[4], t[4], r[4];
       store4(s, eval(tp[0], ox, oy) / q);
       store4(t, eval(tp[1], ox, oy) / q);
@@ -389,17 +407,12 @@ constexpr auto make_extras_table(std::integer_sequence<int, kIndex...>) {
 constexpr auto kExtrasRoutines = make_extras_table<false>(std::make_integer_sequence<int, 64>{});
 constexpr auto kExtrasRoutinesAvx2 = make_extras_table<true>(std::make_integer_sequence<int, 64>{});
 
-bool cpu_has_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-}
-
 }  // namespace
 
 QuadRoutine select_quad_routine(const FragmentKey& key, SimdPath path) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
                    (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0) | (key.count_samples ? 64 : 0);
-  const bool avx2 = path == SimdPath::Best && cpu_has_avx2();
+  const bool avx2 = uses_avx2(path);
   if (key.extras) return (avx2 ? kExtrasRoutinesAvx2 : kExtrasRoutines)[extras_index(bits)];
   return (avx2 ? kRoutinesAvx2 : kRoutines)[bits];
 }

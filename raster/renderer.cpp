@@ -48,12 +48,10 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
                     std::span<const uint32_t> indices) {
   Scene& scene = impl_->scene;
   if (scene.render_area().empty() || vertices.empty()) return;
-  DrawRecord record = make_draw_record(state, impl_->fb);
+  DrawRecord record = make_draw_record(state, impl_->fb, impl_->simd);
   if (impl_->reference) {
     flush();  // queued clears first: reference primitives are drawn into the framebuffer at once
     record.routine = reference_plane_quads;
-  } else if (impl_->simd != SimdPath::Best) {
-    record.routine = select_quad_routine(record.key, impl_->simd);
   }
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, [this] { flush(); }, impl_->reference);

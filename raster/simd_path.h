@@ -16,4 +16,10 @@ inline SimdPath simd_path_from_environment() {
   return v && std::strcmp(v, "baseline") == 0 ? SimdPath::Baseline : SimdPath::Best;
 }
 
+// Whether routines chosen for `path` take their AVX2 copy.
+inline bool uses_avx2(SimdPath path) {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return path == SimdPath::Best && has;
+}
+
 }  // namespace pineda::raster
