@@ -58,7 +58,7 @@ struct ClientBox {
 // image's height when IMAGE_HEIGHT is 0).
 void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, const ClientBox& box,
                  GLenum format, GLenum type, const void* pixels) {
-  if (!pixels) return;
+  if (!pixels || box.width <= 0 || box.height <= 0 || box.depth <= 0) return;  // an empty image has no texels
   const ColorImageReader source(ctx, box.width + 2 * box.border_x, format, type, pixels);  // GL 1.5 3.8.1
   const int full_height = box.height + 2 * box.border_y;
   const int64_t image_rows = ctx.unpack.image_height > 0 ? ctx.unpack.image_height : full_height;
