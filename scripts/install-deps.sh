@@ -8,6 +8,7 @@ packages=(
   xvfb xauth   # xvfb-run needs xauth, which xvfb only recommends (and we install without recommends)
   piglit waffle-utils   # conformance/run.py (piglit only recommends waffle-utils, whose wflinfo its runner calls)
   libglm-dev libpng-dev libgtest-dev googletest
+  glslang-dev glslang-tools   # shader/: the GLSL front end (its CMake files need the tools package)
   freeglut3-dev libglfw3-dev libsdl2-dev apitrace apitrace-tracers   # the X program tests (tests/x11apps)
 )
 missing=()

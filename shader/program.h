@@ -1,0 +1,169 @@
+// What state/ and raster/ see of shader/: compile, link, reflect, and run a linked program
+// over lanes. shader/ knows no GL enums and calls nothing above it; state/ maps its types
+// and names to GL tokens, raster/ feeds it vertices and fragments.
+//
+// Every value is 32-bit float per lane: GLSL 1.10/1.20 and ES 1.00 allow ints to be carried
+// as floats (integers need only 16 bits plus sign), bools are 0.0 or 1.0, samplers hold the
+// texture unit. Matrices are column-major, one vec per column.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pineda::shader {
+
+constexpr int kLanes = 16;       // a 4x4 fragment block, or a batch of 16 vertices
+using LaneMask = uint16_t;       // bit i: lane i is live
+constexpr int kMaxDrawBuffers = 4;
+constexpr int kMaxVaryingFloats = 64;   // GL_MAX_VARYING_FLOATS (16 vec4)
+constexpr int kMaxVertexAttribs = 16;
+
+enum class Stage : uint8_t { Vertex, Fragment };
+// Desktop: GLSL 1.10 (no #version) or 1.20 with the compatibility built-ins.
+// Es100: GLSL ES 1.00 (#version 100, or no #version).
+enum class Language : uint8_t { Desktop, Es100 };
+
+enum class BaseType : uint8_t {
+  Float, Int, Bool,
+  Sampler1D, Sampler2D, Sampler3D, SamplerCube, Sampler1DShadow, Sampler2DShadow
+};
+struct Type {
+  BaseType base = BaseType::Float;
+  uint8_t columns = 1;  // 2..4 for matN / matNxM, 1 otherwise
+  uint8_t rows = 1;     // vector size (1 for scalars and samplers)
+  int components() const { return columns * rows; }
+};
+
+struct CompiledShader;  // immutable once compiled; defined inside shader/
+
+struct CompileResult {
+  std::shared_ptr<const CompiledShader> shader;  // null when compilation failed
+  std::string info_log;                          // glslang's words (may be non-empty on success)
+};
+// `sources` are the glShaderSource strings, in order (concatenated, as GL specifies).
+CompileResult compile(Stage stage, Language language, const std::vector<std::string>& sources);
+
+// Built-in vertex inputs of desktop GLSL; gl_Vertex and generic attribute 0 are the same input.
+enum class BuiltinAttribute : uint8_t {
+  None, Vertex, Normal, Color, SecondaryColor, FogCoord, MultiTexCoord0 /* ...7 follow */
+};
+
+// An active vertex input. Generic inputs get `location` (glBindAttribLocation's choice, or
+// the linker's); built-ins carry their kind and location -1.
+struct Attribute {
+  std::string name;
+  Type type;
+  int array_size = 1;
+  int location = -1;
+  BuiltinAttribute builtin = BuiltinAttribute::None;
+  int input_slot = 0;  // index into VertexBatch::inputs (one vec4 slot per column / element)
+};
+
+// An active uniform. Arrays are reported once, named "a[0]" as GL requires for glGetActiveUniform,
+// with `array_size` elements of `type`, element i at offset + i * stride floats. Built-in state
+// uniforms (gl_ModelViewMatrix, gl_LightSource[0].diffuse, ...) are listed with their GLSL
+// names and `builtin` set: state/ fills them from GL state at each draw and never reports them.
+struct Uniform {
+  std::string name;
+  Type type;
+  int array_size = 1;
+  int offset = 0;  // in floats, into the program's UniformStore
+  int stride = 0;  // floats between array elements
+  bool builtin = false;
+};
+
+// Where each fragment input comes from. `offset` indexes the interpolated varying floats;
+// a front/back pair (gl_Color from gl_FrontColor/gl_BackColor) also has `back_offset`, which
+// raster/ uses instead for back-facing polygons when two-sided colour applies.
+struct Varying {
+  std::string name;  // user name or built-in (gl_TexCoord[1], gl_Color, ...)
+  int offset = 0;
+  int components = 4;
+  int back_offset = -1;
+};
+
+// Vertex outputs: floats 0..3 gl_Position, 4 gl_PointSize, then `varying_floats` floats
+// that raster/ interpolates (perspective-correct) and hands to the fragment shader in the
+// same order. Outputs the vertex shader does not write hold 0 (gl_Position (0,0,0,0)).
+constexpr int kOutPosition = 0;
+constexpr int kOutPointSize = 4;
+constexpr int kOutFirstVarying = 5;
+
+struct VertexBatch {
+  int count = 0;                 // live vertices, 1..kLanes (lanes past count hold garbage)
+  const float* inputs = nullptr;  // [input slot][4 components][kLanes]
+  float* outputs = nullptr;       // [kOutFirstVarying + varying_floats][kLanes]
+};
+
+// Texture lookups go back to raster/ through this interface, 16 lanes at a time.
+enum class SamplerKind : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Shadow1D, Shadow2D };
+enum class LodMode : uint8_t {
+  Implicit,  // from the coordinates' differences across each 2x2 quad of lanes (fragments)
+  Bias,      // implicit plus lod[] (the bias argument)
+  Explicit   // lod[] is the level of detail (texture*Lod, and every vertex-shader lookup)
+};
+class TextureAccess {
+ public:
+  virtual ~TextureAccess() = default;
+  // coords[c][lane]: s, t, r, q as the lookup needs them (projection already divided out,
+  // the shadow reference in r for Shadow*); out[c][lane]: RGBA after the texture's base format.
+  virtual void sample(int unit, SamplerKind kind, const float (*coords)[kLanes], LodMode mode,
+                      const float* lod, LaneMask live, float (*out)[kLanes]) const = 0;
+};
+
+// One 4x4 block of fragments. Lane i is pixel (x0 + (i & 1) + 2 * ((i >> 2) & 1),
+// y0 + ((i >> 1) & 1) + 2 * (i >> 3)): lanes 4q..4q+3 form 2x2 quad q, so derivatives
+// (dFdx: lane ^ 1, dFdy: lane ^ 2) and implicit LOD come from real neighbours.
+struct FragmentBlock {
+  LaneMask live = 0;                  // in: covered; out: covered and not discarded
+  const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
+  float frag_coord[4][kLanes] = {};   // x+0.5, y+0.5, window z, 1/w
+  LaneMask front_facing = 0;
+  float point_coord[2][kLanes] = {};
+  float color[kMaxDrawBuffers][4][kLanes] = {};  // out: gl_FragColor (broadcast) or gl_FragData[i]
+  float depth[kLanes] = {};                      // out, when writes_depth()
+};
+
+// A linked program: immutable, safe to run from several threads at once.
+class Program {
+ public:
+  virtual ~Program() = default;
+  virtual const std::vector<Attribute>& attributes() const = 0;
+  virtual const std::vector<Uniform>& uniforms() const = 0;
+  virtual const std::vector<Varying>& varyings() const = 0;  // fragment inputs
+  virtual int input_slots() const = 0;       // VertexBatch::inputs size, in vec4 slots
+  virtual int varying_floats() const = 0;
+  virtual int uniform_floats() const = 0;    // UniformStore size
+  virtual bool writes_point_size() const = 0;
+  virtual bool writes_depth() const = 0;
+  virtual bool uses_discard() const = 0;
+  virtual int draw_buffers_written() const = 0;  // 1 for gl_FragColor, else highest gl_FragData + 1
+  virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
+
+  // `uniforms` has uniform_floats() values; `textures` may be null when no sampler is used.
+  virtual void run_vertices(const float* uniforms, const TextureAccess* textures,
+                            VertexBatch& batch) const = 0;
+  virtual void run_fragments(const float* uniforms, const TextureAccess* textures,
+                             FragmentBlock& block) const = 0;
+};
+
+struct AttributeBinding {
+  std::string name;
+  int location;
+};
+
+struct LinkResult {
+  std::shared_ptr<const Program> program;  // null when linking failed
+  std::string info_log;
+};
+// Links one vertex and one fragment shader (either may be null: the fixed-function stage
+// replaces it; state/ handles that case). `bindings` are glBindAttribLocation's, applied
+// at this link. Initial uniform values are zero.
+LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
+                const std::vector<AttributeBinding>& bindings);
+
+// The IR of a program as text, for PINEDA_DUMP_IR=1 and tests.
+std::string dump_ir(const Program& program);
+
+}  // namespace pineda::shader
