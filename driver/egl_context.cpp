@@ -13,6 +13,7 @@ struct Request {
   EGLint major = 1, minor = 0;
   EGLint flags = 0;
   bool robust = false;
+  bool debug = false;
   EGLint reset_strategy = EGL_NO_RESET_NOTIFICATION;
 };
 
@@ -31,6 +32,7 @@ EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
         if (value & ~kKnownFlags) return EGL_BAD_ATTRIBUTE;
         r->flags = value;
         if (value & EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR) r->robust = true;
+        if (value & EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR) r->debug = true;
         break;
       case EGL_CONTEXT_OPENGL_PROFILE_MASK:
         if (gles) return EGL_BAD_ATTRIBUTE;
@@ -43,6 +45,7 @@ EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
         [[fallthrough]];
       case EGL_CONTEXT_OPENGL_DEBUG:
         if (value != EGL_TRUE && value != EGL_FALSE) return EGL_BAD_ATTRIBUTE;
+        if (a[0] == EGL_CONTEXT_OPENGL_DEBUG) r->debug = value == EGL_TRUE;
         break;
       case EGL_CONTEXT_OPENGL_ROBUST_ACCESS:
         if (value != EGL_TRUE && value != EGL_FALSE) return EGL_BAD_ATTRIBUTE;
@@ -111,7 +114,7 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   }
   try {
     object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles});
+        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles, .debug = request.debug});
   } catch (const std::bad_alloc&) {
     return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
   }

@@ -67,7 +67,7 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
 
 // Caller holds the registry lock.
 GLXContext create(DisplayState& d, const Config* config, GLXContext share, bool direct,
-                  std::optional<Failure>* failure) {
+                  std::optional<Failure>* failure, bool debug = false) {
   if (share) {
     // Share groups are not implemented yet: the two contexts cannot share objects.
     *failure = d.find_context(share) ? x_failure(BadMatch) : glx_failure(GlxError::GlxContext);
@@ -80,7 +80,7 @@ GLXContext create(DisplayState& d, const Config* config, GLXContext share, bool 
   try {
     // GL may return a later version compatible with the one asked for: the highest one.
     object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor});
+        ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor, .debug = debug});
   } catch (const std::bad_alloc&) {
     *failure = x_failure(BadAlloc);
     return nullptr;
@@ -149,7 +149,7 @@ PINEDA_GLX_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfi
     }
     Request request;
     if ((*f = parse(attribs, &request))) return nullptr;
-    return create(d, config, share, direct, f);
+    return create(d, config, share, direct, f, (request.flags & GLX_CONTEXT_DEBUG_BIT_ARB) != 0);
   });
 }
 

@@ -180,15 +180,15 @@ def api_gate(cmd, flags, es1_commands):
     """The lines that refuse a call the context's API does not have."""
     lines = []
     if cmd.name not in es1_commands:
-        lines += ["  if (ctx->es1()) {", "    ctx->record_error(GL_INVALID_OPERATION);", f"    {zero_return(cmd)}", "  }"]
+        lines += ["  if (ctx->es1()) {", '    ctx->record_error(GL_INVALID_OPERATION, "not a command of OpenGL ES 1.1");', f"    {zero_return(cmd)}", "  }"]
     else:
         enum_params = [n for d, n in cmd.params if d.split()[0] == "GLenum" and "*" not in d]
         if enum_params:
             test = " || ".join(f"!pineda::glapi::es1_enum({n})" for n in enum_params)
-            lines += [f"  if (ctx->es1() && ({test})) {{", "    ctx->record_error(GL_INVALID_ENUM);",
+            lines += [f"  if (ctx->es1() && ({test})) {{", "    ctx->record_error(GL_INVALID_ENUM, \"an enum OpenGL ES 1.1 does not have\");",
                       f"    {zero_return(cmd)}", "  }"]
     if "es_only" in flags:
-        lines += ["  if (!ctx->attribs().gles) {", "    ctx->record_error(GL_INVALID_OPERATION);",
+        lines += ["  if (!ctx->attribs().gles) {", '    ctx->record_error(GL_INVALID_OPERATION, "an OpenGL ES command");',
                   f"    {zero_return(cmd)}", "  }"]
     return lines
 
@@ -199,9 +199,9 @@ def out_of_memory_guard(cmd, body):
     state, so the state stays as it was before the failing allocation."""
     lines = ["  try {"] + ["  " + line for line in body]
     lines += ["  } catch (const std::bad_alloc&) {",
-              "    ctx->record_error(GL_OUT_OF_MEMORY);",
+              "    ctx->record_error(GL_OUT_OF_MEMORY, \"the memory this call needs could not be allocated\");",
               "  } catch (const std::length_error&) {  // a size beyond what a std::vector can hold",
-              "    ctx->record_error(GL_OUT_OF_MEMORY);",
+              "    ctx->record_error(GL_OUT_OF_MEMORY, \"the memory this call needs could not be allocated\");",
               "  }"]
     if cmd.ret != "void":
         lines.append("  return {};")
@@ -280,11 +280,12 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
         c.append(f"PINEDA_EXPORT {cmd.ret} GLAPIENTRY {cmd.name}({cmd.param_decls()}) {{")
         c.append("  pineda::Context* ctx = pineda::current_context();")
         c.append(f"  if (!ctx) {zero_return(cmd)}")
+        c.append(f'  ctx->current_call = "{cmd.name}";')
         body = api_gate(cmd, flags, es1_commands)
         body += list_recording(cmd, flags)
         if "inside_begin_end" not in flags:
             body.append("  if (ctx->inside_begin_end()) {")
-            body.append("    ctx->record_error(GL_INVALID_OPERATION);")
+            body.append('    ctx->record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");')
             body.append(f"    {zero_return(cmd)}")
             body.append("  }")
         call = f"pineda::gl::{impl_name(cmd, flags)}({args})"

@@ -207,6 +207,14 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
     case GL_TEXTURE_COORD_ARRAY_POINTER:
       *params = const_cast<void*>(ctx.texture_units[ctx.client_active_texture].texcoord_array.pointer);
       break;
+    case GL_DEBUG_CALLBACK_FUNCTION:
+      if (ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
+      *params = reinterpret_cast<void*>(ctx.debug.callback);
+      break;
+    case GL_DEBUG_CALLBACK_USER_PARAM:
+      if (ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
+      *params = const_cast<void*>(ctx.debug.user_param);
+      break;
     case GL_POINT_SIZE_ARRAY_POINTER_OES:
       if (!ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
       *params = const_cast<void*>(ctx.point_size_array.pointer);

@@ -71,13 +71,14 @@ void GenBuffers(Context& ctx, GLsizei n, GLuint* buffers) {
 }
 
 void DeleteBuffers(Context& ctx, GLsizei n, const GLuint* buffers) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!buffers) return;
   for (GLsizei i = 0; i < n; ++i) {
     if (buffers[i] == 0) continue;
     if (std::shared_ptr<BufferObject> b = ctx.buffers.names.find(buffers[i])) b->mapped = false;
     unbind_everywhere(ctx, buffers[i]);
     ctx.buffers.names.remove(buffers[i]);
+    ctx.debug.forget_label(GL_BUFFER, buffers[i]);
   }
 }
 

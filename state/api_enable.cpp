@@ -44,6 +44,8 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_TEXTURE_2D: return &ctx.texture_units[ctx.active_texture].enabled_2d;
     case GL_TEXTURE_3D: return &ctx.texture_units[ctx.active_texture].enabled_3d;
     case GL_TEXTURE_CUBE_MAP: return &ctx.texture_units[ctx.active_texture].enabled_cube;
+    case GL_DEBUG_OUTPUT: return ctx.es1() ? nullptr : &ctx.debug.enabled;
+    case GL_DEBUG_OUTPUT_SYNCHRONOUS: return ctx.es1() ? nullptr : &ctx.debug.synchronous;
     default:
       if (bool* flag = vertex_extras_capability(ctx, cap)) return flag;
       if (bool* flag = evaluator_capability(ctx.eval.attribs, cap)) return flag;
@@ -76,7 +78,7 @@ namespace {
 void set_capability(Context& ctx, GLenum cap, bool value) {
   bool* flag = server_capability(ctx, cap);
   if (!flag) flag = client_capability(ctx, cap);
-  if (!flag) return ctx.record_error(GL_INVALID_ENUM);
+  if (!flag) return ctx.record_error(GL_INVALID_ENUM, "cap " + hex_enum(cap) + " is not a capability");
   *flag = value;
   if (cap == GL_COLOR_MATERIAL) track_color_material(ctx);
 }

@@ -237,6 +237,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_evaluator(ctx, pname, out)) return true;
   if (query_point_parameters(ctx, pname, out)) return true;
   if (query_compressed_formats(pname, out)) return true;
+  if (query_debug(ctx, pname, out)) return true;
   if (ctx.es1() && query_es1(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
@@ -296,7 +297,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
       "GL_SGIS_texture_lod GL_EXT_texture_lod_bias "
-      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array ";  // a trailing space, as Mesa (programs split on it)
+      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array GL_KHR_debug ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

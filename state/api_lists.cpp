@@ -96,7 +96,11 @@ GLuint GenLists(Context& ctx, GLsizei range) {
 }
 
 void DeleteLists(Context& ctx, GLuint list, GLsizei range) {
-  if (range < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (range < 0) return ctx.record_error(GL_INVALID_VALUE, "range is negative");
+  if (range > 0) {
+    const GLuint last = GLuint(-1) - list < GLuint(range - 1) ? GLuint(-1) : list + GLuint(range - 1);
+    ctx.debug.forget_labels(GL_DISPLAY_LIST, list, last);
+  }
   ctx.lists.remove(list, range);
 }
 

@@ -47,12 +47,13 @@ void GenQueries(Context& ctx, GLsizei n, GLuint* ids) {
 }
 
 void DeleteQueries(Context& ctx, GLsizei n, const GLuint* ids) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!ids) return;
   for (GLsizei i = 0; i < n; ++i) {
     if (ids[i] == 0) continue;
     if (ctx.queries.active_samples_passed && ctx.queries.active_samples_passed->name == ids[i]) stop_counting(ctx);
     ctx.queries.names.remove(ids[i]);
+    ctx.debug.forget_label(GL_QUERY, ids[i]);
   }
 }
 

@@ -326,7 +326,7 @@ void GenTextures(Context& ctx, GLsizei n, GLuint* textures) {
 }
 
 void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!textures) return;
   for (GLsizei i = 0; i < n; ++i) {
     const GLuint name = textures[i];
@@ -335,6 +335,7 @@ void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
       for (int k = 0; k < kTexTargetCount; ++k)
         if (GLuint& bound = bound_name(unit, TexTarget(k)); bound == name) bound = 0;
     ctx.textures.remove(name);
+    ctx.debug.forget_label(GL_TEXTURE, name);
   }
 }
 

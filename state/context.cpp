@@ -4,8 +4,19 @@
 
 namespace pineda {
 
+namespace {
+
+// PINEDA_DEBUG=1 prints every GL error's message to stderr, for programs that never ask.
+bool print_errors_from_environment() {
+  const char* v = std::getenv("PINEDA_DEBUG");
+  return v && *v && std::string_view(v) != "0";
+}
+
+}  // namespace
+
 Context::Context(const ContextAttribs& attribs)
-    : attribs_(attribs), renderer_(std::make_unique<raster::Renderer>(attribs.threads)) {
+    : debug(attribs.debug, print_errors_from_environment()),
+      attribs_(attribs), renderer_(std::make_unique<raster::Renderer>(attribs.threads)) {
   for (auto& stack : texture_matrix) stack.max_depth = 10;
   projection.max_depth = 10;
   lighting.lights[0].diffuse = glm::vec4(1);

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "state/attrib_stack.h"
 #include "state/buffer_object.h"
 #include "state/color_index.h"
+#include "state/debug/debug_output.h"
 #include "state/display_list.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
@@ -37,6 +39,7 @@ namespace pineda {
 struct ContextAttribs {
   int major = 1, minor = 1;
   bool gles = false;
+  bool debug = false;  // a debug context (GLX_CONTEXT_DEBUG_BIT_ARB, EGL_CONTEXT_OPENGL_DEBUG)
   int threads = 0;  // 0: PINEDA_THREADS or one per core
 };
 
@@ -108,10 +111,12 @@ class Context {
   // The read drawable's buffers with the colour buffer that glReadBuffer selects.
   raster::Framebuffer read_framebuffer() const;
 
-  // Errors: the first one is kept until glGetError reads it.
-  void record_error(GLenum error) {
+  // Errors: the first one is kept until glGetError reads it. `why` names the argument and
+  // the rule it broke, for the debug message (GL_KHR_debug, PINEDA_DEBUG=1).
+  void record_error(GLenum error, std::string_view why = {}) {
     ++errors_recorded_;
     if (error_ == GL_NO_ERROR) error_ = error;
+    if (debug.reports_errors()) debug.report_error(current_call, error, why);
   }
   // Counts every recorded error, kept or not: a wrapper compares it around a call to learn
   // whether the call failed (state/es1/).
@@ -132,6 +137,10 @@ class Context {
   void finish() { renderer_->flush(); }
 
   // ---- state, read and written by the state/ implementation files ----
+  // The GL function being executed ("glTexImage2D"), set by each entry point for messages.
+  const char* current_call = "";
+  DebugOutput debug;
+
   bool in_begin_end = false;
   GLenum begin_mode = GL_POINTS;
   std::vector<raster::VertexInput> immediate;

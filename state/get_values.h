@@ -31,6 +31,9 @@ bool query_get_values(Context& ctx, unsigned pname, GetValues& out);
 // The queries only OpenGL ES 1.1 has (state/es1/es1_get.cpp).
 bool query_es1(Context& ctx, unsigned pname, GetValues& out);
 
+// The GL_KHR_debug limits, log size and debug group depth (state/debug/debug_get.cpp).
+bool query_debug(Context& ctx, unsigned pname, GetValues& out);
+
 // NUM_COMPRESSED_TEXTURE_FORMATS and COMPRESSED_TEXTURE_FORMATS (api_compressed_texture.cpp).
 bool query_compressed_formats(unsigned pname, GetValues& out);
 

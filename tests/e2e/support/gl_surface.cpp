@@ -43,7 +43,7 @@ EGLDisplay egl_display() {
 GlSurface::GlSurface(const SurfaceSpec& spec) : spec_(spec) {
   // PINEDA_TEST_SURFACE=egl runs every test on EGL pbuffers.
   const char* env = std::getenv("PINEDA_TEST_SURFACE");
-  const bool egl = spec.force_egl || (env && std::string(env) == "egl");
+  const bool egl = spec.force_egl || spec.debug_context || (env && std::string(env) == "egl");
   ok_ = osmesa().create && !egl ? create_osmesa() : create_egl();
 }
 
@@ -87,7 +87,8 @@ bool GlSurface::create_egl() {
     return false;
   }
   eglBindAPI(EGL_OPENGL_API);
-  egl_context_ = eglCreateContext(d, config, EGL_NO_CONTEXT, nullptr);
+  const EGLint debug_attribs[] = {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+  egl_context_ = eglCreateContext(d, config, EGL_NO_CONTEXT, spec_.debug_context ? debug_attribs : nullptr);
   const EGLint surface_attribs[] = {EGL_WIDTH, spec_.width, EGL_HEIGHT, spec_.height, EGL_NONE};
   egl_surface_ = eglCreatePbufferSurface(d, config, surface_attribs);
   if (!egl_context_ || !egl_surface_) {
