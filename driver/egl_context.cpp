@@ -83,10 +83,12 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   const bool gles = api == EGL_OPENGL_ES_API;
   const Config* c = find_config(*display, config);
   if (!c) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
+  std::shared_ptr<pineda::ShareGroup> share_group;
   if (share_context != EGL_NO_CONTEXT) {
-    if (!display->find_context(share_context)) return fail(EGL_BAD_CONTEXT, EGL_NO_CONTEXT);
-    // Share groups are not implemented yet: the two contexts cannot share objects.
-    return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
+    const std::shared_ptr<ContextObject> shared = display->find_context(share_context);
+    // Objects are shared within one client API only (Mesa: EGL_BAD_CONTEXT otherwise).
+    if (!shared || shared->api != api) return fail(EGL_BAD_CONTEXT, EGL_NO_CONTEXT);
+    share_group = shared->gl->share_group();
   }
   Request request;
   if (EGLint error = parse_attributes(attrib_list, gles, &request); error != EGL_SUCCESS)
@@ -114,7 +116,8 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   }
   try {
     object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles, .debug = request.debug});
+        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles, .debug = request.debug},
+        std::move(share_group));
   } catch (const std::bad_alloc&) {
     return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
   }

@@ -68,10 +68,14 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
 // Caller holds the registry lock.
 GLXContext create(DisplayState& d, const Config* config, GLXContext share, bool direct,
                   std::optional<Failure>* failure, bool debug = false) {
+  std::shared_ptr<pineda::ShareGroup> share_group;
   if (share) {
-    // Share groups are not implemented yet: the two contexts cannot share objects.
-    *failure = d.find_context(share) ? x_failure(BadMatch) : glx_failure(GlxError::GlxContext);
-    return nullptr;
+    const std::shared_ptr<ContextObject> shared = d.find_context(share);
+    if (!shared) {
+      *failure = glx_failure(GlxError::GlxContext);
+      return nullptr;
+    }
+    share_group = shared->gl->share_group();
   }
   auto object = std::make_shared<ContextObject>();
   object->dpy = d.dpy;
@@ -80,7 +84,8 @@ GLXContext create(DisplayState& d, const Config* config, GLXContext share, bool 
   try {
     // GL may return a later version compatible with the one asked for: the highest one.
     object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor, .debug = debug});
+        ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor, .debug = debug},
+        std::move(share_group));
   } catch (const std::bad_alloc&) {
     *failure = x_failure(BadAlloc);
     return nullptr;

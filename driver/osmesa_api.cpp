@@ -41,16 +41,15 @@ int depth_size(int bits) {
 
 OSMesaContext create(const Request& r, OSMesaContext sharelist) {
   if (bytes_per_pixel(r.format) == 0) return nullptr;  // colour index, RGB_565
-  // Share groups are not implemented yet.
-  if (sharelist) return nullptr;
   if (r.core || !pineda::driver::gl_version_supported(r.major, r.minor)) return nullptr;
   try {
     auto ctx = std::make_unique<osmesa_context>();
     ctx->format = r.format;
     ctx->depth_bits = depth_size(r.depth_bits);
     ctx->stencil_bits = r.stencil_bits > 0 ? 8 : 0;
-    ctx->gl = std::make_unique<pineda::Context>(pineda::ContextAttribs{
-        .major = pineda::driver::kMaxGLMajor, .minor = pineda::driver::kMaxGLMinor});
+    ctx->gl = std::make_unique<pineda::Context>(
+        pineda::ContextAttribs{.major = pineda::driver::kMaxGLMajor, .minor = pineda::driver::kMaxGLMinor},
+        sharelist ? sharelist->gl->share_group() : nullptr);
     return ctx.release();
   } catch (const std::bad_alloc&) {
     return nullptr;

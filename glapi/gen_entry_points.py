@@ -280,6 +280,7 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
         c.append(f"PINEDA_EXPORT {cmd.ret} GLAPIENTRY {cmd.name}({cmd.param_decls()}) {{")
         c.append("  pineda::Context* ctx = pineda::current_context();")
         c.append(f"  if (!ctx) {zero_return(cmd)}")
+        c.append("  const auto shared_lock = pineda::lock_if_shared(*ctx->share_group());")
         c.append(f'  ctx->current_call = "{cmd.name}";')
         body = api_gate(cmd, flags, es1_commands)
         body += list_recording(cmd, flags)

@@ -22,7 +22,8 @@ struct BufferObject {
 };
 
 struct BufferState {
-  ObjectNames<BufferObject> names;
+  explicit BufferState(ObjectNames<BufferObject>& shared_names) : names(shared_names) {}
+  ObjectNames<BufferObject>& names;  // the share group's
   std::shared_ptr<BufferObject> array, element_array;  // GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER
 };
 

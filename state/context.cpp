@@ -14,17 +14,21 @@ bool print_errors_from_environment() {
 
 }  // namespace
 
-Context::Context(const ContextAttribs& attribs)
-    : debug(attribs.debug, print_errors_from_environment()),
+Context::Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> share)
+    : share_group_(share ? std::move(share) : std::make_shared<ShareGroup>()),
+      debug(attribs.debug, print_errors_from_environment()),
+      textures(share_group_->textures),
+      lists(share_group_->lists),
       attribs_(attribs), renderer_(std::make_unique<raster::Renderer>(attribs.threads)) {
   for (auto& stack : texture_matrix) stack.max_depth = 10;
   projection.max_depth = 10;
   lighting.lights[0].diffuse = glm::vec4(1);
   lighting.lights[0].specular = glm::vec4(1);
   draw_state.point_params.size_max = kPointSizeRange[1];
+  share_group_->members.fetch_add(1, std::memory_order_acq_rel);
 }
 
-Context::~Context() = default;
+Context::~Context() { share_group_->members.fetch_sub(1, std::memory_order_acq_rel); }
 
 void Context::make_current(Drawable* draw, Drawable* read) {
   draw_ = draw;

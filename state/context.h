@@ -30,6 +30,7 @@
 #include "state/pixel_state.h"
 #include "state/query_object.h"
 #include "state/select_feedback.h"
+#include "state/share_group.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 #include "state/vertex_extras_state.h"
@@ -91,10 +92,12 @@ struct TextureUnitState {
 
 class Context {
  public:
-  explicit Context(const ContextAttribs& attribs);
+  // `share` is the group of the context given as share list; null starts a new group.
+  explicit Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> share = nullptr);
   ~Context();
 
   const ContextAttribs& attribs() const { return attribs_; }
+  const std::shared_ptr<ShareGroup>& share_group() const { return share_group_; }
   // An OpenGL ES 1.x context: the ES 1.1 subset of the API, with its enums (glapi/).
   bool es1() const { return attribs_.gles && attribs_.major == 1; }
 
@@ -137,6 +140,10 @@ class Context {
   void finish() { renderer_->flush(); }
 
   // ---- state, read and written by the state/ implementation files ----
+ private:
+  std::shared_ptr<ShareGroup> share_group_;  // first: the references below point into it
+
+ public:
   // The GL function being executed ("glTexImage2D"), set by each entry point for messages.
   const char* current_call = "";
   DebugOutput debug;
@@ -212,7 +219,7 @@ class Context {
 
   // Textures
   std::array<TextureUnitState, raster::kMaxTextureUnits> texture_units;
-  TextureNamespace textures;
+  TextureNamespace& textures;  // the share group's
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
 
@@ -222,13 +229,13 @@ class Context {
   PixelMaps pixel_maps;
 
   // Buffer objects and queries
-  BufferState buffers;
+  BufferState buffers{share_group_->buffers};
   QueryState queries;
   RenderModeState render_mode;  // glRenderMode: selection and feedback
   AccumState accum;
 
   // Display lists
-  DisplayLists lists;
+  DisplayLists& lists;  // the share group's
   ListCompilation compilation;
   GLuint list_base = 0;
   int list_depth = 0;  // nesting of glCallList

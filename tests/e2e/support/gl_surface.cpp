@@ -43,7 +43,7 @@ EGLDisplay egl_display() {
 GlSurface::GlSurface(const SurfaceSpec& spec) : spec_(spec) {
   // PINEDA_TEST_SURFACE=egl runs every test on EGL pbuffers.
   const char* env = std::getenv("PINEDA_TEST_SURFACE");
-  const bool egl = spec.force_egl || spec.debug_context || (env && std::string(env) == "egl");
+  const bool egl = spec.force_egl || spec.debug_context || (spec.share && !spec.share->is_osmesa()) || (env && std::string(env) == "egl");
   ok_ = osmesa().create && !egl ? create_osmesa() : create_egl();
 }
 
@@ -59,7 +59,8 @@ GlSurface::~GlSurface() {
 }
 
 bool GlSurface::create_osmesa() {
-  OSMesaContext ctx = osmesa().create(OSMESA_RGBA, spec_.depth_bits, spec_.stencil_bits, 0, nullptr);
+  OSMesaContext share = spec_.share ? static_cast<OSMesaContext>(spec_.share->osmesa_ctx_) : nullptr;
+  OSMesaContext ctx = osmesa().create(OSMESA_RGBA, spec_.depth_bits, spec_.stencil_bits, 0, share);
   if (!ctx) {
     error_ = "OSMesaCreateContextExt failed";
     return false;
@@ -88,7 +89,8 @@ bool GlSurface::create_egl() {
   }
   eglBindAPI(EGL_OPENGL_API);
   const EGLint debug_attribs[] = {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
-  egl_context_ = eglCreateContext(d, config, EGL_NO_CONTEXT, spec_.debug_context ? debug_attribs : nullptr);
+  EGLContext share = spec_.share ? spec_.share->egl_context_ : EGL_NO_CONTEXT;
+  egl_context_ = eglCreateContext(d, config, share, spec_.debug_context ? debug_attribs : nullptr);
   const EGLint surface_attribs[] = {EGL_WIDTH, spec_.width, EGL_HEIGHT, spec_.height, EGL_NONE};
   egl_surface_ = eglCreatePbufferSurface(d, config, surface_attribs);
   if (!egl_context_ || !egl_surface_) {

@@ -10,11 +10,14 @@
 
 namespace pineda::test {
 
+class GlSurface;
+
 struct SurfaceSpec {
   int width = 32, height = 32;
   int depth_bits = 24, stencil_bits = 8;
   bool force_egl = false;  // use an EGL pbuffer even when OSMesa is available
   bool debug_context = false;  // an EGL debug context (EGL_CONTEXT_OPENGL_DEBUG); implies EGL
+  const GlSurface* share = nullptr;  // shares objects with this surface's context (same kind)
 };
 
 class GlSurface {
