@@ -1011,9 +1011,9 @@ Val Lowerer::call(TIntermAggregate* a) {
     }
   }
   scopes_.push_back(std::move(scope));
-  const VarType rt = var_type(def->getType());
   Call ctx;
   if (def->getType().getBasicType() != glslang::EbtVoid) {
+    const VarType rt = var_type(def->getType());
     const int base = code_.new_registers(rt.size());
     for (int c = 0; c < rt.size(); ++c) ctx.result.push_back(base + c);
   }
