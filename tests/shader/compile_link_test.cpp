@@ -133,3 +133,21 @@ TEST(Link, SharedUniformHasOneOffset) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Compile, VertexLineNumbersWithVersion) {
+  CompileResult r = compile(Stage::Vertex, Language::Desktop, {"#version 120\nuniform vec4 u;\nvoid main() { gl_Position = missing; }\n"});
+  EXPECT_EQ(r.shader, nullptr);
+  EXPECT_NE(r.info_log.find("ERROR: 0:3: 'missing' : undeclared identifier"), std::string::npos) << r.info_log;
+}
+
+TEST(Compile, FragmentShaderHasNoDesktopTextureLod) {
+  CompileResult r = compile(Stage::Fragment, Language::Desktop,
+                            {"uniform sampler2D s;\nvoid main() { gl_FragColor = texture2DLod(s, vec2(0.0), 1.0); }\n"});
+  EXPECT_EQ(r.shader, nullptr);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
