@@ -193,7 +193,7 @@ BuiltinAttribute builtin_attribute(const std::string& name) {
   if (name == "gl_Color") return BuiltinAttribute::Color;
   if (name == "gl_SecondaryColor") return BuiltinAttribute::SecondaryColor;
   if (name == "gl_FogCoord") return BuiltinAttribute::FogCoord;
-  if (name.compare(0, 17, "gl_MultiTexCoord") == 0 && name.size() == 17 && name[16] >= '0' && name[16] <= '7')
+  if (name.compare(0, 16, "gl_MultiTexCoord") == 0 && name.size() == 17 && name[16] >= '0' && name[16] <= '7')
     return static_cast<BuiltinAttribute>(static_cast<int>(BuiltinAttribute::MultiTexCoord0) + (name[16] - '0'));
   fail("error: unsupported built-in vertex input " + name + "\n");
 }
