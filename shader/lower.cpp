@@ -871,6 +871,11 @@ Val Lowerer::aggregate(TIntermAggregate* a) {
   if (op == glslang::EOpTexture || op == glslang::EOpTextureProj || op == glslang::EOpTextureLod ||
       op == glslang::EOpTextureProjLod)
     return texture(a);
+  if (op == glslang::EOpComma) {
+    Val last;
+    for (TIntermNode* n : a->getSequence()) last = rv(n->getAsTyped());
+    return last;
+  }
   if (op == glslang::EOpFtransform) {
     Val m = builtin_uniform("gl_ModelViewProjectionMatrix", VarType::mat(4, 4));
     Val v = builtin_attribute_value("gl_Vertex");
@@ -1048,15 +1053,17 @@ void Lowerer::function_body(TIntermAggregate* def, bool main) {
     TIntermBranch* last = seq->getSequence().back()->getAsBranchNode();
     if (last && last->getFlowOp() == glslang::EOpReturn) tail = last;
   }
-  Call& ctx = calls_.back();
-  ctx.frame = returns > (tail ? 1 : 0);
-  if (ctx.frame) emit_control(Op::FuncBegin);
+  // calls_ grows while the body lowers (nested calls): index it, never hold a reference.
+  const size_t me = calls_.size() - 1;
+  const bool frame = returns > (tail ? 1 : 0);
+  calls_[me].frame = frame;
+  if (frame) emit_control(Op::FuncBegin);
   if (seq && (seq->getOp() == glslang::EOpSequence || seq->getOp() == glslang::EOpScope)) {
     for (TIntermNode* n : seq->getSequence()) {
       if (n == tail) {
         if (tail->getExpression()) {
           Val v = rv(tail->getExpression());
-          for (size_t i = 0; i < ctx.result.size(); ++i) emit_to(ctx.result[i], Op::Mov, v[i]);
+          for (size_t i = 0; i < calls_[me].result.size(); ++i) emit_to(calls_[me].result[i], Op::Mov, v[i]);
         }
         continue;
       }
@@ -1065,7 +1072,7 @@ void Lowerer::function_body(TIntermAggregate* def, bool main) {
   } else {
     stmt(body);
   }
-  if (ctx.frame) emit_control(Op::FuncEnd);
+  if (frame) emit_control(Op::FuncEnd);
   (void)main;
 }
 
@@ -1117,10 +1124,10 @@ void Lowerer::stmt(TIntermNode* node) {
       case glslang::EOpBreak: emit_control(Op::Break); return;
       case glslang::EOpContinue: emit_control(Op::Continue); return;
       case glslang::EOpReturn: {
-        Call& ctx = calls_.back();
         if (b->getExpression()) {
           Val v = rv(b->getExpression());
-          for (size_t i = 0; i < ctx.result.size(); ++i) emit_to(ctx.result[i], Op::Mov, v[i]);
+          const Val& result = calls_.back().result;
+          for (size_t i = 0; i < result.size(); ++i) emit_to(result[i], Op::Mov, v[i]);
         }
         emit_control(Op::Return);
         return;
