@@ -151,3 +151,50 @@ TEST(Compile, FragmentShaderHasNoDesktopTextureLod) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Link, HugeLocalArrayIsALinkErrorNotACrash) {
+  auto fs = compile_ok(Stage::Fragment, "varying float v;\nvoid main() { float a[10000000]; a[int(v)] = 1.0; gl_FragColor = vec4(a[2]); }\n");
+  ASSERT_TRUE(fs);
+  LinkResult r = link(nullptr, fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("shader too large"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, InliningExplosionIsALinkError) {
+  std::string src = "varying float v;\nfloat f0(float x) { return x * 1.5 + v; }\n";
+  for (int i = 1; i < 24; ++i)
+    src += "float f" + std::to_string(i) + "(float x) { return f" + std::to_string(i - 1) + "(x) + f" +
+           std::to_string(i - 1) + "(x + 1.0); }\n";
+  src += "void main() { gl_FragColor = vec4(f23(v)); }\n";
+  auto fs = compile_ok(Stage::Fragment, src);
+  ASSERT_TRUE(fs);
+  LinkResult r = link(nullptr, fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("shader too large"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, TooManyUniformComponents) {
+  auto fs = compile_ok(Stage::Fragment, "uniform vec4 big[600];\nuniform int i;\nvoid main() { gl_FragColor = big[i]; }\n");
+  ASSERT_TRUE(fs);
+  LinkResult r = link(nullptr, fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("too many uniform components"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, RecursionIsRejected) {
+  CompileResult c = compile(Stage::Fragment, Language::Desktop,
+                            {"float f(float x) { return x > 0.0 ? f(x - 1.0) : 0.0; }\nvoid main() { gl_FragColor = vec4(f(3.0)); }\n"});
+  if (!c.shader) {
+    SUCCEED() << "rejected at compile: " << c.info_log;
+    return;
+  }
+  LinkResult r = link(nullptr, c.shader.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_FALSE(r.info_log.empty());
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
