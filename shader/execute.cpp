@@ -1,6 +1,7 @@
 #include "shader/execute.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 
@@ -39,6 +40,12 @@ inline void blend(float* d, const float* t, LaneMask mask) {
 }  // namespace
 
 void StageCode::prepare() {
+  int depth = 0;
+  max_depth = 0;
+  for (const ir::Inst& in : code.insts) {
+    if (in.op == Op::IfBegin || in.op == Op::LoopBegin || in.op == Op::FuncBegin) max_depth = std::max(max_depth, ++depth);
+    if (in.op == Op::EndIf || in.op == Op::LoopEnd || in.op == Op::FuncEnd) --depth;
+  }
   constant_lanes.resize(code.constants.size() * kLanes);
   for (size_t i = 0; i < code.constants.size(); ++i)
     for (int l = 0; l < kLanes; ++l) constant_lanes[i * kLanes + l] = code.constants[i];
@@ -59,20 +66,10 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
   Frame stack_frames[kStackFrames];
   std::unique_ptr<Frame[]> heap_frames;
   Frame* frames = stack_frames;
-  int depth_limit = kStackFrames;
-  {
-    int depth = 0, max_depth = 0;
-    for (const ir::Inst& in : code.insts) {
-      if (in.op == Op::IfBegin || in.op == Op::LoopBegin || in.op == Op::FuncBegin) max_depth = std::max(max_depth, ++depth);
-      if (in.op == Op::EndIf || in.op == Op::LoopEnd || in.op == Op::FuncEnd) --depth;
-    }
-    if (max_depth > kStackFrames) {
-      heap_frames.reset(new Frame[max_depth]);
-      frames = heap_frames.get();
-      depth_limit = max_depth;
-    }
+  if (stage.max_depth > kStackFrames) {
+    heap_frames.reset(new Frame[stage.max_depth]);
+    frames = heap_frames.get();
   }
-  (void)depth_limit;
   int top = 0;  // number of frames
   LaneMask discarded = 0;
   int budget = kIterationBudget;
@@ -95,16 +92,15 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
     }
   };
 
+// Each lane's value goes to a local array first (no aliasing with the operands, so the
+// loop vectorizes), then to the register: whole, or blended under the mask.
 #define LANEWISE(EXPR)                                                  \
   do {                                                                  \
+    float T[kLanes];                                                    \
+    for (int l = 0; l < kLanes; ++l) T[l] = (EXPR);                     \
     float* D = reg(in.d);                                               \
-    if (mask == kAllLanes) {                                            \
-      for (int l = 0; l < kLanes; ++l) D[l] = (EXPR);                   \
-    } else {                                                            \
-      float T[kLanes];                                                  \
-      for (int l = 0; l < kLanes; ++l) T[l] = (EXPR);                   \
-      blend(D, T, mask);                                                \
-    }                                                                   \
+    if (mask == kAllLanes) std::memcpy(D, T, sizeof T);                 \
+    else blend(D, T, mask);                                             \
   } while (0)
 #define UNARY(F) { const float* A = src(in.a); LANEWISE(F); break; }
 #define BINARY(F) { const float* A = src(in.a); const float* B = src(in.b); LANEWISE(F); break; }
@@ -113,7 +109,10 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
   const size_t n = code.insts.size();
   for (size_t pc = 0; pc < n; ++pc) {
     const ir::Inst& in = code.insts[pc];
-    if (mask == 0 && top == 0) break;  // every lane returned or discarded
+    if (mask == 0) {
+      if (top == 0) break;  // every lane returned or discarded
+      if (in.op > Op::Discard) continue;  // nothing to compute; structure still runs
+    }
     switch (in.op) {
       case Op::IfBegin: {
         const float* A = src(in.a);
@@ -188,9 +187,6 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
         remove_lanes(mask, Op::Discard);
         mask = 0;
         break;
-      default:
-        if (mask == 0) break;
-        switch (in.op) {
           case Op::Mov: UNARY(A[l])
           case Op::LoadUniform: {
             const float v = io.uniforms[in.i0];
@@ -279,10 +275,10 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::Neg: UNARY(-A[l])
           case Op::Abs: UNARY(std::fabs(A[l]))
           case Op::Sign: UNARY(A[l] > 0.0f ? 1.0f : (A[l] < 0.0f ? -1.0f : 0.0f))
-          case Op::Floor: UNARY(std::floor(A[l]))
-          case Op::Ceil: UNARY(std::ceil(A[l]))
-          case Op::Fract: UNARY(A[l] - std::floor(A[l]))
-          case Op::Trunc: UNARY(std::trunc(A[l]))
+          case Op::Floor: UNARY(ir::lane_floor(A[l]))
+          case Op::Ceil: UNARY(ir::lane_ceil(A[l]))
+          case Op::Fract: UNARY(A[l] - ir::lane_floor(A[l]))
+          case Op::Trunc: UNARY(ir::lane_trunc(A[l]))
           case Op::Sqrt: UNARY(std::sqrt(A[l]))
           case Op::Rsq: UNARY(1.0f / std::sqrt(A[l]))
           case Op::NormScale: UNARY(A[l] > 0.0f ? 1.0f / std::sqrt(A[l]) : 0.0f)
@@ -304,9 +300,9 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::Sub: BINARY(A[l] - B[l])
           case Op::Mul: BINARY(A[l] * B[l])
           case Op::Div: BINARY(A[l] / B[l])
-          case Op::Mod: BINARY(A[l] - B[l] * std::floor(A[l] / B[l]))
-          case Op::Min: BINARY(std::fmin(A[l], B[l]))
-          case Op::Max: BINARY(std::fmax(A[l], B[l]))
+          case Op::Mod: BINARY(A[l] - B[l] * ir::lane_floor(A[l] / B[l]))
+          case Op::Min: BINARY(ir::lane_min(A[l], B[l]))
+          case Op::Max: BINARY(ir::lane_max(A[l], B[l]))
           case Op::Pow: BINARY(std::pow(A[l], B[l]))
           case Op::Atan2: BINARY(std::atan2(A[l], B[l]))
           case Op::Step: BINARY(B[l] < A[l] ? 0.0f : 1.0f)
@@ -319,13 +315,12 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::And: BINARY((A[l] != 0.0f && B[l] != 0.0f) ? 1.0f : 0.0f)
           case Op::Or: BINARY((A[l] != 0.0f || B[l] != 0.0f) ? 1.0f : 0.0f)
           case Op::Xor: BINARY(((A[l] != 0.0f) != (B[l] != 0.0f)) ? 1.0f : 0.0f)
-          case Op::Clamp: TERNARY(std::fmin(std::fmax(A[l], B[l]), C[l]))
+          case Op::Clamp: TERNARY(ir::lane_min(ir::lane_max(A[l], B[l]), C[l]))
           case Op::Mix: TERNARY(A[l] * (1.0f - C[l]) + B[l] * C[l])
-          case Op::Smoothstep: TERNARY(ir::eval_ternary(Op::Smoothstep, A[l], B[l], C[l]))
+          case Op::Smoothstep: TERNARY(ir::lane_smoothstep(A[l], B[l], C[l]))
           case Op::Select: TERNARY(A[l] != 0.0f ? B[l] : C[l])
           case Op::Mad: TERNARY(A[l] * B[l] + C[l])
           default: break;
-        }
     }
   }
 #undef LANEWISE

@@ -9,6 +9,7 @@ namespace pineda::shader {
 struct StageCode {
   ir::Code code;
   std::vector<float> constant_lanes;  // [constant][kLanes]
+  int max_depth = 0;                  // deepest nesting of if/loop/function frames
   void prepare();
 };
 

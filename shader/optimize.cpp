@@ -102,13 +102,6 @@ Analysis analyze(ir::Code& code) {
   return an;
 }
 
-void replace_uses(ir::Code& code, Operand from, Operand to) {
-  for (Inst& in : code.insts)
-    for_each_use(code, in, [&](Operand& o) {
-      if (o == from) o = to;
-    });
-}
-
 bool removable(Op op) {
   return ir::op_is_pure_arith(op) || op == Op::LoadUniform || op == Op::GatherUniform || op == Op::Gather ||
          op == Op::LoadInput || op == Op::LoadVarying || op == Op::LoadFragCoord || op == Op::LoadFrontFacing ||
