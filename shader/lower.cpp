@@ -357,7 +357,8 @@ Val Lowerer::builtin_attribute_value(const std::string& name) {
 Place Lowerer::symbol_place(TIntermSymbol* s) {
   const std::string name = s->getName().c_str();
   const auto storage = s->getQualifier().storage;
-  if (storage == glslang::EvqConst || !s->getConstArray().empty()) {
+  // Constants (a 1.20 uniform's initializer also sits in the const array: it stays a uniform).
+  if (storage == glslang::EvqConst || (storage != glslang::EvqUniform && !s->getConstArray().empty())) {
     VarType t = var_type(s->getType(), name);
     Place p;
     p.kind = Place::Values;

@@ -195,3 +195,19 @@ TEST(Language, DeepExpressionsAndManyRegistersRun) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Language, UniformWithInitializerStaysAUniform) {
+  auto p = link_ok("", "#version 120\nuniform float k = 2.0;\nvoid main() { gl_FragColor = vec4(k); }\n");
+  ASSERT_TRUE(p);
+  ASSERT_TRUE(find_uniform(*p, "k"));
+  FragmentRun run(*p);
+  run.set_uniform(*p, "k", {7.0f});
+  run.run(*p);
+  EXPECT_EQ(run.block.color[0][0][0], 7.0f);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
