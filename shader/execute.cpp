@@ -52,6 +52,7 @@ void StageCode::prepare() {
 }
 
 LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo& io) {
+  const ir::FlushDenormals flush;
   const ir::Code& code = stage.code;
   alignas(64) float stack_regs[kStackRegisters * kLanes];
   std::unique_ptr<float[]> heap_regs;

@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#define PINEDA_HAS_MXCSR 1
+#endif
 
 namespace pineda::shader::ir {
 
@@ -20,6 +24,14 @@ const char* const kOpNames[] = {
     "clamp", "mix", "smoothstep", "select", "mad"};
 static_assert(sizeof(kOpNames) / sizeof(kOpNames[0]) == static_cast<size_t>(Op::Count));
 }  // namespace
+
+#ifdef PINEDA_HAS_MXCSR
+FlushDenormals::FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040); }  // FTZ | DAZ
+FlushDenormals::~FlushDenormals() { _mm_setcsr(saved_); }
+#else
+FlushDenormals::FlushDenormals() : saved_(0) {}
+FlushDenormals::~FlushDenormals() {}
+#endif
 
 const char* op_name(Op op) { return kOpNames[static_cast<int>(op)]; }
 

@@ -111,6 +111,19 @@ inline float lane_smoothstep(float e0, float e1, float x) {
   return t * t * (3.0f - 2.0f * t);
 }
 
+// Denormals are flushed to zero (inputs and results) while shaders run and while their
+// constants fold, as GPUs and GLSL allow: same values either way, and no slow denormal path.
+class FlushDenormals {
+ public:
+  FlushDenormals();
+  ~FlushDenormals();
+  FlushDenormals(const FlushDenormals&) = delete;
+  FlushDenormals& operator=(const FlushDenormals&) = delete;
+
+ private:
+  unsigned saved_;
+};
+
 // Scalar semantics shared by the executor and constant folding.
 float eval_unary(Op op, float a);
 float eval_binary(Op op, float a, float b);

@@ -16,8 +16,9 @@ namespace pineda::shader {
 
 namespace {
 
-// GL_MAX_VERTEX_UNIFORM_COMPONENTS + GL_MAX_FRAGMENT_UNIFORM_COMPONENTS (1024 each).
-constexpr int kMaxUserUniformFloats = 2048;
+// A bound on the uniform store (64 KB), far above what GL's limits promise (1024 components
+// per stage): large arrays that drivers commonly accept link, absurd ones do not.
+constexpr int kMaxUserUniformFloats = 16384;
 // Registers one invocation may use (64 bytes each).
 constexpr int kMaxRunRegisters = 1 << 14;
 

@@ -101,6 +101,10 @@ struct Place {
   std::vector<int> comps;
   Operand dyn = kNone;
   int dyn_limit = 0;
+  // A swizzled vector indexed dynamically (v.wzyx[i]): component `choose[k]` when the index is
+  // k; comps is unused.
+  Operand choose_index = kNone;
+  std::vector<int> choose;
   VarType type;
 };
 
@@ -273,7 +277,7 @@ class Lowerer {
   Operand reduce(Op op, const Val& v) {
     Operand r = v[0];
     for (size_t i = 1; i < v.size(); ++i) r = emit(op, r, v[i]);
-    return v.size() == 1 ? emit(Op::ToBool, r) : r;
+    return r;
   }
 
   // --- places ---
@@ -496,6 +500,15 @@ Place Lowerer::place(TIntermTyped* node) {
       Place q = p;
       bool contiguous = q.kind != Place::Values;
       for (size_t i = 0; contiguous && i < q.comps.size(); ++i) contiguous = q.comps[i] == q.comps[0] + static_cast<int>(i);
+      if (!contiguous && q.kind == Place::Regs && q.dyn == kNone && es == 1) {
+        // A swizzle of a variable: stays assignable, one select per candidate component.
+        Place c = q;
+        c.choose_index = emit(Op::Clamp, index[0], k(0.0f), k(static_cast<float>(count - 1)));
+        c.choose = q.comps;
+        c.comps = {0};
+        c.type = elem;
+        return c;
+      }
       if (!contiguous) q = materialize(q);
       Operand off = emit(Op::Clamp, index[0], k(0.0f), k(static_cast<float>(count - 1)));
       if (es != 1) off = emit(Op::Mul, off, k(static_cast<float>(es)));
@@ -516,6 +529,12 @@ Place Lowerer::place(TIntermTyped* node) {
 }
 
 Val Lowerer::load(const Place& p) {
+  if (p.choose_index != kNone) {
+    Operand r = p.base + p.choose.back();
+    for (int i = static_cast<int>(p.choose.size()) - 2; i >= 0; --i)
+      r = emit(Op::Select, emit(Op::Eq, p.choose_index, k(static_cast<float>(i))), p.base + p.choose[i], r);
+    return {r};
+  }
   Val out;
   for (int c : p.comps) {
     switch (p.kind) {
@@ -534,6 +553,14 @@ Val Lowerer::load(const Place& p) {
 
 void Lowerer::store(const Place& p, const Val& v0) {
   if (p.kind != Place::Regs) fail("error: assignment to a read-only value\n");
+  if (p.choose_index != kNone) {
+    Operand v = ir::is_const(v0[0]) ? v0[0] : emit(Op::Mov, v0[0]);
+    for (size_t i = 0; i < p.choose.size(); ++i) {
+      Operand target = p.base + p.choose[i];
+      emit_to(target, Op::Select, emit(Op::Eq, p.choose_index, k(static_cast<float>(i))), v, target);
+    }
+    return;
+  }
   // A source that is also a destination (v.xy = v.yx) is read before any write.
   Val v = v0;
   for (Operand& o : v)

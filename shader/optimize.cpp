@@ -360,6 +360,7 @@ void fix_jumps(ir::Code& code) {
 }
 
 void optimize(ir::Code& code) {
+  const ir::FlushDenormals flush;
   for (int round = 0; round < 32 && pass(code); ++round) {
   }
   allocate_registers(code);
