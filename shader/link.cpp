@@ -30,18 +30,19 @@ Type reported_type(const VarType& t) {
   return r;
 }
 
+// `initial` is the whole variable's initializer (or null); `base` its first float.
 void add_uniform_leaves(const std::string& name, const VarType& t, int offset, bool builtin,
-                        std::vector<Uniform>& out) {
+                        const std::vector<float>* initial, int base, std::vector<Uniform>& out) {
   if (t.is_struct()) {
     if (t.array) {
       const VarType e = t.element();
       for (int i = 0; i < t.array; ++i)
-        add_uniform_leaves(name + "[" + std::to_string(i) + "]", e, offset + i * e.size(), builtin, out);
+        add_uniform_leaves(name + "[" + std::to_string(i) + "]", e, offset + i * e.size(), builtin, initial, base, out);
       return;
     }
     int off = offset;
     for (const auto& [member, mt] : t.members) {
-      add_uniform_leaves(name + "." + member, mt, off, builtin, out);
+      add_uniform_leaves(name + "." + member, mt, off, builtin, initial, base, out);
       off += mt.size();
     }
     return;
@@ -53,6 +54,8 @@ void add_uniform_leaves(const std::string& name, const VarType& t, int offset, b
   u.offset = offset;
   u.stride = t.element_size();
   u.builtin = builtin;
+  if (initial)
+    u.initial.assign(initial->begin() + (offset - base), initial->begin() + (offset - base) + t.size());
   out.push_back(u);
 }
 
@@ -184,7 +187,8 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
         iface.varying_floats += 4;
       }
   for (const UniformVar& u : iface.uniforms)
-    add_uniform_leaves(u.name, u.type, u.offset, u.builtin, linked_program->uniforms_);
+    add_uniform_leaves(u.name, u.type, u.offset, u.builtin, u.initial.empty() ? nullptr : &u.initial, u.offset,
+                       linked_program->uniforms_);
   for (const VaryingVar& v : iface.varyings) {
     const int es = v.type.element_size();
     if (v.type.array) {

@@ -376,7 +376,21 @@ Place Lowerer::symbol_place(TIntermSymbol* s) {
       std::string error;
       const UniformVar* u = iface_.uniform(name, t, starts_with_gl(name), error);
       if (!u) fail(error);
-      return whole(Place::Uniform, u->offset, t);
+      const int offset = u->offset;
+      if (!s->getConstArray().empty())
+        for (UniformVar& var : iface_.uniforms)
+          if (var.name == name && var.initial.empty()) {
+            const glslang::TConstUnionArray& c = s->getConstArray();
+            for (int i = 0; i < t.size() && i < c.size(); ++i) {
+              const glslang::TConstUnion& v = c[i];
+              var.initial.push_back(v.getType() == glslang::EbtBool ? (v.getBConst() ? 1.0f : 0.0f)
+                                    : v.getType() == glslang::EbtInt ? static_cast<float>(v.getIConst())
+                                    : v.getType() == glslang::EbtUint ? static_cast<float>(v.getUConst())
+                                                                      : static_cast<float>(v.getDConst()));
+            }
+            var.initial.resize(t.size(), 0.0f);
+          }
+      return whole(Place::Uniform, offset, t);
     }
     case glslang::EvqTemporary: case glslang::EvqIn: case glslang::EvqOut: case glslang::EvqInOut:
     case glslang::EvqConstReadOnly: {
