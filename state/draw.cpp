@@ -6,6 +6,7 @@
 
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/programs/program_draw.h"
 #include "state/point_parameters.h"
 #include "state/select_feedback.h"
 #include "state/vertex_extras_snapshot.h"
@@ -84,10 +85,12 @@ const raster::DrawState& fragment_snapshot(Context& ctx) {
 }
 
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
-                   std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials) {
+                   std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials,
+                   AttribSource generic_source) {
   if (!ctx.draw_drawable() || vertices.empty()) return;
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
+  if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
   const int texture_units = snapshot_textures(ctx);
   ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
   // Feedback reports unit 0's coordinates even when no texture is enabled.
