@@ -1,0 +1,78 @@
+#include "shader/front_end.h"
+
+#include <glslang/Include/ResourceLimits.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+
+namespace pineda::shader::front_end {
+
+namespace {
+
+TBuiltInResource gl21_resources() {
+  TBuiltInResource r = *GetDefaultResources();
+  r.maxLights = 8;
+  r.maxClipPlanes = 6;
+  r.maxTextureUnits = 8;
+  r.maxTextureCoords = 8;
+  r.maxVertexAttribs = kMaxVertexAttribs;
+  r.maxVertexUniformComponents = 1024;
+  r.maxVaryingFloats = kMaxVaryingFloats;
+  r.maxVertexTextureImageUnits = 8;
+  r.maxCombinedTextureImageUnits = 16;
+  r.maxTextureImageUnits = 8;
+  r.maxFragmentUniformComponents = 1024;
+  r.maxDrawBuffers = kMaxDrawBuffers;
+  r.maxVertexUniformVectors = 256;
+  r.maxVaryingVectors = kMaxVaryingFloats / 4;
+  r.maxFragmentUniformVectors = 256;
+  return r;
+}
+
+struct Process {
+  Process() { glslang::InitializeProcess(); }
+  std::mutex lock;
+  TBuiltInResource resources = gl21_resources();
+};
+
+Process& process() {
+  static Process p;
+  return p;
+}
+
+}  // namespace
+
+std::mutex& glslang_lock() { return process().lock; }
+
+EShLanguage stage_of(Stage stage) { return stage == Stage::Vertex ? EShLangVertex : EShLangFragment; }
+
+std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::string& log) {
+  Process& p = process();
+  auto sh = std::make_unique<glslang::TShader>(stage_of(shader.stage));
+  std::vector<const char*> strings;
+  for (const std::string& s : shader.sources) strings.push_back(s.c_str());
+  const char* empty = "";
+  if (strings.empty()) strings.push_back(empty);
+  sh->setStrings(strings.data(), static_cast<int>(strings.size()));
+  sh->setEnvInput(glslang::EShSourceGlsl, stage_of(shader.stage), glslang::EShClientNone, 100);
+  sh->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
+  sh->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
+  const bool es = shader.language == Language::Es100;
+  bool ok = sh->parse(&p.resources, es ? 100 : 110, es ? EEsProfile : ENoProfile, false, false,
+                      EShMsgDefault);
+  log = sh->getInfoLog();
+  if (!ok) return nullptr;
+  const glslang::TIntermediate* tree = sh->getIntermediate();
+  const int version = tree->getVersion();
+  const bool tree_es = tree->getProfile() == EEsProfile;
+  const bool supported = es ? (tree_es && version == 100)
+                            : (!tree_es && (version == 110 || version == 120));
+  if (!supported) {
+    log += "ERROR: 0:1: '#version' : version " + std::to_string(version) + (tree_es ? " es" : "") +
+           " is not supported here (" + (es ? "GLSL ES 1.00 only" : "GLSL 1.10 and 1.20 only") + ")\n"
+           "ERROR: 1 compilation errors.  No code generated.\n\n\n";
+    return nullptr;
+  }
+  return sh;
+}
+
+}  // namespace pineda::shader::front_end

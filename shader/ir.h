@@ -1,0 +1,98 @@
+// Pineda's shader IR: a flat list of scalar operations on 16-lane float registers, with
+// structured control flow as marker operations that the executor runs with lane masks.
+// See shader/README.md for the design.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "shader/program.h"
+
+namespace pineda::shader::ir {
+
+// An operand is a register (>= 0) or a constant (< 0: constant index ~operand).
+using Operand = int32_t;
+constexpr Operand kNone = INT32_MIN;
+inline bool is_const(Operand o) { return o < 0 && o != kNone; }
+inline int const_index(Operand o) { return ~o; }
+inline Operand const_operand(int index) { return ~index; }
+
+enum class Op : uint8_t {
+  // Structure (no destination). Jump targets are instruction indices in i0/i1.
+  IfBegin,        // a: condition; i0: the Else (or EndIf) to jump to when no lane takes the branch
+  Else,           // i0: the EndIf to jump to when no lane takes the else branch
+  EndIf,
+  LoopBegin,      // i0: the LoopEnd
+  ContinuePoint,  // lanes that executed Continue rejoin here (before the loop's increment)
+  LoopEnd,        // i0: the first instruction of the body (after LoopBegin)
+  Break,
+  BreakIfNot,     // a: lanes where a == 0 leave the loop
+  Continue,
+  FuncBegin,      // an inlined function body that returns early somewhere
+  FuncEnd,
+  Return,
+  Discard,
+  // Moves and loads (d: destination register).
+  Mov,            // d = a (i1 = 1: a "soft" zero initialisation of a declared variable)
+  LoadUniform,    // d = uniforms[i0]
+  GatherUniform,  // d = uniforms[i0 + clamp(int(a), 0, i1)]
+  Gather,         // d = reg[i0 + clamp(int(a), 0, i1)]
+  Scatter,        // reg[i0 + clamp(int(a), 0, i1)] = b (under the mask)
+  LoadInput,      // d = vertex input float i0 (slot * 4 + component)
+  LoadVarying,    // d = varying float i0
+  LoadFragCoord,  // d = gl_FragCoord component i0
+  LoadFrontFacing,
+  LoadPointCoord, // d = gl_PointCoord component i0
+  StoreOutput,    // vertex output float i0 = a (all lanes)
+  StoreColor,     // fragment colour: buffer i0 >> 2, component i0 & 3 = a; i1 = 1: every buffer
+  StoreDepth,     // gl_FragDepth = a
+  Texture,        // i0: index into Code::textures
+  // Unary (d = f(a)).
+  Neg, Abs, Sign, Floor, Ceil, Fract, Trunc, Sqrt, Rsq, NormScale, Exp, Log, Exp2, Log2,
+  Sin, Cos, Tan, Asin, Acos, Atan, Not, ToBool, Ddx, Ddy,
+  // Binary (d = f(a, b)).
+  Add, Sub, Mul, Div, Mod, Min, Max, Pow, Atan2, Step, Lt, Le, Gt, Ge, Eq, Ne, And, Or, Xor,
+  // Ternary (d = f(a, b, c)).
+  Clamp, Mix, Smoothstep, Select, Mad,
+  Count
+};
+
+const char* op_name(Op op);
+int op_arity(Op op);  // number of value operands among a, b, c for arithmetic and moves
+bool op_is_pure_arith(Op op);  // Neg..Mad, and Mov: d depends only on a, b, c
+
+struct Inst {
+  Op op;
+  Operand d = kNone, a = kNone, b = kNone, c = kNone;
+  int32_t i0 = 0, i1 = 0;
+};
+
+struct TextureLookup {
+  SamplerKind kind = SamplerKind::Tex2D;
+  LodMode mode = LodMode::Implicit;
+  Operand sampler = kNone;      // holds the texture unit
+  Operand coord[4] = {kNone, kNone, kNone, kNone};
+  Operand lod = kNone;          // bias or level (kNone for Implicit)
+  Operand dst[4] = {kNone, kNone, kNone, kNone};
+};
+
+struct Code {
+  std::vector<Inst> insts;
+  std::vector<float> constants;
+  std::vector<TextureLookup> textures;
+  int registers = 0;
+
+  Operand constant(float value);  // reuses an equal constant (bitwise)
+  Operand new_register() { return registers++; }
+  Operand new_registers(int n) { int r = registers; registers += n; return r; }
+  float const_value(Operand o) const { return constants[const_index(o)]; }
+};
+
+// Scalar semantics shared by the executor and constant folding.
+float eval_unary(Op op, float a);
+float eval_binary(Op op, float a, float b);
+float eval_ternary(Op op, float a, float b, float c);
+
+std::string dump(const Code& code);
+
+}  // namespace pineda::shader::ir

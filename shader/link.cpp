@@ -1,0 +1,202 @@
+// link(): parse both stages again, link with glslang's TProgram, lower to the IR (fragment
+// stage first, so that the vertex stage knows which varyings are read), assign attribute
+// locations, optimize.
+#include <cstdio>
+#include <cstdlib>
+
+#include <glslang/MachineIndependent/localintermediate.h>
+
+#include "shader/front_end.h"
+#include "shader/interface.h"
+#include "shader/linked_program.h"
+#include "shader/lower.h"
+#include "shader/optimize.h"
+
+namespace pineda::shader {
+
+namespace {
+
+Type reported_type(const VarType& t) {
+  Type r;
+  r.base = t.base;
+  r.columns = static_cast<uint8_t>(t.cols);
+  r.rows = static_cast<uint8_t>(t.rows);
+  return r;
+}
+
+void add_uniform_leaves(const std::string& name, const VarType& t, int offset, bool builtin,
+                        std::vector<Uniform>& out) {
+  if (t.is_struct()) {
+    if (t.array) {
+      const VarType e = t.element();
+      for (int i = 0; i < t.array; ++i)
+        add_uniform_leaves(name + "[" + std::to_string(i) + "]", e, offset + i * e.size(), builtin, out);
+      return;
+    }
+    int off = offset;
+    for (const auto& [member, mt] : t.members) {
+      add_uniform_leaves(name + "." + member, mt, off, builtin, out);
+      off += mt.size();
+    }
+    return;
+  }
+  Uniform u;
+  u.name = t.array ? name + "[0]" : name;
+  u.type = reported_type(t);
+  u.array_size = t.array ? t.array : 1;
+  u.offset = offset;
+  u.stride = t.element_size();
+  u.builtin = builtin;
+  out.push_back(u);
+}
+
+// Generic attributes get glBindAttribLocation's location, or the lowest free ones.
+bool assign_locations(const Interface& iface, const std::vector<AttributeBinding>& bindings,
+                      std::vector<Attribute>& out, std::string& log) {
+  bool used[kMaxVertexAttribs] = {};
+  for (const AttributeVar& a : iface.attributes)
+    if (a.builtin == BuiltinAttribute::Vertex) used[0] = true;  // gl_Vertex is generic attribute 0
+  std::vector<int> location(iface.attributes.size(), -1);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (size_t i = 0; i < iface.attributes.size(); ++i) {
+      const AttributeVar& a = iface.attributes[i];
+      if (a.builtin != BuiltinAttribute::None) continue;
+      const int slots = a.type.cols * (a.type.array ? a.type.array : 1);
+      int bound = -1;
+      for (const AttributeBinding& b : bindings)
+        if (b.name == a.name) bound = b.location;
+      if (pass == 0) {
+        if (bound < 0) continue;
+        if (bound + slots > kMaxVertexAttribs) {
+          log += "error: attribute `" + a.name + "' bound to location " + std::to_string(bound) +
+                 " does not fit below GL_MAX_VERTEX_ATTRIBS\n";
+          return false;
+        }
+        location[i] = bound;
+        for (int s = 0; s < slots; ++s) used[bound + s] = true;
+      } else {
+        if (bound >= 0) continue;
+        int found = -1;
+        for (int l = 0; l + slots <= kMaxVertexAttribs && found < 0; ++l) {
+          bool free = true;
+          for (int s = 0; s < slots; ++s) free = free && !used[l + s];
+          if (free) found = l;
+        }
+        if (found < 0) {
+          log += "error: too many vertex shader inputs (attribute `" + a.name + "' does not fit)\n";
+          return false;
+        }
+        location[i] = found;
+        for (int s = 0; s < slots; ++s) used[found + s] = true;
+      }
+    }
+  }
+  for (size_t i = 0; i < iface.attributes.size(); ++i) {
+    const AttributeVar& a = iface.attributes[i];
+    Attribute r;
+    r.name = a.name;
+    r.type = reported_type(a.type);
+    r.array_size = a.type.array ? a.type.array : 1;
+    r.location = location[i];
+    r.builtin = a.builtin;
+    r.input_slot = a.first_slot;
+    out.push_back(r);
+  }
+  return true;
+}
+
+}  // namespace
+
+LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
+                const std::vector<AttributeBinding>& bindings) {
+  LinkResult result;
+  if (!vertex && !fragment) {
+    result.info_log = "error: no shaders attached\n";
+    return result;
+  }
+  if ((vertex && vertex->stage != Stage::Vertex) || (fragment && fragment->stage != Stage::Fragment)) {
+    result.info_log = "error: shader of the wrong stage\n";
+    return result;
+  }
+  std::lock_guard<std::mutex> hold(front_end::glslang_lock());
+  std::string log;
+  std::unique_ptr<glslang::TShader> vs, fs;
+  if (vertex && !(vs = front_end::parse(*vertex, log))) {
+    result.info_log = "error: vertex shader does not compile\n" + log;
+    return result;
+  }
+  if (fragment && !(fs = front_end::parse(*fragment, log))) {
+    result.info_log = "error: fragment shader does not compile\n" + log;
+    return result;
+  }
+  glslang::TProgram program;
+  if (vs) program.addShader(vs.get());
+  if (fs) program.addShader(fs.get());
+  const bool linked = program.link(EShMsgDefault);
+  result.info_log = program.getInfoLog();
+  if (!linked) return result;
+
+  Interface iface;
+  iface.has_vertex_shader = vs != nullptr;
+  iface.has_fragment_shader = fs != nullptr;
+  auto linked_program = std::make_shared<LinkedProgram>();
+  std::string error;
+  if (fs) {
+    linked_program->fragment_.emplace();
+    if (!lower_stage(Stage::Fragment, *program.getIntermediate(EShLangFragment), iface,
+                     linked_program->fragment_->code, error)) {
+      result.info_log += error;
+      return result;
+    }
+  }
+  if (vs) {
+    linked_program->vertex_.emplace();
+    if (!lower_stage(Stage::Vertex, *program.getIntermediate(EShLangVertex), iface,
+                     linked_program->vertex_->code, error)) {
+      result.info_log += error;
+      return result;
+    }
+  }
+  if (iface.varying_floats > kMaxVaryingFloats) {
+    result.info_log += "error: too many varyings (" + std::to_string(iface.varying_floats) + " floats, at most " +
+                       std::to_string(kMaxVaryingFloats) + ")\n";
+    return result;
+  }
+  if (!assign_locations(iface, bindings, linked_program->attributes_, result.info_log)) return result;
+  if (!vs)
+    for (VaryingVar& v : iface.varyings)
+      if (v.name == "gl_Color" || v.name == "gl_SecondaryColor") {
+        v.back_offset = iface.varying_floats;
+        iface.varying_floats += 4;
+      }
+  for (const UniformVar& u : iface.uniforms)
+    add_uniform_leaves(u.name, u.type, u.offset, u.builtin, linked_program->uniforms_);
+  for (const VaryingVar& v : iface.varyings) {
+    const int es = v.type.element_size();
+    if (v.type.array) {
+      for (int i = 0; i < v.type.array; ++i)
+        linked_program->varyings_.push_back(Varying{v.name + "[" + std::to_string(i) + "]", v.offset + i * es, es, -1});
+    } else {
+      linked_program->varyings_.push_back(Varying{v.name, v.offset, es, v.back_offset});
+    }
+  }
+  linked_program->input_slots_ = iface.input_slots;
+  linked_program->varying_floats_ = iface.varying_floats;
+  linked_program->uniform_floats_ = iface.uniform_floats;
+  linked_program->writes_point_size_ = iface.writes_point_size;
+  linked_program->writes_depth_ = iface.writes_depth;
+  linked_program->uses_discard_ = iface.uses_discard;
+  linked_program->draw_buffers_ = iface.draw_buffers;
+  linked_program->reads_ = iface.reads;
+  for (auto* stage : {&linked_program->vertex_, &linked_program->fragment_})
+    if (*stage) {
+      optimize((*stage)->code);
+      (*stage)->prepare();
+    }
+  const char* dump_env = std::getenv("PINEDA_DUMP_IR");
+  if (dump_env && dump_env[0] == '1') std::fprintf(stderr, "%s", dump_ir(*linked_program).c_str());
+  result.program = std::move(linked_program);
+  return result;
+}
+
+}  // namespace pineda::shader

@@ -1,0 +1,41 @@
+#include "shader/linked_program.h"
+
+namespace pineda::shader {
+
+void LinkedProgram::run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const {
+  if (!vertex_ || batch.count <= 0) return;
+  const int count = batch.count > kLanes ? kLanes : batch.count;
+  const LaneMask mask = static_cast<LaneMask>(count == kLanes ? 0xFFFF : (1u << count) - 1);
+  LaneIo io;
+  io.uniforms = uniforms;
+  io.textures = textures;
+  io.inputs = batch.inputs;
+  io.outputs = batch.outputs;
+  execute(*vertex_, Stage::Vertex, mask, io);
+}
+
+void LinkedProgram::run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const {
+  if (!fragment_ || block.live == 0) return;
+  // Every lane of a quad with a covered pixel runs, so that derivatives and implicit LOD
+  // see real neighbours; only covered lanes come out live.
+  LaneMask mask = 0;
+  for (int q = 0; q < 4; ++q)
+    if (block.live >> (4 * q) & 0xF) mask |= static_cast<LaneMask>(0xF << (4 * q));
+  LaneIo io;
+  io.uniforms = uniforms;
+  io.textures = textures;
+  io.block = &block;
+  const LaneMask discarded = execute(*fragment_, Stage::Fragment, mask, io);
+  block.live &= static_cast<LaneMask>(~discarded);
+}
+
+std::string dump_ir(const Program& program) {
+  const auto* p = dynamic_cast<const LinkedProgram*>(&program);
+  if (!p) return {};
+  std::string out;
+  if (p->vertex_) out += "; vertex shader\n" + ir::dump(p->vertex_->code);
+  if (p->fragment_) out += "; fragment shader\n" + ir::dump(p->fragment_->code);
+  return out;
+}
+
+}  // namespace pineda::shader

@@ -1,0 +1,43 @@
+// The Program that link() returns: the interface tables and each stage's code.
+#pragma once
+#include <optional>
+#include <set>
+#include <string>
+
+#include "shader/execute.h"
+#include "shader/program.h"
+
+namespace pineda::shader {
+
+class LinkedProgram final : public Program {
+ public:
+  std::vector<Attribute> attributes_;
+  std::vector<Uniform> uniforms_;
+  std::vector<Varying> varyings_;
+  int input_slots_ = 0;
+  int varying_floats_ = 0;
+  int uniform_floats_ = 0;
+  bool writes_point_size_ = false;
+  bool writes_depth_ = false;
+  bool uses_discard_ = false;
+  int draw_buffers_ = 0;
+  std::set<std::string> reads_;
+  std::optional<StageCode> vertex_;
+  std::optional<StageCode> fragment_;
+
+  const std::vector<Attribute>& attributes() const override { return attributes_; }
+  const std::vector<Uniform>& uniforms() const override { return uniforms_; }
+  const std::vector<Varying>& varyings() const override { return varyings_; }
+  int input_slots() const override { return input_slots_; }
+  int varying_floats() const override { return varying_floats_; }
+  int uniform_floats() const override { return uniform_floats_; }
+  bool writes_point_size() const override { return writes_point_size_; }
+  bool writes_depth() const override { return writes_depth_; }
+  bool uses_discard() const override { return uses_discard_; }
+  int draw_buffers_written() const override { return draw_buffers_; }
+  bool reads(const char* builtin) const override { return reads_.count(builtin) != 0; }
+  void run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const override;
+  void run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const override;
+};
+
+}  // namespace pineda::shader

@@ -1,0 +1,313 @@
+#include "shader/optimize.h"
+
+#include <algorithm>
+#include <climits>
+#include <functional>
+
+namespace pineda::shader {
+
+using ir::Inst;
+using ir::kNone;
+using ir::Op;
+using ir::Operand;
+
+namespace {
+
+bool is_structure(Op op) { return op <= Op::Discard; }
+
+// Calls f(Operand&) for every value an instruction reads.
+template <class F>
+void for_each_use(ir::Code& code, Inst& in, F f) {
+  if (in.op == Op::Texture) {
+    ir::TextureLookup& t = code.textures[in.i0];
+    f(t.sampler);
+    for (Operand& c : t.coord) f(c);
+    if (t.lod != kNone) f(t.lod);
+    return;
+  }
+  if (in.a != kNone) f(in.a);
+  if (in.b != kNone) f(in.b);
+  if (in.c != kNone) f(in.c);
+}
+
+template <class F>
+void for_each_def(ir::Code& code, Inst& in, F f) {
+  if (in.op == Op::Texture) {
+    for (Operand& d : code.textures[in.i0].dst) f(d);
+    return;
+  }
+  if (in.d != kNone) f(in.d);
+}
+
+struct RegInfo {
+  int defs = 0;
+  int def_pc = -1;
+  std::vector<int> use_pcs;
+  bool pinned = false;  // read or written through a dynamic index
+};
+
+struct Analysis {
+  std::vector<RegInfo> regs;
+  std::vector<int> region;  // per instruction
+  std::vector<int> parent;  // per region
+  bool inside(int r, int ancestor) const {
+    for (; r >= 0; r = parent[r])
+      if (r == ancestor) return true;
+    return false;
+  }
+  bool promotable(int reg) const {
+    const RegInfo& info = regs[reg];
+    if (info.defs != 1 || info.pinned) return false;
+    for (int pc : info.use_pcs)
+      if (pc <= info.def_pc || !inside(region[pc], region[info.def_pc])) return false;
+    return true;
+  }
+};
+
+Analysis analyze(ir::Code& code) {
+  Analysis an;
+  an.regs.assign(code.registers, RegInfo{});
+  an.region.resize(code.insts.size());
+  an.parent.push_back(-1);
+  std::vector<int> stack{0};
+  auto push = [&] {
+    an.parent.push_back(stack.back());
+    stack.push_back(static_cast<int>(an.parent.size() - 1));
+  };
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    Inst& in = code.insts[pc];
+    if (in.op == Op::Else || in.op == Op::EndIf || in.op == Op::LoopEnd || in.op == Op::FuncEnd ||
+        in.op == Op::ContinuePoint)
+      stack.pop_back();
+    an.region[pc] = stack.back();
+    if (in.op == Op::IfBegin || in.op == Op::Else || in.op == Op::LoopBegin || in.op == Op::FuncBegin ||
+        in.op == Op::ContinuePoint)
+      push();
+    for_each_def(code, in, [&](Operand& d) {
+      an.regs[d].defs++;
+      an.regs[d].def_pc = static_cast<int>(pc);
+    });
+    for_each_use(code, in, [&](Operand& o) {
+      if (o >= 0) an.regs[o].use_pcs.push_back(static_cast<int>(pc));
+    });
+    if (in.op == Op::Gather || in.op == Op::Scatter)
+      for (int r = in.i0; r <= in.i0 + in.i1 && r < code.registers; ++r) {
+        an.regs[r].pinned = true;
+        an.regs[r].use_pcs.push_back(static_cast<int>(pc));
+        if (in.op == Op::Scatter) an.regs[r].defs += 2;
+      }
+  }
+  return an;
+}
+
+void replace_uses(ir::Code& code, Operand from, Operand to) {
+  for (Inst& in : code.insts)
+    for_each_use(code, in, [&](Operand& o) {
+      if (o == from) o = to;
+    });
+}
+
+bool removable(Op op) {
+  return ir::op_is_pure_arith(op) || op == Op::LoadUniform || op == Op::GatherUniform || op == Op::Gather ||
+         op == Op::LoadInput || op == Op::LoadVarying || op == Op::LoadFragCoord || op == Op::LoadFrontFacing ||
+         op == Op::LoadPointCoord || op == Op::Texture || op == Op::Ddx || op == Op::Ddy;
+}
+
+bool fold(ir::Code& code, Inst& in) {
+  const int n = ir::op_arity(in.op);
+  if (n == 0 || !ir::op_is_pure_arith(in.op)) return false;
+  auto is_k = [&](Operand o, float v) { return ir::is_const(o) && code.const_value(o) == v; };
+  auto to_mov = [&](Operand src) {
+    in.op = Op::Mov;
+    in.a = src;
+    in.b = in.c = kNone;
+    in.i1 = 0;
+    return true;
+  };
+  if (in.op == Op::Mov) return false;
+  bool all_const = ir::is_const(in.a) && (n < 2 || ir::is_const(in.b)) && (n < 3 || ir::is_const(in.c));
+  if (all_const) {
+    float v;
+    if (n == 1) v = ir::eval_unary(in.op, code.const_value(in.a));
+    else if (n == 2) v = ir::eval_binary(in.op, code.const_value(in.a), code.const_value(in.b));
+    else v = ir::eval_ternary(in.op, code.const_value(in.a), code.const_value(in.b), code.const_value(in.c));
+    return to_mov(code.constant(v));
+  }
+  switch (in.op) {
+    case Op::Add:
+      if (is_k(in.a, 0.0f)) return to_mov(in.b);
+      if (is_k(in.b, 0.0f)) return to_mov(in.a);
+      break;
+    case Op::Sub:
+      if (is_k(in.b, 0.0f)) return to_mov(in.a);
+      break;
+    case Op::Mul:
+      if (is_k(in.a, 1.0f)) return to_mov(in.b);
+      if (is_k(in.b, 1.0f)) return to_mov(in.a);
+      break;
+    case Op::Div:
+      if (is_k(in.b, 1.0f)) return to_mov(in.a);
+      break;
+    case Op::Select:
+      if (ir::is_const(in.a)) return to_mov(code.const_value(in.a) != 0.0f ? in.b : in.c);
+      if (in.b == in.c) return to_mov(in.b);
+      break;
+    case Op::Mad:
+      if (is_k(in.c, 0.0f)) {
+        in.op = Op::Mul;
+        in.c = kNone;
+        return true;
+      }
+      if (is_k(in.a, 1.0f) || is_k(in.b, 1.0f)) {
+        Operand other = is_k(in.a, 1.0f) ? in.b : in.a;
+        in.op = Op::Add;
+        in.a = other;
+        in.b = in.c;
+        in.c = kNone;
+        return true;
+      }
+      break;
+    default:
+      break;
+  }
+  return false;
+}
+
+bool pass(ir::Code& code) {
+  bool changed = false;
+  for (Inst& in : code.insts) changed |= fold(code, in);
+
+  Analysis an = analyze(code);
+  std::vector<bool> dead(code.insts.size(), false);
+  // Copy propagation: a register that holds one value everywhere it is read takes the place
+  // of its copies.
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    Inst& in = code.insts[pc];
+    if (in.op != Op::Mov || in.d == kNone) continue;
+    if (!an.promotable(in.d)) continue;
+    if (!(ir::is_const(in.a) || (in.a >= 0 && an.promotable(in.a)))) continue;
+    if (an.regs[in.d].use_pcs.empty()) continue;
+    replace_uses(code, in.d, in.a);
+    dead[pc] = true;
+    changed = true;
+    an = analyze(code);
+  }
+  // A variable's zero initialisation is dropped when its one real assignment follows in the
+  // same region with no read in between.
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    Inst& in = code.insts[pc];
+    if (dead[pc] || in.op != Op::Mov || in.i1 != 1 || in.d == kNone) continue;
+    const RegInfo& info = an.regs[in.d];
+    if (info.defs != 2 || info.pinned) continue;
+    int other = -1;
+    for (size_t q = pc + 1; q < code.insts.size(); ++q)
+      if (code.insts[q].d == in.d && !dead[q]) {
+        other = static_cast<int>(q);
+        break;
+      }
+    if (other < 0 || an.region[other] != an.region[pc]) continue;
+    bool read_between = false;
+    for (int u : info.use_pcs) read_between = read_between || u <= other;
+    if (read_between) continue;
+    dead[pc] = true;
+    changed = true;
+  }
+  // Dead code.
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    Inst& in = code.insts[pc];
+    if (dead[pc] || !removable(in.op)) continue;
+    bool used = false;
+    for_each_def(code, in, [&](Operand& d) { used = used || !an.regs[d].use_pcs.empty() || an.regs[d].pinned; });
+    if (!used) {
+      dead[pc] = true;
+      changed = true;
+    }
+  }
+  // t = op ...; v = mov t  becomes  v = op ...
+  for (size_t pc = 1; pc < code.insts.size(); ++pc) {
+    Inst& mov = code.insts[pc];
+    Inst& def = code.insts[pc - 1];
+    if (dead[pc] || dead[pc - 1] || mov.op != Op::Mov || mov.i1 == 1 || mov.a < 0 || def.d != mov.a) continue;
+    if (def.op == Op::Texture || is_structure(def.op) || def.op == Op::Scatter) continue;
+    const RegInfo& t = an.regs[mov.a];
+    if (t.defs != 1 || t.pinned || t.use_pcs.size() != 1 || an.region[pc] != an.region[pc - 1]) continue;
+    if (an.regs[mov.d].pinned) continue;
+    def.d = mov.d;
+    dead[pc] = true;
+    changed = true;
+  }
+  if (changed) {
+    std::vector<Inst> kept;
+    for (size_t pc = 0; pc < code.insts.size(); ++pc)
+      if (!dead[pc]) kept.push_back(code.insts[pc]);
+    code.insts.swap(kept);
+  }
+  return changed;
+}
+
+void compact_registers(ir::Code& code) {
+  std::vector<bool> used(code.registers, false);
+  for (Inst& in : code.insts) {
+    for_each_def(code, in, [&](Operand& d) { used[d] = true; });
+    for_each_use(code, in, [&](Operand& o) {
+      if (o >= 0) used[o] = true;
+    });
+    if (in.op == Op::Gather || in.op == Op::Scatter)
+      for (int r = in.i0; r <= in.i0 + in.i1 && r < code.registers; ++r) used[r] = true;
+  }
+  std::vector<int> remap(code.registers, -1);
+  int next = 0;
+  for (int r = 0; r < code.registers; ++r)
+    if (used[r]) remap[r] = next++;
+  for (Inst& in : code.insts) {
+    auto fix = [&](Operand& o) {
+      if (o >= 0) o = remap[o];
+    };
+    for_each_def(code, in, fix);
+    for_each_use(code, in, fix);
+    if (in.op == Op::Gather || in.op == Op::Scatter) in.i0 = remap[in.i0];
+  }
+  code.registers = next;
+}
+
+}  // namespace
+
+void fix_jumps(ir::Code& code) {
+  std::vector<int> stack;
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    Inst& in = code.insts[pc];
+    const int here = static_cast<int>(pc);
+    switch (in.op) {
+      case Op::IfBegin: case Op::LoopBegin: case Op::FuncBegin:
+        stack.push_back(here);
+        break;
+      case Op::Else:
+        code.insts[stack.back()].i0 = here;
+        stack.back() = here;
+        break;
+      case Op::EndIf:
+        code.insts[stack.back()].i0 = here;
+        stack.pop_back();
+        break;
+      case Op::LoopEnd:
+        code.insts[stack.back()].i0 = here;
+        in.i0 = stack.back() + 1;
+        stack.pop_back();
+        break;
+      case Op::FuncEnd:
+        stack.pop_back();
+        break;
+      default:
+        break;
+    }
+  }
+}
+
+void optimize(ir::Code& code) {
+  for (int round = 0; round < 32 && pass(code); ++round) {
+  }
+  compact_registers(code);
+  fix_jumps(code);
+}
+
+}  // namespace pineda::shader
