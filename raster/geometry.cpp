@@ -84,6 +84,12 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
     volume_.attrs = varying_count_;
     volume_.user_planes = 0;  // gl_ClipVertex is not supported: user planes do not clip
     varying_planes_.assign(static_cast<size_t>(varying_count_) + 1, Plane{});
+    if (s.flat_shading)
+      for (const shader::Varying& v : shader_->program->varyings()) {
+        if (v.name != "gl_Color" && v.name != "gl_SecondaryColor") continue;
+        flat_ranges_.emplace_back(v.offset, v.components);
+        if (v.back_offset >= 0) flat_ranges_.emplace_back(v.back_offset, v.components);
+      }
   }
 }
 
@@ -231,7 +237,17 @@ void GeometryStage::point(const ClipVertex& v) {
 
 void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) {
   if (!active_ || !finite_position(a) || !finite_position(b)) return;
-  draw_line(to_clip(a), to_clip(b), style_for(provoking, false));
+  ClipVert ca = to_clip(a), cb = to_clip(b);
+  flatten_varyings(ca, provoking);
+  flatten_varyings(cb, provoking);
+  draw_line(ca, cb, style_for(provoking, false));
+}
+
+void GeometryStage::flatten_varyings(ClipVert& v, const ClipVertex& provoking) const {
+  if (flat_ranges_.empty()) return;
+  const float* from = varyings_ + (&provoking - vertex_base_) * varying_count_;
+  for (const auto& [offset, count] : flat_ranges_)
+    for (int i = offset; i < offset + count && i < varying_count_; ++i) v.attr[i] = from[i];
 }
 
 void GeometryStage::use_back_varyings(ClipVert& v) const {
@@ -263,6 +279,7 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
     if (!finite_position(*p)) return;
   in_.clear();
   for (const ClipVertex* p : v) in_.push_back(to_clip(*p));
+  for (ClipVert& c : in_) flatten_varyings(c, provoking);
   clip_polygon(in_, volume_, clipped_, scratch_);
   if (clipped_.size() < 3) return;
 

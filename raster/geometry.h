@@ -51,6 +51,7 @@ class GeometryStage final : public PrimitiveSink {
   float point_size_of(const ClipVertex& v) const;  // derived, before rounding
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
   void use_back_varyings(ClipVert& v) const;
+  void flatten_varyings(ClipVert& v, const ClipVertex& provoking) const;
 
   Scene& scene_;
   std::function<void()> on_full_;
@@ -71,6 +72,8 @@ class GeometryStage final : public PrimitiveSink {
   const ClipVertex* vertex_base_ = nullptr;
   const float* varyings_ = nullptr;
   int varying_count_ = 0;
+  // GL_FLAT: the colour varyings (offset, count) that take the provoking vertex's values.
+  std::vector<std::pair<int, int>> flat_ranges_;
   // The primitive being set up: its varying planes, then one record {x, y, size} of a point
   // (gl_PointCoord), which the scene stores with it.
   mutable std::vector<Plane> varying_planes_;

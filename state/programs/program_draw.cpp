@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "raster/draw_record.h"
 #include "raster/shader_textures.h"
@@ -126,22 +127,61 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
 
 }  // namespace
 
+namespace {
+
+// Where a varying of the conventional (fixed-function) interface lives in a ClipVertex.
+struct ConventionalVarying {
+  float* front = nullptr;
+  float* back = nullptr;
+  int components = 0;
+};
+
+ConventionalVarying conventional(raster::ClipVertex& v, std::string_view name) {
+  if (name == "gl_Color") return {v.color, v.back_color, 4};
+  if (name == "gl_SecondaryColor") return {v.secondary, v.back_secondary, 3};
+  if (name == "gl_FogFragCoord") return {&v.fog, nullptr, 1};
+  if (name.starts_with("gl_TexCoord[") && name.size() == 14 && name[13] == ']') {
+    const int unit = name[12] - '0';
+    if (unit >= 0 && unit < raster::kMaxTextureUnits) return {v.texcoord[unit], nullptr, 4};
+  }
+  return {};
+}
+
+const LinkedProgram* program_in_use(Context& ctx) {
+  const LinkedProgram* exec = ctx.programs.active();
+  return exec && exec->program ? exec : nullptr;
+}
+
+// The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
+std::shared_ptr<raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec) {
+  if (!samplers_consistent(exec, nullptr)) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  auto draw = std::make_shared<raster::ShaderDraw>();
+  draw->program = exec.program;
+  draw->uniforms = exec.values;
+  fill_builtin_uniforms(ctx, *exec.program, draw->uniforms);
+  draw->two_side = ctx.programs.two_side;
+  return draw;
+}
+
+void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Primitive primitive,
+                       std::span<const raster::ClipVertex> vertices, std::span<const uint32_t> indices,
+                       const float* varyings) {
+  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, vertices, indices);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, vertices, indices, varyings); });
+}
+
+}  // namespace
+
 bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<const raster::VertexInput> vertices,
                        std::span<const uint32_t> indices, AttribSource source) {
-  const LinkedProgram* exec = ctx.programs.active();
-  if (!exec || !exec->program) return false;
-  if (!samplers_consistent(*exec, nullptr)) {
-    ctx.record_error(GL_INVALID_OPERATION);
-    return true;
-  }
-  if (!exec->vertex_shader || !exec->fragment_shader) return true;  // one-stage programs: not drawn yet
+  const LinkedProgram* exec = program_in_use(ctx);
+  if (!exec || !exec->vertex_shader || !exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
-
-  auto shader_draw = std::make_shared<raster::ShaderDraw>();
-  shader_draw->program = exec->program;
-  shader_draw->uniforms = exec->values;
-  fill_builtin_uniforms(ctx, program, shader_draw->uniforms);
-  shader_draw->two_side = ctx.programs.two_side;
+  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  if (!shader_draw) return true;
 
   raster::DrawState state = ctx.draw_state;
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
@@ -163,12 +203,82 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
                     ctx.draw_state.point_size, ctx.transformed, varyings);
   const raster::PointParameters& pp = state.point_params;
   for (raster::ClipVertex& v : ctx.transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
+  draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
+  return true;
+}
 
-  if (ctx.render_mode.mode != GL_RENDER) {
-    select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
+bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
+                             std::vector<raster::ClipVertex>& out) {
+  const LinkedProgram* exec = program_in_use(ctx);
+  if (!exec || !exec->vertex_shader || exec->fragment_shader) return false;
+  const shader::Program& program = *exec->program;
+  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  if (!shader_draw) {
+    out.clear();
     return true;
   }
-  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices, varyings.data()); });
+  raster::DrawState state = ctx.draw_state;
+  snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
+  const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
+  const raster::UnitTextureAccess vertex_textures(textures_record.state.texture_units);
+  const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
+  std::vector<float>& varyings = ctx.programs.draw_varyings;
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), &vertex_textures, vertices, source, shader_size,
+                    ctx.draw_state.point_size, out, varyings);
+  const int nv = program.varying_floats();
+  const raster::PointParameters& pp = ctx.draw_state.point_params;
+  for (size_t i = 0; i < out.size(); ++i) {
+    raster::ClipVertex& v = out[i];
+    const float* in = varyings.data() + i * static_cast<size_t>(nv);
+    bool has_back_color = false, has_back_secondary = false;
+    for (const shader::Varying& var : program.varyings()) {
+      const ConventionalVarying c = conventional(v, var.name);
+      const int n = std::min(c.components, var.components);
+      for (int k = 0; k < n && var.offset + k < nv; ++k) c.front[k] = in[var.offset + k];
+      if (!c.back || var.back_offset < 0) continue;
+      for (int k = 0; k < n && var.back_offset + k < nv; ++k) c.back[k] = in[var.back_offset + k];
+      (c.back == v.back_color ? has_back_color : has_back_secondary) = true;
+    }
+    // GL 2.0 2.15.3: the colours are clamped to [0, 1] before rasterization.
+    for (float* c : {v.color, v.back_color}) std::transform(c, c + 4, c, [](float x) { return std::clamp(x, 0.f, 1.f); });
+    for (float* c : {v.secondary, v.back_secondary}) std::transform(c, c + 3, c, [](float x) { return std::clamp(x, 0.f, 1.f); });
+    if (!has_back_color || !ctx.programs.two_side) std::copy(v.color, v.color + 4, v.back_color);
+    if (!has_back_secondary || !ctx.programs.two_side) std::copy(v.secondary, v.secondary + 3, v.back_secondary);
+    v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
+  }
+  ctx.draw_state.point_params.size_per_vertex = true;  // the sizes are the shader's or glPointSize
+  return true;
+}
+
+bool draw_fragment_program_only(Context& ctx, raster::Primitive primitive, std::span<const raster::ClipVertex> vertices,
+                                std::span<const uint32_t> indices) {
+  const LinkedProgram* exec = program_in_use(ctx);
+  if (!exec || exec->vertex_shader || !exec->fragment_shader) return false;
+  const shader::Program& program = *exec->program;
+  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  if (!shader_draw) return true;
+  raster::DrawState state = ctx.draw_state;
+  snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
+  state.shader = shader_draw;
+  const int nv = program.varying_floats();
+  std::vector<float>& varyings = ctx.programs.draw_varyings;
+  varyings.assign(vertices.size() * static_cast<size_t>(nv), 0.f);
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    raster::ClipVertex v = vertices[i];
+    float* out = varyings.data() + i * static_cast<size_t>(nv);
+    for (const shader::Varying& var : program.varyings()) {
+      const ConventionalVarying c = conventional(v, var.name);
+      const int n = std::min(c.components, var.components);
+      for (int k = 0; k < n && var.offset + k < nv; ++k) out[var.offset + k] = c.front[k];
+      if (c.components == 3 && var.components == 4 && var.offset + 3 < nv) out[var.offset + 3] = 1.f;
+      if (!c.back || var.back_offset < 0) continue;
+      for (int k = 0; k < n && var.back_offset + k < nv; ++k) out[var.back_offset + k] = c.back[k];
+      if (c.components == 3 && var.components == 4 && var.back_offset + 3 < nv) out[var.back_offset + 3] = 1.f;
+    }
+  }
+  // The fixed-function stage computed both colours; the back ones apply with two-sided lighting.
+  shader_draw->two_side = ctx.lighting.enabled && ctx.lighting.two_side;
+  draw_or_feed_back(ctx, state, primitive, vertices, indices, varyings.data());
   return true;
 }
 
