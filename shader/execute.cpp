@@ -50,9 +50,12 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
   std::unique_ptr<float[]> heap_regs;
   float* regs = stack_regs;
   if (code.registers > kStackRegisters) {
-    heap_regs.reset(new float[static_cast<size_t>(code.registers) * kLanes]());
+    heap_regs.reset(new float[static_cast<size_t>(code.registers) * kLanes]);
     regs = heap_regs.get();
   }
+  // Lanes a masked write skips keep what they held: start from zeros, so that every run of
+  // the same inputs gives the same values even where GLSL leaves them undefined.
+  std::memset(regs, 0, sizeof(float) * kLanes * static_cast<size_t>(code.registers));
   Frame stack_frames[kStackFrames];
   std::unique_ptr<Frame[]> heap_frames;
   Frame* frames = stack_frames;

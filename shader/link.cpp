@@ -16,6 +16,11 @@ namespace pineda::shader {
 
 namespace {
 
+// GL_MAX_VERTEX_UNIFORM_COMPONENTS + GL_MAX_FRAGMENT_UNIFORM_COMPONENTS (1024 each).
+constexpr int kMaxUserUniformFloats = 2048;
+// Registers one invocation may use (64 bytes each).
+constexpr int kMaxRunRegisters = 1 << 14;
+
 Type reported_type(const VarType& t) {
   Type r;
   r.base = t.base;
@@ -162,6 +167,14 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
                        std::to_string(kMaxVaryingFloats) + ")\n";
     return result;
   }
+  int user_uniform_floats = 0;
+  for (const UniformVar& u : iface.uniforms)
+    if (!u.builtin) user_uniform_floats += u.type.size();
+  if (user_uniform_floats > kMaxUserUniformFloats) {
+    result.info_log += "error: too many uniform components (" + std::to_string(user_uniform_floats) +
+                       ", at most " + std::to_string(kMaxUserUniformFloats) + ")\n";
+    return result;
+  }
   if (!assign_locations(iface, bindings, linked_program->attributes_, result.info_log)) return result;
   if (!vs)
     for (VaryingVar& v : iface.varyings)
@@ -191,6 +204,11 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
   for (auto* stage : {&linked_program->vertex_, &linked_program->fragment_})
     if (*stage) {
       optimize((*stage)->code);
+      if ((*stage)->code.registers > kMaxRunRegisters) {
+        result.info_log += "error: shader too large (" + std::to_string((*stage)->code.registers) +
+                           " registers after optimization)\n";
+        return result;
+      }
       (*stage)->prepare();
     }
   const char* dump_env = std::getenv("PINEDA_DUMP_IR");

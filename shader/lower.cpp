@@ -39,6 +39,10 @@ struct LowerError {
 
 constexpr int kMaxTextureCoords = 8;
 constexpr int kMaxInlineDepth = 64;
+// Bounds on what one stage may lower to, so that huge arrays or an explosion of inlined
+// calls end in a link error rather than exhausting memory.
+constexpr int kMaxInstructions = 1 << 18;
+constexpr int kMaxRegisters = 1 << 18;
 
 bool starts_with_gl(const std::string& name) { return name.compare(0, 3, "gl_") == 0; }
 
@@ -193,7 +197,7 @@ BuiltinAttribute builtin_attribute(const std::string& name) {
   if (name == "gl_Color") return BuiltinAttribute::Color;
   if (name == "gl_SecondaryColor") return BuiltinAttribute::SecondaryColor;
   if (name == "gl_FogCoord") return BuiltinAttribute::FogCoord;
-  if (name.compare(0, 17, "gl_MultiTexCoord") == 0 && name.size() == 17 && name[16] >= '0' && name[16] <= '7')
+  if (name.compare(0, 16, "gl_MultiTexCoord") == 0 && name.size() == 17 && name[16] >= '0' && name[16] <= '7')
     return static_cast<BuiltinAttribute>(static_cast<int>(BuiltinAttribute::MultiTexCoord0) + (name[16] - '0'));
   fail("error: unsupported built-in vertex input " + name + "\n");
 }
@@ -230,6 +234,14 @@ class Lowerer {
     prologue_.push_back(ir::Inst{op, d, a, kNone, kNone, i0, i1});
   }
   Operand k(float v) { return code_.constant(v); }
+  int alloc(int n) {
+    if (n < 0 || code_.registers > kMaxRegisters - n) fail("error: shader too large (too many values)\n");
+    return code_.new_registers(n);
+  }
+  void check_size() const {
+    if (code_.insts.size() + prologue_.size() > static_cast<size_t>(kMaxInstructions))
+      fail("error: shader too large (too many instructions after inlining)\n");
+  }
   Val copy(const Val& v) {
     Val out;
     for (Operand o : v) out.push_back(ir::is_const(o) ? o : emit(Op::Mov, o));
@@ -312,7 +324,7 @@ int Lowerer::registers_for(std::unordered_map<long long, int>& map, TIntermSymbo
                            bool init) {
   auto it = map.find(s->getId());
   if (it != map.end()) return it->second;
-  int base = code_.new_registers(t.size());
+  int base = alloc(t.size());
   map.emplace(s->getId(), base);
   if (init)
     for (int i = 0; i < t.size(); ++i) prologue(Op::Mov, base + i, 0, k(0.0f), 1);
@@ -331,7 +343,7 @@ Val Lowerer::builtin_attribute_value(const std::string& name) {
   int base;
   if (it == interface_vars_.end()) {
     VarType t = VarType::vec(4);
-    base = code_.new_registers(4);
+    base = alloc(4);
     iface_.attributes.push_back(AttributeVar{name, t, iface_.input_slots, builtin_attribute(name)});
     for (int c = 0; c < 4; ++c) prologue(Op::LoadInput, base + c, iface_.input_slots * 4 + c);
     iface_.input_slots += 1;
@@ -379,7 +391,7 @@ Place Lowerer::symbol_place(TIntermSymbol* s) {
   // stored by the epilogue (outputs).
   auto it = interface_vars_.find(name);
   if (it != interface_vars_.end()) return whole(Place::Regs, it->second.second, it->second.first);
-  int base = code_.new_registers(t.size());
+  int base = alloc(t.size());
   interface_vars_[name] = {t, base};
   const int n = t.size();
   switch (storage) {
@@ -422,7 +434,7 @@ Place Lowerer::symbol_place(TIntermSymbol* s) {
 
 Place Lowerer::materialize(const Place& p) {
   Val v = load(p);
-  int base = code_.new_registers(static_cast<int>(v.size()));
+  int base = alloc(static_cast<int>(v.size()));
   for (size_t i = 0; i < v.size(); ++i) emit_to(base + static_cast<int>(i), Op::Mov, v[i]);
   return whole(Place::Regs, base, p.type);
 }
@@ -556,6 +568,7 @@ Val Lowerer::constant(const glslang::TConstUnionArray& a, int n) {
 }
 
 Val Lowerer::rv(TIntermTyped* node) {
+  check_size();
   if (TIntermConstantUnion* c = node->getAsConstantUnion())
     return constant(c->getConstArray(), var_type(node->getType()).size());
   if (TIntermSymbol* s = node->getAsSymbolNode()) return load(symbol_place(s));
@@ -871,6 +884,11 @@ Val Lowerer::aggregate(TIntermAggregate* a) {
   if (op == glslang::EOpTexture || op == glslang::EOpTextureProj || op == glslang::EOpTextureLod ||
       op == glslang::EOpTextureProjLod)
     return texture(a);
+  if (op == glslang::EOpComma) {
+    Val last;
+    for (TIntermNode* n : a->getSequence()) last = rv(n->getAsTyped());
+    return last;
+  }
   if (op == glslang::EOpFtransform) {
     Val m = builtin_uniform("gl_ModelViewProjectionMatrix", VarType::mat(4, 4));
     Val v = builtin_attribute_value("gl_Vertex");
@@ -967,7 +985,7 @@ Val Lowerer::select(TIntermSelection* s) {
     return out;
   }
   const int n = rt.size();
-  int base = code_.new_registers(n);
+  int base = alloc(n);
   emit_control(Op::IfBegin, c);
   Val a = rv(t);
   for (int i = 0; i < n; ++i) emit_to(base + i, Op::Mov, a[i]);
@@ -992,7 +1010,7 @@ Val Lowerer::call(TIntermAggregate* a) {
   for (size_t i = 0; i < params.size() && i < args.size(); ++i) {
     TIntermSymbol* p = params[i]->getAsSymbolNode();
     const VarType t = var_type(p->getType());
-    const int base = code_.new_registers(t.size());
+    const int base = alloc(t.size());
     scope[p->getId()] = base;
     const auto q = p->getQualifier().storage;
     TIntermTyped* arg = args[i]->getAsTyped();
@@ -1011,10 +1029,10 @@ Val Lowerer::call(TIntermAggregate* a) {
     }
   }
   scopes_.push_back(std::move(scope));
-  const VarType rt = var_type(def->getType());
   Call ctx;
   if (def->getType().getBasicType() != glslang::EbtVoid) {
-    const int base = code_.new_registers(rt.size());
+    const VarType rt = var_type(def->getType());
+    const int base = alloc(rt.size());
     for (int c = 0; c < rt.size(); ++c) ctx.result.push_back(base + c);
   }
   calls_.push_back(ctx);
@@ -1036,7 +1054,7 @@ void Lowerer::function_body(TIntermAggregate* def, bool main) {
   for (TIntermSymbol* s : locals) {
     if (scopes_.back().count(s->getId())) continue;
     const VarType t = var_type(s->getType());
-    const int base = code_.new_registers(t.size());
+    const int base = alloc(t.size());
     scopes_.back()[s->getId()] = base;
     for (int c = 0; c < t.size(); ++c) emit_to(base + c, Op::Mov, k(0.0f), kNone, kNone, 0, 1);
   }
@@ -1048,15 +1066,17 @@ void Lowerer::function_body(TIntermAggregate* def, bool main) {
     TIntermBranch* last = seq->getSequence().back()->getAsBranchNode();
     if (last && last->getFlowOp() == glslang::EOpReturn) tail = last;
   }
-  Call& ctx = calls_.back();
-  ctx.frame = returns > (tail ? 1 : 0);
-  if (ctx.frame) emit_control(Op::FuncBegin);
+  // calls_ grows while the body lowers (nested calls): index it, never hold a reference.
+  const size_t me = calls_.size() - 1;
+  const bool frame = returns > (tail ? 1 : 0);
+  calls_[me].frame = frame;
+  if (frame) emit_control(Op::FuncBegin);
   if (seq && (seq->getOp() == glslang::EOpSequence || seq->getOp() == glslang::EOpScope)) {
     for (TIntermNode* n : seq->getSequence()) {
       if (n == tail) {
         if (tail->getExpression()) {
           Val v = rv(tail->getExpression());
-          for (size_t i = 0; i < ctx.result.size(); ++i) emit_to(ctx.result[i], Op::Mov, v[i]);
+          for (size_t i = 0; i < calls_[me].result.size(); ++i) emit_to(calls_[me].result[i], Op::Mov, v[i]);
         }
         continue;
       }
@@ -1065,12 +1085,13 @@ void Lowerer::function_body(TIntermAggregate* def, bool main) {
   } else {
     stmt(body);
   }
-  if (ctx.frame) emit_control(Op::FuncEnd);
+  if (frame) emit_control(Op::FuncEnd);
   (void)main;
 }
 
 void Lowerer::stmt(TIntermNode* node) {
   if (!node) return;
+  check_size();
   if (TIntermAggregate* a = node->getAsAggregate()) {
     switch (a->getOp()) {
       case glslang::EOpSequence: case glslang::EOpScope: case glslang::EOpNull:
@@ -1117,10 +1138,10 @@ void Lowerer::stmt(TIntermNode* node) {
       case glslang::EOpBreak: emit_control(Op::Break); return;
       case glslang::EOpContinue: emit_control(Op::Continue); return;
       case glslang::EOpReturn: {
-        Call& ctx = calls_.back();
         if (b->getExpression()) {
           Val v = rv(b->getExpression());
-          for (size_t i = 0; i < ctx.result.size(); ++i) emit_to(ctx.result[i], Op::Mov, v[i]);
+          const Val& result = calls_.back().result;
+          for (size_t i = 0; i < result.size(); ++i) emit_to(result[i], Op::Mov, v[i]);
         }
         emit_control(Op::Return);
         return;

@@ -42,6 +42,7 @@ void for_each_def(ir::Code& code, Inst& in, F f) {
 struct RegInfo {
   int defs = 0;
   int def_pc = -1;
+  std::vector<int> def_pcs;
   std::vector<int> use_pcs;
   bool pinned = false;  // read or written through a dynamic index
 };
@@ -86,6 +87,7 @@ Analysis analyze(ir::Code& code) {
     for_each_def(code, in, [&](Operand& d) {
       an.regs[d].defs++;
       an.regs[d].def_pc = static_cast<int>(pc);
+      an.regs[d].def_pcs.push_back(static_cast<int>(pc));
     });
     for_each_use(code, in, [&](Operand& o) {
       if (o >= 0) an.regs[o].use_pcs.push_back(static_cast<int>(pc));
@@ -180,16 +182,28 @@ bool pass(ir::Code& code) {
   Analysis an = analyze(code);
   std::vector<bool> dead(code.insts.size(), false);
   // Copy propagation: a register that holds one value everywhere it is read takes the place
-  // of its copies.
+  // of its copies (chains resolve to the first source; one sweep, no re-analysis: a source
+  // stays valid at every use of its copy).
+  std::vector<Operand> replace(code.registers, kNone);
+  bool propagated = false;
+  auto resolve = [&](Operand o) {
+    while (o >= 0 && replace[o] != kNone) o = replace[o];
+    return o;
+  };
   for (size_t pc = 0; pc < code.insts.size(); ++pc) {
     Inst& in = code.insts[pc];
     if (in.op != Op::Mov || in.d == kNone) continue;
     if (!an.promotable(in.d)) continue;
     if (!(ir::is_const(in.a) || (in.a >= 0 && an.promotable(in.a)))) continue;
     if (an.regs[in.d].use_pcs.empty()) continue;
-    replace_uses(code, in.d, in.a);
+    replace[in.d] = resolve(in.a);
     dead[pc] = true;
-    changed = true;
+    propagated = true;
+  }
+  changed |= propagated;
+  if (propagated) {
+    for (Inst& in : code.insts)
+      for_each_use(code, in, [&](Operand& o) { o = resolve(o); });
     an = analyze(code);
   }
   // A variable's zero initialisation is dropped when its one real assignment follows in the
@@ -200,12 +214,9 @@ bool pass(ir::Code& code) {
     const RegInfo& info = an.regs[in.d];
     if (info.defs != 2 || info.pinned) continue;
     int other = -1;
-    for (size_t q = pc + 1; q < code.insts.size(); ++q)
-      if (code.insts[q].d == in.d && !dead[q]) {
-        other = static_cast<int>(q);
-        break;
-      }
-    if (other < 0 || an.region[other] != an.region[pc]) continue;
+    for (int q : info.def_pcs)
+      if (q != static_cast<int>(pc)) other = q;
+    if (other < static_cast<int>(pc) || dead[other] || an.region[other] != an.region[pc]) continue;
     bool read_between = false;
     for (int u : info.use_pcs) read_between = read_between || u <= other;
     if (read_between) continue;
@@ -245,20 +256,72 @@ bool pass(ir::Code& code) {
   return changed;
 }
 
-void compact_registers(ir::Code& code) {
-  std::vector<bool> used(code.registers, false);
-  for (Inst& in : code.insts) {
-    for_each_def(code, in, [&](Operand& d) { used[d] = true; });
-    for_each_use(code, in, [&](Operand& o) {
-      if (o >= 0) used[o] = true;
-    });
-    if (in.op == Op::Gather || in.op == Op::Scatter)
-      for (int r = in.i0; r <= in.i0 + in.i1 && r < code.registers; ++r) used[r] = true;
+// Linear-scan register allocation over live intervals in instruction order. A value that
+// crosses a loop's back edge (defined before the loop and read in it, or a variable assigned
+// in several places) lives through the whole loop. Registers read or written through a
+// dynamic index keep their order, first in the file, and are never shared.
+void allocate_registers(ir::Code& code) {
+  Analysis an = analyze(code);
+  const int n = code.registers;
+  std::vector<std::pair<int, int>> loops;
+  {
+    std::vector<int> open;
+    for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+      if (code.insts[pc].op == Op::LoopBegin) open.push_back(static_cast<int>(pc));
+      if (code.insts[pc].op == Op::LoopEnd) {
+        loops.emplace_back(open.back(), static_cast<int>(pc));
+        open.pop_back();
+      }
+    }
   }
-  std::vector<int> remap(code.registers, -1);
+  std::vector<int> first(n, INT_MAX), last(n, -1);
+  for (int r = 0; r < n; ++r) {
+    const RegInfo& info = an.regs[r];
+    for (int pc : info.def_pcs) first[r] = std::min(first[r], pc), last[r] = std::max(last[r], pc);
+    for (int pc : info.use_pcs) first[r] = std::min(first[r], pc), last[r] = std::max(last[r], pc);
+    if (last[r] < 0 || info.pinned) continue;
+    const bool single_value = an.promotable(r);
+    for (const auto& [b, e] : loops) {
+      bool inside = false;
+      for (int pc : info.use_pcs) inside = inside || (pc > b && pc < e);
+      for (int pc : info.def_pcs) inside = inside || (pc > b && pc < e);
+      if (!inside) continue;
+      if (!single_value) {
+        first[r] = std::min(first[r], b);
+        last[r] = std::max(last[r], e);
+      } else if (first[r] < b) {
+        last[r] = std::max(last[r], e);
+      }
+    }
+  }
+  std::vector<int> remap(n, -1);
   int next = 0;
-  for (int r = 0; r < code.registers; ++r)
-    if (used[r]) remap[r] = next++;
+  for (int r = 0; r < n; ++r)
+    if (an.regs[r].pinned) remap[r] = next++;
+  std::vector<int> order;
+  for (int r = 0; r < n; ++r)
+    if (!an.regs[r].pinned && last[r] >= 0) order.push_back(r);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return first[a] < first[b]; });
+  std::vector<std::pair<int, int>> active;  // (last pc, physical register), a min-heap on last
+  std::vector<int> free_regs;
+  auto later = [](const std::pair<int, int>& a, const std::pair<int, int>& b) { return a.first > b.first; };
+  for (int r : order) {
+    while (!active.empty() && active.front().first < first[r]) {
+      free_regs.push_back(active.front().second);
+      std::pop_heap(active.begin(), active.end(), later);
+      active.pop_back();
+    }
+    int phys;
+    if (!free_regs.empty()) {
+      phys = free_regs.back();
+      free_regs.pop_back();
+    } else {
+      phys = next++;
+    }
+    remap[r] = phys;
+    active.emplace_back(last[r], phys);
+    std::push_heap(active.begin(), active.end(), later);
+  }
   for (Inst& in : code.insts) {
     auto fix = [&](Operand& o) {
       if (o >= 0) o = remap[o];
@@ -306,7 +369,7 @@ void fix_jumps(ir::Code& code) {
 void optimize(ir::Code& code) {
   for (int round = 0; round < 32 && pass(code); ++round) {
   }
-  compact_registers(code);
+  allocate_registers(code);
   fix_jumps(code);
 }
 

@@ -103,3 +103,41 @@ struct VertexRun {
 };
 
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+
+// Runs a desktop fragment shader over 16 lanes with varyings `a` and `b` (vec4 each, lane
+// values from the given functions) and returns gl_FragColor[component][lane].
+struct ExprResult {
+  float c[4][kLanes];
+  LaneMask live;
+};
+using LaneFn = float (*)(int lane, int component);
+inline ExprResult run_fragment(const std::string& body, LaneFn a, LaneFn b = nullptr,
+                               const std::string& decls = "", Language lang = Language::Desktop) {
+  std::string version, rest = decls;
+  if (rest.compare(0, 8, "#version") == 0) {
+    version = rest.substr(0, rest.find('\n') + 1);
+    rest = rest.substr(version.size());
+  }
+  std::string src = version + (lang == Language::Es100 ? std::string("precision highp float;\n") : std::string()) +
+                    "varying vec4 a;\nvarying vec4 b;\n" + rest + "\nvoid main() {\n" + body + "\n}\n";
+  ExprResult r{};
+  auto p = link_ok("", src, lang);
+  if (!p) return r;
+  FragmentRun run(*p);
+  const Varying* va = find_varying(*p, "a");
+  const Varying* vb = find_varying(*p, "b");
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < kLanes; ++l) {
+      if (va) run.varyings[(va->offset + c) * kLanes + l] = a(l, c);
+      if (vb && b) run.varyings[(vb->offset + c) * kLanes + l] = b(l, c);
+    }
+  run.run(*p);
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < kLanes; ++l) r.c[c][l] = run.block.color[0][c][l];
+  r.live = run.block.live;
+  return r;
+}
+
+}  // namespace pineda::shader::test

@@ -1,0 +1,200 @@
+// Compile and link errors: glslang's info logs, ES against desktop rules, link checks.
+#include "tests/shader/shader_test_util.h"
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Compile, SyntaxErrorGivesGlslangLog) {
+  CompileResult r = compile(Stage::Fragment, Language::Desktop, {"void main() { gl_FragColor = vec4(1.0) }\n"});
+  EXPECT_EQ(r.shader, nullptr);
+  EXPECT_NE(r.info_log.find("ERROR: 0:1:"), std::string::npos) << r.info_log;
+  EXPECT_NE(r.info_log.find("syntax error"), std::string::npos) << r.info_log;
+}
+
+TEST(Compile, UndeclaredIdentifierNamed) {
+  CompileResult r = compile(Stage::Vertex, Language::Desktop, {"void main() {\n gl_Position = nothing;\n}\n"});
+  EXPECT_EQ(r.shader, nullptr);
+  EXPECT_NE(r.info_log.find("ERROR: 0:2: 'nothing' : undeclared identifier"), std::string::npos) << r.info_log;
+}
+
+TEST(Compile, SourcesAreConcatenated) {
+  CompileResult r = compile(Stage::Fragment, Language::Desktop, {"uniform vec4 c;\nvoid main() ", "{ gl_FragColor = c; }\n"});
+  EXPECT_NE(r.shader, nullptr) << r.info_log;
+}
+
+TEST(Compile, EsFragmentShaderNeedsFloatPrecision) {
+  const char* src = "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n";
+  CompileResult es = compile(Stage::Fragment, Language::Es100, {src});
+  EXPECT_EQ(es.shader, nullptr);
+  EXPECT_NE(es.info_log.find("precision"), std::string::npos) << es.info_log;
+  CompileResult es_ok = compile(Stage::Fragment, Language::Es100, {std::string("precision mediump float;\n") + src});
+  EXPECT_NE(es_ok.shader, nullptr) << es_ok.info_log;
+  CompileResult desktop = compile(Stage::Fragment, Language::Desktop, {src});
+  EXPECT_NE(desktop.shader, nullptr) << desktop.info_log;
+  // The ES vertex stage has a default float precision.
+  CompileResult vs = compile(Stage::Vertex, Language::Es100, {"attribute vec4 p;\nvoid main() { gl_Position = p; }\n"});
+  EXPECT_NE(vs.shader, nullptr) << vs.info_log;
+}
+
+TEST(Compile, VersionsAcceptedPerLanguage) {
+  const char* body = "void main() { gl_Position = vec4(0.0); }\n";
+  EXPECT_NE(compile(Stage::Vertex, Language::Desktop, {std::string("#version 110\n") + body}).shader, nullptr);
+  EXPECT_NE(compile(Stage::Vertex, Language::Desktop, {std::string("#version 120\n") + body}).shader, nullptr);
+  EXPECT_NE(compile(Stage::Vertex, Language::Es100, {std::string("#version 100\n") + body}).shader, nullptr);
+  CompileResult v130 = compile(Stage::Vertex, Language::Desktop, {std::string("#version 130\n") + body});
+  EXPECT_EQ(v130.shader, nullptr);
+  EXPECT_NE(v130.info_log.find("version 130"), std::string::npos) << v130.info_log;
+  EXPECT_EQ(compile(Stage::Vertex, Language::Es100, {std::string("#version 120\n") + body}).shader, nullptr);
+  EXPECT_EQ(compile(Stage::Vertex, Language::Desktop, {std::string("#version 100\n") + body}).shader, nullptr);
+}
+
+TEST(Compile, DesktopBuiltinsAbsentInEs) {
+  CompileResult es = compile(Stage::Vertex, Language::Es100, {"void main() { gl_Position = gl_Vertex; }\n"});
+  EXPECT_EQ(es.shader, nullptr);
+  EXPECT_NE(es.info_log.find("'gl_Vertex' : undeclared identifier"), std::string::npos) << es.info_log;
+  EXPECT_NE(compile(Stage::Vertex, Language::Desktop, {"void main() { gl_Position = gl_Vertex; }\n"}).shader, nullptr);
+}
+
+TEST(Compile, Glsl120FeaturesNeedVersion120) {
+  const char* src = "void main() { mat2x3 m = mat2x3(1.0); gl_FragColor = vec4(m[0], 1.0); }\n";
+  EXPECT_EQ(compile(Stage::Fragment, Language::Desktop, {src}).shader, nullptr);
+  EXPECT_NE(compile(Stage::Fragment, Language::Desktop, {std::string("#version 120\n") + src}).shader, nullptr);
+}
+
+TEST(Link, MissingMainIsALinkError) {
+  auto vs = compile_ok(Stage::Vertex, "void main() { gl_Position = vec4(0.0); }\n");
+  auto fs = compile_ok(Stage::Fragment, "vec4 helper() { return vec4(1.0); }\n");
+  LinkResult r = link(vs.get(), fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("Missing entry point"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, VaryingTypeMismatch) {
+  auto vs = compile_ok(Stage::Vertex, "varying vec3 v;\nvoid main() { v = vec3(1.0); gl_Position = vec4(0.0); }\n");
+  auto fs = compile_ok(Stage::Fragment, "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n");
+  LinkResult r = link(vs.get(), fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("Types must match"), std::string::npos) << r.info_log;
+  EXPECT_NE(r.info_log.find("\" vec3 v\""), std::string::npos) << r.info_log;
+}
+
+TEST(Link, VaryingNotDeclaredByVertexShader) {
+  auto vs = compile_ok(Stage::Vertex, "void main() { gl_Position = vec4(0.0); }\n");
+  auto fs = compile_ok(Stage::Fragment, "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n");
+  LinkResult r = link(vs.get(), fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("varying v not written by vertex shader"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, DeclaredButUnwrittenVaryingIsZero) {
+  auto p = link_ok("varying vec4 v;\nvoid main() { gl_Position = vec4(1.0); }\n",
+                   "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n");
+  ASSERT_TRUE(p);
+  VertexRun run(*p);
+  run.run(*p);
+  const Varying* v = find_varying(*p, "v");
+  ASSERT_TRUE(v);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(run.out(kOutFirstVarying + v->offset + c, 3), 0.0f);
+  EXPECT_EQ(run.out(kOutPosition + 3, 3), 1.0f);
+}
+
+TEST(Link, UniformTypeClashBetweenStages) {
+  auto vs = compile_ok(Stage::Vertex, "uniform vec4 u;\nvoid main() { gl_Position = u; }\n");
+  auto fs = compile_ok(Stage::Fragment, "uniform vec3 u;\nvoid main() { gl_FragColor = vec4(u, 1.0); }\n");
+  LinkResult r = link(vs.get(), fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("Types must match"), std::string::npos) << r.info_log;
+  EXPECT_NE(r.info_log.find("\" vec3 u\""), std::string::npos) << r.info_log;
+}
+
+TEST(Link, TooManyVaryingFloats) {
+  std::string decl, use;
+  for (int i = 0; i < 17; ++i) {
+    decl += "varying vec4 v" + std::to_string(i) + ";\n";
+    use += " + v" + std::to_string(i);
+  }
+  auto vs = compile_ok(Stage::Vertex, decl + "void main() { gl_Position = vec4(0.0)" + use + "; }\n");
+  auto fs = compile_ok(Stage::Fragment, decl + "void main() { gl_FragColor = vec4(0.0)" + use + "; }\n");
+  ASSERT_TRUE(vs && fs);
+  LinkResult r = link(vs.get(), fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("too many varyings"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, SharedUniformHasOneOffset) {
+  auto p = link_ok("uniform vec4 u;\nvoid main() { gl_Position = u; }\n",
+                   "uniform vec4 u;\nvoid main() { gl_FragColor = u * 2.0; }\n");
+  ASSERT_TRUE(p);
+  int count = 0;
+  for (const Uniform& u : p->uniforms()) count += u.name == "u";
+  EXPECT_EQ(count, 1);
+  EXPECT_EQ(p->uniform_floats(), 4);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Compile, VertexLineNumbersWithVersion) {
+  CompileResult r = compile(Stage::Vertex, Language::Desktop, {"#version 120\nuniform vec4 u;\nvoid main() { gl_Position = missing; }\n"});
+  EXPECT_EQ(r.shader, nullptr);
+  EXPECT_NE(r.info_log.find("ERROR: 0:3: 'missing' : undeclared identifier"), std::string::npos) << r.info_log;
+}
+
+TEST(Compile, FragmentShaderHasNoDesktopTextureLod) {
+  CompileResult r = compile(Stage::Fragment, Language::Desktop,
+                            {"uniform sampler2D s;\nvoid main() { gl_FragColor = texture2DLod(s, vec2(0.0), 1.0); }\n"});
+  EXPECT_EQ(r.shader, nullptr);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Link, HugeLocalArrayIsALinkErrorNotACrash) {
+  auto fs = compile_ok(Stage::Fragment, "varying float v;\nvoid main() { float a[10000000]; a[int(v)] = 1.0; gl_FragColor = vec4(a[2]); }\n");
+  ASSERT_TRUE(fs);
+  LinkResult r = link(nullptr, fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("shader too large"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, InliningExplosionIsALinkError) {
+  std::string src = "varying float v;\nfloat f0(float x) { return x * 1.5 + v; }\n";
+  for (int i = 1; i < 24; ++i)
+    src += "float f" + std::to_string(i) + "(float x) { return f" + std::to_string(i - 1) + "(x) + f" +
+           std::to_string(i - 1) + "(x + 1.0); }\n";
+  src += "void main() { gl_FragColor = vec4(f23(v)); }\n";
+  auto fs = compile_ok(Stage::Fragment, src);
+  ASSERT_TRUE(fs);
+  LinkResult r = link(nullptr, fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("shader too large"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, TooManyUniformComponents) {
+  auto fs = compile_ok(Stage::Fragment, "uniform vec4 big[600];\nuniform int i;\nvoid main() { gl_FragColor = big[i]; }\n");
+  ASSERT_TRUE(fs);
+  LinkResult r = link(nullptr, fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("too many uniform components"), std::string::npos) << r.info_log;
+}
+
+TEST(Link, RecursionIsRejected) {
+  CompileResult c = compile(Stage::Fragment, Language::Desktop,
+                            {"float f(float x) { return x > 0.0 ? f(x - 1.0) : 0.0; }\nvoid main() { gl_FragColor = vec4(f(3.0)); }\n"});
+  if (!c.shader) {
+    SUCCEED() << "rejected at compile: " << c.info_log;
+    return;
+  }
+  LinkResult r = link(nullptr, c.shader.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_FALSE(r.info_log.empty());
+}
+
+}  // namespace
+}  // namespace pineda::shader::test

@@ -1,0 +1,126 @@
+// The IR and its optimizer, seen through dump_ir().
+#include <cstdlib>
+#include <sstream>
+#include <thread>
+
+#include "tests/shader/shader_test_util.h"
+
+namespace pineda::shader::test {
+namespace {
+
+int count_ops(const std::string& dump, const std::string& op) {
+  std::istringstream in(dump);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    auto eq = line.find(" = ");
+    std::string rest = eq == std::string::npos ? line.substr(line.find(':') + 1) : line.substr(eq + 3);
+    rest.erase(0, rest.find_first_not_of(' '));
+    if (rest.compare(0, op.size() + 1, op + " ") == 0 || rest == op) ++n;
+  }
+  return n;
+}
+
+TEST(Ir, ConstantFoldingRemovesArithmetic) {
+  // Everything but the varying read folds to constants: no add/mul/sin survives.
+  auto p = link_ok("", "varying float v;\nconst float k = 3.0;\n"
+                       "float twice(float x) { return x * 2.0; }\n"
+                       "void main() {\n"
+                       "  float a = sin(0.0) + twice(k) * 0.5 + pow(2.0, 3.0);\n"
+                       "  vec3 n = normalize(vec3(0.0, 3.0, 4.0));\n"
+                       "  gl_FragColor = vec4(a, n.y, n.z, v);\n}\n");
+  ASSERT_TRUE(p);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "add"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "mul"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "sin"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "pow"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "mad"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "varying"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "color"), 4) << ir;
+  EXPECT_NE(ir.find("color 11 #0"), std::string::npos) << ir;  // 0 + 3*2*0.5 + 8
+  FragmentRun run(*p);
+  run.run(*p);
+  EXPECT_EQ(run.block.color[0][0][0], 11.0f);
+  EXPECT_EQ(run.block.color[0][1][0], 0.6f);
+  EXPECT_EQ(run.block.color[0][2][0], 0.8f);
+}
+
+TEST(Ir, FoldingIsVisibleAgainstUnfoldedShader) {
+  auto folded = link_ok("", "uniform float u;\nvoid main() { gl_FragColor = vec4(u * (2.0 + 3.0) * 1.0 + 0.0); }\n");
+  ASSERT_TRUE(folded);
+  const std::string ir = dump_ir(*folded);
+  EXPECT_EQ(count_ops(ir, "mul"), 1) << ir;  // u * 5
+  EXPECT_EQ(count_ops(ir, "add"), 0) << ir;
+  EXPECT_NE(ir.find("mul r0 5"), std::string::npos) << ir;
+}
+
+TEST(Ir, DeadCodeAndUnusedInputsDisappear) {
+  auto p = link_ok("attribute vec4 a;\nattribute vec4 b;\nuniform mat4 m;\nvarying vec4 unused_out;\n"
+                   "void main() { vec4 dead = m * b; unused_out = dead; gl_Position = a; }\n",
+                   "void main() { gl_FragColor = vec4(1.0); }\n");
+  ASSERT_TRUE(p);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "uniform"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "mad"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "input"), 4) << ir;  // a only
+}
+
+TEST(Ir, CopiesArePropagated) {
+  auto p = link_ok("", "varying vec4 v;\nvoid main() { vec4 a = v; vec4 b = a; vec4 c = b.wzyx; gl_FragColor = c.wzyx; }\n");
+  ASSERT_TRUE(p);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "mov"), 0) << ir;
+}
+
+TEST(Ir, DumpShowsStructuredControlFlow) {
+  auto p = link_ok("", "varying float v;\nvoid main() { float s = 0.0; for (int i = 0; i < 4; i++) { if (v > float(i)) break; s += v; } gl_FragColor = vec4(s); }\n");
+  ASSERT_TRUE(p);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "loop"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "endloop"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "break_if_not"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "if"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "break"), 1) << ir;
+  EXPECT_NE(ir.find("; fragment shader"), std::string::npos);
+  EXPECT_EQ(ir.find("; vertex shader"), std::string::npos);
+}
+
+TEST(Ir, DumpEnvironmentVariablePrintsAtLink) {
+  setenv("PINEDA_DUMP_IR", "1", 1);
+  testing::internal::CaptureStderr();
+  auto p = link_ok("", "void main() { gl_FragColor = vec4(0.5); }\n");
+  const std::string err = testing::internal::GetCapturedStderr();
+  unsetenv("PINEDA_DUMP_IR");
+  ASSERT_TRUE(p);
+  EXPECT_NE(err.find("; fragment shader"), std::string::npos) << err;
+  EXPECT_NE(err.find("color 0.5 #0"), std::string::npos) << err;
+}
+
+TEST(Threads, OneProgramRunsOnManyThreadsAndCompilesInParallel) {
+  auto p = link_ok("", "varying float v;\nvoid main() { float s = 0.0; for (int i = 0; i < 64; i++) { if (float(i) > v) break; s += float(i); } gl_FragColor = vec4(s); }\n");
+  ASSERT_TRUE(p);
+  std::vector<std::thread> threads;
+  std::vector<int> bad(8, 0);
+  for (int t = 0; t < 8; ++t)
+    threads.emplace_back([&, t] {
+      for (int iter = 0; iter < 200; ++iter) {
+        FragmentRun run(*p);
+        for (int l = 0; l < kLanes; ++l) run.varyings[find_varying(*p, "v")->offset * kLanes + l] = static_cast<float>((l + t + iter) % 40);
+        run.run(*p);
+        for (int l = 0; l < kLanes; ++l) {
+          int n = (l + t + iter) % 40;
+          if (run.block.color[0][0][l] != static_cast<float>(n * (n + 1) / 2)) ++bad[t];
+        }
+      }
+      // Compiling and linking from several threads at once.
+      CompileResult c = compile(Stage::Fragment, Language::Es100, {"precision mediump float;\nvoid main() { gl_FragColor = vec4(" + std::to_string(t) + ".0); }\n"});
+      if (!c.shader) ++bad[t];
+      else if (!link(nullptr, c.shader.get(), {}).program) ++bad[t];
+    });
+  for (auto& th : threads) th.join();
+  for (int t = 0; t < 8; ++t) EXPECT_EQ(bad[t], 0) << t;
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
