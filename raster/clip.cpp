@@ -48,7 +48,7 @@ ClipVert intersect(const ClipVert& in, const ClipVert& out, double d_in, double 
   for (int i = 0; i < kMaxClipPlanes; ++i) r.user[i] = in.user[i] + t * (out.user[i] - in.user[i]);
   snap_onto_plane(r, vol, plane);
   const float tf = static_cast<float>(t);
-  for (int i = 0; i < kClipAttrs; ++i) r.attr[i] = in.attr[i] + tf * (out.attr[i] - in.attr[i]);
+  for (int i = 0; i < vol.attrs; ++i) r.attr[i] = in.attr[i] + tf * (out.attr[i] - in.attr[i]);
   return r;
 }
 

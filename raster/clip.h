@@ -6,6 +6,7 @@
 
 #include "raster/texture.h"
 #include "raster/vertex.h"
+#include "shader/program.h"
 
 namespace pineda::raster {
 
@@ -15,11 +16,13 @@ constexpr int kClipTexAttrs = 8;
 constexpr int kClipSecondaryAttrs = kClipTexAttrs + 4 * kMaxTextureUnits;
 constexpr int kClipFogAttr = kClipSecondaryAttrs + 6;
 constexpr int kClipAttrs = kClipFogAttr + 1;
+// A programmable draw carries its varyings in attr[] instead.
+constexpr int kClipAttrCapacity = kClipAttrs > shader::kMaxVaryingFloats ? kClipAttrs : shader::kMaxVaryingFloats;
 
 struct ClipVert {
   double pos[4];
   double user[kMaxClipPlanes];  // distances to the user clip planes
-  float attr[kClipAttrs];
+  float attr[kClipAttrCapacity];
 };
 
 // The clip volume: near and far always, w > epsilon always, x/y against the guard band
@@ -28,6 +31,7 @@ struct ClipVert {
 struct ClipVolume {
   double x_min = -1, x_max = 1, y_min = -1, y_max = 1;
   uint32_t user_planes = 0;  // bit i: user plane i
+  int attrs = kClipAttrs;     // how many of ClipVert::attr clipping interpolates
 };
 
 // Bit i set when the vertex is outside plane i.

@@ -4,6 +4,7 @@
 
 #include "raster/blend_over.h"
 #include "raster/fragment_pipeline.h"
+#include "raster/shader_quads.h"
 
 namespace pineda::raster {
 namespace {
@@ -83,6 +84,13 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
                  state.point_smooth || state.line_smooth;
   d.key.count_samples = state.sample_counter != nullptr;
   d.routine = select_quad_routine(d.key, path);
+  if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
+    d.planes = 0;
+    d.secondary_plane = d.fog_plane = -1;
+    d.modulate_in_lanes = false;
+    d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth || state.line_smooth;
+    d.routine = shade_program_quads;
+  }
   return d;
 }
 

@@ -7,6 +7,7 @@
 
 #include "raster/point_size.h"
 #include "raster/sample_counter.h"
+#include "raster/shader_draw.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -123,6 +124,10 @@ struct DrawState {
   // After texturing: the colour sum (ClipVertex::secondary added), then fog.
   bool color_sum = false;
   Fog fog;
+
+  // A draw with a fragment and vertex program (null: fixed function). The vertex stage ran in
+  // state/; raster/ interpolates its varyings and runs the fragment shader.
+  std::shared_ptr<const ShaderDraw> shader;
 };
 
 // What glClear needs.

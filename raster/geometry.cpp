@@ -77,11 +77,31 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   line_smooth_ = s.line_smooth;
   point_smooth_ = s.point_smooth;
   point_size_per_vertex_ = s.point_params.per_vertex();
+  shader_ = s.shader.get();
+  if (shader_) {
+    reference_ = false;  // the reference path has no fragment shader stage
+    varying_count_ = shader_->program->varying_floats();
+    volume_.attrs = varying_count_;
+    volume_.user_planes = 0;  // gl_ClipVertex is not supported: user planes do not clip
+    varying_planes_.assign(static_cast<size_t>(varying_count_) + 1, Plane{});
+    if (s.flat_shading)
+      for (const shader::Varying& v : shader_->program->varyings()) {
+        if (v.name != "gl_Color" && v.name != "gl_SecondaryColor") continue;
+        flat_ranges_.emplace_back(v.offset, v.components);
+        if (v.back_offset >= 0) flat_ranges_.emplace_back(v.back_offset, v.components);
+      }
+  }
 }
 
 ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
   ClipVert c;
   for (int i = 0; i < 4; ++i) c.pos[i] = v.clip[i];
+  if (shader_) {
+    const float* in = varyings_ + (&v - vertex_base_) * varying_count_;
+    std::copy(in, in + varying_count_, c.attr);
+    for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = 0.0;
+    return c;
+  }
   for (int i = 0; i < 4; ++i) {
     c.attr[i] = v.color[i];
     c.attr[4 + i] = v.back_color[i];
@@ -108,6 +128,10 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
   z = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
   w.z = z * d.depth_max;
+  if (shader_) {
+    w.varyings = v.attr;
+    return w;
+  }
   const int color = back_color ? 4 : 0;
   for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
   for (int k = 0; k < d.num_units; ++k) {
@@ -132,6 +156,11 @@ SetupParams GeometryStage::params(const Style& style) const {
   for (int i = 0; i < 4; ++i) p.flat_color[i] = style.flat_color[i];
   p.back_facing = style.back_facing;
   p.depth_offset = style.depth_offset;
+  if (shader_) {
+    p.varyings = varying_count_;
+    p.varying_out = varying_planes_.data();
+    varying_planes_.back() = Plane{};
+  }
   return p;
 }
 
@@ -149,7 +178,8 @@ void GeometryStage::emit(const PrimSetup& prim) {
     reference_lines_points(prim, scene_.current_draw(), scene_.framebuffer());
     return;
   }
-  scene_.add_prim(prim);
+  if (shader_) scene_.add_prim(prim, varying_planes_.data(), varying_count_ + 1);
+  else scene_.add_prim(prim);
   if (scene_.full()) on_full_();
 }
 
@@ -192,8 +222,11 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style, float size
   const WinVert wv = to_window(v, style.back_facing);
   if (!has_window_position(wv)) return;
   PrimSetup prim;
-  const bool covered = point_smooth_ ? setup_smooth_point(wv, smooth_size(size, kMaxPointSize), params(style), prim)
-                                     : setup_point(wv, rounded_size(size, kMaxPointSize), params(style), prim);
+  const SetupParams p = params(style);
+  const double drawn_size = point_smooth_ ? smooth_size(size, kMaxPointSize) : rounded_size(size, kMaxPointSize);
+  const bool covered = point_smooth_ ? setup_smooth_point(wv, drawn_size, p, prim)
+                                     : setup_point(wv, static_cast<int>(drawn_size), p, prim);
+  if (shader_) varying_planes_.back() = Plane{static_cast<float>(wv.fx), static_cast<float>(wv.fy), static_cast<float>(drawn_size)};
   if (covered) emit(prim);
 }
 
@@ -204,7 +237,28 @@ void GeometryStage::point(const ClipVertex& v) {
 
 void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) {
   if (!active_ || !finite_position(a) || !finite_position(b)) return;
-  draw_line(to_clip(a), to_clip(b), style_for(provoking, false));
+  ClipVert ca = to_clip(a), cb = to_clip(b);
+  flatten_varyings(ca, provoking);
+  flatten_varyings(cb, provoking);
+  draw_line(ca, cb, style_for(provoking, false));
+}
+
+void GeometryStage::flatten_varyings(ClipVert& v, const ClipVertex& provoking) const {
+  if (flat_ranges_.empty()) return;
+  const float* from = varyings_ + (&provoking - vertex_base_) * varying_count_;
+  for (const auto& [offset, count] : flat_ranges_)
+    for (int i = offset; i < offset + count && i < varying_count_; ++i) v.attr[i] = from[i];
+}
+
+void GeometryStage::use_back_varyings(ClipVert& v) const {
+  if (!shader_ || !shader_->two_side) return;
+  for (const shader::Varying& var : shader_->program->varyings()) {
+    if (var.back_offset < 0) continue;
+    for (int i = 0; i < var.components; ++i) {
+      const int from = var.back_offset + i, to = var.offset + i;
+      if (from < varying_count_ && to < varying_count_) v.attr[to] = v.attr[from];
+    }
+  }
 }
 
 double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool enabled) const {
@@ -225,6 +279,7 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
     if (!finite_position(*p)) return;
   in_.clear();
   for (const ClipVertex* p : v) in_.push_back(to_clip(*p));
+  for (ClipVert& c : in_) flatten_varyings(c, provoking);
   clip_polygon(in_, volume_, clipped_, scratch_);
   if (clipped_.size() < 3) return;
 
@@ -246,7 +301,10 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
     if (area == 0) return;
     style.depth_offset = polygon_offset(window_, s.offset_fill);
     if (!front)
-      for (size_t i = 0; i < clipped_.size(); ++i) window_[i] = to_window(clipped_[i], true);
+      for (size_t i = 0; i < clipped_.size(); ++i) {
+        use_back_varyings(clipped_[i]);
+        window_[i] = to_window(clipped_[i], true);
+      }
     const SetupParams p = params(style);
     for (size_t i = 1; i + 1 < window_.size(); ++i) {
       if (reference_) {  // unsnapped: no sliver is turned inside out

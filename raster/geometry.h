@@ -26,6 +26,13 @@ class GeometryStage final : public PrimitiveSink {
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
   bool active() const { return active_; }
 
+  // A programmable draw: vertex i of `vertices` has the varyings at varyings + i * count,
+  // count = the program's varying_floats().
+  void set_varyings(const ClipVertex* vertices, const float* varyings) {
+    vertex_base_ = vertices;
+    varyings_ = varyings;
+  }
+
  private:
   struct Style {  // how a polygon's facing shapes its lines and points
     bool back_facing = false;
@@ -43,6 +50,8 @@ class GeometryStage final : public PrimitiveSink {
   void draw_point(const ClipVert& v, const Style& style, float size);
   float point_size_of(const ClipVertex& v) const;  // derived, before rounding
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
+  void use_back_varyings(ClipVert& v) const;
+  void flatten_varyings(ClipVert& v, const ClipVertex& provoking) const;
 
   Scene& scene_;
   std::function<void()> on_full_;
@@ -57,6 +66,17 @@ class GeometryStage final : public PrimitiveSink {
   float stipple_count_ = 0.f;  // major-axis length of the strip's lines so far (line stipple)
   std::vector<ClipVert> in_, clipped_, scratch_;
   std::vector<WinVert> window_;
+
+  // Programmable draws (DrawState::shader)
+  const ShaderDraw* shader_ = nullptr;
+  const ClipVertex* vertex_base_ = nullptr;
+  const float* varyings_ = nullptr;
+  int varying_count_ = 0;
+  // GL_FLAT: the colour varyings (offset, count) that take the provoking vertex's values.
+  std::vector<std::pair<int, int>> flat_ranges_;
+  // The primitive being set up: its varying planes, then one record {x, y, size} of a point
+  // (gl_PointCoord), which the scene stores with it.
+  mutable std::vector<Plane> varying_planes_;
 };
 
 }  // namespace pineda::raster

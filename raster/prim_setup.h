@@ -76,6 +76,9 @@ struct PrimSetup {
   // r, g, b, a, then s, t, q (and r: DrawRecord::r_plane) per enabled unit (in unit order), then the secondary colour and
   // the fog coordinate when the draw uses them (DrawRecord::secondary_plane, fog_plane).
   Plane planes[kMaxPlanes];
+  // A programmable draw's varyings (DrawState::shader), in the scene's storage; perspective
+  // like planes[].
+  const Plane* varying_planes = nullptr;
   float flat_color[4] = {0, 0, 0, 0};
 };
 

@@ -45,16 +45,17 @@ void Renderer::clear(const ClearState& clear) {
 }
 
 void Renderer::draw(const DrawState& state, Primitive mode, std::span<const ClipVertex> vertices,
-                    std::span<const uint32_t> indices) {
+                    std::span<const uint32_t> indices, const float* varyings) {
   Scene& scene = impl_->scene;
   if (scene.render_area().empty() || vertices.empty()) return;
   DrawRecord record = make_draw_record(state, impl_->fb, impl_->simd);
-  if (impl_->reference) {
+  if (impl_->reference && !state.shader) {
     flush();  // queued clears first: reference primitives are drawn into the framebuffer at once
     record.routine = reference_plane_quads;
   }
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, [this] { flush(); }, impl_->reference);
+  if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
   if (scene.full()) flush();
 }

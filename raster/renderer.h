@@ -33,8 +33,10 @@ class Renderer {
   // Assembles `mode` primitives from `vertices` (in order, or through `indices` when it is
   // not empty; an index past the end of `vertices` drops its primitive), clips, sets up and
   // bins them. Nothing of `state` or the spans is referenced after the call returns.
+  // A programmable draw (state.shader) passes the vertex shader's varyings too: vertex i's
+  // at varyings[i * program->varying_floats()].
   void draw(const DrawState& state, Primitive mode, std::span<const ClipVertex> vertices,
-            std::span<const uint32_t> indices = {});
+            std::span<const uint32_t> indices = {}, const float* varyings = nullptr);
 
   // Executes everything queued; afterwards the framebuffer's memory is up to date.
   void flush();

@@ -13,6 +13,7 @@ constexpr size_t kMaxPrims = size_t{1} << 16;
 constexpr size_t kMaxCommands = size_t{1} << 22;
 constexpr size_t kMaxDraws = 4096;
 constexpr size_t kMaxRetainedTextureBytes = size_t{256} << 20;
+constexpr size_t kMaxPlaneChunks = 64;  // 12 MiB of varying planes
 // Below this many binned commands the calling thread does the work alone.
 constexpr size_t kSmallScene = 64;
 
@@ -33,6 +34,8 @@ void Scene::reset(const Framebuffer& fb) {
   commands_ = 0;
   retained_images_.clear();
   retained_texture_bytes_ = 0;
+  plane_chunks_.clear();
+  planes_used_ = 0;
 }
 
 void Scene::begin_draw(DrawRecord&& draw) {
@@ -71,6 +74,21 @@ void Scene::add_prim(PrimSetup prim) {
   if (used) prims_.push_back(prim);
 }
 
+void Scene::add_prim(PrimSetup prim, const Plane* varying_planes, int count) {
+  if (count > 0) {
+    const size_t n = static_cast<size_t>(count);
+    if (plane_chunks_.empty() || planes_used_ + n > kPlaneChunk) {
+      plane_chunks_.push_back(std::make_unique<Plane[]>(kPlaneChunk));
+      planes_used_ = 0;
+    }
+    Plane* dst = plane_chunks_.back().get() + planes_used_;
+    std::copy(varying_planes, varying_planes + n, dst);
+    planes_used_ += n;
+    prim.varying_planes = dst;
+  }
+  add_prim(prim);
+}
+
 void Scene::add_clear(const ClearRecord& clear) {
   const PixelRect r = intersect(clear.rect, render_area());
   if (r.empty()) return;
@@ -87,7 +105,8 @@ void Scene::add_clear(const ClearRecord& clear) {
 
 bool Scene::full() const {
   return prims_.size() >= kMaxPrims || commands_ >= kMaxCommands || clears_.size() >= kMaxPrims ||
-         draws_.size() >= kMaxDraws || retained_texture_bytes_ >= kMaxRetainedTextureBytes;
+         draws_.size() >= kMaxDraws || retained_texture_bytes_ >= kMaxRetainedTextureBytes ||
+         plane_chunks_.size() >= kMaxPlaneChunks;
 }
 
 void Scene::run_tile(int tile) const {
@@ -122,6 +141,8 @@ void Scene::execute(WorkerPool& pool) {
   if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
   retained_images_.clear();
   retained_texture_bytes_ = 0;
+  if (plane_chunks_.size() > 1) plane_chunks_.erase(plane_chunks_.begin(), plane_chunks_.end() - 1);
+  planes_used_ = 0;
   if (!draws_.empty()) retain_textures(draws_.back());
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <vector>
 
 #include "raster/clear.h"
@@ -26,6 +27,8 @@ class Scene {
   void begin_draw(DrawRecord&& draw);
   const DrawRecord& current_draw() const { return draws_.back(); }
   void add_prim(PrimSetup prim);
+  // A primitive of a programmable draw with its varying planes (copied into the scene).
+  void add_prim(PrimSetup prim, const Plane* varying_planes, int count);
   void add_clear(const ClearRecord& clear);
 
   bool empty() const { return commands_ == 0; }
@@ -57,6 +60,10 @@ class Scene {
   // with and deletes textures in a loop must not pile them up until the next flush).
   std::vector<const TextureImage*> retained_images_;
   size_t retained_texture_bytes_ = 0;
+  // Varying planes of programmable primitives, in chunks that never move while queued.
+  static constexpr size_t kPlaneChunk = 16384;
+  std::vector<std::unique_ptr<Plane[]>> plane_chunks_;
+  size_t planes_used_ = 0;  // in the last chunk
 };
 
 }  // namespace pineda::raster

@@ -23,6 +23,8 @@ void constant_planes(const WinVert& v, const SetupParams& params, PrimSetup& out
   out.ref_y = static_cast<float>(v.fy);
   out.inv_w = {1.f, 0.f, 0.f};
   for (int k = 0; k < params.planes; ++k) out.planes[k] = {v.attr[k], 0.f, 0.f};
+  for (int k = 0; k < params.varyings; ++k) params.varying_out[k] = {v.varyings[k], 0.f, 0.f};
+  if (params.varyings > 0) out.inv_w = {static_cast<float>(v.inv_w), 0.f, 0.f};
   out.z0 = v.z + params.depth_offset;
   out.dzdx = out.dzdy = 0.0;
 }
@@ -52,6 +54,14 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
   for (int k = 0; k < params.planes; ++k) {
     for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->attr[k] * v[i]->inv_w : v[i]->attr[k];
     out.planes[k] = make_plane();
+  }
+  for (int k = 0; k < params.varyings; ++k) {
+    for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->varyings[k] * v[i]->inv_w : v[i]->varyings[k];
+    params.varying_out[k] = make_plane();
+  }
+  if (params.varyings > 0 && !out.perspective) {  // gl_FragCoord.w: the primitive's common 1/w
+    for (int i = 0; i < count; ++i) f[i] = v[i]->inv_w;
+    out.inv_w = make_plane();
   }
   for (int i = 0; i < count; ++i) f[i] = v[i]->z;
   gradient(f, gx, gy);

@@ -13,6 +13,7 @@ struct WinVert {
   double z = 0.0;        // window depth in depth-buffer units
   double inv_w = 1.0;
   float attr[kMaxPlanes] = {};
+  const float* varyings = nullptr;  // a programmable draw's SetupParams::varyings values
 };
 
 struct SetupParams {
@@ -23,6 +24,10 @@ struct SetupParams {
   float flat_color[4] = {0, 0, 0, 0};
   bool back_facing = false;
   double depth_offset = 0.0;  // added to window depth (polygon offset), depth-buffer units
+  // A programmable draw: planes of the `varyings` floats of WinVert::varyings, into
+  // varying_out (the scene stores them; PrimSetup::varying_planes points at them).
+  int varyings = 0;
+  Plane* varying_out = nullptr;
 };
 
 // Twice the signed area in sub-pixels squared; positive when counter-clockwise (y up).

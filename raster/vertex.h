@@ -18,6 +18,9 @@ struct VertexInput {
   float fog_coord = 0.f;
   float point_size = 1.f;  // read when PointParameters::size_per_vertex (OES_point_size_array)
   bool edge_flag = true;
+  // The array element or immediate-mode slot the vertex came from: state/ reads the generic
+  // attributes of programmable draws through it (UINT32_MAX: none).
+  uint32_t source = UINT32_MAX;
 };
 
 // One vertex after transform and lighting: clip-space position plus the varyings the

@@ -9,6 +9,7 @@
 #include "state/es1/es1_enums.h"
 #include "state/context.h"
 #include "state/draw.h"
+#include "state/programs/generic_attribs.h"
 #include "state/enum_translate.h"
 #include "state/render_mode_get.h"
 #include "state/vertex_fetch.h"
@@ -35,7 +36,7 @@ bool valid_mode(Context& ctx, GLenum mode) {
   return false;
 }
 
-bool can_fetch(const Context& ctx) { return ctx.vertex_array.active(); }
+bool can_fetch(const Context& ctx) { return ctx.vertex_array.active() || ctx.programs.arrays[0].active(); }
 
 template <typename Index>
 void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {
@@ -57,7 +58,7 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
     ctx.fetched.resize(count);
     for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], ctx.fetched[i]);
   }
-  draw_vertices(ctx, mode, ctx.fetched, rebased);
+  draw_vertices(ctx, mode, ctx.fetched, rebased, {}, AttribSource::Arrays);
   take_current_index(ctx, indices[count - 1]);  // GL leaves it indeterminate: the last element's
 }
 
@@ -108,7 +109,7 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
   ctx.fetched.resize(count);
   for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, ctx.fetched[i]);
-  draw_vertices(ctx, mode, ctx.fetched, {});
+  draw_vertices(ctx, mode, ctx.fetched, {}, {}, AttribSource::Arrays);
   take_current_index(ctx, size_t(first) + count - 1);  // GL leaves it indeterminate: the last element's
 }
 
@@ -144,7 +145,11 @@ void ArrayElement(Context& ctx, GLint i) {
     if (unit.texcoord_array.active())
       std::copy(v.texcoord[u], v.texcoord[u] + 4, unit.current_texcoord);
   }
-  if (can_fetch(ctx) && ctx.in_begin_end) ctx.immediate.push_back(v);
+  if (can_fetch(ctx) && ctx.in_begin_end) {
+    const size_t element = size_t(i);
+    capture_immediate_generics(ctx, v, &element);
+    ctx.immediate.push_back(v);
+  }
 }
 
 void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* pointer) {

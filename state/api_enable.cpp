@@ -4,6 +4,7 @@
 #include "state/color_material.h"
 #include "state/es1/es1_enums.h"
 #include "state/context.h"
+#include "state/programs/program_get.h"
 
 namespace pineda {
 namespace {
@@ -50,6 +51,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
       if (bool* flag = vertex_extras_capability(ctx, cap)) return flag;
       if (bool* flag = evaluator_capability(ctx.eval.attribs, cap)) return flag;
       if (bool* flag = multisample_capability(ctx, cap)) return flag;
+      if (bool* flag = program_capability(ctx, cap)) return flag;
       if (is_unrendered_cap(cap)) return &ctx.unrendered_caps[cap];
       return nullptr;
   }

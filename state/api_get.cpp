@@ -17,6 +17,7 @@
 #include "state/limits.h"
 #include "state/multisample.h"
 #include "state/point_parameters.h"
+#include "state/programs/program_get.h"
 
 namespace pineda::gl {
 namespace {
@@ -238,6 +239,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_point_parameters(ctx, pname, out)) return true;
   if (query_compressed_formats(pname, out)) return true;
   if (query_debug(ctx, pname, out)) return true;
+  if (query_program_state(ctx, pname, out)) return true;
   if (ctx.es1() && query_es1(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
@@ -306,6 +308,12 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       if (ctx.version_string.empty()) ctx.version_string = version_string(ctx);
       return reinterpret_cast<const GLubyte*>(ctx.version_string.c_str());
     }
+    case GL_SHADING_LANGUAGE_VERSION:
+      if (ctx.es1()) {
+        ctx.record_error(GL_INVALID_ENUM);
+        return nullptr;
+      }
+      return reinterpret_cast<const GLubyte*>("1.20");
     case GL_EXTENSIONS:
       return reinterpret_cast<const GLubyte*>(ctx.es1() ? glapi::kES1Extensions : kExtensions.c_str());
     default: ctx.record_error(GL_INVALID_ENUM); return nullptr;

@@ -8,6 +8,7 @@
 #include "state/context.h"
 #include "state/current_vertex.h"
 #include "state/draw.h"
+#include "state/programs/generic_attribs.h"
 #include "state/enum_translate.h"
 
 namespace pineda {
@@ -40,6 +41,7 @@ inline float to_float(GLdouble v) { return static_cast<float>(v); }
 void emit_vertex(Context& ctx, float x, float y, float z, float w) {
   if (!ctx.in_begin_end) return;  // outside Begin/End a vertex has no effect
   ctx.immediate.push_back(current_vertex(ctx, x, y, z, w));
+  capture_immediate_generics(ctx, ctx.immediate.back());
 }
 
 void set_color(Context& ctx, float r, float g, float b, float a) {
@@ -67,14 +69,16 @@ void Begin(Context& ctx, GLenum mode) {
   ctx.begin_mode = mode;
   ctx.immediate.clear();
   ctx.immediate_materials.clear();
+  ctx.programs.immediate_generic.clear();
 }
 
 void End(Context& ctx) {
   if (!ctx.in_begin_end) return ctx.record_error(GL_INVALID_OPERATION);
   ctx.in_begin_end = false;
-  draw_vertices(ctx, ctx.begin_mode, ctx.immediate, {}, ctx.immediate_materials);
+  draw_vertices(ctx, ctx.begin_mode, ctx.immediate, {}, ctx.immediate_materials, AttribSource::Immediate);
   ctx.immediate.clear();
   ctx.immediate_materials.clear();
+  ctx.programs.immediate_generic.clear();
 }
 
 // Vertex: 2, 3, 4 components; d f i s; scalar and vector forms.

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "state/context.h"
+#include "state/programs/generic_attribs.h"
 #include "state/vertex_fetch.h"
 
 namespace pineda {
@@ -29,6 +30,7 @@ bool arrays_ready(Context& ctx, size_t last_index) {
     mapped |= a.buffer->mapped;
     inside &= array_element(a, last_index, element_bytes(a, &a == &ctx.edge_flag_array)) != nullptr;
   });
+  check_generic_arrays(ctx, last_index, mapped, inside);
   if (mapped) ctx.record_error(GL_INVALID_OPERATION);
   return !mapped && inside;
 }

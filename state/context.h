@@ -28,6 +28,7 @@
 #include "state/drawable.h"
 #include "state/evaluator.h"
 #include "state/pixel_state.h"
+#include "state/programs/program_state.h"
 #include "state/query_object.h"
 #include "state/select_feedback.h"
 #include "state/share_group.h"
@@ -233,6 +234,7 @@ class Context {
   QueryState queries;
   RenderModeState render_mode;  // glRenderMode: selection and feedback
   AccumState accum;
+  ProgramState programs;  // GL 2.0 shader and program objects, generic attributes (state/programs/)
 
   // Display lists
   DisplayLists& lists;  // the share group's

@@ -6,6 +6,7 @@
 
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/programs/program_draw.h"
 #include "state/point_parameters.h"
 #include "state/select_feedback.h"
 #include "state/vertex_extras_snapshot.h"
@@ -84,16 +85,23 @@ const raster::DrawState& fragment_snapshot(Context& ctx) {
 }
 
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
-                   std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials) {
+                   std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials,
+                   AttribSource generic_source) {
   if (!ctx.draw_drawable() || vertices.empty()) return;
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
+  if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
   const int texture_units = snapshot_textures(ctx);
   ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
   // Feedback reports unit 0's coordinates even when no texture is enabled.
   const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
-  raster::Transform transform = build_transform(ctx, feedback ? std::max(texture_units, 1) : texture_units);
-  if (materials.empty() || !ctx.lighting.enabled) {
+  const bool program = ctx.programs.active() != nullptr;  // with one stage only (program_draw.h)
+  // A fragment shader may read every unit's coordinates (gl_TexCoord[i]).
+  raster::Transform transform = build_transform(
+      ctx, program ? raster::kMaxTextureUnits : feedback ? std::max(texture_units, 1) : texture_units);
+  if (program && run_vertex_program_only(ctx, vertices, generic_source, ctx.transformed)) {
+    // the vertex shader replaced transform and lighting
+  } else if (materials.empty() || !ctx.lighting.enabled) {
     raster::transform_vertices(transform, vertices, ctx.transformed);
   } else {
     // Each run of vertices is lit with the material in effect when they were specified.
@@ -112,6 +120,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   raster::DrawState& state = ctx.draw_state;
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;
+  if (program && draw_fragment_program_only(ctx, primitive, ctx.transformed, indices)) return;
   if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
   ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
 }

@@ -8,6 +8,7 @@
 
 #include "raster/vertex.h"
 #include "state/context.h"
+#include "state/programs/generic_attribs.h"
 
 namespace pineda {
 
@@ -18,7 +19,8 @@ class Context;
 // glBegin/glEnd); its first entry starts at vertex 0.
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
                    std::span<const uint32_t> indices,
-                   std::span<const Context::MaterialChange> materials = {});
+                   std::span<const Context::MaterialChange> materials = {},
+                   AttribSource generic_source = AttribSource::Current);
 
 // One vertex through the vertex stage (transform, lighting, every unit's texture matrix):
 // the raster position's vertex.

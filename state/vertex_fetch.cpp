@@ -3,12 +3,15 @@
 #include <algorithm>
 
 #include "state/context.h"
+#include "state/programs/generic_attribs.h"
 #include "state/unaligned.h"
 
 namespace pineda {
 namespace {
 
-float read_component(const uint8_t* p, GLenum type, bool normalize) {
+}  // namespace
+
+float read_vertex_component(const uint8_t* p, unsigned type, bool normalize) {
   switch (type) {
     case GL_BYTE: { auto v = load_unaligned<GLbyte>(p); return normalize ? (2.f * v + 1.f) / 255.f : v; }
     case GL_UNSIGNED_BYTE: { auto v = load_unaligned<GLubyte>(p); return normalize ? v / 255.f : v; }
@@ -23,6 +26,8 @@ float read_component(const uint8_t* p, GLenum type, bool normalize) {
   }
 }
 
+namespace {
+
 // Reads `array.size` components of element `index` into dst (which keeps its defaults
 // for the components the array does not have, and all of them when the element lies
 // outside the array's buffer object).
@@ -30,7 +35,7 @@ void read_array(const ClientArray& array, size_t index, float* dst, bool normali
   const int component = gl_type_size(array.type);
   const uint8_t* p = array_element(array, index, size_t(component) * array.size);
   if (!p) return;
-  for (int c = 0; c < array.size; ++c) dst[c] = read_component(p + c * component, array.type, normalize);
+  for (int c = 0; c < array.size; ++c) dst[c] = read_vertex_component(p + c * component, array.type, normalize);
 }
 
 }  // namespace
@@ -64,7 +69,9 @@ void take_current_index(Context& ctx, size_t index) {
 
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
-  if (ctx.vertex_array.active()) read_array(ctx.vertex_array, index, out.position, false);
+  out.source = static_cast<uint32_t>(std::min<size_t>(index, UINT32_MAX - 1));
+  if (!read_generic_position(ctx, index, out.position) && ctx.vertex_array.active())
+    read_array(ctx.vertex_array, index, out.position, false);
   if (ctx.color_array.active()) {
     read_array(ctx.color_array, index, out.color, true);
   } else {

@@ -1,5 +1,7 @@
 // Reading vertices out of the application's client arrays.
 #pragma once
+#include <cstdint>
+
 #include "raster/vertex.h"
 
 namespace pineda {
@@ -22,6 +24,9 @@ void take_current_index(Context& ctx, size_t index);
 // The `bytes` bytes of element `index` of `array`: in client memory, or in its buffer object
 // (null when they are not all inside the buffer's store).
 const uint8_t* array_element(const ClientArray& array, size_t index, size_t bytes);
+
+// One component of type `type` at p as a float; `normalize` maps integers to [0, 1] or [-1, 1].
+float read_vertex_component(const uint8_t* p, unsigned type, bool normalize);
 
 // Byte size of one component of a GL array type, 0 when the type is not one.
 int gl_type_size(unsigned type);

@@ -1,0 +1,259 @@
+// The per-fragment operations on a 2x2 quad after shading: depth and stencil tests, blending
+// or logic op, colour masks and the write into an RGBA8/BGRA8 buffer. Shared by the
+// fixed-function routines (fragment_pipeline.cpp) and the fragment-shader routine
+// (shader_quads.cpp).
+#pragma once
+#include <cstring>
+
+#include "raster/blend_over.h"
+#include "raster/draw_record.h"
+#include "raster/fragment_ops.h"
+#include "raster/framebuffer.h"
+#include "raster/quad_vector.h"
+
+namespace pineda::raster::quad_ops {
+
+// Bit position of each RGBA channel in a pixel as a little-endian uint32.
+struct ChannelShift {
+  uint32_t at[4];
+};
+constexpr ChannelShift kRgbaShift{{0, 8, 16, 24}};
+constexpr ChannelShift kBgraShift{{16, 8, 0, 24}};
+
+struct QuadColor {
+  F4 c[4];  // r, g, b, a; one lane per pixel
+};
+
+inline uint8_t* color_address(const Framebuffer& fb, int x, int y) {
+  return fb.color.base + static_cast<ptrdiff_t>(y) * fb.color.stride + static_cast<ptrdiff_t>(x) * 4;
+}
+
+// One blend factor for channel `c` of the four pixels.
+inline F4 blend_factors(BlendFactor f, int c, const QuadColor& src, const QuadColor& dst, const float k[4]) {
+  const F4 one = splat(1.f);
+  switch (f) {
+    case BlendFactor::Zero: return splat(0.f);
+    case BlendFactor::One: return one;
+    case BlendFactor::SrcColor: return src.c[c];
+    case BlendFactor::OneMinusSrcColor: return one - src.c[c];
+    case BlendFactor::DstColor: return dst.c[c];
+    case BlendFactor::OneMinusDstColor: return one - dst.c[c];
+    case BlendFactor::SrcAlpha: return src.c[3];
+    case BlendFactor::OneMinusSrcAlpha: return one - src.c[3];
+    case BlendFactor::DstAlpha: return dst.c[3];
+    case BlendFactor::OneMinusDstAlpha: return one - dst.c[3];
+    case BlendFactor::ConstantColor: return splat(k[c]);
+    case BlendFactor::OneMinusConstantColor: return splat(1.f - k[c]);
+    case BlendFactor::ConstantAlpha: return splat(k[3]);
+    case BlendFactor::OneMinusConstantAlpha: return splat(1.f - k[3]);
+    case BlendFactor::SrcAlphaSaturate: {
+      if (c == 3) return one;
+      const F4 a = src.c[3], b = one - dst.c[3];
+      return a < b ? a : b;
+    }
+  }
+  return one;
+}
+
+inline QuadColor blend_quad(const DrawRecord& d, const QuadColor& src, const QuadColor& dst) {
+  const BlendState& b = d.state.blend_state;
+  QuadColor out;
+  for (int c = 0; c < 4; ++c) {
+    const bool alpha = c == 3;
+    const BlendEquation eq = alpha ? b.eq_alpha : b.eq_rgb;
+    const F4 s = src.c[c], t = dst.c[c];
+    if (eq == BlendEquation::Min) {
+      out.c[c] = s < t ? s : t;
+      continue;
+    }
+    if (eq == BlendEquation::Max) {
+      out.c[c] = s > t ? s : t;
+      continue;
+    }
+    const F4 ss = s * blend_factors(alpha ? b.src_alpha : b.src_rgb, c, src, dst, d.blend_color);
+    const F4 tt = t * blend_factors(alpha ? b.dst_alpha : b.dst_rgb, c, src, dst, d.blend_color);
+    out.c[c] = eq == BlendEquation::Add ? ss + tt : (eq == BlendEquation::Subtract ? ss - tt : tt - ss);
+  }
+  return out;
+}
+
+inline U4 load_pixels(uint8_t* const px[4], unsigned mask) {
+  uint32_t v[4] = {0, 0, 0, 0};
+  if (mask == 0xf) {
+    std::memcpy(&v[0], px[0], 8);
+    std::memcpy(&v[2], px[2], 8);
+  } else {
+    for (int i = 0; i < 4; ++i)
+      if (px[i]) std::memcpy(&v[i], px[i], 4);
+  }
+  return U4{v[0], v[1], v[2], v[3]};
+}
+
+template <bool kBlend, bool kOver>
+[[gnu::always_inline]] inline void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
+  const DrawState& s = d.state;
+  const ChannelShift& shift = fb.color.format == ColorFormat::BGRA8 ? kBgraShift : kRgbaShift;
+  uint8_t* const row0 = color_address(fb, x, y);
+  uint8_t* const row1 = (mask & 0xc) ? color_address(fb, x, y + 1) : nullptr;
+  uint8_t* const px[4] = {(mask & 1) ? row0 : nullptr, (mask & 2) ? row0 + 4 : nullptr, (mask & 4) ? row1 : nullptr,
+                          (mask & 8) ? row1 + 4 : nullptr};
+  U4 packed = {0, 0, 0, 0};
+  if constexpr (kBlend && kOver) {
+    for (int c = 0; c < 4; ++c) packed |= to_unorm8(col.c[c]) << shift.at[c];
+    packed = blend_over8(packed, load_pixels(px, mask));
+  } else if constexpr (kBlend) {
+    const U4 old = load_pixels(px, mask);
+    if (s.logic_op_enabled) {
+      for (int c = 0; c < 4; ++c) {
+        const U4 src = to_unorm8(col.c[c]), dst = (old >> shift.at[c]) & 0xffu;
+        for (int i = 0; i < 4; ++i)
+          packed[i] |= uint32_t{logic_op(s.logic_op, static_cast<uint8_t>(src[i]), static_cast<uint8_t>(dst[i]))}
+                       << shift.at[c];
+      }
+    } else {
+      QuadColor dst;
+      for (int c = 0; c < 4; ++c) dst.c[c] = from_unorm8(old >> shift.at[c]);
+      // The source is converted to the buffer's precision first, as llvmpipe does for unorm8.
+      QuadColor src;
+      for (int c = 0; c < 4; ++c) src.c[c] = from_unorm8(to_unorm8(col.c[c]));
+      const QuadColor out = blend_quad(d, src, dst);
+      for (int c = 0; c < 4; ++c) packed |= to_unorm8(out.c[c]) << shift.at[c];
+    }
+  } else {
+    for (int c = 0; c < 4; ++c) packed |= to_unorm8(col.c[c]) << shift.at[c];
+  }
+  if (mask == 0xf && d.color_write_all) {
+    uint32_t v[4] = {packed[0], packed[1], packed[2], packed[3]};
+    std::memcpy(px[0], &v[0], 8);
+    std::memcpy(px[2], &v[2], 8);
+    return;
+  }
+  uint32_t keep = 0;  // bits of the old pixel the colour mask preserves
+  for (int c = 0; c < 4; ++c)
+    if (!s.color_write[c]) keep |= 0xffu << shift.at[c];
+  for (int i = 0; i < 4; ++i) {
+    if (!px[i]) continue;
+    uint32_t v = packed[i];
+    if (keep) {
+      uint32_t old;
+      std::memcpy(&old, px[i], 4);
+      v = (v & ~keep) | (old & keep);
+    }
+    std::memcpy(px[i], &v, 4);
+  }
+}
+
+template <bool kDepth, bool kStencil>
+unsigned depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
+                       F4 ox, F4 oy) {
+  const DrawState& s = d.state;
+  const StencilFace& face = p.back_facing ? s.stencil_back : s.stencil_front;
+  const uint8_t ref = d.stencil_ref[p.back_facing ? 1 : 0];
+  for (int i = 0; i < 4; ++i) {
+    if (!(mask & (1u << i))) continue;
+    const int px = x + (i & 1), py = y + (i >> 1);
+    uint8_t* stencil = nullptr;
+    uint8_t sv = 0;
+    auto update_stencil = [&](StencilOp op) {
+      const uint8_t nv = stencil_op(op, sv, ref);
+      *stencil = static_cast<uint8_t>((sv & ~face.write_mask) | (nv & face.write_mask));
+    };
+    if constexpr (kStencil) {
+      stencil = fb.stencil.base + static_cast<ptrdiff_t>(py) * fb.stencil.stride + px;
+      sv = *stencil;
+      if (!compare(face.func, static_cast<uint8_t>(ref & face.value_mask), static_cast<uint8_t>(sv & face.value_mask))) {
+        update_stencil(face.fail);
+        mask &= ~(1u << i);
+        continue;
+      }
+    }
+    if constexpr (kDepth) {
+      double z = p.z0 + p.dzdx * ox[i] + p.dzdy * oy[i];
+      z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+      const uint32_t zi = static_cast<uint32_t>(z + 0.5);
+      uint32_t* depth = fb.depth.base + static_cast<ptrdiff_t>(py) * fb.depth.stride + px;
+      if (!compare(s.depth_func, zi, *depth)) {
+        if constexpr (kStencil) update_stencil(face.depth_fail);
+        mask &= ~(1u << i);
+        continue;
+      }
+      if (s.depth_write) *depth = zi;
+    }
+    if constexpr (kStencil) update_stencil(face.depth_pass);
+  }
+  return mask;
+}
+
+using D4 = double __attribute__((vector_size(32)));
+
+// The quad's depth values: the same double expression per lane as the stencil path.
+[[gnu::always_inline]] inline U4 quad_depth(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy) {
+  const D4 dx = __builtin_convertvector(ox, D4), dy = __builtin_convertvector(oy, D4);
+  D4 z = p.z0 + p.dzdx * dx + p.dzdy * dy;
+  const D4 zero = {0.0, 0.0, 0.0, 0.0};
+  const D4 max = zero + d.depth_max;
+  z = z > zero ? (z < max ? z : max) : zero;
+  z += 0.5;
+  // Below 2^31 the signed conversion truncates exactly as the unsigned one does.
+  if (d.depth_max < 2147483647.0) return reinterpret_cast<U4>(__builtin_convertvector(z, I4));
+  return U4{static_cast<uint32_t>(z[0]), static_cast<uint32_t>(z[1]), static_cast<uint32_t>(z[2]),
+            static_cast<uint32_t>(z[3])};
+}
+
+inline unsigned lane_mask(I4 v) {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(v)));
+#else
+  return (v[0] ? 1u : 0u) | (v[1] ? 2u : 0u) | (v[2] ? 4u : 0u) | (v[3] ? 8u : 0u);
+#endif
+}
+
+inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
+  switch (f) {
+    case CompareFunc::Never: return 0;
+    case CompareFunc::Less: return lane_mask(z < stored);
+    case CompareFunc::Equal: return lane_mask(z == stored);
+    case CompareFunc::LessEqual: return lane_mask(z <= stored);
+    case CompareFunc::Greater: return lane_mask(z > stored);
+    case CompareFunc::NotEqual: return lane_mask(z != stored);
+    case CompareFunc::GreaterEqual: return lane_mask(z >= stored);
+    case CompareFunc::Always: return 0xf;
+  }
+  return 0xf;
+}
+
+// Depth test and write without stencil: the four lanes at once.
+[[gnu::always_inline]] inline unsigned depth_only(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, unsigned mask,
+                    F4 ox, F4 oy) {
+  uint32_t* const row0 = fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x;
+  const U4 zi = quad_depth(d, p, ox, oy);
+  if (mask == 0xf) {
+    uint32_t* const row1 = row0 + fb.depth.stride;
+    uint32_t v[4];
+    std::memcpy(&v[0], row0, 8);
+    std::memcpy(&v[2], row1, 8);
+    const U4 stored = {v[0], v[1], v[2], v[3]};
+    const unsigned pass = depth_pass(d.state.depth_func, zi, stored);
+    if (pass && d.state.depth_write) {
+      const I4 passed = (I4{1, 2, 4, 8} & static_cast<int>(pass)) != 0;
+      const U4 out = passed ? zi : stored;
+      const uint32_t o[4] = {out[0], out[1], out[2], out[3]};
+      std::memcpy(row0, &o[0], 8);
+      std::memcpy(row1, &o[2], 8);
+    }
+    return pass;
+  }
+  uint32_t* row[2] = {row0, nullptr};
+  if (mask & 0xc) row[1] = row0 + fb.depth.stride;
+  U4 stored = {0, 0, 0, 0};
+  for (int i = 0; i < 4; ++i)
+    if (mask & (1u << i)) stored[i] = row[i >> 1][i & 1];
+  mask &= depth_pass(d.state.depth_func, zi, stored);
+  if (d.state.depth_write)
+    for (int i = 0; i < 4; ++i)
+      if (mask & (1u << i)) row[i >> 1][i & 1] = zi[i];
+  return mask;
+}
+
+
+}  // namespace pineda::raster::quad_ops

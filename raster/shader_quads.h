@@ -1,0 +1,15 @@
+// The fragment stage of a programmable draw: the draw's fragment shader over up to four 2x2
+// quads of a row at a time (one 16-lane shader::FragmentBlock), then the same per-fragment
+// operations as fixed function.
+#pragma once
+#include <cstdint>
+
+#include "raster/draw_record.h"
+
+namespace pineda::raster {
+
+// A QuadRoutine (draw_record.h) for draws whose DrawState::shader is set.
+uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                             const uint8_t* masks);
+
+}  // namespace pineda::raster

@@ -1,0 +1,85 @@
+#include "raster/shader_textures.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raster/sampler.h"
+
+namespace pineda::raster {
+namespace {
+
+using shader::kLanes;
+using shader::SamplerKind;
+
+bool kind_matches(const TextureImage& image, SamplerKind kind) {
+  switch (kind) {
+    case SamplerKind::Tex1D: case SamplerKind::Tex2D: return image.kind == TexKind::Planar && !image.depth;
+    case SamplerKind::Tex3D: return image.kind == TexKind::Volume;
+    case SamplerKind::Cube: return image.kind == TexKind::Cube;
+    case SamplerKind::Shadow1D: case SamplerKind::Shadow2D: return image.kind == TexKind::Planar && image.depth;
+  }
+  return false;
+}
+
+// GL 2.0 table 3.20: what a shader reads of each base format.
+void apply_base_format(TexBaseFormat format, float t[4]) {
+  switch (format) {
+    case TexBaseFormat::Alpha: t[0] = t[1] = t[2] = 0.f; break;
+    case TexBaseFormat::Luminance: t[1] = t[2] = t[0]; t[3] = 1.f; break;
+    case TexBaseFormat::LuminanceAlpha: t[1] = t[2] = t[0]; break;
+    case TexBaseFormat::Intensity: t[1] = t[2] = t[3] = t[0]; break;
+    case TexBaseFormat::RGB: t[3] = 1.f; break;
+    case TexBaseFormat::RGBA: break;
+  }
+}
+
+}  // namespace
+
+void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)[kLanes], shader::LodMode mode,
+                               const float* lod, shader::LaneMask live, float (*out)[kLanes]) const {
+  const TextureUnit* tu = unit >= 0 && unit < kMaxTextureUnits ? &units_[unit] : nullptr;
+  const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
+  if (image && !kind_matches(*image, kind)) image = nullptr;
+  const bool one_d = kind == SamplerKind::Tex1D || kind == SamplerKind::Shadow1D;
+  const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D;
+  for (int q = 0; q < kLanes / 4; ++q) {
+    const int first = 4 * q;
+    if (!((live >> first) & 0xf) || !image) {
+      for (int i = first; i < first + 4; ++i) {
+        out[0][i] = out[1][i] = out[2][i] = 0.f;
+        out[3][i] = 1.f;
+      }
+      continue;
+    }
+    Sampler sampler = tu->sampler;
+    if (shadow) sampler.compare = true;
+    float s[4], t[4], r[4], texel[4][4];
+    for (int i = 0; i < 4; ++i) {
+      s[i] = coords[0][first + i];
+      t[i] = one_d ? 0.5f : coords[1][first + i];
+      r[i] = shadow ? coords[2][first + i] : (kind == SamplerKind::Tex3D || kind == SamplerKind::Cube ? coords[2][first + i] : 0.f);
+    }
+    if (mode == shader::LodMode::Explicit) {
+      // One level per lane: each lane is sampled alone at its own level of detail.
+      for (int i = 0; i < 4; ++i) {
+        Sampler one = sampler;
+        const float l = lod && std::isfinite(lod[first + i]) ? lod[first + i] : 0.f;
+        one.min_lod = one.max_lod = std::clamp(l, sampler.min_lod, sampler.max_lod);
+        one.lod_bias = 0.f;
+        const float si[4] = {s[i], s[i], s[i], s[i]}, ti[4] = {t[i], t[i], t[i], t[i]}, ri[4] = {r[i], r[i], r[i], r[i]};
+        float lane[4][4];
+        sample_quad(*image, one, si, ti, ri, lane);
+        std::copy(lane[0], lane[0] + 4, texel[i]);
+      }
+    } else {
+      if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) sampler.lod_bias += lod[first];
+      sample_quad(*image, sampler, s, t, r, texel);
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (!image->depth) apply_base_format(image->base_format, texel[i]);
+      for (int c = 0; c < 4; ++c) out[c][first + i] = texel[i][c];
+    }
+  }
+}
+
+}  // namespace pineda::raster

@@ -1,0 +1,84 @@
+#include "state/programs/generic_attribs.h"
+
+#include <algorithm>
+
+#include "state/context.h"
+#include "state/vertex_fetch.h"
+
+namespace pineda {
+namespace {
+
+void read_generic_array(const GenericArray& a, size_t index, float out[4]) {
+  const uint8_t* p = generic_element(a, index);
+  if (!p) return;
+  const int component = gl_type_size(a.type);
+  out[0] = 0.f;
+  out[1] = 0.f;
+  out[2] = 0.f;
+  out[3] = 1.f;
+  for (int c = 0; c < a.size; ++c) out[c] = read_vertex_component(p + c * component, a.type, a.normalized);
+}
+
+}  // namespace
+
+const uint8_t* generic_element(const GenericArray& a, size_t index) {
+  const size_t bytes = size_t(gl_type_size(a.type)) * size_t(a.size);
+  const size_t stride = a.stride ? size_t(a.stride) : bytes;
+  if (!a.buffer) return static_cast<const uint8_t*>(a.pointer) + stride * index;
+  if (stride && index > (SIZE_MAX - reinterpret_cast<uintptr_t>(a.pointer)) / stride) return nullptr;
+  return buffer_range(*a.buffer, reinterpret_cast<uintptr_t>(a.pointer) + stride * index, bytes);
+}
+
+bool read_generic_position(const Context& ctx, size_t index, float out[4]) {
+  const GenericArray& a = ctx.programs.arrays[0];
+  if (!a.active()) return false;
+  read_generic_array(a, index, out);
+  return true;
+}
+
+void check_generic_arrays(const Context& ctx, size_t last, bool& mapped, bool& inside) {
+  const bool program = ctx.programs.active() != nullptr;
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    const GenericArray& a = ctx.programs.arrays[i];
+    if (!a.active() || !a.buffer || (i > 0 && !program)) continue;
+    mapped |= a.buffer->mapped;
+    inside &= generic_element(a, last) != nullptr;
+  }
+}
+
+void capture_immediate_generics(Context& ctx, raster::VertexInput& v, const size_t* array_element) {
+  ProgramState& ps = ctx.programs;
+  if (!ps.active()) return;
+  const size_t slot = ps.immediate_generic.size() / (4 * kMaxVertexAttribs);
+  ps.immediate_generic.resize(ps.immediate_generic.size() + 4 * kMaxVertexAttribs);
+  float* out = ps.immediate_generic.data() + slot * 4 * kMaxVertexAttribs;
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    std::copy(ps.current_attrib[i].begin(), ps.current_attrib[i].end(), out + 4 * i);
+    if (array_element && ps.arrays[i].active()) read_generic_array(ps.arrays[i], *array_element, out + 4 * i);
+  }
+  std::copy(v.position, v.position + 4, out);
+  v.source = static_cast<uint32_t>(slot);
+}
+
+void fetch_generic(const Context& ctx, AttribSource source, const raster::VertexInput& v, int index, float out[4]) {
+  const ProgramState& ps = ctx.programs;
+  if (index == 0) {
+    std::copy(v.position, v.position + 4, out);
+    return;
+  }
+  std::copy(ps.current_attrib[index].begin(), ps.current_attrib[index].end(), out);
+  switch (source) {
+    case AttribSource::Arrays:
+      if (ps.arrays[index].active()) read_generic_array(ps.arrays[index], v.source, out);
+      return;
+    case AttribSource::Immediate: {
+      const size_t at = (size_t(v.source) * kMaxVertexAttribs + size_t(index)) * 4;
+      if (v.source != UINT32_MAX && at + 4 <= ps.immediate_generic.size())
+        std::copy(ps.immediate_generic.begin() + at, ps.immediate_generic.begin() + at + 4, out);
+      return;
+    }
+    case AttribSource::Current: return;
+  }
+}
+
+}  // namespace pineda

@@ -1,0 +1,36 @@
+// Generic vertex attributes for draws with a program: where each vertex's values come from,
+// and reading them out of the arrays or the values captured between glBegin and glEnd.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "raster/vertex.h"
+
+namespace pineda {
+
+class Context;
+struct GenericArray;
+
+// Where the generic attributes of a draw's vertices are (VertexInput::source says which
+// element or slot): array elements (glDrawArrays/Elements), the slots captured in immediate
+// mode, or only the current values (display lists, evaluators).
+enum class AttribSource : uint8_t { Arrays, Immediate, Current };
+
+// Called for each vertex glBegin/glEnd collects: with a program in use, its generic
+// attributes are captured (the current values, or the arrays' element `array_element`).
+void capture_immediate_generics(Context& ctx, raster::VertexInput& v, const size_t* array_element = nullptr);
+
+// Generic attribute `index` of `v` (index 0 is the position).
+void fetch_generic(const Context& ctx, AttribSource source, const raster::VertexInput& v, int index, float out[4]);
+
+// The bytes of element `index` of a generic array, null outside its buffer object.
+const uint8_t* generic_element(const GenericArray& a, size_t index);
+
+// Generic array 0 aliases the vertex array (GL 2.0 2.7): when enabled, element `index` is the
+// position. False when it is disabled.
+bool read_generic_position(const Context& ctx, size_t index, float out[4]);
+
+// Whether an enabled generic array is backed by a mapped buffer, or misses element `last`.
+void check_generic_arrays(const Context& ctx, size_t last, bool& mapped, bool& inside);
+
+}  // namespace pineda

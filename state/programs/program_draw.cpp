@@ -1,0 +1,285 @@
+#include "state/programs/program_draw.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "raster/draw_record.h"
+#include "raster/shader_textures.h"
+#include "state/context.h"
+#include "state/programs/builtin_uniforms.h"
+#include "state/programs/program_link.h"
+#include "state/select_feedback.h"
+#include "state/texture_target.h"
+
+namespace pineda {
+namespace {
+
+using shader::kLanes;
+
+bool sampler_target(shader::BaseType b, TexTarget& out) {
+  switch (b) {
+    case shader::BaseType::Sampler1D: case shader::BaseType::Sampler1DShadow: out = TexTarget::T1D; return true;
+    case shader::BaseType::Sampler2D: case shader::BaseType::Sampler2DShadow: out = TexTarget::T2D; return true;
+    case shader::BaseType::Sampler3D: out = TexTarget::T3D; return true;
+    case shader::BaseType::SamplerCube: out = TexTarget::Cube; return true;
+    default: return false;
+  }
+}
+
+// The texture units the program's samplers read, by their type's target (GL 2.0 2.15.4:
+// sampler types choose the target, the enables do not matter).
+void snapshot_sampler_textures(Context& ctx, const shader::Program& program, const std::vector<float>& values,
+                               raster::DrawState& state) {
+  for (raster::TextureUnit& unit : state.texture_units) unit = raster::TextureUnit{};
+  for (const shader::Uniform& u : program.uniforms()) {
+    TexTarget target;
+    if (u.builtin || !sampler_target(u.type.base, target)) continue;
+    for (int e = 0; e < std::max(u.array_size, 1); ++e) {
+      const size_t at = static_cast<size_t>(u.offset + e * u.stride);
+      if (at >= values.size()) break;
+      const int index = static_cast<int>(values[at]);
+      if (index < 0 || index >= raster::kMaxTextureUnits) continue;
+      raster::TextureUnit& out = state.texture_units[index];
+      TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[index], target), binding_enum(target));
+      out.image = tex.snapshot();
+      if (!out.image) continue;
+      out.sampler = tex.sampler();
+      out.sampler.lod_bias = std::clamp(out.sampler.lod_bias + ctx.texture_units[index].env.lod_bias,
+                                        -kMaxTextureLodBias, kMaxTextureLodBias);
+    }
+  }
+}
+
+// Value of a built-in vertex input (desktop GLSL) for vertex v.
+void builtin_input(const raster::VertexInput& v, shader::BuiltinAttribute kind, float out[4]) {
+  out[0] = out[1] = out[2] = 0.f;
+  out[3] = 1.f;
+  using BA = shader::BuiltinAttribute;
+  switch (kind) {
+    case BA::None: return;
+    case BA::Vertex: std::copy(v.position, v.position + 4, out); return;
+    case BA::Normal: std::copy(v.normal, v.normal + 3, out); return;
+    case BA::Color: std::copy(v.color, v.color + 4, out); return;
+    case BA::SecondaryColor: std::copy(v.secondary_color, v.secondary_color + 3, out); return;
+    case BA::FogCoord: out[0] = v.fog_coord; return;
+    default: {
+      const int unit = static_cast<int>(kind) - static_cast<int>(BA::MultiTexCoord0);
+      if (unit >= 0 && unit < raster::kMaxTextureUnits) std::copy(v.texcoord[unit], v.texcoord[unit] + 4, out);
+      return;
+    }
+  }
+}
+
+// Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
+// varyings into `varyings` (program.varying_floats() per vertex).
+void run_vertex_shader(const Context& ctx, const shader::Program& program, const float* uniforms,
+                       const shader::TextureAccess* textures, std::span<const raster::VertexInput> vertices,
+                       AttribSource source, bool point_size_from_shader, float fixed_point_size,
+                       std::vector<raster::ClipVertex>& out, std::vector<float>& varyings) {
+  const int slots = std::max(program.input_slots(), 1);
+  const int nv = program.varying_floats();
+  const int outputs = shader::kOutFirstVarying + nv;
+  std::vector<float> in(static_cast<size_t>(slots) * 4 * kLanes), result(static_cast<size_t>(outputs) * kLanes);
+  out.resize(vertices.size());
+  varyings.resize(vertices.size() * static_cast<size_t>(nv));
+  const auto& attributes = program.attributes();
+  for (size_t first = 0; first < vertices.size(); first += kLanes) {
+    const int count = static_cast<int>(std::min<size_t>(kLanes, vertices.size() - first));
+    std::fill(in.begin(), in.end(), 0.f);
+    for (int lane = 0; lane < count; ++lane) {
+      const raster::VertexInput& v = vertices[first + lane];
+      for (const shader::Attribute& a : attributes) {
+        const int per_element = std::max<int>(a.type.columns, 1);
+        const int slot_count = per_element * std::max(a.array_size, 1);
+        for (int s = 0; s < slot_count; ++s) {
+          const int slot = a.input_slot + s;
+          if (slot < 0 || slot >= slots) continue;
+          float value[4];
+          if (a.builtin != shader::BuiltinAttribute::None) builtin_input(v, a.builtin, value);
+          else if (a.location + s >= 0 && a.location + s < kMaxVertexAttribs) fetch_generic(ctx, source, v, a.location + s, value);
+          else continue;
+          for (int c = 0; c < 4; ++c) in[(static_cast<size_t>(slot) * 4 + c) * kLanes + lane] = value[c];
+        }
+      }
+    }
+    std::fill(result.begin(), result.end(), 0.f);
+    shader::VertexBatch batch;
+    batch.count = count;
+    batch.inputs = in.data();
+    batch.outputs = result.data();
+    program.run_vertices(uniforms, textures, batch);
+    for (int lane = 0; lane < count; ++lane) {
+      raster::ClipVertex& c = out[first + lane];
+      c = raster::ClipVertex{};
+      for (int i = 0; i < 4; ++i) c.clip[i] = result[static_cast<size_t>(shader::kOutPosition + i) * kLanes + lane];
+      for (auto* color : {c.color, c.back_color}) std::fill(color, color + 4, 0.f);
+      for (auto& tc : c.texcoord) std::fill(tc, tc + 4, 0.f);
+      c.edge_flag = vertices[first + lane].edge_flag;
+      const float size = point_size_from_shader ? result[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
+                                                : fixed_point_size;
+      c.point_size = std::isfinite(size) ? size : 1.f;
+      float* dst = varyings.data() + (first + lane) * static_cast<size_t>(nv);
+      for (int k = 0; k < nv; ++k) dst[k] = result[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
+    }
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Where a varying of the conventional (fixed-function) interface lives in a ClipVertex.
+struct ConventionalVarying {
+  float* front = nullptr;
+  float* back = nullptr;
+  int components = 0;
+};
+
+ConventionalVarying conventional(raster::ClipVertex& v, std::string_view name) {
+  if (name == "gl_Color") return {v.color, v.back_color, 4};
+  if (name == "gl_SecondaryColor") return {v.secondary, v.back_secondary, 3};
+  if (name == "gl_FogFragCoord") return {&v.fog, nullptr, 1};
+  if (name.starts_with("gl_TexCoord[") && name.size() == 14 && name[13] == ']') {
+    const int unit = name[12] - '0';
+    if (unit >= 0 && unit < raster::kMaxTextureUnits) return {v.texcoord[unit], nullptr, 4};
+  }
+  return {};
+}
+
+const LinkedProgram* program_in_use(Context& ctx) {
+  const LinkedProgram* exec = ctx.programs.active();
+  return exec && exec->program ? exec : nullptr;
+}
+
+// The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
+std::shared_ptr<raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec) {
+  if (!samplers_consistent(exec, nullptr)) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return nullptr;
+  }
+  auto draw = std::make_shared<raster::ShaderDraw>();
+  draw->program = exec.program;
+  draw->uniforms = exec.values;
+  fill_builtin_uniforms(ctx, *exec.program, draw->uniforms);
+  draw->two_side = ctx.programs.two_side;
+  return draw;
+}
+
+void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Primitive primitive,
+                       std::span<const raster::ClipVertex> vertices, std::span<const uint32_t> indices,
+                       const float* varyings) {
+  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, vertices, indices);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, vertices, indices, varyings); });
+}
+
+}  // namespace
+
+bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<const raster::VertexInput> vertices,
+                       std::span<const uint32_t> indices, AttribSource source) {
+  const LinkedProgram* exec = program_in_use(ctx);
+  if (!exec || !exec->vertex_shader || !exec->fragment_shader) return false;
+  const shader::Program& program = *exec->program;
+  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  if (!shader_draw) return true;
+
+  raster::DrawState state = ctx.draw_state;
+  snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
+  state.viewport = ctx.viewport;
+  state.cull_face = ctx.enable_cull;
+  const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
+  // Each vertex brings its size: the shader's, or glPointSize (no distance attenuation
+  // without eye coordinates), clamped to the point parameters' range.
+  state.point_params.size_per_vertex = true;
+  state.point_params.attenuation[0] = 1.f;
+  state.point_params.attenuation[1] = state.point_params.attenuation[2] = 0.f;
+  state.shader = shader_draw;
+
+  // Vertex-shader texture lookups read the same (usable) images the fragments will.
+  const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
+  const raster::UnitTextureAccess vertex_textures(textures_record.state.texture_units);
+  std::vector<float>& varyings = ctx.programs.draw_varyings;
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), &vertex_textures, vertices, source, shader_size,
+                    ctx.draw_state.point_size, ctx.transformed, varyings);
+  const raster::PointParameters& pp = state.point_params;
+  for (raster::ClipVertex& v : ctx.transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
+  draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
+  return true;
+}
+
+bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
+                             std::vector<raster::ClipVertex>& out) {
+  const LinkedProgram* exec = program_in_use(ctx);
+  if (!exec || !exec->vertex_shader || exec->fragment_shader) return false;
+  const shader::Program& program = *exec->program;
+  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  if (!shader_draw) {
+    out.clear();
+    return true;
+  }
+  raster::DrawState state = ctx.draw_state;
+  snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
+  const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
+  const raster::UnitTextureAccess vertex_textures(textures_record.state.texture_units);
+  const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
+  std::vector<float>& varyings = ctx.programs.draw_varyings;
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), &vertex_textures, vertices, source, shader_size,
+                    ctx.draw_state.point_size, out, varyings);
+  const int nv = program.varying_floats();
+  const raster::PointParameters& pp = ctx.draw_state.point_params;
+  for (size_t i = 0; i < out.size(); ++i) {
+    raster::ClipVertex& v = out[i];
+    const float* in = varyings.data() + i * static_cast<size_t>(nv);
+    bool has_back_color = false, has_back_secondary = false;
+    for (const shader::Varying& var : program.varyings()) {
+      const ConventionalVarying c = conventional(v, var.name);
+      const int n = std::min(c.components, var.components);
+      for (int k = 0; k < n && var.offset + k < nv; ++k) c.front[k] = in[var.offset + k];
+      if (!c.back || var.back_offset < 0) continue;
+      for (int k = 0; k < n && var.back_offset + k < nv; ++k) c.back[k] = in[var.back_offset + k];
+      (c.back == v.back_color ? has_back_color : has_back_secondary) = true;
+    }
+    // GL 2.0 2.15.3: the colours are clamped to [0, 1] before rasterization.
+    for (float* c : {v.color, v.back_color}) std::transform(c, c + 4, c, [](float x) { return std::clamp(x, 0.f, 1.f); });
+    for (float* c : {v.secondary, v.back_secondary}) std::transform(c, c + 3, c, [](float x) { return std::clamp(x, 0.f, 1.f); });
+    if (!has_back_color || !ctx.programs.two_side) std::copy(v.color, v.color + 4, v.back_color);
+    if (!has_back_secondary || !ctx.programs.two_side) std::copy(v.secondary, v.secondary + 3, v.back_secondary);
+    v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
+  }
+  ctx.draw_state.point_params.size_per_vertex = true;  // the sizes are the shader's or glPointSize
+  return true;
+}
+
+bool draw_fragment_program_only(Context& ctx, raster::Primitive primitive, std::span<const raster::ClipVertex> vertices,
+                                std::span<const uint32_t> indices) {
+  const LinkedProgram* exec = program_in_use(ctx);
+  if (!exec || exec->vertex_shader || !exec->fragment_shader) return false;
+  const shader::Program& program = *exec->program;
+  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  if (!shader_draw) return true;
+  raster::DrawState state = ctx.draw_state;
+  snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
+  state.shader = shader_draw;
+  const int nv = program.varying_floats();
+  std::vector<float>& varyings = ctx.programs.draw_varyings;
+  varyings.assign(vertices.size() * static_cast<size_t>(nv), 0.f);
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    raster::ClipVertex v = vertices[i];
+    float* out = varyings.data() + i * static_cast<size_t>(nv);
+    for (const shader::Varying& var : program.varyings()) {
+      const ConventionalVarying c = conventional(v, var.name);
+      const int n = std::min(c.components, var.components);
+      for (int k = 0; k < n && var.offset + k < nv; ++k) out[var.offset + k] = c.front[k];
+      if (c.components == 3 && var.components == 4 && var.offset + 3 < nv) out[var.offset + 3] = 1.f;
+      if (!c.back || var.back_offset < 0) continue;
+      for (int k = 0; k < n && var.back_offset + k < nv; ++k) out[var.back_offset + k] = c.back[k];
+      if (c.components == 3 && var.components == 4 && var.back_offset + 3 < nv) out[var.back_offset + 3] = 1.f;
+    }
+  }
+  // The fixed-function stage computed both colours; the back ones apply with two-sided lighting.
+  shader_draw->two_side = ctx.lighting.enabled && ctx.lighting.two_side;
+  draw_or_feed_back(ctx, state, primitive, vertices, indices, varyings.data());
+  return true;
+}
+
+}  // namespace pineda

@@ -1,0 +1,34 @@
+// Draws while a program is in use (GL 2.0 2.15): the vertex shader over batches of 16
+// vertices, then clipping, setup and binning with the shader's varyings, and the fragment
+// shader in the tiles.
+#pragma once
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "raster/draw_state.h"
+#include "raster/vertex.h"
+#include "state/programs/generic_attribs.h"
+
+namespace pineda {
+
+class Context;
+
+// Draws with a program that has both stages; false when the program in use lacks one, so
+// that the fixed-function path draws with the hooks below.
+bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<const raster::VertexInput> vertices,
+                       std::span<const uint32_t> indices, AttribSource source);
+
+// A program with a vertex shader only: the shader replaces transform and lighting. Its
+// gl_Position, gl_FrontColor, gl_TexCoord[i], ... become `out` for the fixed-function
+// fragment stage. False when the program in use is not such a program.
+bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
+                             std::vector<raster::ClipVertex>& out);
+
+// A program with a fragment shader only: the fixed-function vertex stage produced
+// `vertices`; their colours, texture coordinates and fog coordinate are the shader's inputs.
+// False when the program in use is not such a program.
+bool draw_fragment_program_only(Context& ctx, raster::Primitive primitive, std::span<const raster::ClipVertex> vertices,
+                                std::span<const uint32_t> indices);
+
+}  // namespace pineda

@@ -1,0 +1,87 @@
+#include "state/programs/program_link.h"
+
+#include "state/context.h"
+
+namespace pineda {
+namespace {
+
+bool is_sampler(shader::BaseType b) { return b >= shader::BaseType::Sampler1D; }
+
+}  // namespace
+
+void link_program(Context& ctx, ProgramObject& p) {
+  p.link_status = false;
+  p.validate_status = false;
+  p.executable.reset();
+  p.info_log.clear();
+  const ShaderObject* stages[2] = {nullptr, nullptr};  // vertex, fragment
+  for (GLuint name : p.attached) {
+    const ShaderObject* s = ctx.programs.objects.shader(name);
+    if (!s) continue;
+    if (!s->compile_status || !s->compiled) {
+      p.info_log = "error: shader " + std::to_string(name) + " is not compiled\n";
+      return;
+    }
+    const int stage = s->type == GL_VERTEX_SHADER ? 0 : 1;
+    if (stages[stage]) {
+      p.info_log = std::string("error: several ") + (stage == 0 ? "vertex" : "fragment") +
+                   " shaders in one program are not supported\n";
+      return;
+    }
+    stages[stage] = s;
+  }
+  if (ctx.attribs().gles && (!stages[0] || !stages[1])) {
+    p.info_log = "error: a program needs a vertex and a fragment shader\n";
+    return;
+  }
+  auto exec = std::make_shared<LinkedProgram>();
+  exec->vertex_shader = stages[0] != nullptr;
+  exec->fragment_shader = stages[1] != nullptr;
+  if (stages[0] || stages[1]) {
+    std::vector<shader::AttributeBinding> bindings;
+    for (const auto& [name, location] : p.bindings) bindings.push_back({name, static_cast<int>(location)});
+    shader::LinkResult result = shader::link(stages[0] ? stages[0]->compiled.get() : nullptr,
+                                             stages[1] ? stages[1]->compiled.get() : nullptr, bindings);
+    p.info_log = std::move(result.info_log);
+    if (!result.program) return;
+    exec->program = std::move(result.program);
+    exec->uniforms = UniformTable::build(exec->program->uniforms());
+    exec->values.assign(static_cast<size_t>(std::max(exec->program->uniform_floats(), 0)), 0.f);
+    const auto& attributes = exec->program->attributes();
+    for (size_t i = 0; i < attributes.size(); ++i) exec->attributes.push_back(static_cast<int>(i));
+  }
+  p.executable = std::move(exec);
+  p.link_status = true;
+}
+
+bool samplers_consistent(const LinkedProgram& exec, std::string* log) {
+  shader::BaseType unit_type[raster::kMaxTextureUnits];
+  bool used[raster::kMaxTextureUnits] = {};
+  for (const shader::Uniform& u : exec.uniforms.active) {
+    if (!is_sampler(u.type.base)) continue;
+    for (int e = 0; e < std::max(u.array_size, 1); ++e) {
+      const size_t at = static_cast<size_t>(u.offset + e * u.stride);
+      if (at >= exec.values.size()) continue;
+      const int unit = static_cast<int>(exec.values[at]);
+      if (unit < 0 || unit >= raster::kMaxTextureUnits) continue;
+      if (used[unit] && unit_type[unit] != u.type.base) {
+        if (log) *log = "error: samplers of different types use texture unit " + std::to_string(unit) + "\n";
+        return false;
+      }
+      used[unit] = true;
+      unit_type[unit] = u.type.base;
+    }
+  }
+  return true;
+}
+
+bool validate_program(const Context&, const ProgramObject& p, std::string& log) {
+  if (!p.link_status || !p.executable) {
+    log = "error: the program is not linked\n";
+    return false;
+  }
+  log.clear();
+  return samplers_consistent(*p.executable, &log);
+}
+
+}  // namespace pineda

@@ -1,0 +1,57 @@
+// The GL 2.0 programmable-pipeline state of a context: shader and program objects, the
+// program in use, and the generic vertex attributes (current values and arrays).
+#pragma once
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "shader/program.h"
+#include "state/buffer_object.h"
+#include "state/programs/program_objects.h"
+
+namespace pineda {
+
+
+
+
+constexpr int kMaxVertexAttribs = shader::kMaxVertexAttribs;
+
+struct GenericArray {
+  bool enabled = false;
+  bool normalized = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+  std::shared_ptr<BufferObject> buffer;
+  bool active() const { return enabled && (pointer || buffer); }
+};
+
+struct ProgramState {
+  ShaderProgramNames objects;
+  GLuint current = 0;                            // glUseProgram's name (0: fixed function)
+  std::shared_ptr<LinkedProgram> current_exec;   // what draws run; kept when a relink fails
+  bool point_size_from_shader = false;           // GL_VERTEX_PROGRAM_POINT_SIZE
+  bool two_side = false;                         // GL_VERTEX_PROGRAM_TWO_SIDE
+
+  std::array<std::array<float, 4>, kMaxVertexAttribs> current_attrib = [] {
+    std::array<std::array<float, 4>, kMaxVertexAttribs> a{};
+    for (auto& v : a) v = {0, 0, 0, 1};
+    return a;
+  }();
+  std::array<GenericArray, kMaxVertexAttribs> arrays;
+
+  // Generic attribute values of the vertices specified between glBegin and glEnd while a
+  // program is in use: kMaxVertexAttribs vec4 per vertex (VertexInput::generic indexes them).
+  std::vector<float> immediate_generic;
+  // The vertex shader's varyings of the current draw (scratch).
+  std::vector<float> draw_varyings;
+
+  // A program with a vertex shader is in use: draws run it.
+  const LinkedProgram* active() const { return current_exec.get(); }
+};
+
+}  // namespace pineda

@@ -1,0 +1,46 @@
+// Helpers for the programmable-pipeline tests: compiling and linking from source strings.
+#pragma once
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <string>
+
+#include "tests/e2e/support/gl_test.h"
+
+namespace pineda::test {
+
+class ProgramTest : public GlTest {
+ protected:
+  GLuint compile(GLenum type, const char* source) {
+    const GLuint s = glCreateShader(type);
+    glShaderSource(s, 1, &source, nullptr);
+    glCompileShader(s);
+    return s;
+  }
+  GLint shader_int(GLuint s, GLenum pname) {
+    GLint v = -12345;
+    glGetShaderiv(s, pname, &v);
+    return v;
+  }
+  GLint program_int(GLuint p, GLenum pname) {
+    GLint v = -12345;
+    glGetProgramiv(p, pname, &v);
+    return v;
+  }
+  std::string program_log(GLuint p) {
+    char buf[4096] = {};
+    glGetProgramInfoLog(p, sizeof buf, nullptr, buf);
+    return buf;
+  }
+  // Compiles, attaches and links; the program's info log explains a failure.
+  GLuint link(const char* vs, const char* fs) {
+    const GLuint p = glCreateProgram();
+    if (vs) glAttachShader(p, compile(GL_VERTEX_SHADER, vs));
+    if (fs) glAttachShader(p, compile(GL_FRAGMENT_SHADER, fs));
+    glLinkProgram(p);
+    return p;
+  }
+};
+
+}  // namespace pineda::test

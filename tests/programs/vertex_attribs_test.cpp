@@ -1,0 +1,110 @@
+// Generic vertex attributes: current values, arrays and their queries (GL 2.0 2.7, 2.8, 6.1.14).
+#include "tests/programs/program_test.h"
+
+namespace pineda::test {
+namespace {
+
+using VertexAttribsTest = ProgramTest;
+
+TEST_F(VertexAttribsTest, CurrentValuesAndConversions) {
+  GLfloat v[4] = {};
+  glGetVertexAttribfv(3, GL_CURRENT_VERTEX_ATTRIB, v);
+  EXPECT_EQ(v[0], 0.f);
+  EXPECT_EQ(v[3], 1.f);
+  glVertexAttrib2f(3, 0.5f, -2.f);
+  glGetVertexAttribfv(3, GL_CURRENT_VERTEX_ATTRIB, v);
+  EXPECT_EQ(v[0], 0.5f);
+  EXPECT_EQ(v[1], -2.f);
+  EXPECT_EQ(v[2], 0.f);
+  EXPECT_EQ(v[3], 1.f);
+  const GLubyte ub[4] = {255, 0, 51, 102};
+  glVertexAttrib4Nubv(5, ub);
+  glGetVertexAttribfv(5, GL_CURRENT_VERTEX_ATTRIB, v);
+  EXPECT_EQ(v[0], 1.f);
+  EXPECT_FLOAT_EQ(v[2], 0.2f);
+  EXPECT_FLOAT_EQ(v[3], 0.4f);
+  glVertexAttrib4ubv(5, ub);  // not normalized
+  glGetVertexAttribfv(5, GL_CURRENT_VERTEX_ATTRIB, v);
+  EXPECT_EQ(v[0], 255.f);
+  const GLshort s[4] = {-32768, 32767, 0, 0};
+  glVertexAttrib4Nsv(6, s);
+  glGetVertexAttribfv(6, GL_CURRENT_VERTEX_ATTRIB, v);
+  EXPECT_EQ(v[0], -1.f);
+  EXPECT_EQ(v[1], 1.f);
+  glVertexAttrib3d(7, 1.5, 2.5, 3.5);
+  GLdouble d[4] = {};
+  glGetVertexAttribdv(7, GL_CURRENT_VERTEX_ATTRIB, d);
+  EXPECT_EQ(d[2], 3.5);
+  EXPECT_EQ(d[3], 1.0);
+  GLint i[4] = {};
+  glGetVertexAttribiv(7, GL_CURRENT_VERTEX_ATTRIB, i);
+  EXPECT_EQ(i[0], 1);  // float values are truncated
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(VertexAttribsTest, IndexErrors) {
+  glVertexAttrib1f(16, 1.f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glEnableVertexAttribArray(16);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glDisableVertexAttribArray(99);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  GLfloat v[4];
+  glGetVertexAttribfv(16, GL_VERTEX_ATTRIB_ARRAY_SIZE, v);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glGetVertexAttribfv(0, GL_CURRENT_VERTEX_ATTRIB, v);  // attribute 0 has no current value
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glGetVertexAttribfv(1, GL_TEXTURE_2D, v);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  void* p = nullptr;
+  glGetVertexAttribPointerv(1, GL_VERTEX_ATTRIB_ARRAY_SIZE, &p);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glGetVertexAttribPointerv(16, GL_VERTEX_ATTRIB_ARRAY_POINTER, &p);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+}
+
+TEST_F(VertexAttribsTest, PointerStateAndErrors) {
+  GLint v = -1;
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &v);
+  EXPECT_EQ(v, GL_FALSE);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_SIZE, &v);
+  EXPECT_EQ(v, 4);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_TYPE, &v);
+  EXPECT_EQ(v, GL_FLOAT);
+  const GLshort data[8] = {};
+  glVertexAttribPointer(2, 3, GL_SHORT, GL_TRUE, 12, data);
+  glEnableVertexAttribArray(2);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &v);
+  EXPECT_EQ(v, GL_TRUE);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_SIZE, &v);
+  EXPECT_EQ(v, 3);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_TYPE, &v);
+  EXPECT_EQ(v, GL_SHORT);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_STRIDE, &v);
+  EXPECT_EQ(v, 12);
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_NORMALIZED, &v);
+  EXPECT_EQ(v, GL_TRUE);
+  void* p = nullptr;
+  glGetVertexAttribPointerv(2, GL_VERTEX_ATTRIB_ARRAY_POINTER, &p);
+  EXPECT_EQ(p, static_cast<const void*>(data));
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glVertexAttribPointer(4, 2, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<const void*>(16));
+  glGetVertexAttribiv(4, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &v);
+  EXPECT_EQ(GLuint(v), buffer);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glVertexAttribPointer(2, 5, GL_FLOAT, GL_FALSE, 0, data);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, -4, data);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glVertexAttribPointer(2, 4, GL_HALF_FLOAT, GL_FALSE, 0, data);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glVertexAttribPointer(16, 4, GL_FLOAT, GL_FALSE, 0, data);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glGetVertexAttribiv(2, GL_VERTEX_ATTRIB_ARRAY_SIZE, &v);
+  EXPECT_EQ(v, 3);  // unchanged by the failed calls
+}
+
+}  // namespace
+}  // namespace pineda::test
