@@ -89,6 +89,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.logic_op = ctx.logic_op;
   f.stencil_value_mask = ctx.stencil_value_mask;
   f.stencil_write_mask = ctx.stencil_write_mask;
+  f.stencil_back_values = ctx.stencil_back_values;
   std::copy(ctx.clear_color, ctx.clear_color + 4, f.clear_color);
   f.clear_depth = ctx.clear_depth;
   f.clear_stencil = ctx.clear_stencil;
@@ -230,6 +231,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.stencil_fail = f.stencil_fail;
     ctx.stencil_zfail = f.stencil_zfail;
     ctx.stencil_zpass = f.stencil_zpass;
+    ctx.stencil_back_values = f.stencil_back_values;
     s.stencil_front = o.stencil_front;
     s.stencil_back = o.stencil_back;
     ctx.clear_stencil = f.clear_stencil;

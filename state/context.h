@@ -28,6 +28,7 @@
 #include "state/pixel_state.h"
 #include "state/query_object.h"
 #include "state/select_feedback.h"
+#include "state/stencil_faces.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 #include "state/vertex_extras_state.h"
@@ -182,6 +183,7 @@ class Context {
   GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_alpha = GL_FUNC_ADD;
   GLenum logic_op = GL_COPY;
   GLuint stencil_value_mask = ~0u, stencil_write_mask = ~0u;
+  StencilBackValues stencil_back_values;  // GL 2.0: the back face's (the front's are above)
 
   // Clear values
   float clear_color[4] = {0, 0, 0, 0};
