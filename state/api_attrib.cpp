@@ -102,6 +102,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.hints[6] = ctx.hint_texture_compression;
   f.viewport = ctx.viewport;
   f.draw_buffer = ctx.draw_buffer;
+  f.extra_draw_buffers = ctx.extra_draw_buffers;
   f.read_buffer = ctx.read_buffer;
   f.list_base = ctx.list_base;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
@@ -263,6 +264,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.logic_op = f.logic_op;
     s.logic_op = o.logic_op;
     ctx.draw_buffer = f.draw_buffer;
+    ctx.extra_draw_buffers = f.extra_draw_buffers;
     s.color_write = o.color_write;
     std::copy(f.clear_color, f.clear_color + 4, ctx.clear_color);
     ctx.color_index.clear_index = f.color_index.clear_index;

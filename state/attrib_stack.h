@@ -12,6 +12,7 @@
 #include "raster/vertex_transform.h"
 #include "state/multisample.h"
 #include "state/color_index.h"
+#include "state/draw_buffer_list.h"
 #include "state/evaluator.h"
 #include "state/pixel_state.h"
 #include "state/stencil_faces.h"
@@ -63,6 +64,7 @@ struct AttribFrame {
   GLenum hints[7];
   raster::Viewport viewport;
   GLenum draw_buffer, read_buffer;
+  ExtraDrawBuffers extra_draw_buffers;
   GLuint list_base;
   // texture
   struct Unit {

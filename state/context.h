@@ -22,6 +22,7 @@
 #include "state/buffer_object.h"
 #include "state/color_index.h"
 #include "state/display_list.h"
+#include "state/draw_buffer_list.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
 #include "state/evaluator.h"
@@ -208,6 +209,7 @@ class Context {
   TextureNamespace textures;
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+  ExtraDrawBuffers extra_draw_buffers{};  // DRAW_BUFFER1.. (glDrawBuffers), GL_NONE by default
 
   // Raster position and pixel rectangles
   RasterPosition raster_pos;
