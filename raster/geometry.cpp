@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raster/fragment_ops.h"
+#include "raster/point_sprite.h"
 #include "raster/raster_limits.h"
 #include "raster/reference_triangle.h"
 #include "raster/reference_lines_points.h"
@@ -192,8 +193,11 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style, float size
   const WinVert wv = to_window(v, style.back_facing);
   if (!has_window_position(wv)) return;
   PrimSetup prim;
-  const bool covered = point_smooth_ ? setup_smooth_point(wv, smooth_size(size, kMaxPointSize), params(style), prim)
-                                     : setup_point(wv, rounded_size(size, kMaxPointSize), params(style), prim);
+  const DrawRecord& d = scene_.current_draw();
+  const PointSprite& sprite = d.state.point_params.sprite;  // point smoothing is ignored for sprites
+  const bool covered = sprite.enabled  ? setup_point_sprite(wv, size, sprite, d, params(style), prim)
+                       : point_smooth_ ? setup_smooth_point(wv, smooth_size(size, kMaxPointSize), params(style), prim)
+                                       : setup_point(wv, rounded_size(size, kMaxPointSize), params(style), prim);
   if (covered) emit(prim);
 }
 

@@ -144,6 +144,7 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   s.offset_line = o.offset_line;
   s.offset_point = o.offset_point;
   s.point_smooth = o.point_smooth;
+  s.point_params.sprite.enabled = o.point_params.sprite.enabled;
   s.line_smooth = o.line_smooth;
   ctx.enable_cull = f.enable_cull;
   ctx.lighting.enabled = f.lighting.enabled;
