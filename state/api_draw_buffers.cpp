@@ -5,8 +5,12 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/draw_buffer_list.h"
+#include "shader/program.h"
 
 namespace pineda {
+
+static_assert(kMaxDrawBuffers == shader::kMaxDrawBuffers, "the fragment outputs a shader writes");
+
 namespace {
 
 enum BufferBits : unsigned { kFrontLeft = 1, kBackLeft = 2 };
