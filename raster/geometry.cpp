@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raster/fragment_ops.h"
+#include "raster/point_sprite.h"
 #include "raster/raster_limits.h"
 #include "raster/reference_triangle.h"
 #include "raster/reference_lines_points.h"
@@ -223,9 +224,14 @@ void GeometryStage::draw_point(const ClipVert& v, const Style& style, float size
   if (!has_window_position(wv)) return;
   PrimSetup prim;
   const SetupParams p = params(style);
-  const double drawn_size = point_smooth_ ? smooth_size(size, kMaxPointSize) : rounded_size(size, kMaxPointSize);
-  const bool covered = point_smooth_ ? setup_smooth_point(wv, drawn_size, p, prim)
-                                     : setup_point(wv, static_cast<int>(drawn_size), p, prim);
+  const DrawRecord& d = scene_.current_draw();
+  const PointSprite& sprite = d.state.point_params.sprite;  // point smoothing is ignored for sprites
+  const double drawn_size = sprite.enabled ? size
+                            : point_smooth_ ? smooth_size(size, kMaxPointSize)
+                                            : rounded_size(size, kMaxPointSize);
+  const bool covered = sprite.enabled  ? setup_point_sprite(wv, size, sprite, d, p, prim)
+                       : point_smooth_ ? setup_smooth_point(wv, drawn_size, p, prim)
+                                       : setup_point(wv, static_cast<int>(drawn_size), p, prim);
   if (shader_) varying_planes_.back() = Plane{static_cast<float>(wv.fx), static_cast<float>(wv.fy), static_cast<float>(drawn_size)};
   if (covered) emit(prim);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/point_sprite.h"
 #include "raster/raster_limits.h"
 
 namespace pineda::raster {
@@ -12,6 +13,7 @@ struct PointParameters {
   float fade_threshold = 1.f;  // fades only under multisampling, which single-sampled buffers never do
   float attenuation[3] = {1.f, 0.f, 0.f};  // a, b, c of 1 / (a + b d + c d^2)
   bool size_per_vertex = false;  // each vertex brings its size (OpenGL ES 1.1's point size array)
+  PointSprite sprite;
 
   // Whether the size depends on the vertex's distance (else one size serves the whole draw).
   bool attenuated() const { return attenuation[0] != 1.f || attenuation[1] != 0.f || attenuation[2] != 0.f; }

@@ -89,6 +89,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.logic_op = ctx.logic_op;
   f.stencil_value_mask = ctx.stencil_value_mask;
   f.stencil_write_mask = ctx.stencil_write_mask;
+  f.stencil_back_values = ctx.stencil_back_values;
   std::copy(ctx.clear_color, ctx.clear_color + 4, f.clear_color);
   f.clear_depth = ctx.clear_depth;
   f.clear_stencil = ctx.clear_stencil;
@@ -101,6 +102,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.hints[6] = ctx.hint_texture_compression;
   f.viewport = ctx.viewport;
   f.draw_buffer = ctx.draw_buffer;
+  f.extra_draw_buffers = ctx.extra_draw_buffers;
   f.read_buffer = ctx.read_buffer;
   f.list_base = ctx.list_base;
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
@@ -142,6 +144,7 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   s.offset_line = o.offset_line;
   s.offset_point = o.offset_point;
   s.point_smooth = o.point_smooth;
+  s.point_params.sprite.enabled = o.point_params.sprite.enabled;
   s.line_smooth = o.line_smooth;
   ctx.enable_cull = f.enable_cull;
   ctx.lighting.enabled = f.lighting.enabled;
@@ -230,6 +233,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.stencil_fail = f.stencil_fail;
     ctx.stencil_zfail = f.stencil_zfail;
     ctx.stencil_zpass = f.stencil_zpass;
+    ctx.stencil_back_values = f.stencil_back_values;
     s.stencil_front = o.stencil_front;
     s.stencil_back = o.stencil_back;
     ctx.clear_stencil = f.clear_stencil;
@@ -261,6 +265,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.logic_op = f.logic_op;
     s.logic_op = o.logic_op;
     ctx.draw_buffer = f.draw_buffer;
+    ctx.extra_draw_buffers = f.extra_draw_buffers;
     s.color_write = o.color_write;
     std::copy(f.clear_color, f.clear_color + 4, ctx.clear_color);
     ctx.color_index.clear_index = f.color_index.clear_index;

@@ -32,6 +32,7 @@ void DrawBuffer(Context& ctx, GLenum buffer) {
   if (!is_buffer_enum(buffer)) return ctx.record_error(GL_INVALID_ENUM);
   if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
   ctx.draw_buffer = buffer;
+  ctx.extra_draw_buffers.fill(GL_NONE);  // GL 2.0 4.2.1: DrawBuffer sets the other outputs' to NONE
   ctx.drawable_changed();  // the renderer targets the selected colour buffer from now on
 }
 

@@ -34,6 +34,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_STENCIL_TEST: return &s.stencil_test;
     case GL_POINT_SMOOTH: return &s.point_smooth;
     case GL_LINE_SMOOTH: return &s.line_smooth;
+    case GL_POINT_SPRITE: return &s.point_params.sprite.enabled;
     case GL_POLYGON_OFFSET_FILL: return &s.offset_fill;
     case GL_POLYGON_OFFSET_LINE: return &s.offset_line;
     case GL_POLYGON_OFFSET_POINT: return &s.offset_point;

@@ -1,4 +1,4 @@
-// Per-fragment operation state: alpha, stencil, depth, blend, logic op, masks, scissor.
+// Per-fragment operation state: alpha, depth, blend, logic op, masks, scissor.
 #include <algorithm>
 
 #include "glapi/gl_entry_points.h"
@@ -27,38 +27,7 @@ void DepthFunc(Context& ctx, GLenum func) {
 
 void DepthMask(Context& ctx, GLboolean flag) { ctx.draw_state.depth_write = flag != GL_FALSE; }
 
-void StencilFunc(Context& ctx, GLenum func, GLint ref, GLuint mask) {
-  raster::CompareFunc f;
-  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
-  ctx.stencil_func = func;
-  ctx.stencil_value_mask = mask;
-  // GL 1.1 4.1.4: ref is clamped to [0, 2^s - 1]; Pineda's stencil buffers have 8 bits.
-  const int clamped_ref = std::clamp(ref, 0, 255);
-  for (raster::StencilFace* face : {&ctx.draw_state.stencil_front, &ctx.draw_state.stencil_back}) {
-    face->func = f;
-    face->ref = clamped_ref;
-    face->value_mask = static_cast<uint8_t>(mask);
-  }
-}
-
-void StencilOp(Context& ctx, GLenum fail, GLenum zfail, GLenum zpass) {
-  raster::StencilOp f, zf, zp;
-  if (!to_stencil_op(fail, f) || !to_stencil_op(zfail, zf) || !to_stencil_op(zpass, zp))
-    return ctx.record_error(GL_INVALID_ENUM);
-  ctx.stencil_fail = fail;
-  ctx.stencil_zfail = zfail;
-  ctx.stencil_zpass = zpass;
-  for (raster::StencilFace* face : {&ctx.draw_state.stencil_front, &ctx.draw_state.stencil_back}) {
-    face->fail = f;
-    face->depth_fail = zf;
-    face->depth_pass = zp;
-  }
-}
-
-void StencilMask(Context& ctx, GLuint mask) {
-  ctx.stencil_write_mask = mask;
-  ctx.draw_state.stencil_front.write_mask = ctx.draw_state.stencil_back.write_mask = static_cast<uint8_t>(mask);
-}
+// glStencilFunc, glStencilOp and glStencilMask: api_stencil.cpp (per face).
 
 void BlendFuncSeparate(Context& ctx, GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha) {
   raster::BlendFactor sr, dr, sa, da;

@@ -18,6 +18,8 @@
 #include "state/multisample.h"
 #include "state/point_parameters.h"
 #include "state/programs/program_get.h"
+#include "state/stencil_faces.h"
+#include "state/draw_buffer_list.h"
 
 namespace pineda::gl {
 namespace {
@@ -237,6 +239,8 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_color_index(ctx, pname, out)) return true;
   if (query_evaluator(ctx, pname, out)) return true;
   if (query_point_parameters(ctx, pname, out)) return true;
+  if (query_stencil_back(ctx, pname, out)) return true;
+  if (query_draw_buffers(ctx, pname, out)) return true;
   if (query_compressed_formats(pname, out)) return true;
   if (query_debug(ctx, pname, out)) return true;
   if (query_program_state(ctx, pname, out)) return true;
@@ -292,8 +296,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_EXT_blend_equation_separate "
       "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
-      "GL_EXT_stencil_wrap "
-      "GL_ARB_transpose_matrix GL_ARB_multisample GL_ARB_point_parameters GL_EXT_point_parameters "
+      "GL_EXT_stencil_wrap GL_ATI_separate_stencil GL_ARB_draw_buffers GL_ATI_draw_buffers "
+      "GL_ARB_transpose_matrix GL_ARB_multisample GL_ARB_point_parameters GL_EXT_point_parameters GL_ARB_point_sprite "
       "GL_ARB_texture_compression GL_ARB_depth_texture GL_ARB_shadow GL_EXT_shadow_funcs "
       "GL_EXT_fog_coord GL_EXT_secondary_color GL_EXT_separate_specular_color "
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "

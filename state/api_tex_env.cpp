@@ -4,6 +4,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/point_sprite.h"
 
 namespace pineda::gl {
 namespace {
@@ -67,6 +68,7 @@ void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
     env.lod_bias = v[0];
     return;
   }
+  if (target == GL_POINT_SPRITE) return set_point_sprite_env(ctx, pname, v[0]);
   if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
   if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) env.color[i] = std::clamp(v[i], 0.f, 1.f);
@@ -90,6 +92,7 @@ int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
     v[0] = env.lod_bias;
     return 1;
   }
+  if (target == GL_POINT_SPRITE) return get_point_sprite_env(ctx, pname, v[0]) ? 1 : 0;
   if (target != GL_TEXTURE_ENV) {
     ctx.record_error(GL_INVALID_ENUM);
     return 0;

@@ -5,6 +5,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/es1/es1_enums.h"
 #include "state/enum_translate.h"
 #include "state/limits.h"
 #include "state/pixel_format.h"
@@ -218,6 +219,10 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
       p.compare_func = e;
       break;
     }
+    case GL_TEXTURE_CROP_RECT_OES:  // only glDrawTex reads it: the sampled image is unchanged
+      for (int i = 0; i < 4; ++i)  // integers, as the extension keeps them; NaN becomes 0
+        p.crop_rect[i] = std::isnan(v[i]) ? 0 : GLint(std::clamp(v[i], -2147483648.f, 2147483520.f));
+      return GL_NO_ERROR;
     default:
       return GL_INVALID_ENUM;
   }
@@ -225,18 +230,21 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   return GL_NO_ERROR;
 }
 
+// OES_draw_texture's crop rectangle is OpenGL ES 1.1's only.
+bool known_pname(const Context& ctx, GLenum pname) { return pname != GL_TEXTURE_CROP_RECT_OES || ctx.es1(); }
+
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
-  if (!tex) return ctx.record_error(GL_INVALID_ENUM);
+  if (!tex || !known_pname(ctx, pname)) return ctx.record_error(GL_INVALID_ENUM);
   if (const GLenum error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
 
-bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR; }
+bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_CROP_RECT_OES; }
 
 // The values of a texture parameter; `colour` tells whether integer queries map them as colours.
 bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], int& count, bool& colour) {
   TextureObject* tex = bound_texture(ctx, target);
-  if (!tex) return false;
+  if (!tex || !known_pname(ctx, pname)) return false;
   const TexParams& p = tex->params;
   count = 1;
   colour = false;
@@ -261,6 +269,10 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
       std::copy(p.border_color, p.border_color + 4, out);
       count = 4;
       colour = true;
+      return true;
+    case GL_TEXTURE_CROP_RECT_OES:
+      std::copy(p.crop_rect, p.crop_rect + 4, out);
+      count = 4;
       return true;
     default: return false;
   }
@@ -422,8 +434,10 @@ void TexParameterfv(Context& ctx, GLenum target, GLenum pname, const GLfloat* pa
 void TexParameteriv(Context& ctx, GLenum target, GLenum pname, const GLint* params) {
   if (!params) return;
   GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
-  if (is_vector_tex_param(pname))  // integer colours map [-2^31, 2^31-1] onto [-1, 1]
+  if (pname == GL_TEXTURE_BORDER_COLOR)  // integer colours map [-2^31, 2^31-1] onto [-1, 1]
     for (int i = 0; i < 4; ++i) v[i] = GLfloat((2.0 * params[i] + 1.0) / 4294967295.0);
+  if (pname == GL_TEXTURE_CROP_RECT_OES)
+    for (int i = 0; i < 4; ++i) v[i] = GLfloat(params[i]);
   tex_parameter(ctx, target, pname, v);
 }
 

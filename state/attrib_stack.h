@@ -12,8 +12,10 @@
 #include "raster/vertex_transform.h"
 #include "state/multisample.h"
 #include "state/color_index.h"
+#include "state/draw_buffer_list.h"
 #include "state/evaluator.h"
 #include "state/pixel_state.h"
+#include "state/stencil_faces.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
@@ -53,6 +55,7 @@ struct AttribFrame {
   GLenum blend_src_rgb, blend_dst_rgb, blend_src_alpha, blend_dst_alpha, blend_eq_rgb, blend_eq_alpha;
   GLenum logic_op;
   GLuint stencil_value_mask, stencil_write_mask;
+  StencilBackValues stencil_back_values;
   float clear_color[4];
   VertexExtrasState extras;
   MultisampleState multisample;  // GL_MULTISAMPLE_BIT
@@ -61,6 +64,7 @@ struct AttribFrame {
   GLenum hints[7];
   raster::Viewport viewport;
   GLenum draw_buffer, read_buffer;
+  ExtraDrawBuffers extra_draw_buffers;
   GLuint list_base;
   // texture
   struct Unit {

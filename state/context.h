@@ -24,6 +24,7 @@
 #include "state/color_index.h"
 #include "state/debug/debug_output.h"
 #include "state/display_list.h"
+#include "state/draw_buffer_list.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
 #include "state/evaluator.h"
@@ -32,6 +33,7 @@
 #include "state/query_object.h"
 #include "state/select_feedback.h"
 #include "state/share_group.h"
+#include "state/stencil_faces.h"
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 #include "state/vertex_extras_state.h"
@@ -199,6 +201,7 @@ class Context {
   GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_alpha = GL_FUNC_ADD;
   GLenum logic_op = GL_COPY;
   GLuint stencil_value_mask = ~0u, stencil_write_mask = ~0u;
+  StencilBackValues stencil_back_values;  // GL 2.0: the back face's (the front's are above)
 
   // Clear values
   float clear_color[4] = {0, 0, 0, 0};
@@ -223,6 +226,7 @@ class Context {
   TextureNamespace& textures;  // the share group's
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
+  ExtraDrawBuffers extra_draw_buffers{};  // DRAW_BUFFER1.. (glDrawBuffers), GL_NONE by default
 
   // Raster position and pixel rectangles
   RasterPosition raster_pos;

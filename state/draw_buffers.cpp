@@ -7,7 +7,7 @@
 namespace pineda {
 namespace {
 
-enum class Target { None, Front, Back, Both };
+enum class Target { None = 0, Front = 1, Back = 2, Both = 3 };  // bits: front, back
 
 Target draw_target(GLenum buffer, const Drawable& d) {
   const bool separate_front = d.double_buffered && d.front.base;
@@ -17,6 +17,13 @@ Target draw_target(GLenum buffer, const Drawable& d) {
     case GL_LEFT: case GL_FRONT_AND_BACK: return separate_front ? Target::Both : Target::Front;
     default: return Target::None;
   }
+}
+
+// The union over every draw buffer (glDrawBuffers): fixed-function colour goes to each.
+Target draw_targets(GLenum buffer0, const ExtraDrawBuffers& more, const Drawable& d) {
+  int bits = static_cast<int>(draw_target(buffer0, d));
+  for (GLenum b : more) bits |= static_cast<int>(draw_target(b, d));
+  return static_cast<Target>(bits);
 }
 
 bool reads_front(GLenum buffer) {
@@ -56,7 +63,7 @@ struct DepthStencilCopy {
 void Context::bind_framebuffer() {
   if (!draw_) return renderer_->set_framebuffer(raster::Framebuffer{});
   raster::Framebuffer fb = draw_->framebuffer;
-  switch (draw_target(draw_buffer, *draw_)) {
+  switch (draw_targets(draw_buffer, extra_draw_buffers, *draw_)) {
     case Target::None: fb.color = {}; break;
     case Target::Front: fb.color = draw_->front_color(); break;
     case Target::Back: case Target::Both: break;
@@ -74,7 +81,7 @@ void Context::use_color_buffer(const raster::ColorBuffer& color) {
 
 void Context::render_to_draw_buffers(const std::function<void()>& render) {
   if (!draw_) return render();
-  switch (draw_target(draw_buffer, *draw_)) {
+  switch (draw_targets(draw_buffer, extra_draw_buffers, *draw_)) {
     case Target::None: use_color_buffer({}); return render();
     case Target::Front:
       draw_->front_drawn = true;

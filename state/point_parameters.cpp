@@ -14,6 +14,9 @@ bool query_point_parameters(Context& ctx, unsigned pname, GetValues& out) {
     case GL_POINT_DISTANCE_ATTENUATION:
       out = get_floats({p.attenuation[0], p.attenuation[1], p.attenuation[2]});
       return true;
+    case GL_POINT_SPRITE_COORD_ORIGIN:
+      out = get_enums({double(p.sprite.origin_lower_left ? GL_LOWER_LEFT : GL_UPPER_LEFT)});
+      return true;
     default: return false;
   }
 }
@@ -42,6 +45,10 @@ void PointParameterfv(Context& ctx, GLenum pname, const GLfloat* v) {
       return;
     case GL_POINT_DISTANCE_ATTENUATION:
       for (int i = 0; i < 3; ++i) p.attenuation[i] = v[i];
+      return;
+    case GL_POINT_SPRITE_COORD_ORIGIN:  // GL 2.0 point sprites
+      if (v[0] != GLfloat(GL_LOWER_LEFT) && v[0] != GLfloat(GL_UPPER_LEFT)) return ctx.record_error(GL_INVALID_VALUE);
+      p.sprite.origin_lower_left = v[0] == GLfloat(GL_LOWER_LEFT);
       return;
     default:
       return ctx.record_error(GL_INVALID_ENUM);

@@ -32,6 +32,7 @@ struct TexParams {
   bool generate_mipmap = false;
   // GL 1.4 depth textures and shadow comparison
   GLenum depth_mode = GL_LUMINANCE, compare_mode = GL_NONE, compare_func = GL_LEQUAL;
+  GLint crop_rect[4] = {0, 0, 0, 0};  // OES_draw_texture (OpenGL ES 1.1): u, v, width, height
 };
 
 struct TextureObject {

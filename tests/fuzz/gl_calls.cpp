@@ -17,7 +17,7 @@ constexpr GLenum kCapabilities[] = {
     GL_TEXTURE_GEN_Q, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP1_COLOR_4, GL_MAP1_TEXTURE_COORD_2,
     GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_2, GL_AUTO_NORMAL, GL_COLOR_LOGIC_OP,
     GL_DITHER, GL_POINT_SMOOTH, GL_LINE_SMOOTH, GL_POLYGON_SMOOTH, GL_COLOR_SUM, GL_MULTISAMPLE,
-    GL_SAMPLE_ALPHA_TO_COVERAGE, GL_INDEX_LOGIC_OP};
+    GL_SAMPLE_ALPHA_TO_COVERAGE, GL_INDEX_LOGIC_OP, GL_POINT_SPRITE};
 constexpr GLenum kClientArrays[] = {GL_VERTEX_ARRAY, GL_COLOR_ARRAY, GL_NORMAL_ARRAY, GL_TEXTURE_COORD_ARRAY,
                                     GL_INDEX_ARRAY, GL_EDGE_FLAG_ARRAY, GL_FOG_COORD_ARRAY,
                                     GL_SECONDARY_COLOR_ARRAY};
@@ -272,6 +272,30 @@ const GlCall kCalls[] = {
     {"glStencilOp",
      [](FuzzInput& in, ClientMemory&) {
        glStencilOp(in.enumeration(kStencilOps), in.enumeration(kStencilOps), in.enumeration(kStencilOps));
+     }},
+    {"glStencilFuncSeparate",
+     [](FuzzInput& in, ClientMemory&) {
+       glStencilFuncSeparate(in.enumeration(kFaces), in.enumeration(kCompare), in.integer(-2, 300),
+                             GLuint(in.integer(0, 255)));
+     }},
+    {"glStencilOpSeparate",
+     [](FuzzInput& in, ClientMemory&) {
+       glStencilOpSeparate(in.enumeration(kFaces), in.enumeration(kStencilOps), in.enumeration(kStencilOps),
+                           in.enumeration(kStencilOps));
+     }},
+    {"glStencilMaskSeparate",
+     [](FuzzInput& in, ClientMemory&) { glStencilMaskSeparate(in.enumeration(kFaces), GLuint(in.integer(0, 255))); }},
+    {"glDrawBuffers",
+     [](FuzzInput& in, ClientMemory&) {
+       GLenum bufs[5];
+       for (GLenum& b : bufs) b = in.enumeration({GL_NONE, GL_FRONT_LEFT, GL_BACK_LEFT, GL_FRONT, GL_AUX0});
+       glDrawBuffers(in.integer(-1, 5), bufs);
+     }},
+    {"glTexEnvi(POINT_SPRITE)",
+     [](FuzzInput& in, ClientMemory&) { glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, in.integer(-1, 2)); }},
+    {"glPointParameteri(POINT_SPRITE_COORD_ORIGIN)",
+     [](FuzzInput& in, ClientMemory&) {
+       glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GLint(in.enumeration({GL_LOWER_LEFT, GL_UPPER_LEFT})));
      }},
     {"glLogicOp",
      [](FuzzInput& in, ClientMemory&) { glLogicOp(in.enumeration({GL_CLEAR, GL_XOR, GL_COPY_INVERTED, GL_NAND})); }},

@@ -1,0 +1,81 @@
+// glDrawBuffers (GL 2.0, ARB_draw_buffers, ATI_draw_buffers) on the window-system framebuffer:
+// its colour buffers are the front left one and, when double-buffered, the back left one.
+#include <algorithm>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/draw_buffer_list.h"
+#include "shader/program.h"
+
+namespace pineda {
+
+static_assert(kMaxDrawBuffers == shader::kMaxDrawBuffers, "the fragment outputs a shader writes");
+
+namespace {
+
+enum BufferBits : unsigned { kFrontLeft = 1, kBackLeft = 2 };
+
+// What one glDrawBuffers entry names, and the error it gets when it cannot be used.
+struct Named {
+  unsigned bits = 0;  // the buffers of the drawable it names
+  GLenum error = GL_NO_ERROR;
+};
+
+Named name_buffer(const Context& ctx, GLenum buffer) {
+  const Drawable* d = ctx.draw_drawable();
+  switch (buffer) {
+    case GL_NONE: return {};
+    case GL_FRONT_LEFT: return {kFrontLeft};
+    case GL_BACK_LEFT:
+      if (d && d->double_buffered) return {kBackLeft};
+      return {0, GL_INVALID_OPERATION};
+    // Buffers GL defines that a Pineda drawable never has (no stereo, no aux buffers).
+    case GL_FRONT_RIGHT: case GL_BACK_RIGHT: case GL_AUX0: case GL_AUX1: case GL_AUX2: case GL_AUX3:
+      return {0, GL_INVALID_OPERATION};
+    // Names of several buffers: GL 2.0 4.2.1 says INVALID_OPERATION; GL 4.5 corrected it to
+    // INVALID_ENUM, which Mesa (and the Khronos conformance tests) use at every version.
+    case GL_FRONT: case GL_BACK: case GL_LEFT: case GL_RIGHT: case GL_FRONT_AND_BACK:
+      return {0, GL_INVALID_ENUM};
+    default:
+      // A framebuffer object's attachments, which the window-system framebuffer has not.
+      if (buffer >= GL_COLOR_ATTACHMENT0 && buffer <= GL_COLOR_ATTACHMENT15) return {0, GL_INVALID_OPERATION};
+      return {0, GL_INVALID_ENUM};
+  }
+}
+
+}  // namespace
+
+bool query_draw_buffers(Context& ctx, unsigned pname, GetValues& out) {
+  if (pname == GL_MAX_DRAW_BUFFERS) {
+    out = get_ints({kMaxDrawBuffers});
+    return true;
+  }
+  if (pname < GL_DRAW_BUFFER0 || pname >= GL_DRAW_BUFFER0 + unsigned(kMaxDrawBuffers)) return false;
+  const unsigned i = pname - GL_DRAW_BUFFER0;
+  out = get_enums({double(i == 0 ? ctx.draw_buffer : ctx.extra_draw_buffers[i - 1])});
+  return true;
+}
+
+}  // namespace pineda
+
+namespace pineda::gl {
+
+void DrawBuffers(Context& ctx, GLsizei n, const GLenum* bufs) {
+  if (n < 0 || n > kMaxDrawBuffers) return ctx.record_error(GL_INVALID_VALUE);
+  if (n > 0 && !bufs) return;
+  unsigned used = 0;
+  for (GLsizei i = 0; i < n; ++i) {
+    const Named named = name_buffer(ctx, bufs[i]);
+    if (named.error != GL_NO_ERROR) return ctx.record_error(named.error);
+    if (named.bits & used) return ctx.record_error(GL_INVALID_OPERATION);  // named twice
+    used |= named.bits;
+  }
+  ctx.draw_buffer = n > 0 ? bufs[0] : GL_NONE;
+  for (int i = 1; i < kMaxDrawBuffers; ++i) ctx.extra_draw_buffers[i - 1] = i < n ? bufs[i] : GL_NONE;
+  ctx.drawable_changed();  // the renderer targets the selected colour buffers from now on
+}
+
+void DrawBuffersARB(Context& ctx, GLsizei n, const GLenum* bufs) { DrawBuffers(ctx, n, bufs); }
+void DrawBuffersATI(Context& ctx, GLsizei n, const GLenum* bufs) { DrawBuffers(ctx, n, bufs); }
+
+}  // namespace pineda::gl

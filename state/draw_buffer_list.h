@@ -1,0 +1,21 @@
+// GL 2.0 / ARB_draw_buffers: the colour buffer each fragment colour output is written to.
+// DRAW_BUFFER0 is Context::draw_buffer (glDrawBuffer's); the others are Context::
+// extra_draw_buffers, GL_NONE unless glDrawBuffers set them.
+#pragma once
+#include <GL/gl.h>
+
+#include <array>
+
+#include "state/get_values.h"
+
+namespace pineda {
+
+// The fragment colour outputs Pineda writes (shader/program.h kMaxDrawBuffers).
+constexpr int kMaxDrawBuffers = 4;
+
+using ExtraDrawBuffers = std::array<GLenum, kMaxDrawBuffers - 1>;  // DRAW_BUFFER1..
+
+// MAX_DRAW_BUFFERS and DRAW_BUFFERi.
+bool query_draw_buffers(Context& ctx, unsigned pname, GetValues& out);
+
+}  // namespace pineda
