@@ -73,6 +73,7 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
 
 void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!check_draw_framebuffer(ctx)) return;
   if (const GLenum error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_DRAW_PIXEL_TOKEN)) return;
   if (!pixels || width == 0 || height == 0 || !ctx.draw_drawable()) return;
@@ -96,6 +97,7 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   // GL_DEPTH_STENCIL: EXT_packed_depth_stencil's copy of both, as Mesa takes it at any version.
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
     return ctx.record_error(GL_INVALID_ENUM);
+  if (!check_draw_framebuffer(ctx) || !check_read_framebuffer(ctx)) return;
   const Drawable* draw = ctx.draw_drawable();
   const Drawable* read = ctx.read_drawable();
   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;

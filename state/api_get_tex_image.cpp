@@ -37,6 +37,7 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
                                                     : color_format_type_error(format, type);
   if (error != GL_NO_ERROR) return ctx.record_error(error);
   if (level < 0 || level > max_texture_level(t.kind)) return ctx.record_error(GL_INVALID_VALUE);
+  resolve_rendered_textures(ctx);
   const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
   const std::vector<TextureLevelData>& levels =
       ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);

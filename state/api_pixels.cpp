@@ -74,6 +74,7 @@ void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pna
 void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                 void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!check_read_framebuffer(ctx)) return;
   if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
   if (!d || !pixels || width == 0 || height == 0) return;

@@ -30,6 +30,7 @@ TextureObject* bound_texture(Context& ctx, GLenum target) {
 
 // The texture an image command or level query addresses: the bound one, or a proxy.
 TextureObject& image_texture(Context& ctx, const ImageTarget& target) {
+  if (!target.proxy) resolve_rendered_textures(ctx);  // rendering queued into it lands first
   return target.proxy ? ctx.textures.proxy(target.kind) : bound_texture(ctx, target.kind);
 }
 
@@ -334,6 +335,7 @@ void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
     for (TextureUnitState& unit : ctx.texture_units)  // deleting a bound texture binds 0
       for (int k = 0; k < kTexTargetCount; ++k)
         if (GLuint& bound = bound_name(unit, TexTarget(k)); bound == name) bound = 0;
+    if (ctx.textures.find(name)) detach_deleted(ctx, GL_TEXTURE, name);
     ctx.textures.remove(name);
   }
 }
