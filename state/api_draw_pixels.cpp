@@ -3,6 +3,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/pixel_format.h"
 #include "state/pixel_rect_draw.h"
 #include "state/pixel_transfer.h"
@@ -15,6 +16,11 @@ bool has_depth(const Drawable* d) { return d && d->framebuffer.depth.bits > 0; }
 bool has_stencil(const Drawable* d) { return d && d->framebuffer.stencil.bits > 0; }
 
 GLenum draw_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) {
+    if (error == GL_NO_ERROR && (!has_depth(ctx.draw_drawable()) || !has_stencil(ctx.draw_drawable())))
+      return GL_INVALID_OPERATION;
+    return error;
+  }
   if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
   if (format == GL_DEPTH_COMPONENT && !has_depth(ctx.draw_drawable())) return GL_INVALID_OPERATION;
   if (format == GL_STENCIL_INDEX && !has_stencil(ctx.draw_drawable())) return GL_INVALID_OPERATION;
@@ -83,6 +89,9 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
   if (format == GL_DEPTH_COMPONENT) {
     image.kind = PixelRectImage::Kind::Depth;
     image.depth = unpack_depth_image(ctx, width, height, type, pixels);
+  } else if (format == GL_DEPTH_STENCIL) {
+    image.kind = PixelRectImage::Kind::DepthStencil;
+    unpack_depth_stencil_image(ctx, width, height, pixels, image.depth, image.stencil);
   } else if (format == GL_STENCIL_INDEX) {
     image.kind = PixelRectImage::Kind::Stencil;
     image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);
