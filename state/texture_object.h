@@ -19,6 +19,7 @@ struct TextureLevelData {
   GLint internal_format = 0;  // as the application gave it (for glGetTexLevelParameter)
   raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;  // what `texels` were reduced to
   std::vector<uint32_t> texels;
+  std::vector<uint8_t> stencil;  // a DEPTH_STENCIL level's stencil indices, beside the depth texels
 };
 
 // What glTexParameter sets; glPushAttrib(GL_TEXTURE_BIT) saves it whole.

@@ -116,6 +116,11 @@ void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& vi
     out.stencil.bits = 8;
     out.stencil.base = stencil.renderbuffer->stencil.data();
     out.stencil.stride = stencil.renderbuffer->width;
+  } else if (stencil.type == GL_TEXTURE) {  // a DEPTH_STENCIL texture's indices, rendered in place
+    TextureLevelData* level = attached_level(ctx, stencil);
+    out.stencil.bits = 8;
+    out.stencil.base = level->stencil.data() + size_t(level->width) * level->height * size_t(stencil.layer);
+    out.stencil.stride = level->width;
   }
 }
 
@@ -151,7 +156,9 @@ std::optional<RenderableFormat> attachment_format(Context& ctx, const Attachment
   }
   const TextureLevelData* level = attached_level(ctx, a);
   if (!level) return std::nullopt;
-  return texture_renderable_format(level->internal_format);
+  const std::optional<RenderableFormat> format = texture_renderable_format(level->internal_format);
+  if (format && format->has_stencil() && level->stencil.size() < level->texels.size()) return std::nullopt;
+  return format;
 }
 
 GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_rules) {

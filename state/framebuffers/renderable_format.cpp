@@ -50,10 +50,10 @@ std::optional<RenderableFormat> renderbuffer_format(GLenum internal_format) {
 }
 
 std::optional<RenderableFormat> texture_renderable_format(GLint internal_format) {
-  if (internal_format == GL_DEPTH_STENCIL || internal_format == GL_DEPTH24_STENCIL8) return std::nullopt;
   if (stored_internal_format(internal_format) != internal_format) return std::nullopt;  // compressed
   const std::optional<TextureFormat> f = texture_format(internal_format);
   if (!f) return std::nullopt;
+  if (f->stencil) return RenderableFormat{RenderableFormat::Kind::DepthStencil, {}, f->depth, f->stencil};
   if (f->depth) return depth(f->depth);
   return color(*f);
 }

@@ -15,7 +15,10 @@ TEST_F(FboObjectsTest, DefaultsAndLimits) {
   EXPECT_EQ(get_int(GL_MAX_COLOR_ATTACHMENTS), 8);
   EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   const std::string ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-  EXPECT_NE(ext.find("GL_EXT_framebuffer_object "), std::string::npos);
+  for (const char* name : {"GL_ARB_framebuffer_object ", "GL_EXT_framebuffer_object ", "GL_EXT_framebuffer_blit ",
+                           "GL_EXT_packed_depth_stencil "})
+    EXPECT_NE(ext.find(name), std::string::npos) << name;
+  EXPECT_EQ(get_int(GL_MAX_SAMPLES), 0);
 }
 
 TEST_F(FboObjectsTest, NamesExistOnceBound) {
