@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "raster/color_reduction.h"
 #include "raster/fragment_ops.h"
 #include "raster/raster_limits.h"
 
@@ -76,6 +77,7 @@ void apply_clear(const ClearRecord& clear, const Framebuffer& fb, const PixelRec
     const bool bgra = fb.color.format == ColorFormat::BGRA8;
     uint8_t bytes[4] = {clear.rgba[0], clear.rgba[1], clear.rgba[2], clear.rgba[3]};
     bool write[4] = {clear.color_write[0], clear.color_write[1], clear.color_write[2], clear.color_write[3]};
+    if (fb.color.reduction.active) reduce_bytes(fb.color.reduction, bytes);
     if (bgra) {
       std::swap(bytes[0], bytes[2]);
       std::swap(write[0], write[2]);

@@ -7,12 +7,26 @@ namespace pineda::raster {
 
 enum class ColorFormat : uint8_t { RGBA8, BGRA8 };
 
+// A target that keeps fewer bits or components than its four bytes (RGB565, RGBA4, RGB8,
+// luminance, ...; framebuffer objects): every written pixel is reduced to what the format
+// holds before it is stored, so that blending, reads and sampling see the format's values.
+// Only RGBA8-ordered buffers are reduced.
+struct ColorReduction {
+  bool active = false;  // false: the four bytes are kept as written
+  // Per channel R, G, B, A: the bits kept (1..8; each value rounded to them and widened back
+  // to 8), or 0 when the format has no such component (it then reads 0, alpha 1).
+  uint8_t bits[4] = {8, 8, 8, 8};
+  // The written channel each stored channel takes: luminance keeps R in R, G and B.
+  uint8_t source[4] = {0, 1, 2, 3};
+};
+
 // Row 0 is the bottom row (GL window y = 0); `stride` is in bytes and may be negative,
 // so a top-down user buffer is expressed without copying.
 struct ColorBuffer {
   uint8_t* base = nullptr;
   ptrdiff_t stride = 0;
   ColorFormat format = ColorFormat::RGBA8;
+  ColorReduction reduction;
 };
 
 // Depth values are unsigned integers of `bits` bits (16, 24 or 32), one uint32 per pixel.

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "raster/blend_over.h"
+#include "raster/color_reduction.h"
 #include "raster/draw_record.h"
 #include "raster/fragment_ops.h"
 #include "raster/framebuffer.h"
@@ -122,6 +123,8 @@ template <bool kBlend, bool kOver>
   } else {
     for (int c = 0; c < 4; ++c) packed |= to_unorm8(col.c[c]) << shift.at[c];
   }
+  if (fb.color.reduction.active)
+    for (int i = 0; i < 4; ++i) packed[i] = reduce_pixel(fb.color.reduction, packed[i]);
   if (mask == 0xf && d.color_write_all) {
     uint32_t v[4] = {packed[0], packed[1], packed[2], packed[3]};
     std::memcpy(px[0], &v[0], 8);

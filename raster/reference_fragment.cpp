@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "raster/color_reduction.h"
 #include "raster/fragment_ops.h"
 #include "raster/sampler.h"
 #include "raster/tex_env.h"
@@ -135,6 +136,7 @@ void write_color(const DrawRecord& d, const Framebuffer& fb, int px, int py, con
   } else {
     for (int c = 0; c < 4; ++c) out[c] = unorm8(color[c]);
   }
+  if (fb.color.reduction.active) reduce_bytes(fb.color.reduction, out);
   for (int c = 0; c < 4; ++c)
     if (s.color_write[c]) pixel[at[c]] = out[c];
 }

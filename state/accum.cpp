@@ -26,7 +26,7 @@ AccumRect prepare_accum(Context& ctx, int width, int height) {
 
 void clear_accum(Context& ctx) {
   const Drawable* d = ctx.draw_drawable();
-  if (!d) return;
+  if (!d || !d->accum) return;
   const AccumRect r = prepare_accum(ctx, d->framebuffer.width, d->framebuffer.height);
   int16_t value[4];
   for (int c = 0; c < 4; ++c)  // Mesa's FLOAT_TO_SHORT: -1 -> -32768, 1 -> 32767

@@ -106,6 +106,7 @@ void EdgeFlagPointer(Context& ctx, GLsizei stride, const void* ptr) {
 void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (!valid_mode(ctx, mode)) return;
   if (count < 0 || first < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
   ctx.fetched.resize(count);
   for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, ctx.fetched[i]);
@@ -118,6 +119,7 @@ void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const v
   if (count < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
     return ctx.record_error(GL_INVALID_ENUM);
+  if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx)) return;
   indices = element_indices(ctx, indices, size_t(count) * gl_type_size(type));
   if (!indices) return;

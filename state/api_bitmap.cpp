@@ -40,6 +40,7 @@ void draw_bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLf
 void Bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
             const GLubyte* bitmap) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!check_draw_framebuffer(ctx)) return;
   RasterPosition& rp = ctx.raster_pos;
   if (!rp.valid) return;
   if (!pixel_rect_feedback(ctx, GL_BITMAP_TOKEN) && bitmap && width > 0 && height > 0 && ctx.draw_drawable())

@@ -22,13 +22,14 @@ bool is_buffer_enum(GLenum b) {
     case GL_BACK: case GL_LEFT: case GL_RIGHT: case GL_FRONT_AND_BACK: case GL_AUX0: case GL_AUX1: case GL_AUX2:
     case GL_AUX3:
       return true;
-    default: return false;
+    default: return b >= GL_COLOR_ATTACHMENT0 && b <= GL_COLOR_ATTACHMENT15;  // no window buffer: INVALID_OPERATION
   }
 }
 
 }  // namespace
 
 void DrawBuffer(Context& ctx, GLenum buffer) {
+  if (ctx.framebuffers.draw_binding) return set_object_color_buffer(ctx, buffer, false);
   if (!is_buffer_enum(buffer)) return ctx.record_error(GL_INVALID_ENUM);
   if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
   ctx.draw_buffer = buffer;
@@ -37,6 +38,7 @@ void DrawBuffer(Context& ctx, GLenum buffer) {
 }
 
 void ReadBuffer(Context& ctx, GLenum buffer) {
+  if (ctx.framebuffers.read_binding) return set_object_color_buffer(ctx, buffer, true);
   if (!is_buffer_enum(buffer) || buffer == GL_FRONT_AND_BACK || buffer == GL_NONE) return ctx.record_error(GL_INVALID_ENUM);
   if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
   ctx.read_buffer = buffer;

@@ -15,7 +15,7 @@ void Clear(Context& ctx, GLbitfield mask) {
     ctx.record_error(GL_INVALID_VALUE);
     return;
   }
-  if (!ctx.draw_drawable()) return;
+  if (!check_draw_framebuffer(ctx) || !ctx.draw_drawable()) return;
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(ctx);
   raster::ClearState clear;
   clear.color = mask & GL_COLOR_BUFFER_BIT;

@@ -3,6 +3,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/pixel_format.h"
 #include "state/pixel_rect_draw.h"
 #include "state/pixel_transfer.h"
@@ -15,6 +16,11 @@ bool has_depth(const Drawable* d) { return d && d->framebuffer.depth.bits > 0; }
 bool has_stencil(const Drawable* d) { return d && d->framebuffer.stencil.bits > 0; }
 
 GLenum draw_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) {
+    if (error == GL_NO_ERROR && (!has_depth(ctx.draw_drawable()) || !has_stencil(ctx.draw_drawable())))
+      return GL_INVALID_OPERATION;
+    return error;
+  }
   if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
   if (format == GL_DEPTH_COMPONENT && !has_depth(ctx.draw_drawable())) return GL_INVALID_OPERATION;
   if (format == GL_STENCIL_INDEX && !has_stencil(ctx.draw_drawable())) return GL_INVALID_OPERATION;
@@ -73,6 +79,7 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
 
 void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!check_draw_framebuffer(ctx)) return;
   if (const GLenum error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_DRAW_PIXEL_TOKEN)) return;
   if (!pixels || width == 0 || height == 0 || !ctx.draw_drawable()) return;
@@ -82,6 +89,9 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
   if (format == GL_DEPTH_COMPONENT) {
     image.kind = PixelRectImage::Kind::Depth;
     image.depth = unpack_depth_image(ctx, width, height, type, pixels);
+  } else if (format == GL_DEPTH_STENCIL) {
+    image.kind = PixelRectImage::Kind::DepthStencil;
+    unpack_depth_stencil_image(ctx, width, height, pixels, image.depth, image.stencil);
   } else if (format == GL_STENCIL_INDEX) {
     image.kind = PixelRectImage::Kind::Stencil;
     image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);
@@ -96,6 +106,7 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   // GL_DEPTH_STENCIL: EXT_packed_depth_stencil's copy of both, as Mesa takes it at any version.
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
     return ctx.record_error(GL_INVALID_ENUM);
+  if (!check_draw_framebuffer(ctx) || !check_read_framebuffer(ctx)) return;
   const Drawable* draw = ctx.draw_drawable();
   const Drawable* read = ctx.read_drawable();
   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;

@@ -13,6 +13,7 @@
 #include "state/es1/es1_enums.h"
 #include "state/context.h"
 #include "state/get_values.h"
+#include "state/framebuffers/framebuffer_get.h"
 #include "state/vertex_extras_get.h"
 #include "state/limits.h"
 #include "state/multisample.h"
@@ -121,7 +122,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_DEPTH_BITS: out = ints({double(d ? d->framebuffer.depth.bits : 0)}); return true;
     case GL_STENCIL_BITS: out = ints({double(stencil_bits)}); return true;
     case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
-      out = ints({double(d ? kAccumBits : 0)});
+      out = ints({double(d && d->accum ? kAccumBits : 0)});
       return true;
     case GL_ACCUM_CLEAR_VALUE: out = colors(ctx.accum.clear_value); return true;
     case GL_INDEX_BITS: case GL_AUX_BUFFERS:
@@ -236,6 +237,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_pixel_state(ctx, pname, out)) return true;
   if (query_vertex_extras(ctx, pname, out)) return true;
   if (query_multisample(ctx, pname, out)) return true;
+  if (query_framebuffers(ctx, pname, out)) return true;
   if (query_color_index(ctx, pname, out)) return true;
   if (query_evaluator(ctx, pname, out)) return true;
   if (query_point_parameters(ctx, pname, out)) return true;
@@ -303,7 +305,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
       "GL_SGIS_texture_lod GL_EXT_texture_lod_bias "
-      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array GL_KHR_debug ";  // a trailing space, as Mesa (programs split on it)
+      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array GL_KHR_debug "
+      "GL_ARB_framebuffer_object GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_packed_depth_stencil ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

@@ -1,8 +1,10 @@
 // glGetTexImage: a texture level read back through the pack pixel store.
 #include <bit>
+#include <cstring>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/pixel_format.h"
 #include "state/texture_format.h"
 #include "state/texture_target.h"
@@ -33,15 +35,34 @@ bool is_depth_level(const TextureLevelData& l) {
 void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
   ImageTarget t;
   if (!image_target(target, t) || t.proxy) return ctx.record_error(GL_INVALID_ENUM);
-  const GLenum error = format == GL_DEPTH_COMPONENT ? pixel_rect_format_type_error(format, type)
-                                                    : color_format_type_error(format, type);
+  GLenum error = GL_NO_ERROR;
+  const bool packed_ds = packed_depth_stencil_pixels(format, type, error);
+  if (!packed_ds)
+    error = format == GL_DEPTH_COMPONENT ? pixel_rect_format_type_error(format, type) : color_format_type_error(format, type);
   if (error != GL_NO_ERROR) return ctx.record_error(error);
   if (level < 0 || level > max_texture_level(t.kind)) return ctx.record_error(GL_INVALID_VALUE);
+  resolve_rendered_textures(ctx);
   const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
   const std::vector<TextureLevelData>& levels =
       ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
   if (size_t(level) >= levels.size() || levels[level].width == 0) return;  // nothing defined
   const bool depth_texture = is_depth_level(levels[level]);
+  if (packed_ds) {  // a DEPTH_STENCIL level only
+    if (levels[level].stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION);
+    if (!pixels) return;
+    const TextureLevelData& l = levels[level];
+    const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, l.width);
+    auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
+    for (int y = 0; y < l.height; ++y)
+      for (int x = 0; x < l.width; ++x) {
+        const size_t k = size_t(y) * l.width + x;
+        const uint32_t v = pack_depth_stencil(std::bit_cast<float>(l.texels[k]), l.stencil[k]);
+        uint8_t* dst = out + layout.row_stride * size_t(y) + 4 * size_t(x);
+        std::memcpy(dst, &v, 4);
+        if (ctx.pack.swap_bytes) swap_component_bytes(dst, 1, 4);
+      }
+    return;
+  }
   if (depth_texture != (format == GL_DEPTH_COMPONENT)) return ctx.record_error(GL_INVALID_OPERATION);  // as Mesa
   if (!pixels) return;
   // The border texels of a bordered level are not kept: only the inner image is written.

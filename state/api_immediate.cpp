@@ -65,6 +65,7 @@ void set_texcoord(Context& ctx, GLuint unit, float s, float t, float r, float q)
 void Begin(Context& ctx, GLenum mode) {
   raster::Primitive p;
   if (!to_primitive(mode, p)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!check_draw_framebuffer(ctx)) return;  // as Mesa: no primitive begins
   ctx.in_begin_end = true;
   ctx.begin_mode = mode;
   ctx.immediate.clear();

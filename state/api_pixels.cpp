@@ -1,10 +1,12 @@
 // glPixelStore and glReadPixels.
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/bitmap_layout.h"
 #include "state/context.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/pixel_format.h"
 #include "state/pixel_transfer.h"
 
@@ -42,6 +44,12 @@ void set_store(Context& ctx, GLenum pname, double value) {
 // GL 1.5 spec 4.3.2: format/type as for DrawPixels; colour indices cannot be read from an
 // RGBA framebuffer, depth and stencil need their buffer.
 GLenum read_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) {
+    const Drawable* d = ctx.read_drawable();
+    if (error == GL_NO_ERROR && (!d || !d->framebuffer.depth.bits || !d->framebuffer.stencil.bits))
+      return GL_INVALID_OPERATION;
+    return error;
+  }
   if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
   const Drawable* d = ctx.read_drawable();
   if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;
@@ -74,6 +82,7 @@ void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pna
 void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                 void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!check_read_framebuffer(ctx)) return;
   if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
   if (!d || !pixels || width == 0 || height == 0) return;
@@ -92,9 +101,22 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
         bits.set_bit(static_cast<uint8_t*>(pixels), fx - x, fy - y, stencil_at(fx, fy) & 1);
     return;
   }
+  const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
+  if (format == GL_DEPTH_STENCIL) {  // EXT_packed_depth_stencil: UNSIGNED_INT_24_8
+    const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, width);
+    auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
+    for (int fy = y0; fy < y1; ++fy)
+      for (int fx = x0; fx < x1; ++fx) {
+        const double z = transfer_depth(ctx.pixel_mode, fb.depth.base[fb.depth.stride * fy + fx] / depth_max);
+        const uint32_t v = pack_depth_stencil(z, uint32_t(stencil_at(fx, fy)));
+        uint8_t* dst = out + layout.row_stride * size_t(fy - y) + 4 * size_t(fx - x);
+        std::memcpy(dst, &v, 4);
+        if (ctx.pack.swap_bytes) swap_component_bytes(dst, 1, 4);
+      }
+    return;
+  }
   const ImageLayout layout = image_layout(ctx.pack, width, format, type);
   auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
-  const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
   const bool color_identity = color_transfer_is_identity(ctx.pixel_mode);
   for (int fy = y0; fy < y1; ++fy) {
     uint8_t* row = out + layout.row_stride * size_t(fy - y);

@@ -6,6 +6,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/es1/es1_enums.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/enum_translate.h"
 #include "state/limits.h"
 #include "state/pixel_format.h"
@@ -31,6 +32,7 @@ TextureObject* bound_texture(Context& ctx, GLenum target) {
 
 // The texture an image command or level query addresses: the bound one, or a proxy.
 TextureObject& image_texture(Context& ctx, const ImageTarget& target) {
+  if (!target.proxy) resolve_rendered_textures(ctx);  // rendering queued into it lands first
   return target.proxy ? ctx.textures.proxy(target.kind) : bound_texture(ctx, target.kind);
 }
 
@@ -96,6 +98,23 @@ void unpack_depth_into(Context& ctx, TextureLevelData& level, int bits, const Cl
           depth_texel(depths[size_t(y + box.border_y) * full_width + x + box.border_x], bits);
 }
 
+// The same for a DEPTH_STENCIL texture: UNSIGNED_INT_24_8 data, depth and stencil.
+void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const ClientBox& box, const void* pixels) {
+  if (!pixels) return;
+  const int full_width = box.width + 2 * box.border_x, full_height = box.height + 2 * box.border_y;
+  std::vector<double> depths;
+  std::vector<int64_t> stencils;
+  unpack_depth_stencil_image(ctx, full_width, full_height, pixels, depths, stencils);
+  level.stencil.resize(level.texels.size(), 0);  // a level made by mipmap generation has none yet
+  for (int y = 0; y < box.height; ++y)
+    for (int x = 0; x < box.width; ++x) {
+      const size_t src = size_t(y + box.border_y) * full_width + x + box.border_x;
+      const size_t dst = size_t(box.y + y) * level.width + box.x + x;
+      level.texels[dst] = depth_texel(depths[src], 24);
+      level.stencil[dst] = static_cast<uint8_t>(stencils[src] & 0xff);
+    }
+}
+
 bool valid_depth_use(Context& ctx, const TextureFormat& storage, TexTarget kind, GLenum format) {
   if (depth_use_allowed(storage, kind, format)) return true;
   ctx.record_error(GL_INVALID_OPERATION);
@@ -128,12 +147,15 @@ void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint in
   // Allocated before the level changes, so that running out of memory leaves the texture as it was.
   TextureLevelData image{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
   image.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
+  if (storage.stencil) image.stencil.assign(size_t(inner_w) * inner_h * inner_d, 0);
   if (levels.size() <= size_t(level)) levels.resize(level + 1);
   TextureLevelData& l = levels[level];
   l = std::move(image);
   const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
                       dims == 3};
-  if (storage.depth)
+  if (storage.stencil)
+    unpack_depth_stencil_into(ctx, l, box, pixels);
+  else if (storage.depth)
     unpack_depth_into(ctx, l, storage.depth, box, type, pixels);
   else
     unpack_into(ctx, l, storage, box, format, type, pixels);
@@ -156,7 +178,9 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   const TextureFormat storage = *texture_format(l.internal_format);
   if (!valid_depth_use(ctx, storage, target.kind, format)) return;
   const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, target.kind == TexTarget::T3D};
-  if (storage.depth)
+  if (storage.stencil)
+    unpack_depth_stencil_into(ctx, l, box, pixels);
+  else if (storage.depth)
     unpack_depth_into(ctx, l, storage.depth, box, type, pixels);
   else
     unpack_into(ctx, l, storage, box, format, type, pixels);
@@ -299,7 +323,7 @@ bool get_tex_level_parameter(Context& ctx, const ImageTarget& target, GLint leve
     case GL_TEXTURE_LUMINANCE_SIZE: out = sizes.luminance; return true;
     case GL_TEXTURE_INTENSITY_SIZE: out = sizes.intensity; return true;
     case GL_TEXTURE_DEPTH_SIZE: out = sizes.depth; return true;
-    case GL_TEXTURE_STENCIL_SIZE: out = 0; return true;  // Mesa answers it in any version
+    case GL_TEXTURE_STENCIL_SIZE: out = sizes.stencil; return true;  // Mesa answers it in any version
     case GL_TEXTURE_COMPRESSED: out = GL_FALSE; return true;  // no image is ever compressed
     default: return false;
   }
@@ -346,6 +370,7 @@ void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
     for (TextureUnitState& unit : ctx.texture_units)  // deleting a bound texture binds 0
       for (int k = 0; k < kTexTargetCount; ++k)
         if (GLuint& bound = bound_name(unit, TexTarget(k)); bound == name) bound = 0;
+    if (ctx.textures.find(name)) detach_deleted(ctx, GL_TEXTURE, name);
     ctx.textures.remove(name);
     ctx.debug.forget_label(GL_TEXTURE, name);
   }

@@ -28,6 +28,7 @@
 #include "state/multisample.h"
 #include "state/drawable.h"
 #include "state/evaluator.h"
+#include "state/framebuffers/framebuffer_object.h"
 #include "state/pixel_state.h"
 #include "state/programs/program_state.h"
 #include "state/query_object.h"
@@ -107,8 +108,14 @@ class Context {
   // Window-system binding (driver/). A null drawable is a surfaceless context.
   void make_current(Drawable* draw, Drawable* read);
   void release_current();
-  Drawable* draw_drawable() const { return draw_; }
-  Drawable* read_drawable() const { return read_; }
+  // The buffers drawn into and read from: the bound framebuffer objects' views, or the
+  // window-system drawables.
+  Drawable* draw_drawable() const { return fbo_draw_ ? fbo_draw_ : draw_; }
+  Drawable* read_drawable() const { return fbo_read_ ? fbo_read_ : read_; }
+  Drawable* window_draw_drawable() const { return draw_; }
+  Drawable* window_read_drawable() const { return read_; }
+  // framebuffers/: the views of the bound framebuffer objects (null: the window's).
+  void set_framebuffer_views(Drawable* draw, Drawable* read);
   // The driver calls this when a bound drawable's buffers were replaced (resize, swap).
   void drawable_changed();
   // Runs `render` (renderer calls) once per colour buffer that glDrawBuffer selects
@@ -240,6 +247,8 @@ class Context {
   AccumState accum;
   ProgramState programs;  // GL 2.0 shader and program objects, generic attributes (state/programs/)
 
+  FramebufferState framebuffers;  // framebuffer and renderbuffer objects (state/framebuffers/)
+
   // Display lists
   DisplayLists& lists;  // the share group's
   ListCompilation compilation;
@@ -252,7 +261,8 @@ class Context {
   std::string version_string;  // storage for glGetString(GL_VERSION)
 
  private:
-  void bind_framebuffer();
+  // Points the renderer at the draw buffers; unless `always`, only when they changed.
+  void bind_framebuffer(bool always = true);
   void use_color_buffer(const raster::ColorBuffer& color);
 
   ContextAttribs attribs_;
@@ -261,6 +271,8 @@ class Context {
   std::unique_ptr<raster::Renderer> renderer_;
   Drawable* draw_ = nullptr;
   Drawable* read_ = nullptr;
+  Drawable* fbo_draw_ = nullptr;
+  Drawable* fbo_read_ = nullptr;
   bool ever_bound_ = false;
 };
 

@@ -56,6 +56,7 @@ int snapshot_textures(Context& ctx) {
       break;
     }
     if (!tex) continue;
+    resolve_if_rendered(ctx, *tex);  // a feedback loop samples what was rendered before this draw
     out.image = tex->snapshot();
     if (!out.image) continue;
     out.sampler = tex->sampler();

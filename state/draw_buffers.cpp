@@ -10,6 +10,8 @@ namespace {
 enum class Target { None = 0, Front = 1, Back = 2, Both = 3 };  // bits: front, back
 
 Target draw_target(GLenum buffer, const Drawable& d) {
+  // A framebuffer object's view holds the selected attachment as its only colour buffer.
+  if (buffer >= GL_COLOR_ATTACHMENT0 && buffer <= GL_COLOR_ATTACHMENT15) return Target::Front;
   const bool separate_front = d.double_buffered && d.front.base;
   switch (buffer) {
     case GL_FRONT: case GL_FRONT_LEFT: return Target::Front;
@@ -58,28 +60,52 @@ struct DepthStencilCopy {
   }
 };
 
+bool same_buffers(const raster::Framebuffer& a, const raster::Framebuffer& b) {
+  const raster::ColorReduction &ra = a.color.reduction, &rb = b.color.reduction;
+  return a.width == b.width && a.height == b.height && a.color.base == b.color.base &&
+         a.color.stride == b.color.stride && a.color.format == b.color.format && ra.active == rb.active &&
+         std::memcmp(ra.bits, rb.bits, 4) == 0 && std::memcmp(ra.source, rb.source, 4) == 0 &&
+         a.depth.base == b.depth.base && a.depth.stride == b.depth.stride && a.depth.bits == b.depth.bits &&
+         a.stencil.base == b.stencil.base && a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits;
+}
+
 }  // namespace
 
-void Context::bind_framebuffer() {
-  if (!draw_) return renderer_->set_framebuffer(raster::Framebuffer{});
-  raster::Framebuffer fb = draw_->framebuffer;
-  switch (draw_targets(draw_buffer, extra_draw_buffers, *draw_)) {
-    case Target::None: fb.color = {}; break;
-    case Target::Front: fb.color = draw_->front_color(); break;
-    case Target::Back: case Target::Both: break;
+void Context::set_framebuffer_views(Drawable* draw, Drawable* read) {
+  fbo_draw_ = draw;
+  fbo_read_ = read;
+  bind_framebuffer(false);
+}
+
+void Context::bind_framebuffer(bool always) {
+  Drawable* d = draw_drawable();
+  raster::Framebuffer fb;
+  if (d) {
+    fb = d->framebuffer;
+    switch (draw_targets(draw_buffer, extra_draw_buffers, *d)) {
+      case Target::None: fb.color = {}; break;
+      case Target::Front: fb.color = d->front_color(); break;
+      case Target::Back: case Target::Both: break;
+    }
   }
-  renderer_->set_framebuffer(fb);
+  // Binding the same buffers again would only flush the queued rendering.
+  if (always || !same_buffers(fb, renderer_->framebuffer())) renderer_->set_framebuffer(fb);
 }
 
 void Context::use_color_buffer(const raster::ColorBuffer& color) {
   const raster::ColorBuffer& bound = renderer_->framebuffer().color;
   if (bound.base == color.base && bound.stride == color.stride) return;
-  raster::Framebuffer fb = draw_->framebuffer;
+  raster::Framebuffer fb = draw_drawable()->framebuffer;
   fb.color = color;
   renderer_->set_framebuffer(fb);
 }
 
 void Context::render_to_draw_buffers(const std::function<void()>& render) {
+  if (framebuffers.draw_binding) {
+    refresh_framebuffer_views(*this);
+    note_draw_framebuffer_rendered(*this);
+  }
+  Drawable* const draw_ = draw_drawable();
   if (!draw_) return render();
   switch (draw_targets(draw_buffer, extra_draw_buffers, *draw_)) {
     case Target::None: use_color_buffer({}); return render();
@@ -105,9 +131,10 @@ void Context::render_to_draw_buffers(const std::function<void()>& render) {
 }
 
 raster::Framebuffer Context::read_framebuffer() const {
-  if (!read_) return raster::Framebuffer{};
-  raster::Framebuffer fb = read_->framebuffer;
-  if (reads_front(read_buffer)) fb.color = read_->front_color();
+  const Drawable* read = read_drawable();
+  if (!read) return raster::Framebuffer{};
+  raster::Framebuffer fb = read->framebuffer;
+  if (reads_front(read_buffer)) fb.color = read->front_color();
   return fb;
 }
 

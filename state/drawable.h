@@ -9,6 +9,7 @@ struct Drawable {
   raster::Framebuffer framebuffer;
   int red_bits = 8, green_bits = 8, blue_bits = 8, alpha_bits = 8;
   bool double_buffered = false;
+  bool accum = true;  // has an accumulation buffer (framebuffer objects have none)
   // The front buffer of a double-buffered drawable whose driver keeps one (framebuffer.color
   // is then the back buffer). Otherwise unset, and GL_FRONT names framebuffer.color.
   raster::ColorBuffer front;

@@ -1,5 +1,7 @@
 #include "state/pixel_format.h"
 
+#include "state/framebuffers/packed_depth_stencil.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -97,6 +99,7 @@ GLenum pixel_rect_format_type_error(GLenum format, GLenum type) {
 }
 
 GLenum texture_image_format_type_error(GLenum format, GLenum type) {
+  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) return error;
   if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
   return format == GL_STENCIL_INDEX ? GL_INVALID_ENUM : GL_NO_ERROR;
 }

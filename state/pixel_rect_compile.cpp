@@ -11,8 +11,12 @@
 namespace pineda::gl {
 
 void compile_DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  const bool reads = pixels && width > 0 && height > 0 && pixel_rect_format_type_error(format, type) == GL_NO_ERROR;
-  auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, format, type, pixels)
+  // DEPTH_STENCIL / UNSIGNED_INT_24_8 pixels are laid out as one-component UNSIGNED_INT ones.
+  const bool packed_ds = format == GL_DEPTH_STENCIL && type == GL_UNSIGNED_INT_24_8;
+  const bool reads = pixels && width > 0 && height > 0 &&
+                     (packed_ds || pixel_rect_format_type_error(format, type) == GL_NO_ERROR);
+  auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, packed_ds ? GL_RED : format,
+                                         packed_ds ? GL_UNSIGNED_INT : type, pixels)
                      : std::vector<uint8_t>{};
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);

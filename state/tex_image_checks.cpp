@@ -14,6 +14,9 @@ bool image_target_of(GLenum target, int dims, bool proxy_ok, ImageTarget& out) {
 }  // namespace
 
 bool depth_use_allowed(const TextureFormat& storage, TexTarget kind, GLenum format) {
+  // DEPTH_STENCIL data for DEPTH_STENCIL formats only, and the other way round (as Mesa).
+  if (storage.stencil || format == GL_DEPTH_STENCIL)
+    return storage.stencil && format == GL_DEPTH_STENCIL && (kind == TexTarget::T1D || kind == TexTarget::T2D);
   const bool depth = storage.depth > 0;
   return depth == (format == GL_DEPTH_COMPONENT) && (!depth || kind == TexTarget::T1D || kind == TexTarget::T2D);
 }

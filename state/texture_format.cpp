@@ -105,6 +105,11 @@ std::optional<TextureFormat> texture_format(GLint internal_format) {
     case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24: return depth_format(24);
     case GL_DEPTH_COMPONENT16: return depth_format(16);
     case GL_DEPTH_COMPONENT32: return depth_format(32);
+    case GL_DEPTH_STENCIL: case GL_DEPTH24_STENCIL8: {
+      TextureFormat f = depth_format(24);
+      f.stencil = 8;
+      return f;
+    }
     default: return std::nullopt;
   }
 }

@@ -22,6 +22,7 @@ struct TextureFormat {
   // A depth format (GL 1.4, ARB_depth_texture): its bits, 0 for a colour format. Its texels
   // hold the depth as a float's bits (depth_texel).
   uint8_t depth = 0;
+  uint8_t stencil = 0;  // DEPTH_STENCIL formats (EXT_packed_depth_stencil): the stencil bits
 };
 
 // The storage of a colour internal format (1..4, the base formats and the sized ones), or

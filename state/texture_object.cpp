@@ -187,8 +187,13 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
 
 void TextureObject::level_changed(int level, int face) {
   changed();
+  if (params.generate_mipmap && level == params.base_level) generate_levels(level, face);
+}
+
+void TextureObject::generate_levels(int level, int face) {
+  changed();
   std::vector<TextureLevelData>& chain = face_levels(face);
-  if (!params.generate_mipmap || level != params.base_level || size_t(level) >= chain.size()) return;
+  if (level < 0 || size_t(level) >= chain.size()) return;
   // An image with a zero width, height or depth has no texels to derive levels from.
   if (chain[level].width == 0 || chain[level].height == 0 || chain[level].depth == 0) return;
   for (size_t l = size_t(level); chain[l].width > 1 || chain[l].height > 1 || chain[l].depth > 1; ++l) {

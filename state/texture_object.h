@@ -19,6 +19,7 @@ struct TextureLevelData {
   GLint internal_format = 0;  // as the application gave it (for glGetTexLevelParameter)
   raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;  // what `texels` were reduced to
   std::vector<uint32_t> texels;
+  std::vector<uint8_t> stencil;  // a DEPTH_STENCIL level's stencil indices, beside the depth texels
 };
 
 // What glTexParameter sets; glPushAttrib(GL_TEXTURE_BIT) saves it whole.
@@ -50,10 +51,18 @@ struct TextureObject {
   // The image the sampler reads, or null when the texture is incomplete.
   std::shared_ptr<const raster::TextureImage> snapshot();
   raster::Sampler sampler() const;
-  void changed() { snapshot_.reset(); snapshot_valid_ = false; }
+  void changed() {
+    snapshot_.reset();
+    snapshot_valid_ = false;
+    ++version;
+  }
   // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
   // it when it is the base level and generation is on.
   void level_changed(int level, int face = 0);
+  // Rebuilds the levels below `level` of cube face `face` from it (glGenerateMipmap).
+  void generate_levels(int level, int face = 0);
+  // Counts changes: a framebuffer attachment's copy of a depth image compares it (framebuffers/).
+  uint64_t version = 0;
 
  private:
   std::shared_ptr<const raster::TextureImage> snapshot_;

@@ -1,0 +1,124 @@
+// glGen/Delete/Is/BindRenderbuffer(s), glRenderbufferStorage(Multisample) and
+// glGetRenderbufferParameteriv.
+#include <new>
+
+#include "glapi/gl_entry_points.h"
+#include "state/context.h"
+#include "state/framebuffers/framebuffer_object.h"
+
+namespace pineda::gl {
+namespace {
+
+Renderbuffer* bound_renderbuffer(Context& ctx) {
+  const FramebufferState& fs = ctx.framebuffers;
+  auto it = fs.renderbuffers.find(fs.renderbuffer_binding);
+  return fs.renderbuffer_binding && it != fs.renderbuffers.end() ? it->second.get() : nullptr;
+}
+
+void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height) {
+  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  const std::optional<RenderableFormat> format = renderbuffer_format(internalformat);
+  if (!format) return ctx.record_error(GL_INVALID_ENUM);
+  if (width < 0 || height < 0 || width > kMaxRenderbufferSize || height > kMaxRenderbufferSize)
+    return ctx.record_error(GL_INVALID_VALUE);
+  if (samples != 0) return ctx.record_error(GL_INVALID_VALUE);  // MAX_SAMPLES is 0: no multisampling
+  Renderbuffer* rb = bound_renderbuffer(ctx);
+  if (!rb) return ctx.record_error(GL_INVALID_OPERATION);
+  resolve_rendered_textures(ctx);
+  ctx.finish();  // queued rendering may still write the old storage
+  Renderbuffer fresh;
+  fresh.width = width;
+  fresh.height = height;
+  fresh.internal_format = internalformat;
+  fresh.format = *format;
+  const size_t n = size_t(width) * size_t(height);
+  try {
+    if (format->kind == RenderableFormat::Kind::Color) fresh.color.assign(n, 0);
+    if (format->has_depth()) fresh.depth.assign(n, 0);
+    if (format->has_stencil()) fresh.stencil.assign(n, 0);
+  } catch (const std::bad_alloc&) {
+    return ctx.record_error(GL_OUT_OF_MEMORY);
+  }
+  *rb = std::move(fresh);
+  refresh_framebuffer_views(ctx);
+}
+
+}  // namespace
+
+void GenRenderbuffers(Context& ctx, GLsizei n, GLuint* renderbuffers) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!renderbuffers) return;
+  FramebufferState& fs = ctx.framebuffers;
+  GLuint next = 1;
+  for (GLsizei i = 0; i < n; ++i) {
+    while (fs.renderbuffers.count(next)) ++next;
+    fs.renderbuffers[next] = nullptr;  // reserved until first bound
+    renderbuffers[i] = next;
+  }
+}
+
+void DeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers) {
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!renderbuffers) return;
+  FramebufferState& fs = ctx.framebuffers;
+  for (GLsizei i = 0; i < n; ++i) {
+    const GLuint name = renderbuffers[i];
+    auto it = fs.renderbuffers.find(name);
+    if (name == 0 || it == fs.renderbuffers.end()) continue;
+    if (fs.renderbuffer_binding == name) fs.renderbuffer_binding = 0;
+    if (it->second) detach_deleted(ctx, GL_RENDERBUFFER, name);
+    fs.renderbuffers.erase(name);
+  }
+}
+
+GLboolean IsRenderbuffer(Context& ctx, GLuint renderbuffer) {
+  const FramebufferState& fs = ctx.framebuffers;
+  auto it = fs.renderbuffers.find(renderbuffer);
+  return renderbuffer != 0 && it != fs.renderbuffers.end() && it->second ? GL_TRUE : GL_FALSE;
+}
+
+void BindRenderbuffer(Context& ctx, GLenum target, GLuint renderbuffer) {
+  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  FramebufferState& fs = ctx.framebuffers;
+  if (renderbuffer != 0) {
+    std::shared_ptr<Renderbuffer>& slot = fs.renderbuffers[renderbuffer];
+    if (!slot) slot = std::make_shared<Renderbuffer>();
+  }
+  fs.renderbuffer_binding = renderbuffer;
+}
+
+void RenderbufferStorage(Context& ctx, GLenum target, GLenum internalformat, GLsizei width, GLsizei height) {
+  storage(ctx, target, 0, internalformat, width, height);
+}
+
+void RenderbufferStorageMultisample(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat,
+                                    GLsizei width, GLsizei height) {
+  if (samples < 0) return ctx.record_error(GL_INVALID_VALUE);
+  storage(ctx, target, samples, internalformat, width, height);
+}
+
+void GetRenderbufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
+  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  const Renderbuffer* rb = bound_renderbuffer(ctx);
+  if (!rb) return ctx.record_error(GL_INVALID_OPERATION);
+  const RenderableFormat& f = rb->format;
+  const bool color = f.kind == RenderableFormat::Kind::Color;
+  GLint value = 0;
+  switch (pname) {
+    case GL_RENDERBUFFER_WIDTH: value = rb->width; break;
+    case GL_RENDERBUFFER_HEIGHT: value = rb->height; break;
+    case GL_RENDERBUFFER_INTERNAL_FORMAT: value = GLint(rb->internal_format); break;
+    case GL_RENDERBUFFER_SAMPLES: value = 0; break;
+    // A renderbuffer without storage has no bits yet.
+    case GL_RENDERBUFFER_RED_SIZE: value = color && rb->width ? f.color.red : 0; break;
+    case GL_RENDERBUFFER_GREEN_SIZE: value = color && rb->width ? f.color.green : 0; break;
+    case GL_RENDERBUFFER_BLUE_SIZE: value = color && rb->width ? f.color.blue : 0; break;
+    case GL_RENDERBUFFER_ALPHA_SIZE: value = color && rb->width ? f.color.alpha : 0; break;
+    case GL_RENDERBUFFER_DEPTH_SIZE: value = rb->width ? f.depth_bits : 0; break;
+    case GL_RENDERBUFFER_STENCIL_SIZE: value = rb->width ? f.stencil_bits : 0; break;
+    default: return ctx.record_error(GL_INVALID_ENUM);
+  }
+  if (params) *params = value;
+}
+
+}  // namespace pineda::gl

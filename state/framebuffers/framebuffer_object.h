@@ -1,0 +1,129 @@
+// Framebuffer and renderbuffer objects (GL_ARB_framebuffer_object, GL_EXT_framebuffer_object):
+// the objects, their name spaces and bindings, and the views through which the context
+// renders into and reads from the bound ones.
+//
+// Storage: a renderbuffer owns its pixels (colour as RGBA8, depth as integers of its bits,
+// stencil as bytes). A colour texture attachment is rendered in place: texture levels are
+// RGBA8 (texture_object.h), and the write stage reduces each pixel to the level's format
+// (raster::ColorReduction), so the level holds what glTexImage would have stored. A depth
+// texture keeps float texels, so its attachment renders into an integer copy that is imported
+// when the texture changed and written back before the texture is next read.
+#pragma once
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "state/drawable.h"
+#include "state/framebuffers/renderable_format.h"
+
+namespace pineda {
+
+class Context;
+struct TextureObject;
+struct TextureLevelData;
+
+constexpr int kMaxColorAttachments = 8;
+constexpr int kMaxRenderbufferSize = 8192;
+
+struct Renderbuffer {
+  GLsizei width = 0, height = 0;
+  GLenum internal_format = GL_RGBA;
+  RenderableFormat format;
+  std::vector<uint32_t> color;  // RGBA8, R in the lowest byte, bottom row first
+  std::vector<uint32_t> depth;
+  std::vector<uint8_t> stencil;
+};
+
+struct Attachment {
+  GLenum type = GL_NONE;  // GL_NONE, GL_RENDERBUFFER or GL_TEXTURE
+  std::shared_ptr<Renderbuffer> renderbuffer;  // kept alive while attached, as GL requires
+  GLuint name = 0;  // the renderbuffer's or texture's name
+  GLint level = 0;
+  int face = 0;     // cube map face 0..5 (+X, -X, +Y, -Y, +Z, -Z)
+  bool cube = false;
+  GLint layer = 0;  // 3D texture slice
+  // A depth texture's depth values as integers of its bits, and the texture version imported.
+  std::vector<uint32_t> depth_copy;
+  uint64_t depth_copy_version = ~uint64_t{0};
+};
+
+// Attachment points: the colour attachments, then depth and stencil.
+constexpr int kDepthPoint = kMaxColorAttachments;
+constexpr int kStencilPoint = kMaxColorAttachments + 1;
+constexpr int kAttachmentPoints = kMaxColorAttachments + 2;
+
+struct FramebufferObject {
+  std::array<Attachment, kAttachmentPoints> attachments;
+  GLenum draw_buffer = GL_COLOR_ATTACHMENT0, read_buffer = GL_COLOR_ATTACHMENT0;
+  // What the context renders into and reads from, rebuilt by refresh_framebuffer_views.
+  Drawable draw_view, read_view;
+};
+
+struct FramebufferState {
+  std::map<GLuint, std::unique_ptr<FramebufferObject>> framebuffers;
+  std::map<GLuint, std::shared_ptr<Renderbuffer>> renderbuffers;  // a null entry: generated, not yet bound
+  std::set<GLuint> generated_framebuffers;  // generated names not yet bound
+  GLuint draw_binding = 0, read_binding = 0, renderbuffer_binding = 0;
+  // The window-system framebuffer's draw and read buffers while an object is bound (the
+  // context's draw_buffer/read_buffer are those of the bound draw/read framebuffer).
+  GLenum window_draw_buffer = GL_BACK, window_read_buffer = GL_BACK;
+  // Set when queued rendering may write a texture attached to the draw framebuffer.
+  bool textures_rendered = false;
+
+  FramebufferObject* draw_object() const { return find(draw_binding); }
+  FramebufferObject* read_object() const { return find(read_binding); }
+  FramebufferObject* find(GLuint name) const {
+    auto it = framebuffers.find(name);
+    return name && it != framebuffers.end() ? it->second.get() : nullptr;
+  }
+};
+
+// The attachment point index of an attachment enum (COLOR_ATTACHMENTi, DEPTH_ATTACHMENT,
+// STENCIL_ATTACHMENT), or -1.
+int attachment_point(GLenum attachment);
+
+// GL 3.0 4.4.4.2 framebuffer completeness of a framebuffer object; `ext_rules` adds
+// EXT_framebuffer_object's INCOMPLETE_DIMENSIONS_EXT and INCOMPLETE_FORMATS_EXT.
+GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_rules);
+
+// Rebuilds the views of the bound framebuffer objects (after attachments, storage or the
+// draw/read buffer changed) and points the context at them.
+void refresh_framebuffer_views(Context& ctx);
+
+// Called for every command that renders into the draw framebuffer.
+void note_draw_framebuffer_rendered(Context& ctx);
+
+// Completes rendering queued into textures of the draw framebuffer and makes the textures
+// show it: before a texture is sampled, read or respecified.
+void resolve_rendered_textures(Context& ctx);
+// As resolve_rendered_textures, only when `tex` is attached to the draw framebuffer.
+void resolve_if_rendered(Context& ctx, const TextureObject& tex);
+
+// Before a command renders into the draw framebuffer or reads the read framebuffer: true
+// when it is complete; otherwise GL_INVALID_FRAMEBUFFER_OPERATION is recorded.
+bool check_draw_framebuffer(Context& ctx);
+bool check_read_framebuffer(Context& ctx);
+
+// Detaches a deleted texture or renderbuffer (`type` GL_TEXTURE or GL_RENDERBUFFER) from every
+// framebuffer object that has it (Pineda detaches textures from unbound ones too: their
+// storage goes with the name).
+void detach_deleted(Context& ctx, GLenum type, GLuint name);
+
+// Which bindings a framebuffer target (FRAMEBUFFER, DRAW_FRAMEBUFFER, READ_FRAMEBUFFER) names.
+bool framebuffer_target(GLenum target, bool& draw, bool& read);
+
+// glDrawBuffer (read: glReadBuffer) while a framebuffer object is bound.
+void set_object_color_buffer(Context& ctx, GLenum buffer, bool read);
+
+// The texture level an attachment names, or null when it has no image.
+TextureLevelData* attached_level(Context& ctx, const Attachment& a);
+// The format an attachment renders with, or nullopt when the image is missing.
+std::optional<RenderableFormat> attachment_format(Context& ctx, const Attachment& a);
+
+}  // namespace pineda

@@ -1,0 +1,289 @@
+// Completeness of framebuffer objects and the views the context renders through.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "state/context.h"
+#include "state/framebuffers/framebuffer_object.h"
+
+namespace pineda {
+namespace {
+
+TextureObject* attached_texture(Context& ctx, const Attachment& a) {
+  return a.type == GL_TEXTURE ? ctx.textures.find(a.name) : nullptr;
+}
+
+// The attachment's image size; false when it has no image.
+bool image_size(Context& ctx, const Attachment& a, int& width, int& height) {
+  if (a.type == GL_RENDERBUFFER) {
+    width = a.renderbuffer->width;
+    height = a.renderbuffer->height;
+    return width > 0 && height > 0;
+  }
+  const TextureLevelData* level = attached_level(ctx, a);
+  if (!level) return false;
+  width = level->width;
+  height = level->height;
+  return true;
+}
+
+GLint image_internal_format(Context& ctx, const Attachment& a) {
+  if (a.type == GL_RENDERBUFFER) return GLint(a.renderbuffer->internal_format);
+  const TextureLevelData* level = attached_level(ctx, a);
+  return level ? level->internal_format : 0;
+}
+
+double depth_max(int bits) { return std::ldexp(1.0, bits) - 1.0; }
+
+// The depth texture's texels as integers of `bits` bits, when the texture changed since the
+// last import.
+void import_depth(Context& ctx, Attachment& a, const TextureLevelData& level, int bits) {
+  const TextureObject* tex = attached_texture(ctx, a);
+  const size_t n = size_t(level.width) * size_t(level.height);
+  if (a.depth_copy_version == tex->version && a.depth_copy.size() == n) return;
+  // Rendering queued into this copy is written back first, so none is lost.
+  resolve_rendered_textures(ctx);
+  if (a.depth_copy_version == tex->version && a.depth_copy.size() == n) return;
+  const double max = depth_max(bits);
+  const size_t offset = n * size_t(a.layer);
+  a.depth_copy.assign(n, 0);
+  for (size_t i = 0; i < n && offset + i < level.texels.size(); ++i) {
+    const double z = std::clamp<double>(std::bit_cast<float>(level.texels[offset + i]), 0.0, 1.0);
+    a.depth_copy[i] = static_cast<uint32_t>(std::nearbyint(z * max));
+  }
+  a.depth_copy_version = tex->version;
+}
+
+raster::ColorBuffer color_buffer(Context& ctx, const Attachment& a, const RenderableFormat& format) {
+  raster::ColorBuffer cb;
+  cb.reduction = color_reduction(format.color);
+  if (a.type == GL_RENDERBUFFER) {
+    cb.base = reinterpret_cast<uint8_t*>(a.renderbuffer->color.data());
+    cb.stride = ptrdiff_t(a.renderbuffer->width) * 4;
+    return cb;
+  }
+  TextureLevelData* level = attached_level(ctx, a);
+  const size_t slice = size_t(level->width) * size_t(level->height) * size_t(a.layer);
+  cb.base = reinterpret_cast<uint8_t*>(level->texels.data() + slice);
+  cb.stride = ptrdiff_t(level->width) * 4;
+  return cb;
+}
+
+// The view of `fb` whose colour buffer is `buffer`'s attachment; an incomplete framebuffer
+// has an empty view (nothing is drawn into it).
+void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& view) {
+  view = Drawable{};
+  view.accum = false;
+  if (framebuffer_status(ctx, fb, false) != GL_FRAMEBUFFER_COMPLETE) {
+    view.red_bits = view.green_bits = view.blue_bits = view.alpha_bits = 0;
+    return;
+  }
+  raster::Framebuffer& out = view.framebuffer;
+  out.width = out.height = kMaxRenderbufferSize;
+  for (const Attachment& a : fb.attachments) {
+    int w = 0, h = 0;
+    if (a.type == GL_NONE || !image_size(ctx, a, w, h)) continue;
+    out.width = std::min(out.width, w);
+    out.height = std::min(out.height, h);
+  }
+  view.red_bits = view.green_bits = view.blue_bits = view.alpha_bits = 0;
+  const int point = buffer == GL_NONE ? -1 : attachment_point(buffer);
+  if (point >= 0 && point < kMaxColorAttachments && fb.attachments[point].type != GL_NONE) {
+    const Attachment& a = fb.attachments[point];
+    const RenderableFormat format = *attachment_format(ctx, a);
+    out.color = color_buffer(ctx, a, format);
+    view.red_bits = format.color.red;
+    view.green_bits = format.color.green;
+    view.blue_bits = format.color.blue;
+    view.alpha_bits = format.color.alpha;
+  }
+  Attachment& depth = fb.attachments[kDepthPoint];
+  if (depth.type != GL_NONE) {
+    const RenderableFormat format = *attachment_format(ctx, depth);
+    out.depth.bits = format.depth_bits;
+    if (depth.type == GL_RENDERBUFFER) {
+      out.depth.base = depth.renderbuffer->depth.data();
+      out.depth.stride = depth.renderbuffer->width;
+    } else {
+      const TextureLevelData* level = attached_level(ctx, depth);
+      import_depth(ctx, depth, *level, format.depth_bits);
+      out.depth.base = depth.depth_copy.data();
+      out.depth.stride = level->width;
+    }
+  }
+  Attachment& stencil = fb.attachments[kStencilPoint];
+  if (stencil.type == GL_RENDERBUFFER) {
+    out.stencil.bits = 8;
+    out.stencil.base = stencil.renderbuffer->stencil.data();
+    out.stencil.stride = stencil.renderbuffer->width;
+  } else if (stencil.type == GL_TEXTURE) {  // a DEPTH_STENCIL texture's indices, rendered in place
+    TextureLevelData* level = attached_level(ctx, stencil);
+    out.stencil.bits = 8;
+    out.stencil.base = level->stencil.data() + size_t(level->width) * level->height * size_t(stencil.layer);
+    out.stencil.stride = level->width;
+  }
+}
+
+bool renders_into_textures(const FramebufferObject& fb) {
+  return std::any_of(fb.attachments.begin(), fb.attachments.end(), [](const Attachment& a) { return a.type == GL_TEXTURE; });
+}
+
+}  // namespace
+
+int attachment_point(GLenum attachment) {
+  if (attachment >= GL_COLOR_ATTACHMENT0 && attachment < GL_COLOR_ATTACHMENT0 + kMaxColorAttachments)
+    return int(attachment - GL_COLOR_ATTACHMENT0);
+  if (attachment == GL_DEPTH_ATTACHMENT) return kDepthPoint;
+  if (attachment == GL_STENCIL_ATTACHMENT) return kStencilPoint;
+  return -1;
+}
+
+TextureLevelData* attached_level(Context& ctx, const Attachment& a) {
+  TextureObject* tex = attached_texture(ctx, a);
+  if (!tex || a.level < 0) return nullptr;
+  std::vector<TextureLevelData>& levels = tex->face_levels(a.cube ? a.face : 0);
+  if (size_t(a.level) >= levels.size()) return nullptr;
+  TextureLevelData& level = levels[a.level];
+  if (level.width <= 0 || level.height <= 0 || a.layer >= level.depth) return nullptr;
+  if (level.texels.size() < size_t(level.width) * level.height * level.depth) return nullptr;
+  return &level;
+}
+
+std::optional<RenderableFormat> attachment_format(Context& ctx, const Attachment& a) {
+  if (a.type == GL_RENDERBUFFER) {
+    if (a.renderbuffer->width <= 0 || a.renderbuffer->height <= 0) return std::nullopt;
+    return a.renderbuffer->format;
+  }
+  const TextureLevelData* level = attached_level(ctx, a);
+  if (!level) return std::nullopt;
+  const std::optional<RenderableFormat> format = texture_renderable_format(level->internal_format);
+  if (format && format->has_stencil() && level->stencil.size() < level->texels.size()) return std::nullopt;
+  return format;
+}
+
+GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_rules) {
+  int images = 0, width = -1, height = -1;
+  bool sizes_differ = false, formats_differ = false;
+  GLint color_format = 0;
+  for (int p = 0; p < kAttachmentPoints; ++p) {
+    const Attachment& a = fb.attachments[p];
+    if (a.type == GL_NONE) continue;
+    const std::optional<RenderableFormat> format = attachment_format(ctx, a);
+    if (!format) return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+    const bool fits = p < kMaxColorAttachments ? format->kind == RenderableFormat::Kind::Color
+                      : p == kDepthPoint       ? format->has_depth()
+                                               : format->has_stencil();
+    if (!fits) return GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT;
+    int w = 0, h = 0;
+    image_size(ctx, a, w, h);
+    if (images++ == 0) {
+      width = w;
+      height = h;
+    } else if (w != width || h != height) {
+      sizes_differ = true;
+    }
+    if (p < kMaxColorAttachments) {
+      const GLint f = image_internal_format(ctx, a);
+      if (color_format && f != color_format) formats_differ = true;
+      color_format = f;
+    }
+  }
+  if (images == 0) return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
+  if (ext_rules && sizes_differ) return GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT;
+  if (ext_rules && formats_differ) return GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT;
+  auto missing = [&](GLenum buffer) {
+    if (buffer == GL_NONE) return false;
+    const int p = attachment_point(buffer);
+    return p < 0 || fb.attachments[p].type == GL_NONE;
+  };
+  if (missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+  if (missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
+  return GL_FRAMEBUFFER_COMPLETE;
+}
+
+void refresh_framebuffer_views(Context& ctx) {
+  FramebufferState& fs = ctx.framebuffers;
+  FramebufferObject* draw = fs.draw_object();
+  FramebufferObject* read = fs.read_object();
+  if (draw) build_view(ctx, *draw, draw->draw_buffer, draw->draw_view);
+  if (read) build_view(ctx, *read, read->read_buffer, read->read_view);
+  ctx.set_framebuffer_views(draw ? &draw->draw_view : nullptr, read ? &read->read_view : nullptr);
+}
+
+void note_draw_framebuffer_rendered(Context& ctx) {
+  if (const FramebufferObject* fb = ctx.framebuffers.draw_object(); fb && renders_into_textures(*fb))
+    ctx.framebuffers.textures_rendered = true;
+}
+
+void resolve_rendered_textures(Context& ctx) {
+  FramebufferState& fs = ctx.framebuffers;
+  if (!fs.textures_rendered) return;
+  fs.textures_rendered = false;
+  ctx.finish();
+  FramebufferObject* fb = fs.draw_object();
+  if (!fb) return;
+  for (int p = 0; p < kAttachmentPoints; ++p) {
+    Attachment& a = fb->attachments[p];
+    TextureObject* tex = attached_texture(ctx, a);
+    TextureLevelData* level = attached_level(ctx, a);
+    if (!tex || !level) continue;
+    const bool depth_copy = p == kDepthPoint && a.depth_copy_version == tex->version;
+    if (depth_copy) {
+      const std::optional<RenderableFormat> format = attachment_format(ctx, a);
+      const double max = depth_max(format ? format->depth_bits : 24);
+      const size_t n = std::min(a.depth_copy.size(), size_t(level->width) * size_t(level->height));
+      const size_t offset = n * size_t(a.layer);
+      for (size_t i = 0; i < n && offset + i < level->texels.size(); ++i)
+        level->texels[offset + i] = std::bit_cast<uint32_t>(static_cast<float>(a.depth_copy[i] / max));
+    }
+    tex->changed();
+    if (depth_copy) a.depth_copy_version = tex->version;
+  }
+}
+
+void resolve_if_rendered(Context& ctx, const TextureObject& tex) {
+  const FramebufferObject* fb = ctx.framebuffers.draw_object();
+  if (!ctx.framebuffers.textures_rendered || !fb) return;
+  for (const Attachment& a : fb->attachments)
+    if (a.type == GL_TEXTURE && ctx.textures.find(a.name) == &tex) return resolve_rendered_textures(ctx);
+}
+
+bool check_draw_framebuffer(Context& ctx) {
+  FramebufferObject* fb = ctx.framebuffers.draw_object();
+  if (!fb) return true;
+  refresh_framebuffer_views(ctx);
+  if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
+  ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  return false;
+}
+
+bool check_read_framebuffer(Context& ctx) {
+  FramebufferObject* fb = ctx.framebuffers.read_object();
+  if (!fb) return true;
+  resolve_rendered_textures(ctx);
+  refresh_framebuffer_views(ctx);
+  if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
+  ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  return false;
+}
+
+void detach_deleted(Context& ctx, GLenum type, GLuint name) {
+  FramebufferState& fs = ctx.framebuffers;
+  const bool attached = std::any_of(fs.framebuffers.begin(), fs.framebuffers.end(), [&](const auto& entry) {
+    const auto& points = entry.second->attachments;
+    return std::any_of(points.begin(), points.end(), [&](const Attachment& a) { return a.type == type && a.name == name; });
+  });
+  if (!attached) return;
+  resolve_rendered_textures(ctx);
+  ctx.finish();
+  for (auto& [fb_name, fb] : fs.framebuffers) {
+    // GL detaches a renderbuffer from the bound framebuffers only; an unbound one keeps it.
+    const bool bound = fb_name == fs.draw_binding || fb_name == fs.read_binding;
+    if (type == GL_RENDERBUFFER && !bound) continue;
+    for (Attachment& a : fb->attachments)
+      if (a.type == type && a.name == name) a = Attachment{};
+  }
+  refresh_framebuffer_views(ctx);
+}
+
+}  // namespace pineda
