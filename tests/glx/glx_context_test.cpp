@@ -249,13 +249,30 @@ TEST_F(GlxContextTest, PbufferOfAnotherConnectionToTheSameServer) {
   EXPECT_TRUE(take_errors().empty());
 }
 
-TEST_F(GlxContextTest, ShareListsAreNotImplemented) {
+TEST_F(GlxContextTest, ShareListsShareTexturesAndLists) {
   GLXFBConfig config = rgba8(true, true);
   GLXContext a = context(config);
-  EXPECT_EQ(glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, a, True), nullptr);
+  GLXContext b = glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, a, True);
+  ASSERT_NE(b, nullptr);
+  const int size[] = {GLX_PBUFFER_WIDTH, 16, GLX_PBUFFER_HEIGHT, 16, None};
+  GLXPbuffer pb = glXCreatePbuffer(dpy, config, size);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy, pb, pb, a));
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glClearColor(0, 0, 1, 1);
+  glEndList();
+  ASSERT_TRUE(glXMakeContextCurrent(dpy, pb, pb, b));
+  EXPECT_EQ(glIsList(list), GL_TRUE);
+  glCallList(list);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_EQ(gl_pixel(15, 15), 0x0000ffu);
+  // A share context that does not exist is GLXBadContext.
+  glXMakeContextCurrent(dpy, None, None, nullptr);
+  glXDestroyContext(dpy, b);
+  EXPECT_EQ(glXCreateNewContext(dpy, config, GLX_RGBA_TYPE, b, True), nullptr);
   auto errors = take_errors();
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_EQ(errors[0].error_code, BadMatch);
+  glXDestroyPbuffer(dpy, pb);
 }
 
 }  // namespace
