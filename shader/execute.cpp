@@ -72,7 +72,8 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
     heap_buffer.reset(new float[floats]);
     buf = heap_buffer.get();
   }
-  std::memcpy(buf, stage.constant_lanes.data(), sizeof(float) * stage.constant_lanes.size());
+  if (!stage.constant_lanes.empty())
+    std::memcpy(buf, stage.constant_lanes.data(), sizeof(float) * stage.constant_lanes.size());
   // Lanes a masked write skips keep what they held: start from zeros, so that every run of
   // the same inputs gives the same values even where GLSL leaves them undefined.
   std::memset(buf + stage.constant_lanes.size(), 0, sizeof(float) * kLanes * static_cast<size_t>(code.registers));
