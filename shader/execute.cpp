@@ -40,6 +40,15 @@ inline void blend(float* d, const float* t, LaneMask mask) {
 }  // namespace
 
 void StageCode::prepare() {
+  exec = code.insts;
+  for (ir::Inst& in : exec) {
+    if (in.op == Op::Texture) continue;  // its operands stay in code.textures
+    in.d = offset(in.d);
+    in.a = offset(in.a);
+    in.b = offset(in.b);
+    in.c = offset(in.c);
+    if (in.op == Op::Gather || in.op == Op::Scatter) in.i0 = offset(in.i0);
+  }
   int depth = 0;
   max_depth = 0;
   for (const ir::Inst& in : code.insts) {
@@ -54,16 +63,20 @@ void StageCode::prepare() {
 LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo& io) {
   const ir::FlushDenormals flush;
   const ir::Code& code = stage.code;
-  alignas(64) float stack_regs[kStackRegisters * kLanes];
-  std::unique_ptr<float[]> heap_regs;
-  float* regs = stack_regs;
-  if (code.registers > kStackRegisters) {
-    heap_regs.reset(new float[static_cast<size_t>(code.registers) * kLanes]);
-    regs = heap_regs.get();
+  // One buffer: the constants' lanes, then the registers.
+  const size_t floats = (code.constants.size() + static_cast<size_t>(code.registers)) * kLanes;
+  alignas(64) float stack_buffer[kStackRegisters * kLanes];
+  std::unique_ptr<float[]> heap_buffer;
+  float* buf = stack_buffer;
+  if (floats > static_cast<size_t>(kStackRegisters) * kLanes) {
+    heap_buffer.reset(new float[floats]);
+    buf = heap_buffer.get();
   }
+  if (!stage.constant_lanes.empty())
+    std::memcpy(buf, stage.constant_lanes.data(), sizeof(float) * stage.constant_lanes.size());
   // Lanes a masked write skips keep what they held: start from zeros, so that every run of
   // the same inputs gives the same values even where GLSL leaves them undefined.
-  std::memset(regs, 0, sizeof(float) * kLanes * static_cast<size_t>(code.registers));
+  std::memset(buf + stage.constant_lanes.size(), 0, sizeof(float) * kLanes * static_cast<size_t>(code.registers));
   Frame stack_frames[kStackFrames];
   std::unique_ptr<Frame[]> heap_frames;
   Frame* frames = stack_frames;
@@ -74,11 +87,10 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
   int top = 0;  // number of frames
   LaneMask discarded = 0;
   int budget = kIterationBudget;
-  const float* consts = stage.constant_lanes.data();
-  auto src = [&](Operand o) -> const float* {
-    return o >= 0 ? regs + static_cast<size_t>(o) * kLanes : consts + static_cast<size_t>(ir::const_index(o)) * kLanes;
-  };
-  auto reg = [&](Operand o) -> float* { return regs + static_cast<size_t>(o) * kLanes; };
+  auto src = [buf](int32_t offset) -> const float* { return buf + offset; };
+  auto reg = [buf](int32_t offset) -> float* { return buf + offset; };
+  // Texture lookups keep IR operands.
+  auto ir_src = [&](Operand o) -> float* { return buf + stage.offset(o); };
   // Removes `lanes` from every frame above the innermost one of `stop` kind (all frames when
   // stop is Discard).
   auto remove_lanes = [&](LaneMask lanes, Op stop) {
@@ -107,9 +119,10 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
 #define BINARY(F) { const float* A = src(in.a); const float* B = src(in.b); LANEWISE(F); break; }
 #define TERNARY(F) { const float* A = src(in.a); const float* B = src(in.b); const float* C = src(in.c); LANEWISE(F); break; }
 
-  const size_t n = code.insts.size();
+  const ir::Inst* insts = stage.exec.data();
+  const size_t n = stage.exec.size();
   for (size_t pc = 0; pc < n; ++pc) {
-    const ir::Inst& in = code.insts[pc];
+    const ir::Inst& in = insts[pc];
     if (mask == 0) {
       if (top == 0) break;  // every lane returned or discarded
       if (in.op > Op::Discard) continue;  // nothing to compute; structure still runs
@@ -201,14 +214,14 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           }
           case Op::Gather: {
             const float* A = src(in.a);
-            LANEWISE(regs[static_cast<size_t>(in.i0 + clamp_index(A[l], in.i1)) * kLanes + l]);
+            LANEWISE(buf[in.i0 + clamp_index(A[l], in.i1) * kLanes + l]);
             break;
           }
           case Op::Scatter: {
             const float* A = src(in.a);
             const float* B = src(in.b);
             for (int l = 0; l < kLanes; ++l)
-              if (mask >> l & 1) regs[static_cast<size_t>(in.i0 + clamp_index(A[l], in.i1)) * kLanes + l] = B[l];
+              if (mask >> l & 1) buf[in.i0 + clamp_index(A[l], in.i1) * kLanes + l] = B[l];
             break;
           }
           case Op::LoadInput: {
@@ -256,18 +269,18 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::Texture: {
             const ir::TextureLookup& t = code.textures[in.i0];
             float coords[4][kLanes];
-            for (int c = 0; c < 4; ++c) std::memcpy(coords[c], src(t.coord[c]), sizeof(float) * kLanes);
+            for (int c = 0; c < 4; ++c) std::memcpy(coords[c], ir_src(t.coord[c]), sizeof(float) * kLanes);
             float out[4][kLanes] = {};
             if (io.textures) {
-              const float* S = src(t.sampler);
+              const float* S = ir_src(t.sampler);
               int first = 0;
               while (!(mask >> first & 1)) ++first;
               const float unit_f = S[first];
               const int unit = unit_f >= 0.0f && unit_f < 256.0f ? static_cast<int>(unit_f) : 0;
-              io.textures->sample(unit, t.kind, coords, t.mode, t.lod == ir::kNone ? nullptr : src(t.lod), mask, out);
+              io.textures->sample(unit, t.kind, coords, t.mode, t.lod == ir::kNone ? nullptr : ir_src(t.lod), mask, out);
             }
             for (int c = 0; c < 4; ++c) {
-              float* D = reg(t.dst[c]);
+              float* D = ir_src(t.dst[c]);
               if (mask == kAllLanes) std::memcpy(D, out[c], sizeof(float) * kLanes);
               else blend(D, out[c], mask);
             }

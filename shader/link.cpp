@@ -114,6 +114,47 @@ bool assign_locations(const Interface& iface, const std::vector<AttributeBinding
   return true;
 }
 
+// glslang's part under its lock: parse, link, lower. Its objects die before the lock is
+// released; the rest of link() runs unlocked.
+bool parse_link_lower(const CompiledShader* vertex, const CompiledShader* fragment, Interface& iface,
+                      LinkedProgram& out, std::string& info_log) {
+  std::lock_guard<std::mutex> hold(front_end::glslang_lock());
+  std::string log;
+  std::unique_ptr<glslang::TShader> vs, fs;
+  if (vertex && !(vs = front_end::parse(*vertex, log))) {
+    info_log = "error: vertex shader does not compile\n" + log;
+    return false;
+  }
+  if (fragment && !(fs = front_end::parse(*fragment, log))) {
+    info_log = "error: fragment shader does not compile\n" + log;
+    return false;
+  }
+  glslang::TProgram program;
+  if (vs) program.addShader(vs.get());
+  if (fs) program.addShader(fs.get());
+  const bool linked = program.link(EShMsgDefault);
+  info_log = program.getInfoLog();
+  if (!linked) return false;
+  iface.has_vertex_shader = vs != nullptr;
+  iface.has_fragment_shader = fs != nullptr;
+  std::string error;
+  if (fs) {
+    out.fragment_.emplace();
+    if (!lower_stage(Stage::Fragment, *program.getIntermediate(EShLangFragment), iface, out.fragment_->code, error)) {
+      info_log += error;
+      return false;
+    }
+  }
+  if (vs) {
+    out.vertex_.emplace();
+    if (!lower_stage(Stage::Vertex, *program.getIntermediate(EShLangVertex), iface, out.vertex_->code, error)) {
+      info_log += error;
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
@@ -127,45 +168,9 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
     result.info_log = "error: shader of the wrong stage\n";
     return result;
   }
-  std::lock_guard<std::mutex> hold(front_end::glslang_lock());
-  std::string log;
-  std::unique_ptr<glslang::TShader> vs, fs;
-  if (vertex && !(vs = front_end::parse(*vertex, log))) {
-    result.info_log = "error: vertex shader does not compile\n" + log;
-    return result;
-  }
-  if (fragment && !(fs = front_end::parse(*fragment, log))) {
-    result.info_log = "error: fragment shader does not compile\n" + log;
-    return result;
-  }
-  glslang::TProgram program;
-  if (vs) program.addShader(vs.get());
-  if (fs) program.addShader(fs.get());
-  const bool linked = program.link(EShMsgDefault);
-  result.info_log = program.getInfoLog();
-  if (!linked) return result;
-
   Interface iface;
-  iface.has_vertex_shader = vs != nullptr;
-  iface.has_fragment_shader = fs != nullptr;
   auto linked_program = std::make_shared<LinkedProgram>();
-  std::string error;
-  if (fs) {
-    linked_program->fragment_.emplace();
-    if (!lower_stage(Stage::Fragment, *program.getIntermediate(EShLangFragment), iface,
-                     linked_program->fragment_->code, error)) {
-      result.info_log += error;
-      return result;
-    }
-  }
-  if (vs) {
-    linked_program->vertex_.emplace();
-    if (!lower_stage(Stage::Vertex, *program.getIntermediate(EShLangVertex), iface,
-                     linked_program->vertex_->code, error)) {
-      result.info_log += error;
-      return result;
-    }
-  }
+  if (!parse_link_lower(vertex, fragment, iface, *linked_program, result.info_log)) return result;
   if (iface.varying_floats > kMaxVaryingFloats) {
     result.info_log += "error: too many varyings (" + std::to_string(iface.varying_floats) + " floats, at most " +
                        std::to_string(kMaxVaryingFloats) + ")\n";
@@ -180,7 +185,7 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
     return result;
   }
   if (!assign_locations(iface, bindings, linked_program->attributes_, result.info_log)) return result;
-  if (!vs)
+  if (!iface.has_vertex_shader)
     for (VaryingVar& v : iface.varyings)
       if (v.name == "gl_Color" || v.name == "gl_SecondaryColor") {
         v.back_offset = iface.varying_floats;

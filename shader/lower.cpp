@@ -84,9 +84,10 @@ VarType var_type_of_element(const TType& t) {
 VarType var_type(const TType& t, const std::string& name) {
   VarType v = var_type_of_element(t);
   if (t.isArray()) {
+    // An unsized array (gl_TexCoord used with constant indices) has the size its highest
+    // index implies.
     int n = t.isSizedArray() ? t.getOuterArraySize() : t.getImplicitArraySize();
-    if (!t.isSizedArray() && name == "gl_TexCoord") n = kMaxTextureCoords;
-    v.array = n < 1 ? 1 : n;
+    v.array = n < 1 ? 1 : (n > kMaxTextureCoords && name == "gl_TexCoord" ? kMaxTextureCoords : n);
   }
   return v;
 }
