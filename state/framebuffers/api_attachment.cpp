@@ -93,6 +93,19 @@ void framebuffer_texture(Context& ctx, int dims, GLenum target, GLenum attachmen
   attach_texture(ctx, *fb, points, count, kind, face, texture, level, layer);
 }
 
+bool is_attachment_pname(GLenum pname) {
+  switch (pname) {
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL: case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE:
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER: case GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE:
+    case GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
+      return true;
+    default: return false;
+  }
+}
+
 GLint attachment_parameter(Context& ctx, const Attachment& a, GLenum pname, bool& ok) {
   ok = true;
   if (pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) return GLint(a.type);
@@ -186,6 +199,9 @@ void GetFramebufferAttachmentParameteriv(Context& ctx, GLenum target, GLenum att
   }
   bool ok = false;
   const GLint value = attachment_parameter(ctx, a, pname, ok);
+  // Of an attachment point with nothing attached only the type and name can be queried
+  // (GL 3.0 6.1.17: INVALID_OPERATION for a known pname, as Mesa).
+  if (!ok && a.type == GL_NONE && is_attachment_pname(pname)) return ctx.record_error(GL_INVALID_OPERATION);
   if (!ok) return ctx.record_error(GL_INVALID_ENUM);
   if (params) *params = value;
 }

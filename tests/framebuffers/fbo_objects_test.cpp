@@ -174,6 +174,8 @@ TEST_F(FboObjectsTest, AttachmentErrors) {
   glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &v);
   EXPECT_EQ(v, GL_NONE);
   glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &v);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));  // nothing attached
+  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_WIDTH, &v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glDeleteFramebuffers(1, &fb);
   glDeleteTextures(1, &tex);
