@@ -196,10 +196,9 @@ GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_ru
     const int p = attachment_point(buffer);
     return p < 0 || fb.attachments[p].type == GL_NONE;
   };
-  // GL 4.1 dropped these two rules (ARB_ES2_compatibility) and Mesa applies them to no
-  // desktop context that has it; EXT_framebuffer_object's own entry point keeps them.
-  if (ext_rules && missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
-  if (ext_rules && missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
+  // GL 4.1 dropped these two rules with ARB_ES2_compatibility, which Pineda does not have.
+  if (missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+  if (missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
   return GL_FRAMEBUFFER_COMPLETE;
 }
 
