@@ -178,6 +178,14 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
   if (!valid_copy_target(ctx, target, 1) || !valid_copy_internal_format(ctx, internalformat) ||
       !valid_copy_size(ctx, width, 1))
     return;
+  if (is_depth_stencil_format(GLint(internalformat))) {
+    std::vector<uint32_t> words;
+    if (!read_depth_stencil(ctx, x, y, width, 1, words)) return;
+    return with_tight_unpack(ctx, [&] {
+      TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                 words.data());
+    });
+  }
   if (is_depth_format(GLint(internalformat))) {
     if (!has_read_depth(ctx)) return;
     const std::vector<float> depths = read_depth(ctx, x, y, width, 1);
@@ -219,6 +227,13 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
 
 void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
   if (!valid_copy_size(ctx, width, 1)) return;
+  if (depth_level(ctx, target, level, true)) {
+    std::vector<uint32_t> words;
+    if (!read_depth_stencil(ctx, x, y, width, 1, words)) return;
+    return with_tight_unpack(ctx, [&] {
+      TexSubImage1D(ctx, target, level, xoffset, width, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words.data());
+    });
+  }
   if (depth_level(ctx, target, level)) {
     if (!has_read_depth(ctx)) return;
     const std::vector<float> depths = read_depth(ctx, x, y, width, 1);
