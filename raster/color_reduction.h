@@ -43,4 +43,19 @@ inline void reduce_bytes(const ColorReduction& r, uint8_t rgba[4]) {
   for (int c = 0; c < 4; ++c) rgba[c] = static_cast<uint8_t>(v >> (8 * c));
 }
 
+// The RGBA bytes a stored pixel reads as (glReadPixels, copies, blits): a luminance or
+// intensity target reads as red, (L, 0, 0, A) or (I, 0, 0, 1), as Mesa rebases them.
+inline void read_rgba8(const ColorBuffer& cb, const uint8_t* p, uint8_t out[4]) {
+  const bool bgra = cb.format == ColorFormat::BGRA8;
+  out[0] = p[bgra ? 2 : 0];
+  out[1] = p[1];
+  out[2] = p[bgra ? 0 : 2];
+  out[3] = p[3];
+  const ColorReduction& r = cb.reduction;
+  if (r.active && r.source[1] == 0) {
+    out[1] = out[2] = 0;
+    if (r.source[3] == 0) out[3] = 255;
+  }
+}
+
 }  // namespace pineda::raster

@@ -46,6 +46,12 @@ void PixelFragmentWriter::fragment(int x, int y, const float rgba[4], double dep
   if (passed) record_.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);  // occlusion query
 }
 
+void PixelFragmentWriter::depth(int x, int y, double z) {
+  if (!inside(x, y) || !fb_.depth.base || fb_.depth.bits == 0) return;
+  const double clamped = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
+  fb_.depth.base[static_cast<ptrdiff_t>(y) * fb_.depth.stride + x] = static_cast<uint32_t>(clamped * record_.depth_max + 0.5);
+}
+
 void PixelFragmentWriter::stencil(int x, int y, uint32_t value) {
   if (!inside(x, y) || !fb_.stencil.base || fb_.stencil.bits == 0) return;
   uint8_t& s = fb_.stencil.base[static_cast<ptrdiff_t>(y) * fb_.stencil.stride + x];

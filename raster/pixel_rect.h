@@ -25,6 +25,10 @@ class PixelFragmentWriter {
   // stencil write mask only (glDrawPixels of GL_STENCIL_INDEX).
   void stencil(int x, int y, uint32_t value);
 
+  // Writes depth `z` (in [0, 1], clamped) at (x, y) under the scissor test only: GL_DEPTH_STENCIL
+  // pixel rectangles write depth and stencil directly, whatever the depth test (as Mesa).
+  void depth(int x, int y, double z);
+
   // Whether (x, y) is inside the framebuffer and the scissor rectangle.
   bool inside(int x, int y) const { return x >= x0_ && x < x1_ && y >= y0_ && y < y1_; }
 

@@ -4,7 +4,9 @@
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
+#include "raster/color_reduction.h"
 #include "state/context.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/limits.h"
 #include "state/texture_format.h"
 #include "state/texture_target.h"
@@ -34,14 +36,10 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
   if (!d || width <= 0 || height <= 0) return out;
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
-  const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
   for_each_read_pixel(fb, x, y, width, height, [&](int64_t fx, int64_t fy, size_t i) {
-    const uint8_t* p = fb.color.base + fb.color.stride * fy + 4 * fx;
     uint8_t* o = &out[i * 4];
-    o[0] = p[bgra ? 2 : 0];
-    o[1] = p[1];
-    o[2] = p[bgra ? 0 : 2];
-    o[3] = d->alpha_bits ? p[3] : 255;
+    raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * fy + 4 * fx, o);
+    if (!d->alpha_bits) o[3] = 255;
   });
   return out;
 }
@@ -68,21 +66,53 @@ std::vector<float> read_depth(Context& ctx, GLint x, GLint y, GLsizei width, GLs
   return out;
 }
 
+// The read framebuffer's depth and stencil in the same rectangle as UNSIGNED_INT_24_8 words;
+// outside it, zero. Records INVALID_OPERATION and returns false when either buffer is missing.
+bool read_depth_stencil(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, std::vector<uint32_t>& out) {
+  const Drawable* d = ctx.read_drawable();
+  if (!d || !d->framebuffer.depth.bits || !d->framebuffer.stencil.bits) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return false;
+  }
+  out.assign(size_t(std::max(width, 0)) * size_t(std::max(height, 0)), 0u);
+  ctx.finish();
+  const raster::Framebuffer fb = ctx.read_framebuffer();
+  const double max = std::ldexp(1.0, fb.depth.bits) - 1.0;
+  for_each_read_pixel(fb, x, y, width, height, [&](int64_t fx, int64_t fy, size_t i) {
+    out[i] = pack_depth_stencil(fb.depth.base[fb.depth.stride * fy + fx] / max, fb.stencil.base[fb.stencil.stride * fy + fx]);
+  });
+  return true;
+}
+
+bool is_depth_stencil_format(GLint internal_format) {
+  return texture_format(internal_format).value_or(TextureFormat{}).stencil > 0;
+}
+
 bool is_depth_format(GLint internal_format) { return texture_format(internal_format).value_or(TextureFormat{}).depth > 0; }
 
 // Whether the level a glCopyTexSubImage writes is a depth image (read from the depth buffer).
-bool depth_level(Context& ctx, GLenum target, GLint level) {
+bool depth_level(Context& ctx, GLenum target, GLint level, bool with_stencil = false) {
   ImageTarget t;
   if (!image_target(target, t) || t.proxy || level < 0) return false;
   const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
   const std::vector<TextureLevelData>& levels = ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
-  return size_t(level) < levels.size() && levels[level].width > 0 && is_depth_format(levels[level].internal_format);
+  if (size_t(level) >= levels.size() || levels[level].width == 0) return false;
+  return with_stencil ? is_depth_stencil_format(levels[level].internal_format)
+                      : is_depth_format(levels[level].internal_format);
 }
 
 // A depth copy needs a depth buffer to read (Mesa: INVALID_OPERATION).
 bool has_read_depth(Context& ctx) {
   const Drawable* d = ctx.read_drawable();
   if (d && d->framebuffer.depth.bits > 0) return true;
+  ctx.record_error(GL_INVALID_OPERATION);
+  return false;
+}
+
+// A colour copy needs a colour buffer to read: a framebuffer object's read buffer may be
+// NONE or name an attachment without an image (INVALID_OPERATION, as glReadPixels).
+bool has_read_color(Context& ctx) {
+  if (ctx.read_framebuffer().color.base) return true;
   ctx.record_error(GL_INVALID_OPERATION);
   return false;
 }
@@ -119,6 +149,14 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
   if (!valid_copy_target(ctx, target, 2) || !valid_copy_internal_format(ctx, internalformat) ||
       !valid_copy_size(ctx, width, height))
     return;
+  if (is_depth_stencil_format(GLint(internalformat))) {
+    std::vector<uint32_t> words;
+    if (!read_depth_stencil(ctx, x, y, width, height, words)) return;
+    return with_tight_unpack(ctx, [&] {
+      TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_DEPTH_STENCIL,
+                 GL_UNSIGNED_INT_24_8, words.data());
+    });
+  }
   if (is_depth_format(GLint(internalformat))) {
     if (!has_read_depth(ctx)) return;
     const std::vector<float> depths = read_depth(ctx, x, y, width, height);
@@ -127,6 +165,7 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
                  depths.data());
     });
   }
+  if (!has_read_color(ctx)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -139,6 +178,14 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
   if (!valid_copy_target(ctx, target, 1) || !valid_copy_internal_format(ctx, internalformat) ||
       !valid_copy_size(ctx, width, 1))
     return;
+  if (is_depth_stencil_format(GLint(internalformat))) {
+    std::vector<uint32_t> words;
+    if (!read_depth_stencil(ctx, x, y, width, 1, words)) return;
+    return with_tight_unpack(ctx, [&] {
+      TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                 words.data());
+    });
+  }
   if (is_depth_format(GLint(internalformat))) {
     if (!has_read_depth(ctx)) return;
     const std::vector<float> depths = read_depth(ctx, x, y, width, 1);
@@ -146,6 +193,7 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
       TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
     });
   }
+  if (!has_read_color(ctx)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
   with_tight_unpack(ctx, [&] {
     TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
@@ -155,6 +203,14 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
 void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
                        GLsizei width, GLsizei height) {
   if (!valid_copy_size(ctx, width, height)) return;
+  if (depth_level(ctx, target, level, true)) {
+    std::vector<uint32_t> words;
+    if (!read_depth_stencil(ctx, x, y, width, height, words)) return;
+    return with_tight_unpack(ctx, [&] {
+      TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                    words.data());
+    });
+  }
   if (depth_level(ctx, target, level)) {
     if (!has_read_depth(ctx)) return;
     const std::vector<float> depths = read_depth(ctx, x, y, width, height);
@@ -162,6 +218,7 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
       TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
     });
   }
+  if (!has_read_color(ctx)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
@@ -170,6 +227,13 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
 
 void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
   if (!valid_copy_size(ctx, width, 1)) return;
+  if (depth_level(ctx, target, level, true)) {
+    std::vector<uint32_t> words;
+    if (!read_depth_stencil(ctx, x, y, width, 1, words)) return;
+    return with_tight_unpack(ctx, [&] {
+      TexSubImage1D(ctx, target, level, xoffset, width, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words.data());
+    });
+  }
   if (depth_level(ctx, target, level)) {
     if (!has_read_depth(ctx)) return;
     const std::vector<float> depths = read_depth(ctx, x, y, width, 1);
@@ -177,6 +241,7 @@ void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
       TexSubImage1D(ctx, target, level, xoffset, width, GL_DEPTH_COMPONENT, GL_FLOAT, depths.data());
     });
   }
+  if (!has_read_color(ctx)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
   with_tight_unpack(ctx, [&] {
     TexSubImage1D(ctx, target, level, xoffset, width, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
@@ -187,6 +252,7 @@ void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
 void CopyTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset, GLint x,
                        GLint y, GLsizei width, GLsizei height) {
   if (!valid_copy_size(ctx, width, height)) return;
+  if (!has_read_color(ctx)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
   with_tight_unpack(ctx, [&] {
     TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, 1, GL_RGBA, GL_UNSIGNED_BYTE,

@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "glapi/gl_entry_points.h"
+#include "raster/color_reduction.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
 #include "state/pixel_format.h"
@@ -47,7 +48,6 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
     if (type != GL_DEPTH) image.stencil.assign(n, 0);
   }
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
-  const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
   for (int j = 0; j < height; ++j) {
     const int64_t sy = int64_t(y) + j;
     if (sy < 0 || sy >= fb.height) continue;
@@ -57,12 +57,10 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
       const size_t k = size_t(j) * width + i;
       image.present[k] = 1;
       if (type == GL_COLOR) {
-        const uint8_t* p = fb.color.base + fb.color.stride * sy + 4 * sx;
+        uint8_t bytes[4];
+        raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * sy + 4 * sx, bytes);
         float* rgba = &image.color[4 * k];
-        rgba[0] = p[bgra ? 2 : 0] / 255.f;
-        rgba[1] = p[1] / 255.f;
-        rgba[2] = p[bgra ? 0 : 2] / 255.f;
-        rgba[3] = p[3] / 255.f;
+        for (int c = 0; c < 4; ++c) rgba[c] = bytes[c] / 255.f;
         transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);
         continue;
       }
@@ -111,6 +109,7 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   const Drawable* read = ctx.read_drawable();
   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
   if (depth && (!has_depth(draw) || !has_depth(read))) return ctx.record_error(GL_INVALID_OPERATION);
+  if (type == GL_COLOR && read && !ctx.read_framebuffer().color.base) return ctx.record_error(GL_INVALID_OPERATION);
   if (stencil && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_COPY_PIXEL_TOKEN)) return;
   if (width == 0 || height == 0 || !draw || !read) return;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
+#include "raster/color_reduction.h"
 #include "state/bitmap_layout.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
@@ -55,17 +56,16 @@ GLenum read_pixels_error(const Context& ctx, GLenum format, GLenum type) {
   if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;
   if (format == GL_DEPTH_COMPONENT && (!d || d->framebuffer.depth.bits == 0)) return GL_INVALID_OPERATION;
   if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0)) return GL_INVALID_OPERATION;
+  // A framebuffer object's read buffer may be NONE or name an attachment without an image.
+  if (color_format_components(format) > 0 && d && !ctx.read_framebuffer().color.base) return GL_INVALID_OPERATION;
   return GL_NO_ERROR;
 }
 
 // Reads a framebuffer pixel in RGBA floats.
 void read_color(const raster::ColorBuffer& cb, int x, int y, double rgba[4]) {
-  const uint8_t* p = cb.base + cb.stride * y + 4 * x;
-  const bool bgra = cb.format == raster::ColorFormat::BGRA8;
-  rgba[0] = p[bgra ? 2 : 0] / 255.0;
-  rgba[1] = p[1] / 255.0;
-  rgba[2] = p[bgra ? 0 : 2] / 255.0;
-  rgba[3] = p[3] / 255.0;
+  uint8_t bytes[4];
+  raster::read_rgba8(cb, cb.base + cb.stride * y + 4 * x, bytes);
+  for (int c = 0; c < 4; ++c) rgba[c] = bytes[c] / 255.0;
 }
 
 void transfer_read_color(const Context& ctx, double rgba[4]) {

@@ -62,7 +62,7 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
             writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
             break;
           case PixelRectImage::Kind::DepthStencil:
-            writer.fragment(x, y, rp.color, image.depth[k]);
+            writer.depth(x, y, image.depth[k]);
             writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
             break;
         }

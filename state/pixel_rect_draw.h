@@ -10,8 +10,8 @@
 namespace pineda {
 
 struct PixelRectImage {
-  // DepthStencil (glCopyPixels of GL_DEPTH_STENCIL): a fragment with the depth, then the
-  // stencil index written as a Stencil image writes it.
+  // DepthStencil (glDrawPixels and glCopyPixels of GL_DEPTH_STENCIL): the depth and the
+  // stencil index written directly (scissor and stencil write mask only), as Mesa.
   enum class Kind { Color, Depth, Stencil, DepthStencil };
   Kind kind = Kind::Color;
   int width = 0, height = 0;

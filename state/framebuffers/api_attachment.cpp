@@ -93,6 +93,19 @@ void framebuffer_texture(Context& ctx, int dims, GLenum target, GLenum attachmen
   attach_texture(ctx, *fb, points, count, kind, face, texture, level, layer);
 }
 
+bool is_attachment_pname(GLenum pname) {
+  switch (pname) {
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL: case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE:
+    case GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER: case GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE:
+    case GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
+      return true;
+    default: return false;
+  }
+}
+
 GLint attachment_parameter(Context& ctx, const Attachment& a, GLenum pname, bool& ok) {
   ok = true;
   if (pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) return GLint(a.type);
@@ -172,8 +185,56 @@ void FramebufferRenderbuffer(Context& ctx, GLenum target, GLenum attachment, GLe
   set_attachments(ctx, *fb, points, count, a);
 }
 
+namespace {
+
+// The window-system framebuffer's buffers (GL 3.0 6.1.17): FRONT_LEFT, BACK_LEFT, DEPTH and
+// STENCIL, of type FRAMEBUFFER_DEFAULT when the drawable has them.
+void default_framebuffer_parameter(Context& ctx, const Drawable* d, GLenum attachment, GLenum pname, GLint* params) {
+  bool exists = false;
+  int bits[6] = {0, 0, 0, 0, 0, 0};  // red, green, blue, alpha, depth, stencil
+  switch (attachment) {
+    case GL_FRONT_LEFT: case GL_BACK_LEFT: case GL_FRONT_RIGHT: case GL_BACK_RIGHT:
+      exists = d && (attachment == GL_FRONT_LEFT || (attachment == GL_BACK_LEFT && d->double_buffered));
+      if (exists) {
+        bits[0] = d->red_bits, bits[1] = d->green_bits, bits[2] = d->blue_bits, bits[3] = d->alpha_bits;
+      }
+      break;
+    case GL_DEPTH: exists = d && d->framebuffer.depth.bits; bits[4] = exists ? d->framebuffer.depth.bits : 0; break;
+    case GL_STENCIL: exists = d && d->framebuffer.stencil.bits; bits[5] = exists ? d->framebuffer.stencil.bits : 0; break;
+    default: return ctx.record_error(GL_INVALID_ENUM);
+  }
+  GLint value = 0;
+  switch (pname) {
+    case GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE: value = exists ? GL_FRAMEBUFFER_DEFAULT : GL_NONE; break;
+    case GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME: value = 0; break;
+    case GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE:
+    case GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE:
+      if (!exists) return ctx.record_error(GL_INVALID_OPERATION);
+      value = bits[pname - GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE];
+      break;
+    case GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE:
+      if (!exists) return ctx.record_error(GL_INVALID_OPERATION);
+      value = attachment == GL_STENCIL ? GL_UNSIGNED_INT : GL_UNSIGNED_NORMALIZED;
+      break;
+    case GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
+      if (!exists) return ctx.record_error(GL_INVALID_OPERATION);
+      value = GL_LINEAR;
+      break;
+    default: return ctx.record_error(is_attachment_pname(pname) ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+  }
+  if (params) *params = value;
+}
+
+}  // namespace
+
 void GetFramebufferAttachmentParameteriv(Context& ctx, GLenum target, GLenum attachment, GLenum pname,
                                          GLint* params) {
+  bool draw = false, read = false;
+  if (framebuffer_target(target, draw, read) &&
+      !(draw ? ctx.framebuffers.draw_binding : ctx.framebuffers.read_binding))
+    return default_framebuffer_parameter(ctx, draw ? ctx.window_draw_drawable() : ctx.window_read_drawable(),
+                                         attachment, pname, params);
   int points[2], count = 0;
   FramebufferObject* fb = attachment_target(ctx, target, attachment, points, count);
   if (!fb) return;
@@ -186,6 +247,9 @@ void GetFramebufferAttachmentParameteriv(Context& ctx, GLenum target, GLenum att
   }
   bool ok = false;
   const GLint value = attachment_parameter(ctx, a, pname, ok);
+  // Of an attachment point with nothing attached only the type and name can be queried
+  // (GL 3.0 6.1.17: INVALID_OPERATION for a known pname, as Mesa).
+  if (!ok && a.type == GL_NONE && is_attachment_pname(pname)) return ctx.record_error(GL_INVALID_OPERATION);
   if (!ok) return ctx.record_error(GL_INVALID_ENUM);
   if (params) *params = value;
 }

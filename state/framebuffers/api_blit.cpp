@@ -34,18 +34,14 @@ SourceImage read_source(const raster::Framebuffer& fb, bool opaque, GLint sx0, G
   if (color) img.color.resize(4 * n);
   if (depth) img.depth.resize(n);
   if (stencil) img.stencil.resize(n);
-  const bool bgra = fb.color.format == raster::ColorFormat::BGRA8;
   for (int j = 0; j < img.height; ++j)
     for (int i = 0; i < img.width; ++i) {
       const int x = img.x0 + i, y = img.y0 + j;
       const size_t k = size_t(j) * img.width + i;
       if (color) {
-        const uint8_t* p = fb.color.base + fb.color.stride * y + 4 * x;
         uint8_t* o = &img.color[4 * k];
-        o[0] = p[bgra ? 2 : 0];
-        o[1] = p[1];
-        o[2] = p[bgra ? 0 : 2];
-        o[3] = opaque ? 255 : p[3];
+        raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * y + 4 * x, o);
+        if (opaque) o[3] = 255;
       }
       if (depth) img.depth[k] = fb.depth.base[fb.depth.stride * y + x];
       if (stencil) img.stencil[k] = fb.stencil.base[fb.stencil.stride * y + x];

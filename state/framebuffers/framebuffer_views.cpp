@@ -196,8 +196,12 @@ GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_ru
     const int p = attachment_point(buffer);
     return p < 0 || fb.attachments[p].type == GL_NONE;
   };
-  if (missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
-  if (missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
+  // GL 4.1 (ARB_ES2_compatibility) dropped these two rules, and Mesa's llvmpipe does not
+  // apply them: a depth-only framebuffer whose draw buffer is still COLOR_ATTACHMENT0 renders
+  // (piglit's depth-stencil-blit, framebuffer-blit-levels, fbo-clear-formats rely on it).
+  // EXT_framebuffer_object's own entry point keeps them.
+  if (ext_rules && missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+  if (ext_rules && missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
   return GL_FRAMEBUFFER_COMPLETE;
 }
 
@@ -205,6 +209,9 @@ void refresh_framebuffer_views(Context& ctx) {
   FramebufferState& fs = ctx.framebuffers;
   FramebufferObject* draw = fs.draw_object();
   FramebufferObject* read = fs.read_object();
+  // The context's draw and read buffers are the bound objects' (glPopAttrib may set them).
+  if (draw) draw->draw_buffer = ctx.draw_buffer;
+  if (read) read->read_buffer = ctx.read_buffer;
   if (draw) build_view(ctx, *draw, draw->draw_buffer, draw->draw_view);
   if (read) build_view(ctx, *read, read->read_buffer, read->read_view);
   ctx.set_framebuffer_views(draw ? &draw->draw_view : nullptr, read ? &read->read_view : nullptr);

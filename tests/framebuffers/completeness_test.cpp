@@ -65,18 +65,36 @@ TEST_F(CompletenessTest, IncompleteAttachment) {
   glDeleteTextures(2, texs);
 }
 
+// EXT_framebuffer_object's entry point applies the draw and read buffer rules; GL 4.1 (and
+// Mesa) dropped them: reading a missing image is then INVALID_OPERATION, drawing into one
+// draws nothing.
 TEST_F(CompletenessTest, DrawAndReadBufferWithoutImage) {
   const GLuint color = make_renderbuffer(GL_RGBA8, 4, 4);
   const GLuint fb = make_fbo();
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, color);
   glReadBuffer(GL_COLOR_ATTACHMENT1);
-  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER));
-  glDrawBuffer(GL_COLOR_ATTACHMENT1);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER));
   EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);  // into COLOR_ATTACHMENT0: nothing
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_TRUE(near_rgba(pixel(1, 1), {0, 0, 0, 0}));
+  glDrawBuffer(GL_COLOR_ATTACHMENT1);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER));
-  glDrawBuffer(GL_NONE);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER));
+  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  uint8_t p[4] = {7, 7, 7, 7};
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(p[0], 7);
+  glRasterPos2i(0, 0);
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 1, 1, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glReadBuffer(GL_NONE);
+  glDrawBuffer(GL_NONE);
   EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
   glDeleteFramebuffers(1, &fb);
   glDeleteRenderbuffers(1, &color);

@@ -174,6 +174,8 @@ TEST_F(FboObjectsTest, AttachmentErrors) {
   glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &v);
   EXPECT_EQ(v, GL_NONE);
   glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &v);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));  // nothing attached
+  glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_WIDTH, &v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glDeleteFramebuffers(1, &fb);
   glDeleteTextures(1, &tex);
@@ -214,6 +216,28 @@ TEST_F(FboObjectsTest, AttachmentQueries) {
   glDeleteFramebuffers(1, &fb);
   glDeleteTextures(1, &cube);
   glDeleteRenderbuffers(1, &rb);
+}
+
+// The window-system framebuffer's buffers (ARB_framebuffer_object): a 16x16 single-buffered
+// surface with 8-bit RGBA, 24-bit depth and 8-bit stencil.
+TEST_F(FboObjectsTest, DefaultFramebufferAttachments) {
+  auto query = [](GLenum attachment, GLenum pname) {
+    GLint v = -1;
+    glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, attachment, pname, &v);
+    return v;
+  };
+  const GLboolean double_buffered = get_int(GL_DOUBLEBUFFER);
+  EXPECT_EQ(query(GL_FRONT_LEFT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE), GL_FRAMEBUFFER_DEFAULT);
+  EXPECT_EQ(query(GL_BACK_LEFT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE), double_buffered ? GL_FRAMEBUFFER_DEFAULT : GL_NONE);
+  EXPECT_EQ(query(GL_FRONT_LEFT, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE), 8);
+  EXPECT_EQ(query(GL_DEPTH, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE), 24);
+  EXPECT_EQ(query(GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE), 8);
+  EXPECT_EQ(query(GL_FRONT_RIGHT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE), GL_NONE);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  query(GL_FRONT_RIGHT, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  query(GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
 }
 
 TEST_F(FboObjectsTest, DrawAndReadBufferOnObjects) {

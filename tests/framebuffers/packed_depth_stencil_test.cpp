@@ -39,6 +39,29 @@ TEST_F(PackedDepthStencilTest, DrawThenReadOnARenderbuffer) {
   glDeleteRenderbuffers(2, rbs);
 }
 
+// DEPTH_STENCIL pixels write depth even with the depth test off (as Mesa), and
+// glCopyTexImage2D takes a DEPTH24_STENCIL8 internal format.
+TEST_F(PackedDepthStencilTest, DrawWithoutDepthTestAndCopyToTexture) {
+  const GLuint in[2] = {0x000000ffu, 0xffffff00u};
+  glRasterPos2i(0, 0);
+  glDrawPixels(2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, in);
+  GLuint out[2] = {1, 1};
+  glReadPixels(0, 0, 2, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
+  EXPECT_EQ(out[0], in[0]);
+  EXPECT_EQ(out[1], in[1]);
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 0, 0, 2, 1, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 1, 0, 0, 0, 1, 1);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
+  EXPECT_EQ(out[0], in[0]);
+  EXPECT_EQ(out[1], in[0]);
+  glDeleteTextures(1, &tex);
+}
+
 TEST_F(PackedDepthStencilTest, Errors) {
   GLuint v = 0;
   glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT, &v);

@@ -255,10 +255,14 @@ TEST_F(RenderToTextureTest, ReducedColourFormats) {
   ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
   EXPECT_EQ(get_int(GL_RED_BITS), 0);
   clear_to(0.2f, 0.6f, 1.f, 0.f);
+  EXPECT_TRUE(near_rgba(pixel(1, 1), {51, 0, 0, 255}));  // read back as red, as Mesa
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   std::vector<uint8_t> texels(4 * 4);
   glGetTexImage(GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, texels.data());
   EXPECT_EQ(texels[0], 51);
+  clear_to(0, 0, 0, 0);
+  draw_textured(lum, 16, 16);  // sampled as luminance; REPLACE keeps the colour's alpha (0.5)
+  EXPECT_TRUE(near_rgba(pixel(3, 3), {51, 51, 51, 128}));
   glDeleteFramebuffers(1, &fb);
   glDeleteTextures(1, &lum);
 }
@@ -331,6 +335,39 @@ TEST_F(RenderToTextureTest, PixelCopiesBetweenFramebuffers) {
   glDeleteRenderbuffers(1, &src);
   const GLuint texs[2] = {dst, copy};
   glDeleteTextures(2, texs);
+}
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// Each slice of a 3D texture in turn, drawn with client arrays (as piglit's fbo-3d).
+TEST_F(RenderToTextureTest, EverySliceOfA3DTexture) {
+  GLuint vol = 0;
+  glGenTextures(1, &vol);
+  glBindTexture(GL_TEXTURE_3D, vol);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 8, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  const GLuint fb = make_fbo();
+  const float quad[] = {-2, -2, 0, 1, 10, -2, 0, 1, -2, 10, 0, 1, 10, 10, 0, 1};
+  for (int z = 0; z < 4; ++z) {
+    glFramebufferTexture3D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_3D, vol, 0, z);
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << z;
+    ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    glColor4f(0.25f * float(z), 1, 0, 1);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glVertexPointer(4, GL_FLOAT, 0, quad);
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << z;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  std::vector<uint8_t> volume(8 * 8 * 4 * 4);
+  glGetTexImage(GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, volume.data());
+  for (int z = 0; z < 4; ++z) EXPECT_EQ(volume[size_t(z) * 8 * 8 * 4], to_byte(0.25 * z)) << z;
+  glDeleteFramebuffers(1, &fb);
+  glDeleteTextures(1, &vol);
 }
 
 }  // namespace
