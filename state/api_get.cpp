@@ -298,7 +298,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
       "GL_SGIS_texture_lod GL_EXT_texture_lod_bias "
-      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array ";  // a trailing space, as Mesa (programs split on it)
+      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array "
+      "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());
