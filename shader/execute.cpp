@@ -1,6 +1,7 @@
 #include "shader/execute.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 
@@ -39,48 +40,56 @@ inline void blend(float* d, const float* t, LaneMask mask) {
 }  // namespace
 
 void StageCode::prepare() {
+  exec = code.insts;
+  for (ir::Inst& in : exec) {
+    if (in.op == Op::Texture) continue;  // its operands stay in code.textures
+    in.d = offset(in.d);
+    in.a = offset(in.a);
+    in.b = offset(in.b);
+    in.c = offset(in.c);
+    if (in.op == Op::Gather || in.op == Op::Scatter) in.i0 = offset(in.i0);
+  }
+  int depth = 0;
+  max_depth = 0;
+  for (const ir::Inst& in : code.insts) {
+    if (in.op == Op::IfBegin || in.op == Op::LoopBegin || in.op == Op::FuncBegin) max_depth = std::max(max_depth, ++depth);
+    if (in.op == Op::EndIf || in.op == Op::LoopEnd || in.op == Op::FuncEnd) --depth;
+  }
   constant_lanes.resize(code.constants.size() * kLanes);
   for (size_t i = 0; i < code.constants.size(); ++i)
     for (int l = 0; l < kLanes; ++l) constant_lanes[i * kLanes + l] = code.constants[i];
 }
 
 LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo& io) {
+  const ir::FlushDenormals flush;
   const ir::Code& code = stage.code;
-  alignas(64) float stack_regs[kStackRegisters * kLanes];
-  std::unique_ptr<float[]> heap_regs;
-  float* regs = stack_regs;
-  if (code.registers > kStackRegisters) {
-    heap_regs.reset(new float[static_cast<size_t>(code.registers) * kLanes]);
-    regs = heap_regs.get();
+  // One buffer: the constants' lanes, then the registers.
+  const size_t floats = (code.constants.size() + static_cast<size_t>(code.registers)) * kLanes;
+  alignas(64) float stack_buffer[kStackRegisters * kLanes];
+  std::unique_ptr<float[]> heap_buffer;
+  float* buf = stack_buffer;
+  if (floats > static_cast<size_t>(kStackRegisters) * kLanes) {
+    heap_buffer.reset(new float[floats]);
+    buf = heap_buffer.get();
   }
+  std::memcpy(buf, stage.constant_lanes.data(), sizeof(float) * stage.constant_lanes.size());
   // Lanes a masked write skips keep what they held: start from zeros, so that every run of
   // the same inputs gives the same values even where GLSL leaves them undefined.
-  std::memset(regs, 0, sizeof(float) * kLanes * static_cast<size_t>(code.registers));
+  std::memset(buf + stage.constant_lanes.size(), 0, sizeof(float) * kLanes * static_cast<size_t>(code.registers));
   Frame stack_frames[kStackFrames];
   std::unique_ptr<Frame[]> heap_frames;
   Frame* frames = stack_frames;
-  int depth_limit = kStackFrames;
-  {
-    int depth = 0, max_depth = 0;
-    for (const ir::Inst& in : code.insts) {
-      if (in.op == Op::IfBegin || in.op == Op::LoopBegin || in.op == Op::FuncBegin) max_depth = std::max(max_depth, ++depth);
-      if (in.op == Op::EndIf || in.op == Op::LoopEnd || in.op == Op::FuncEnd) --depth;
-    }
-    if (max_depth > kStackFrames) {
-      heap_frames.reset(new Frame[max_depth]);
-      frames = heap_frames.get();
-      depth_limit = max_depth;
-    }
+  if (stage.max_depth > kStackFrames) {
+    heap_frames.reset(new Frame[stage.max_depth]);
+    frames = heap_frames.get();
   }
-  (void)depth_limit;
   int top = 0;  // number of frames
   LaneMask discarded = 0;
   int budget = kIterationBudget;
-  const float* consts = stage.constant_lanes.data();
-  auto src = [&](Operand o) -> const float* {
-    return o >= 0 ? regs + static_cast<size_t>(o) * kLanes : consts + static_cast<size_t>(ir::const_index(o)) * kLanes;
-  };
-  auto reg = [&](Operand o) -> float* { return regs + static_cast<size_t>(o) * kLanes; };
+  auto src = [buf](int32_t offset) -> const float* { return buf + offset; };
+  auto reg = [buf](int32_t offset) -> float* { return buf + offset; };
+  // Texture lookups keep IR operands.
+  auto ir_src = [&](Operand o) -> float* { return buf + stage.offset(o); };
   // Removes `lanes` from every frame above the innermost one of `stop` kind (all frames when
   // stop is Discard).
   auto remove_lanes = [&](LaneMask lanes, Op stop) {
@@ -95,25 +104,28 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
     }
   };
 
+// Each lane's value goes to a local array first (no aliasing with the operands, so the
+// loop vectorizes), then to the register: whole, or blended under the mask.
 #define LANEWISE(EXPR)                                                  \
   do {                                                                  \
+    float T[kLanes];                                                    \
+    for (int l = 0; l < kLanes; ++l) T[l] = (EXPR);                     \
     float* D = reg(in.d);                                               \
-    if (mask == kAllLanes) {                                            \
-      for (int l = 0; l < kLanes; ++l) D[l] = (EXPR);                   \
-    } else {                                                            \
-      float T[kLanes];                                                  \
-      for (int l = 0; l < kLanes; ++l) T[l] = (EXPR);                   \
-      blend(D, T, mask);                                                \
-    }                                                                   \
+    if (mask == kAllLanes) std::memcpy(D, T, sizeof T);                 \
+    else blend(D, T, mask);                                             \
   } while (0)
 #define UNARY(F) { const float* A = src(in.a); LANEWISE(F); break; }
 #define BINARY(F) { const float* A = src(in.a); const float* B = src(in.b); LANEWISE(F); break; }
 #define TERNARY(F) { const float* A = src(in.a); const float* B = src(in.b); const float* C = src(in.c); LANEWISE(F); break; }
 
-  const size_t n = code.insts.size();
+  const ir::Inst* insts = stage.exec.data();
+  const size_t n = stage.exec.size();
   for (size_t pc = 0; pc < n; ++pc) {
-    const ir::Inst& in = code.insts[pc];
-    if (mask == 0 && top == 0) break;  // every lane returned or discarded
+    const ir::Inst& in = insts[pc];
+    if (mask == 0) {
+      if (top == 0) break;  // every lane returned or discarded
+      if (in.op > Op::Discard) continue;  // nothing to compute; structure still runs
+    }
     switch (in.op) {
       case Op::IfBegin: {
         const float* A = src(in.a);
@@ -188,9 +200,6 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
         remove_lanes(mask, Op::Discard);
         mask = 0;
         break;
-      default:
-        if (mask == 0) break;
-        switch (in.op) {
           case Op::Mov: UNARY(A[l])
           case Op::LoadUniform: {
             const float v = io.uniforms[in.i0];
@@ -204,14 +213,14 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           }
           case Op::Gather: {
             const float* A = src(in.a);
-            LANEWISE(regs[static_cast<size_t>(in.i0 + clamp_index(A[l], in.i1)) * kLanes + l]);
+            LANEWISE(buf[in.i0 + clamp_index(A[l], in.i1) * kLanes + l]);
             break;
           }
           case Op::Scatter: {
             const float* A = src(in.a);
             const float* B = src(in.b);
             for (int l = 0; l < kLanes; ++l)
-              if (mask >> l & 1) regs[static_cast<size_t>(in.i0 + clamp_index(A[l], in.i1)) * kLanes + l] = B[l];
+              if (mask >> l & 1) buf[in.i0 + clamp_index(A[l], in.i1) * kLanes + l] = B[l];
             break;
           }
           case Op::LoadInput: {
@@ -259,18 +268,18 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::Texture: {
             const ir::TextureLookup& t = code.textures[in.i0];
             float coords[4][kLanes];
-            for (int c = 0; c < 4; ++c) std::memcpy(coords[c], src(t.coord[c]), sizeof(float) * kLanes);
+            for (int c = 0; c < 4; ++c) std::memcpy(coords[c], ir_src(t.coord[c]), sizeof(float) * kLanes);
             float out[4][kLanes] = {};
             if (io.textures) {
-              const float* S = src(t.sampler);
+              const float* S = ir_src(t.sampler);
               int first = 0;
               while (!(mask >> first & 1)) ++first;
               const float unit_f = S[first];
               const int unit = unit_f >= 0.0f && unit_f < 256.0f ? static_cast<int>(unit_f) : 0;
-              io.textures->sample(unit, t.kind, coords, t.mode, t.lod == ir::kNone ? nullptr : src(t.lod), mask, out);
+              io.textures->sample(unit, t.kind, coords, t.mode, t.lod == ir::kNone ? nullptr : ir_src(t.lod), mask, out);
             }
             for (int c = 0; c < 4; ++c) {
-              float* D = reg(t.dst[c]);
+              float* D = ir_src(t.dst[c]);
               if (mask == kAllLanes) std::memcpy(D, out[c], sizeof(float) * kLanes);
               else blend(D, out[c], mask);
             }
@@ -279,10 +288,10 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::Neg: UNARY(-A[l])
           case Op::Abs: UNARY(std::fabs(A[l]))
           case Op::Sign: UNARY(A[l] > 0.0f ? 1.0f : (A[l] < 0.0f ? -1.0f : 0.0f))
-          case Op::Floor: UNARY(std::floor(A[l]))
-          case Op::Ceil: UNARY(std::ceil(A[l]))
-          case Op::Fract: UNARY(A[l] - std::floor(A[l]))
-          case Op::Trunc: UNARY(std::trunc(A[l]))
+          case Op::Floor: UNARY(ir::lane_floor(A[l]))
+          case Op::Ceil: UNARY(ir::lane_ceil(A[l]))
+          case Op::Fract: UNARY(A[l] - ir::lane_floor(A[l]))
+          case Op::Trunc: UNARY(ir::lane_trunc(A[l]))
           case Op::Sqrt: UNARY(std::sqrt(A[l]))
           case Op::Rsq: UNARY(1.0f / std::sqrt(A[l]))
           case Op::NormScale: UNARY(A[l] > 0.0f ? 1.0f / std::sqrt(A[l]) : 0.0f)
@@ -304,9 +313,9 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::Sub: BINARY(A[l] - B[l])
           case Op::Mul: BINARY(A[l] * B[l])
           case Op::Div: BINARY(A[l] / B[l])
-          case Op::Mod: BINARY(A[l] - B[l] * std::floor(A[l] / B[l]))
-          case Op::Min: BINARY(std::fmin(A[l], B[l]))
-          case Op::Max: BINARY(std::fmax(A[l], B[l]))
+          case Op::Mod: BINARY(A[l] - B[l] * ir::lane_floor(A[l] / B[l]))
+          case Op::Min: BINARY(ir::lane_min(A[l], B[l]))
+          case Op::Max: BINARY(ir::lane_max(A[l], B[l]))
           case Op::Pow: BINARY(std::pow(A[l], B[l]))
           case Op::Atan2: BINARY(std::atan2(A[l], B[l]))
           case Op::Step: BINARY(B[l] < A[l] ? 0.0f : 1.0f)
@@ -319,13 +328,12 @@ LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo
           case Op::And: BINARY((A[l] != 0.0f && B[l] != 0.0f) ? 1.0f : 0.0f)
           case Op::Or: BINARY((A[l] != 0.0f || B[l] != 0.0f) ? 1.0f : 0.0f)
           case Op::Xor: BINARY(((A[l] != 0.0f) != (B[l] != 0.0f)) ? 1.0f : 0.0f)
-          case Op::Clamp: TERNARY(std::fmin(std::fmax(A[l], B[l]), C[l]))
+          case Op::Clamp: TERNARY(ir::lane_min(ir::lane_max(A[l], B[l]), C[l]))
           case Op::Mix: TERNARY(A[l] * (1.0f - C[l]) + B[l] * C[l])
-          case Op::Smoothstep: TERNARY(ir::eval_ternary(Op::Smoothstep, A[l], B[l], C[l]))
+          case Op::Smoothstep: TERNARY(ir::lane_smoothstep(A[l], B[l], C[l]))
           case Op::Select: TERNARY(A[l] != 0.0f ? B[l] : C[l])
           case Op::Mad: TERNARY(A[l] * B[l] + C[l])
           default: break;
-        }
     }
   }
 #undef LANEWISE

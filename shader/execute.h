@@ -5,11 +5,20 @@
 
 namespace pineda::shader {
 
-// A stage's code ready to run: the IR plus its constants splatted to 16 lanes.
+// A stage's code ready to run: the IR, and the same instructions with every value operand
+// turned into a float offset into one lane buffer (constants, splatted, then registers), so
+// that the executor reads operands without a branch.
 struct StageCode {
   ir::Code code;
   std::vector<float> constant_lanes;  // [constant][kLanes]
+  std::vector<ir::Inst> exec;         // code.insts with operands as buffer offsets
+  int max_depth = 0;                  // deepest nesting of if/loop/function frames
   void prepare();
+  int32_t offset(ir::Operand o) const {
+    if (o == ir::kNone) return 0;
+    return ir::is_const(o) ? ir::const_index(o) * kLanes
+                           : (static_cast<int32_t>(code.constants.size()) + o) * kLanes;
+  }
 };
 
 struct LaneIo {

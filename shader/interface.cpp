@@ -13,7 +13,7 @@ const UniformVar* Interface::uniform(const std::string& name, const VarType& typ
       }
       return &u;
     }
-  uniforms.push_back(UniformVar{name, type, uniform_floats, builtin});
+  uniforms.push_back(UniformVar{name, type, uniform_floats, builtin, {}});
   uniform_floats += type.size();
   return &uniforms.back();
 }

@@ -16,6 +16,7 @@ struct UniformVar {
   VarType type;
   int offset = 0;
   bool builtin = false;
+  std::vector<float> initial;  // a GLSL 1.20 initializer, flattened; empty when none
 };
 
 struct AttributeVar {

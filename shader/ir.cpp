@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#define PINEDA_HAS_MXCSR 1
+#endif
 
 namespace pineda::shader::ir {
 
@@ -20,6 +24,14 @@ const char* const kOpNames[] = {
     "clamp", "mix", "smoothstep", "select", "mad"};
 static_assert(sizeof(kOpNames) / sizeof(kOpNames[0]) == static_cast<size_t>(Op::Count));
 }  // namespace
+
+#ifdef PINEDA_HAS_MXCSR
+FlushDenormals::FlushDenormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040); }  // FTZ | DAZ
+FlushDenormals::~FlushDenormals() { _mm_setcsr(saved_); }
+#else
+FlushDenormals::FlushDenormals() : saved_(0) {}
+FlushDenormals::~FlushDenormals() {}
+#endif
 
 const char* op_name(Op op) { return kOpNames[static_cast<int>(op)]; }
 
@@ -48,10 +60,10 @@ float eval_unary(Op op, float a) {
     case Op::Neg: return -a;
     case Op::Abs: return std::fabs(a);
     case Op::Sign: return a > 0.0f ? 1.0f : (a < 0.0f ? -1.0f : 0.0f);
-    case Op::Floor: return std::floor(a);
-    case Op::Ceil: return std::ceil(a);
-    case Op::Fract: return a - std::floor(a);
-    case Op::Trunc: return std::trunc(a);
+    case Op::Floor: return lane_floor(a);
+    case Op::Ceil: return lane_ceil(a);
+    case Op::Fract: return a - lane_floor(a);
+    case Op::Trunc: return lane_trunc(a);
     case Op::Sqrt: return std::sqrt(a);
     case Op::Rsq: return 1.0f / std::sqrt(a);
     // The scale that normalizes a vector of squared length a; 0 for a zero vector.
@@ -78,10 +90,10 @@ float eval_binary(Op op, float a, float b) {
     case Op::Sub: return a - b;
     case Op::Mul: return a * b;
     case Op::Div: return a / b;
-    case Op::Mod: return a - b * std::floor(a / b);
+    case Op::Mod: return a - b * lane_floor(a / b);
     // GLSL min/max of a NaN is undefined; fmin/fmax pick the number.
-    case Op::Min: return std::fmin(a, b);
-    case Op::Max: return std::fmax(a, b);
+    case Op::Min: return lane_min(a, b);
+    case Op::Max: return lane_max(a, b);
     case Op::Pow: return std::pow(a, b);
     case Op::Atan2: return std::atan2(a, b);
     case Op::Step: return b < a ? 0.0f : 1.0f;
@@ -100,12 +112,9 @@ float eval_binary(Op op, float a, float b) {
 
 float eval_ternary(Op op, float a, float b, float c) {
   switch (op) {
-    case Op::Clamp: return std::fmin(std::fmax(a, b), c);
+    case Op::Clamp: return lane_min(lane_max(a, b), c);
     case Op::Mix: return a * (1.0f - c) + b * c;
-    case Op::Smoothstep: {
-      float t = std::fmin(std::fmax((c - a) / (b - a), 0.0f), 1.0f);
-      return t * t * (3.0f - 2.0f * t);
-    }
+    case Op::Smoothstep: return lane_smoothstep(a, b, c);
     case Op::Select: return a != 0.0f ? b : c;
     case Op::Mad: return a * b + c;
     default: return 0.0f;

@@ -88,6 +88,42 @@ struct Code {
   float const_value(Operand o) const { return constants[const_index(o)]; }
 };
 
+// Per-lane helpers written so that the executor's 16-lane loops vectorize, used by constant
+// folding too so that folded and executed values are identical. min/max return the number
+// when one operand is NaN; floor/ceil/trunc are exact for every float.
+inline float lane_max(float a, float b) { return (a > b || b != b) ? a : b; }
+inline float lane_min(float a, float b) { return (a < b || b != b) ? a : b; }
+inline float lane_trunc(float x) {
+  // Floats of magnitude 2^23 and more (and NaN, inf) are already integral.
+  return (x > -8388608.0f && x < 8388608.0f) ? static_cast<float>(static_cast<int32_t>(x)) : x;
+}
+inline float lane_floor(float x) {
+  float t = lane_trunc(x);
+  return t > x ? t - 1.0f : t;
+}
+inline float lane_ceil(float x) {
+  float t = lane_trunc(x);
+  return t < x ? t + 1.0f : t;
+}
+
+inline float lane_smoothstep(float e0, float e1, float x) {
+  float t = lane_min(lane_max((x - e0) / (e1 - e0), 0.0f), 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// Denormals are flushed to zero (inputs and results) while shaders run and while their
+// constants fold, as GPUs and GLSL allow: same values either way, and no slow denormal path.
+class FlushDenormals {
+ public:
+  FlushDenormals();
+  ~FlushDenormals();
+  FlushDenormals(const FlushDenormals&) = delete;
+  FlushDenormals& operator=(const FlushDenormals&) = delete;
+
+ private:
+  unsigned saved_;
+};
+
 // Scalar semantics shared by the executor and constant folding.
 float eval_unary(Op op, float a);
 float eval_binary(Op op, float a, float b);

@@ -16,8 +16,9 @@ namespace pineda::shader {
 
 namespace {
 
-// GL_MAX_VERTEX_UNIFORM_COMPONENTS + GL_MAX_FRAGMENT_UNIFORM_COMPONENTS (1024 each).
-constexpr int kMaxUserUniformFloats = 2048;
+// A bound on the uniform store (64 KB), far above what GL's limits promise (1024 components
+// per stage): large arrays that drivers commonly accept link, absurd ones do not.
+constexpr int kMaxUserUniformFloats = 16384;
 // Registers one invocation may use (64 bytes each).
 constexpr int kMaxRunRegisters = 1 << 14;
 
@@ -29,18 +30,19 @@ Type reported_type(const VarType& t) {
   return r;
 }
 
+// `initial` is the whole variable's initializer (or null); `base` its first float.
 void add_uniform_leaves(const std::string& name, const VarType& t, int offset, bool builtin,
-                        std::vector<Uniform>& out) {
+                        const std::vector<float>* initial, int base, std::vector<Uniform>& out) {
   if (t.is_struct()) {
     if (t.array) {
       const VarType e = t.element();
       for (int i = 0; i < t.array; ++i)
-        add_uniform_leaves(name + "[" + std::to_string(i) + "]", e, offset + i * e.size(), builtin, out);
+        add_uniform_leaves(name + "[" + std::to_string(i) + "]", e, offset + i * e.size(), builtin, initial, base, out);
       return;
     }
     int off = offset;
     for (const auto& [member, mt] : t.members) {
-      add_uniform_leaves(name + "." + member, mt, off, builtin, out);
+      add_uniform_leaves(name + "." + member, mt, off, builtin, initial, base, out);
       off += mt.size();
     }
     return;
@@ -52,6 +54,8 @@ void add_uniform_leaves(const std::string& name, const VarType& t, int offset, b
   u.offset = offset;
   u.stride = t.element_size();
   u.builtin = builtin;
+  if (initial)
+    u.initial.assign(initial->begin() + (offset - base), initial->begin() + (offset - base) + t.size());
   out.push_back(u);
 }
 
@@ -110,6 +114,47 @@ bool assign_locations(const Interface& iface, const std::vector<AttributeBinding
   return true;
 }
 
+// glslang's part under its lock: parse, link, lower. Its objects die before the lock is
+// released; the rest of link() runs unlocked.
+bool parse_link_lower(const CompiledShader* vertex, const CompiledShader* fragment, Interface& iface,
+                      LinkedProgram& out, std::string& info_log) {
+  std::lock_guard<std::mutex> hold(front_end::glslang_lock());
+  std::string log;
+  std::unique_ptr<glslang::TShader> vs, fs;
+  if (vertex && !(vs = front_end::parse(*vertex, log))) {
+    info_log = "error: vertex shader does not compile\n" + log;
+    return false;
+  }
+  if (fragment && !(fs = front_end::parse(*fragment, log))) {
+    info_log = "error: fragment shader does not compile\n" + log;
+    return false;
+  }
+  glslang::TProgram program;
+  if (vs) program.addShader(vs.get());
+  if (fs) program.addShader(fs.get());
+  const bool linked = program.link(EShMsgDefault);
+  info_log = program.getInfoLog();
+  if (!linked) return false;
+  iface.has_vertex_shader = vs != nullptr;
+  iface.has_fragment_shader = fs != nullptr;
+  std::string error;
+  if (fs) {
+    out.fragment_.emplace();
+    if (!lower_stage(Stage::Fragment, *program.getIntermediate(EShLangFragment), iface, out.fragment_->code, error)) {
+      info_log += error;
+      return false;
+    }
+  }
+  if (vs) {
+    out.vertex_.emplace();
+    if (!lower_stage(Stage::Vertex, *program.getIntermediate(EShLangVertex), iface, out.vertex_->code, error)) {
+      info_log += error;
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
@@ -123,45 +168,9 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
     result.info_log = "error: shader of the wrong stage\n";
     return result;
   }
-  std::lock_guard<std::mutex> hold(front_end::glslang_lock());
-  std::string log;
-  std::unique_ptr<glslang::TShader> vs, fs;
-  if (vertex && !(vs = front_end::parse(*vertex, log))) {
-    result.info_log = "error: vertex shader does not compile\n" + log;
-    return result;
-  }
-  if (fragment && !(fs = front_end::parse(*fragment, log))) {
-    result.info_log = "error: fragment shader does not compile\n" + log;
-    return result;
-  }
-  glslang::TProgram program;
-  if (vs) program.addShader(vs.get());
-  if (fs) program.addShader(fs.get());
-  const bool linked = program.link(EShMsgDefault);
-  result.info_log = program.getInfoLog();
-  if (!linked) return result;
-
   Interface iface;
-  iface.has_vertex_shader = vs != nullptr;
-  iface.has_fragment_shader = fs != nullptr;
   auto linked_program = std::make_shared<LinkedProgram>();
-  std::string error;
-  if (fs) {
-    linked_program->fragment_.emplace();
-    if (!lower_stage(Stage::Fragment, *program.getIntermediate(EShLangFragment), iface,
-                     linked_program->fragment_->code, error)) {
-      result.info_log += error;
-      return result;
-    }
-  }
-  if (vs) {
-    linked_program->vertex_.emplace();
-    if (!lower_stage(Stage::Vertex, *program.getIntermediate(EShLangVertex), iface,
-                     linked_program->vertex_->code, error)) {
-      result.info_log += error;
-      return result;
-    }
-  }
+  if (!parse_link_lower(vertex, fragment, iface, *linked_program, result.info_log)) return result;
   if (iface.varying_floats > kMaxVaryingFloats) {
     result.info_log += "error: too many varyings (" + std::to_string(iface.varying_floats) + " floats, at most " +
                        std::to_string(kMaxVaryingFloats) + ")\n";
@@ -176,14 +185,15 @@ LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
     return result;
   }
   if (!assign_locations(iface, bindings, linked_program->attributes_, result.info_log)) return result;
-  if (!vs)
+  if (!iface.has_vertex_shader)
     for (VaryingVar& v : iface.varyings)
       if (v.name == "gl_Color" || v.name == "gl_SecondaryColor") {
         v.back_offset = iface.varying_floats;
         iface.varying_floats += 4;
       }
   for (const UniformVar& u : iface.uniforms)
-    add_uniform_leaves(u.name, u.type, u.offset, u.builtin, linked_program->uniforms_);
+    add_uniform_leaves(u.name, u.type, u.offset, u.builtin, u.initial.empty() ? nullptr : &u.initial, u.offset,
+                       linked_program->uniforms_);
   for (const VaryingVar& v : iface.varyings) {
     const int es = v.type.element_size();
     if (v.type.array) {

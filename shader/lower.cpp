@@ -84,9 +84,10 @@ VarType var_type_of_element(const TType& t) {
 VarType var_type(const TType& t, const std::string& name) {
   VarType v = var_type_of_element(t);
   if (t.isArray()) {
+    // An unsized array (gl_TexCoord used with constant indices) has the size its highest
+    // index implies.
     int n = t.isSizedArray() ? t.getOuterArraySize() : t.getImplicitArraySize();
-    if (!t.isSizedArray() && name == "gl_TexCoord") n = kMaxTextureCoords;
-    v.array = n < 1 ? 1 : n;
+    v.array = n < 1 ? 1 : (n > kMaxTextureCoords && name == "gl_TexCoord" ? kMaxTextureCoords : n);
   }
   return v;
 }
@@ -101,6 +102,10 @@ struct Place {
   std::vector<int> comps;
   Operand dyn = kNone;
   int dyn_limit = 0;
+  // A swizzled vector indexed dynamically (v.wzyx[i]): component `choose[k]` when the index is
+  // k; comps is unused.
+  Operand choose_index = kNone;
+  std::vector<int> choose;
   VarType type;
 };
 
@@ -273,7 +278,7 @@ class Lowerer {
   Operand reduce(Op op, const Val& v) {
     Operand r = v[0];
     for (size_t i = 1; i < v.size(); ++i) r = emit(op, r, v[i]);
-    return v.size() == 1 ? emit(Op::ToBool, r) : r;
+    return r;
   }
 
   // --- places ---
@@ -357,7 +362,8 @@ Val Lowerer::builtin_attribute_value(const std::string& name) {
 Place Lowerer::symbol_place(TIntermSymbol* s) {
   const std::string name = s->getName().c_str();
   const auto storage = s->getQualifier().storage;
-  if (storage == glslang::EvqConst || !s->getConstArray().empty()) {
+  // Constants (a 1.20 uniform's initializer also sits in the const array: it stays a uniform).
+  if (storage == glslang::EvqConst || (storage != glslang::EvqUniform && !s->getConstArray().empty())) {
     VarType t = var_type(s->getType(), name);
     Place p;
     p.kind = Place::Values;
@@ -371,7 +377,21 @@ Place Lowerer::symbol_place(TIntermSymbol* s) {
       std::string error;
       const UniformVar* u = iface_.uniform(name, t, starts_with_gl(name), error);
       if (!u) fail(error);
-      return whole(Place::Uniform, u->offset, t);
+      const int offset = u->offset;
+      if (!s->getConstArray().empty())
+        for (UniformVar& var : iface_.uniforms)
+          if (var.name == name && var.initial.empty()) {
+            const glslang::TConstUnionArray& c = s->getConstArray();
+            for (int i = 0; i < t.size() && i < c.size(); ++i) {
+              const glslang::TConstUnion& v = c[i];
+              var.initial.push_back(v.getType() == glslang::EbtBool ? (v.getBConst() ? 1.0f : 0.0f)
+                                    : v.getType() == glslang::EbtInt ? static_cast<float>(v.getIConst())
+                                    : v.getType() == glslang::EbtUint ? static_cast<float>(v.getUConst())
+                                                                      : static_cast<float>(v.getDConst()));
+            }
+            var.initial.resize(t.size(), 0.0f);
+          }
+      return whole(Place::Uniform, offset, t);
     }
     case glslang::EvqTemporary: case glslang::EvqIn: case glslang::EvqOut: case glslang::EvqInOut:
     case glslang::EvqConstReadOnly: {
@@ -495,6 +515,15 @@ Place Lowerer::place(TIntermTyped* node) {
       Place q = p;
       bool contiguous = q.kind != Place::Values;
       for (size_t i = 0; contiguous && i < q.comps.size(); ++i) contiguous = q.comps[i] == q.comps[0] + static_cast<int>(i);
+      if (!contiguous && q.kind == Place::Regs && q.dyn == kNone && es == 1) {
+        // A swizzle of a variable: stays assignable, one select per candidate component.
+        Place c = q;
+        c.choose_index = emit(Op::Clamp, index[0], k(0.0f), k(static_cast<float>(count - 1)));
+        c.choose = q.comps;
+        c.comps = {0};
+        c.type = elem;
+        return c;
+      }
       if (!contiguous) q = materialize(q);
       Operand off = emit(Op::Clamp, index[0], k(0.0f), k(static_cast<float>(count - 1)));
       if (es != 1) off = emit(Op::Mul, off, k(static_cast<float>(es)));
@@ -515,6 +544,12 @@ Place Lowerer::place(TIntermTyped* node) {
 }
 
 Val Lowerer::load(const Place& p) {
+  if (p.choose_index != kNone) {
+    Operand r = p.base + p.choose.back();
+    for (int i = static_cast<int>(p.choose.size()) - 2; i >= 0; --i)
+      r = emit(Op::Select, emit(Op::Eq, p.choose_index, k(static_cast<float>(i))), p.base + p.choose[i], r);
+    return {r};
+  }
   Val out;
   for (int c : p.comps) {
     switch (p.kind) {
@@ -533,6 +568,14 @@ Val Lowerer::load(const Place& p) {
 
 void Lowerer::store(const Place& p, const Val& v0) {
   if (p.kind != Place::Regs) fail("error: assignment to a read-only value\n");
+  if (p.choose_index != kNone) {
+    Operand v = ir::is_const(v0[0]) ? v0[0] : emit(Op::Mov, v0[0]);
+    for (size_t i = 0; i < p.choose.size(); ++i) {
+      Operand target = p.base + p.choose[i];
+      emit_to(target, Op::Select, emit(Op::Eq, p.choose_index, k(static_cast<float>(i))), v, target);
+    }
+    return;
+  }
   // A source that is also a destination (v.xy = v.yx) is read before any write.
   Val v = v0;
   for (Operand& o : v)

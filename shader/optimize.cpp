@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <climits>
 #include <functional>
+#include <map>
+#include <tuple>
 
 namespace pineda::shader {
 
@@ -102,13 +104,6 @@ Analysis analyze(ir::Code& code) {
   return an;
 }
 
-void replace_uses(ir::Code& code, Operand from, Operand to) {
-  for (Inst& in : code.insts)
-    for_each_use(code, in, [&](Operand& o) {
-      if (o == from) o = to;
-    });
-}
-
 bool removable(Op op) {
   return ir::op_is_pure_arith(op) || op == Op::LoadUniform || op == Op::GatherUniform || op == Op::Gather ||
          op == Op::LoadInput || op == Op::LoadVarying || op == Op::LoadFragCoord || op == Op::LoadFrontFacing ||
@@ -181,6 +176,35 @@ bool pass(ir::Code& code) {
 
   Analysis an = analyze(code);
   std::vector<bool> dead(code.insts.size(), false);
+  // Common subexpressions: an operation on values that never change, computed again where an
+  // earlier identical one is still in effect (same or enclosing region, earlier), becomes a
+  // copy of the earlier result.
+  {
+    std::map<std::tuple<int, Operand, Operand, Operand, int, int>, std::vector<int>> seen;
+    auto stable = [&](Operand o) { return o == kNone || ir::is_const(o) || (o >= 0 && an.promotable(o)); };
+    for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+      Inst& in = code.insts[pc];
+      const bool candidate = (ir::op_is_pure_arith(in.op) && in.op != Op::Mov) || in.op == Op::LoadUniform ||
+                             in.op == Op::LoadVarying || in.op == Op::LoadInput || in.op == Op::LoadFragCoord ||
+                             in.op == Op::LoadPointCoord || in.op == Op::LoadFrontFacing;
+      if (!candidate || in.d < 0 || !an.promotable(in.d) || !stable(in.a) || !stable(in.b) || !stable(in.c)) continue;
+      auto key = std::make_tuple(static_cast<int>(in.op), in.a, in.b, in.c, in.i0, in.i1);
+      std::vector<int>& earlier = seen[key];
+      int found = -1;
+      for (int e : earlier)
+        if (an.inside(an.region[pc], an.region[e])) found = e;
+      if (found >= 0) {
+        in.op = Op::Mov;
+        in.a = code.insts[found].d;
+        in.b = in.c = kNone;
+        in.i0 = in.i1 = 0;
+        changed = true;
+      } else {
+        earlier.push_back(static_cast<int>(pc));
+      }
+    }
+    if (changed) an = analyze(code);
+  }
   // Copy propagation: a register that holds one value everywhere it is read takes the place
   // of its copies (chains resolve to the first source; one sweep, no re-analysis: a source
   // stays valid at every use of its copy).
@@ -367,6 +391,7 @@ void fix_jumps(ir::Code& code) {
 }
 
 void optimize(ir::Code& code) {
+  const ir::FlushDenormals flush;
   for (int round = 0; round < 32 && pass(code); ++round) {
   }
   allocate_registers(code);

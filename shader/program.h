@@ -71,6 +71,9 @@ struct Uniform {
   int offset = 0;  // in floats, into the program's UniformStore
   int stride = 0;  // floats between array elements
   bool builtin = false;
+  // Added: a GLSL 1.20 initializer (`uniform float k = 2.0;`), array_size * stride floats in
+  // store order; empty when the uniform has none (it starts at zero).
+  std::vector<float> initial;
 };
 
 // Where each fragment input comes from. `offset` indexes the interpolated varying floats;

@@ -238,3 +238,23 @@ TEST(BuiltinFunctions, NoiseIsZero) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(BuiltinFunctions, DenormalsFlushToZero) {
+  // 2^-75 * 2^-75 = 2^-150: zero after flushing (and after rounding); 2^-70 * 2^-70 = 2^-140
+  // is a denormal in IEEE, zero here.
+  ExprResult r = run_fragment("gl_FragColor = vec4(a.x * a.x > 0.0 ? 1.0 : 0.0, b.x * b.x > 0.0 ? 1.0 : 0.0, b.x * 1.0e20, 0.0);",
+                              [](int, int) { return std::ldexp(1.0f, -75); }, [](int, int) { return std::ldexp(1.0f, -70); });
+  EXPECT_EQ(r.c[0][0], 0.0f);
+  EXPECT_EQ(r.c[1][0], 0.0f);
+  EXPECT_EQ(r.c[2][0], std::ldexp(1.0f, -70) * 1.0e20f);
+  // The caller's floating-point mode is left as it was.
+  volatile float tiny = std::ldexp(1.0f, -70);
+  volatile float product = tiny * tiny;
+  EXPECT_GT(product, 0.0f);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test

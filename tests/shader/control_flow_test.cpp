@@ -132,8 +132,11 @@ TEST(ControlFlow, DiscardClearsLiveLanes) {
   for (int l = 0; l < kLanes; ++l)
     if ((0xFF0F >> l & 1) && l % 3 != 0) expected |= static_cast<LaneMask>(1 << l);
   EXPECT_EQ(run.block.live, expected);
-  for (int l = 0; l < kLanes; ++l)
-    if (expected >> l & 1) EXPECT_EQ(run.block.color[0][0][l], 0.0f);
+  for (int l = 0; l < kLanes; ++l) {
+    if (expected >> l & 1) {
+      EXPECT_EQ(run.block.color[0][0][l], 0.0f);
+    }
+  }
 }
 
 TEST(ControlFlow, DiscardInsideLoopAndFunction) {
@@ -224,6 +227,29 @@ TEST(ControlFlow, GlobalInitializersAndStructs) {
     EXPECT_EQ(s.c[1][l], 2.0f);
     EXPECT_EQ(s.c[2][l], 2.0f * l + 1.0f);
     EXPECT_EQ(s.c[3][l], 2.0f * l);
+  }
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(ControlFlow, DynamicIndexIntoASwizzleWritesTheVariable) {
+  ExprResult s = run_fragment(
+      "int i = int(mod(a.x, 4.0));\n"
+      "vec4 c = vec4(10.0, 20.0, 30.0, 40.0);\n"
+      "c.wzyx[i] = -1.0;\n"
+      "gl_FragColor = vec4(c.wzyx[i] + c.x, c.y, c.z, c.w);",
+      [](int l, int) { return static_cast<float>(l); });
+  for (int l = 0; l < kLanes; ++l) {
+    float c[4] = {10, 20, 30, 40};
+    c[3 - l % 4] = -1.0f;
+    EXPECT_EQ(s.c[0][l], -1.0f + c[0]) << l;
+    EXPECT_EQ(s.c[1][l], c[1]) << l;
+    EXPECT_EQ(s.c[2][l], c[2]) << l;
+    EXPECT_EQ(s.c[3][l], c[3]) << l;
   }
 }
 

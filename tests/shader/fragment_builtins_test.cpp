@@ -1,5 +1,6 @@
 // Fragment-stage built-ins: derivatives from the quads, gl_FragCoord, gl_FrontFacing,
 // gl_PointCoord, gl_FragData, gl_FragDepth, and texture lookups through TextureAccess.
+#include <limits>
 #include <vector>
 
 #include "tests/shader/shader_test_util.h"
@@ -234,6 +235,39 @@ TEST(FragmentBuiltins, LookupUnderDivergentControlFlowSeesItsLanes) {
   EXPECT_EQ(tex.calls[0].live, 0xF000);
   EXPECT_EQ(run.block.color[0][2][0], 0.0f);
   EXPECT_EQ(run.block.color[0][2][13], 2.0f);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(FragmentBuiltins, NoTextureAccessGivesZeros) {
+  auto p = link_ok("", "uniform sampler2D s;\nvoid main() { gl_FragColor = texture2D(s, vec2(0.5)) + vec4(0.25); }\n");
+  ASSERT_TRUE(p);
+  FragmentRun run(*p);
+  run.run(*p, nullptr);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(run.block.color[0][c][7], 0.25f);
+}
+
+TEST(FragmentBuiltins, NanAndHugeIndicesStayInsideArrays) {
+  auto p = link_ok("", "uniform float t[3];\nvarying float v;\nvoid main() { float l[3]; l[0] = 1.0; l[1] = 2.0; l[2] = 3.0;\n"
+                       "  int i = int(v); gl_FragColor = vec4(t[i], l[i], 0.0, 0.0); }\n");
+  ASSERT_TRUE(p);
+  FragmentRun run(*p);
+  run.set_uniform(*p, "t[0]", {10.0f, 20.0f, 30.0f});
+  run.set_varying(*p, "v", 0, [](int l) {
+    const float values[4] = {std::numeric_limits<float>::quiet_NaN(), 1e30f, -1e30f, 1.0f};
+    return values[l & 3];
+  });
+  run.run(*p);
+  for (int l = 0; l < kLanes; ++l) {
+    const float expected_t[4] = {10.0f, 30.0f, 10.0f, 20.0f};
+    const float expected_l[4] = {1.0f, 3.0f, 1.0f, 2.0f};
+    EXPECT_EQ(run.block.color[0][0][l], expected_t[l & 3]) << l;
+    EXPECT_EQ(run.block.color[0][1][l], expected_l[l & 3]) << l;
+  }
 }
 
 }  // namespace

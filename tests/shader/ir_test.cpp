@@ -124,3 +124,27 @@ TEST(Threads, OneProgramRunsOnManyThreadsAndCompilesInParallel) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Ir, CommonSubexpressionsComputedOnce) {
+  auto p = link_ok("", "uniform float u;\nvarying float v;\n"
+                       "void main() { float a = u * v; if (v > 0.5) { gl_FragColor = vec4(u * v); } else { gl_FragColor = vec4(a, u * v, u, 1.0); } }\n");
+  ASSERT_TRUE(p);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "mul"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "uniform"), 1) << ir;
+  EXPECT_EQ(count_ops(ir, "varying"), 1) << ir;
+  FragmentRun run(*p);
+  run.set_uniform(*p, "u", {3.0f});
+  run.set_varying(*p, "v", 0, [](int l) { return l / 8.0f; });
+  run.run(*p);
+  for (int l = 0; l < kLanes; ++l) {
+    EXPECT_EQ(run.block.color[0][0][l], 3.0f * (l / 8.0f)) << l;
+    EXPECT_EQ(run.block.color[0][2][l], l / 8.0f > 0.5f ? 3.0f * (l / 8.0f) : 3.0f) << l;
+  }
+}
+
+}  // namespace
+}  // namespace pineda::shader::test

@@ -195,3 +195,25 @@ TEST(Language, DeepExpressionsAndManyRegistersRun) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(Language, UniformWithInitializerStaysAUniform) {
+  auto p = link_ok("", "#version 120\nuniform float k = 2.0;\nstruct S { vec2 a; int b; };\n"
+                       "uniform S s[2] = S[2](S(vec2(1.0, 2.0), 3), S(vec2(4.0, 5.0), 6));\nuniform float plain;\n"
+                       "void main() { gl_FragColor = vec4(k, s[1].a, float(s[0].b) + plain); }\n");
+  ASSERT_TRUE(p);
+  ASSERT_TRUE(find_uniform(*p, "k"));
+  EXPECT_EQ(find_uniform(*p, "k")->initial, std::vector<float>({2.0f}));
+  EXPECT_EQ(find_uniform(*p, "s[1].a")->initial, std::vector<float>({4.0f, 5.0f}));
+  EXPECT_EQ(find_uniform(*p, "s[0].b")->initial, std::vector<float>({3.0f}));
+  EXPECT_TRUE(find_uniform(*p, "plain")->initial.empty());
+  FragmentRun run(*p);
+  run.set_uniform(*p, "k", {7.0f});
+  run.run(*p);
+  EXPECT_EQ(run.block.color[0][0][0], 7.0f);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test

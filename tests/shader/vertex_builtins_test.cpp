@@ -116,3 +116,17 @@ TEST(VertexBuiltins, UserVaryingArrays) {
 
 }  // namespace
 }  // namespace pineda::shader::test
+
+namespace pineda::shader::test {
+namespace {
+
+TEST(VertexBuiltins, UnsizedTexCoordTakesItsHighestIndex) {
+  auto p = link_ok("void main() { gl_Position = gl_Vertex; gl_TexCoord[2] = gl_MultiTexCoord2; }\n", "");
+  ASSERT_TRUE(p);
+  EXPECT_TRUE(find_varying(*p, "gl_TexCoord[2]"));
+  EXPECT_EQ(find_varying(*p, "gl_TexCoord[3]"), nullptr);
+  EXPECT_EQ(p->varying_floats(), 12);
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
