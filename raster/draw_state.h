@@ -7,10 +7,11 @@
 
 #include "raster/point_size.h"
 #include "raster/sample_counter.h"
-#include "raster/shader_draw.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
+
+struct ShaderDraw;  // raster/shader_draw.h
 
 enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, Decr, Invert, IncrWrap, DecrWrap };
 enum class BlendFactor : uint8_t {

@@ -8,6 +8,7 @@
 #include "raster/raster_limits.h"
 #include "raster/reference_triangle.h"
 #include "raster/reference_lines_points.h"
+#include "raster/shader_draw.h"
 
 namespace pineda::raster {
 namespace {

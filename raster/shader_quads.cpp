@@ -5,6 +5,7 @@
 #include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
 #include "raster/quad_ops.h"
+#include "raster/shader_draw.h"
 #include "raster/shader_textures.h"
 
 namespace pineda::raster {

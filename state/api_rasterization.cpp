@@ -82,6 +82,7 @@ void Hint(Context& ctx, GLenum target, GLenum mode) {
     case GL_FOG_HINT: ctx.hint_fog = mode; break;
     case GL_GENERATE_MIPMAP_HINT: ctx.hint_generate_mipmap = mode; break;
     case GL_TEXTURE_COMPRESSION_HINT: ctx.hint_texture_compression = mode; break;
+    case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: ctx.programs.derivative_hint = mode; break;  // GL 2.0
     default: ctx.record_error(GL_INVALID_ENUM);
   }
 }

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "raster/draw_record.h"
+#include "raster/shader_draw.h"
 #include "raster/shader_textures.h"
 #include "state/context.h"
 #include "state/programs/builtin_uniforms.h"

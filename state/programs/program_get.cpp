@@ -9,6 +9,7 @@ bool query_program_state(Context& ctx, unsigned pname, GetValues& out) {
   if (ctx.es1()) return false;
   switch (pname) {
     case GL_CURRENT_PROGRAM: out = get_ints({double(ctx.programs.current)}); return true;
+    case GL_FRAGMENT_SHADER_DERIVATIVE_HINT: out = get_enums({double(ctx.programs.derivative_hint)}); return true;
     case GL_MAX_VERTEX_ATTRIBS: out = get_ints({kMaxVertexAttribs}); return true;
     case GL_MAX_VERTEX_UNIFORM_COMPONENTS: out = get_ints({kMaxUniformComponents}); return true;
     case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS: out = get_ints({kMaxUniformComponents}); return true;

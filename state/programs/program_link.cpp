@@ -1,5 +1,7 @@
 #include "state/programs/program_link.h"
 
+#include <algorithm>
+
 #include "state/context.h"
 
 namespace pineda {
@@ -47,6 +49,11 @@ void link_program(Context& ctx, ProgramObject& p) {
     exec->program = std::move(result.program);
     exec->uniforms = UniformTable::build(exec->program->uniforms());
     exec->values.assign(static_cast<size_t>(std::max(exec->program->uniform_floats(), 0)), 0.f);
+    for (const shader::Uniform& u : exec->program->uniforms()) {  // GLSL 1.20 initializers
+      if (u.initial.empty() || u.offset < 0 || static_cast<size_t>(u.offset) >= exec->values.size()) continue;
+      const size_t n = std::min(u.initial.size(), exec->values.size() - static_cast<size_t>(u.offset));
+      std::copy(u.initial.begin(), u.initial.begin() + static_cast<std::ptrdiff_t>(n), exec->values.begin() + u.offset);
+    }
     const auto& attributes = exec->program->attributes();
     for (size_t i = 0; i < attributes.size(); ++i) exec->attributes.push_back(static_cast<int>(i));
   }

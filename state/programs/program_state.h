@@ -36,6 +36,7 @@ struct ProgramState {
   std::shared_ptr<LinkedProgram> current_exec;   // what draws run; kept when a relink fails
   bool point_size_from_shader = false;           // GL_VERTEX_PROGRAM_POINT_SIZE
   bool two_side = false;                         // GL_VERTEX_PROGRAM_TWO_SIDE
+  GLenum derivative_hint = GL_DONT_CARE;         // GL_FRAGMENT_SHADER_DERIVATIVE_HINT (accepted)
 
   std::array<std::array<float, 4>, kMaxVertexAttribs> current_attrib = [] {
     std::array<std::array<float, 4>, kMaxVertexAttribs> a{};

@@ -302,3 +302,24 @@ TEST_F(UniformsTest, UniformsInADisplayListAreCopiedAtCompileTime) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+using UniformInitializerTest = ProgramTest;
+
+TEST_F(UniformInitializerTest, Glsl120InitializersAreTheStartingValues) {
+  const GLuint p = link("void main() { gl_Position = gl_Vertex; }\n",
+                        "#version 120\nuniform vec2 k = vec2(0.25, 0.5); uniform float z;\n"
+                        "void main() { gl_FragColor = vec4(k, z, 1.0); }\n");
+  ASSERT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
+  GLfloat got[2] = {};
+  glGetUniformfv(p, glGetUniformLocation(p, "k"), got);
+  EXPECT_EQ(got[0], 0.25f);
+  EXPECT_EQ(got[1], 0.5f);
+  glGetUniformfv(p, glGetUniformLocation(p, "z"), got);
+  EXPECT_EQ(got[0], 0.f);
+}
+
+}  // namespace
+}  // namespace pineda::test
