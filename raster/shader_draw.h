@@ -12,6 +12,7 @@ struct ShaderDraw {
   std::shared_ptr<const shader::Program> program;
   std::vector<float> uniforms;  // program->uniform_floats() values
   bool two_side = false;        // back-facing polygons read the varyings' back_offset values
+  int color_output = 0;         // the gl_FragData index written to the colour buffer
 };
 
 }  // namespace pineda::raster

@@ -133,7 +133,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     if (!mask) continue;
     const Quad& q = quads[k];
     QuadColor col;
-    for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[0][c][4 * k]);
+    for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * k]);
     if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
     if (s.alpha_test)
       for (int i = 0; i < 4; ++i)

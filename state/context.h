@@ -121,6 +121,9 @@ class Context {
   // Runs `render` (renderer calls) once per colour buffer that glDrawBuffer selects
   // (draw_buffers.cpp).
   void render_to_draw_buffers(const std::function<void()>& render);
+  // While `render` runs for one colour buffer: the index i of the first DRAW_BUFFERi that
+  // selects it, so a fragment shader's gl_FragData[i] goes there.
+  int draw_pass_output() const { return draw_pass_output_; }
   // The read drawable's buffers with the colour buffer that glReadBuffer selects.
   raster::Framebuffer read_framebuffer() const;
 
@@ -273,6 +276,7 @@ class Context {
   Drawable* read_ = nullptr;
   Drawable* fbo_draw_ = nullptr;
   Drawable* fbo_read_ = nullptr;
+  int draw_pass_output_ = 0;
   bool ever_bound_ = false;
 };
 

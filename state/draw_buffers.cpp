@@ -28,6 +28,15 @@ Target draw_targets(GLenum buffer0, const ExtraDrawBuffers& more, const Drawable
   return static_cast<Target>(bits);
 }
 
+// The first draw buffer index whose buffer includes `pass` (Front or Back).
+int first_output_for(Target pass, GLenum buffer0, const ExtraDrawBuffers& more, const Drawable& d) {
+  for (int i = 0; i < kMaxDrawBuffers; ++i) {
+    const GLenum b = i == 0 ? buffer0 : more[size_t(i - 1)];
+    if (static_cast<int>(draw_target(b, d)) & static_cast<int>(pass)) return i;
+  }
+  return 0;
+}
+
 bool reads_front(GLenum buffer) {
   return buffer == GL_FRONT || buffer == GL_FRONT_LEFT || buffer == GL_LEFT;
 }
@@ -106,14 +115,19 @@ void Context::render_to_draw_buffers(const std::function<void()>& render) {
     note_draw_framebuffer_rendered(*this);
   }
   Drawable* const draw_ = draw_drawable();
+  draw_pass_output_ = 0;
   if (!draw_) return render();
   switch (draw_targets(draw_buffer, extra_draw_buffers, *draw_)) {
     case Target::None: use_color_buffer({}); return render();
     case Target::Front:
       draw_->front_drawn = true;
+      draw_pass_output_ = first_output_for(Target::Front, draw_buffer, extra_draw_buffers, *draw_);
       use_color_buffer(draw_->front_color());
       return render();
-    case Target::Back: use_color_buffer(draw_->framebuffer.color); return render();
+    case Target::Back:
+      draw_pass_output_ = first_output_for(Target::Back, draw_buffer, extra_draw_buffers, *draw_);
+      use_color_buffer(draw_->framebuffer.color);
+      return render();
     case Target::Both: draw_->front_drawn = true; break;
   }
   // Each fragment is tested once against depth and stencil, and written to both buffers:
@@ -123,11 +137,14 @@ void Context::render_to_draw_buffers(const std::function<void()>& render) {
   use_color_buffer(fb.color);
   renderer_->flush();
   const DepthStencilCopy before(fb);
+  draw_pass_output_ = first_output_for(Target::Back, draw_buffer, extra_draw_buffers, *draw_);
   render();
   renderer_->flush();
   before.restore(fb);
   use_color_buffer(draw_->front);
+  draw_pass_output_ = first_output_for(Target::Front, draw_buffer, extra_draw_buffers, *draw_);
   render();
+  draw_pass_output_ = 0;
 }
 
 raster::Framebuffer Context::read_framebuffer() const {

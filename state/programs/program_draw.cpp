@@ -171,7 +171,17 @@ void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Pri
                        std::span<const raster::ClipVertex> vertices, std::span<const uint32_t> indices,
                        const float* varyings) {
   if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, vertices, indices);
-  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, vertices, indices, varyings); });
+  ctx.render_to_draw_buffers([&] {
+    // gl_FragData[i] goes to the colour buffer DRAW_BUFFERi selects.
+    const int output = ctx.draw_pass_output();
+    if (!state.shader || state.shader->color_output == output)
+      return ctx.renderer().draw(state, primitive, vertices, indices, varyings);
+    raster::DrawState pass = state;
+    auto shader = std::make_shared<raster::ShaderDraw>(*state.shader);
+    shader->color_output = output;
+    pass.shader = std::move(shader);
+    ctx.renderer().draw(pass, primitive, vertices, indices, varyings);
+  });
 }
 
 }  // namespace

@@ -114,5 +114,46 @@ TEST_F(GlxDrawBuffersTest, BackLeftIsValidAndNamedOnce) {
   EXPECT_EQ(v, GL_BACK);
 }
 
+// A fragment shader's gl_FragData[i] goes to the buffer DRAW_BUFFERi selects.
+TEST_F(GlxDrawBuffersTest, FragDataGoesToItsDrawBuffer) {
+  make_current(false);
+  clear_both(0.2f, 0.2f, 0.2f);
+  auto proc = [](const char* name) { return glXGetProcAddress(reinterpret_cast<const GLubyte*>(name)); };
+  auto create_shader = reinterpret_cast<PFNGLCREATESHADERPROC>(proc("glCreateShader"));
+  auto shader_source = reinterpret_cast<PFNGLSHADERSOURCEPROC>(proc("glShaderSource"));
+  auto compile_shader = reinterpret_cast<PFNGLCOMPILESHADERPROC>(proc("glCompileShader"));
+  auto create_program = reinterpret_cast<PFNGLCREATEPROGRAMPROC>(proc("glCreateProgram"));
+  auto attach_shader = reinterpret_cast<PFNGLATTACHSHADERPROC>(proc("glAttachShader"));
+  auto link_program = reinterpret_cast<PFNGLLINKPROGRAMPROC>(proc("glLinkProgram"));
+  auto use_program = reinterpret_cast<PFNGLUSEPROGRAMPROC>(proc("glUseProgram"));
+  const char* vs = "void main() { gl_Position = ftransform(); }";
+  const char* fs = "void main() { gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0); gl_FragData[1] = vec4(0.0, 1.0, 0.0, 1.0); }";
+  const GLuint v = create_shader(GL_VERTEX_SHADER), f = create_shader(GL_FRAGMENT_SHADER);
+  shader_source(v, 1, &vs, nullptr);
+  shader_source(f, 1, &fs, nullptr);
+  compile_shader(v);
+  compile_shader(f);
+  const GLuint program = create_program();
+  attach_shader(program, v);
+  attach_shader(program, f);
+  link_program(program);
+  use_program(program);
+  const GLenum front_then_back[] = {GL_FRONT_LEFT, GL_BACK_LEFT};
+  draw_buffers(2, front_then_back);
+  corner_quad(1, 1, 1, 0);
+  EXPECT_EQ(read_from(GL_FRONT, 5, 5), kRed);
+  EXPECT_EQ(read_from(GL_BACK, 5, 5), kGreen);
+  EXPECT_EQ(read_from(GL_BACK, 15, 15), kGrey);
+  const GLenum back_only_second[] = {GL_NONE, GL_BACK_LEFT};
+  draw_buffers(2, back_only_second);
+  clear_both(0.2f, 0.2f, 0.2f);
+  draw_buffers(2, back_only_second);
+  corner_quad(1, 1, 1, 0);
+  EXPECT_EQ(read_from(GL_BACK, 5, 5), kGreen);
+  EXPECT_EQ(read_from(GL_FRONT, 5, 5), kGrey);
+  use_program(0);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda_test
