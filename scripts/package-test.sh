@@ -3,7 +3,10 @@
 # archive): installs it beside Mesa, runs glxinfo (under Xvfb) and eglinfo through libglvnd with
 # Pineda as the vendor, checks that Mesa stays the default and its files untouched, removes the
 # package and checks that the system is as it was.
-#   scripts/package-test.sh [BUILD_DIR]   (default build-deb; configured for the prefix /usr)
+#   scripts/package-test.sh [BUILD_DIR]   (default build-deb, libraries only)
+# A BUILD_DIR that is already built (scripts/test.sh passes its own) is reused: it is
+# configured for the prefix /usr only while the package is made (the prefix changes no
+# compiled file, only where files install), then given its own prefix back.
 # The clean root is a copy of /var/tmp/fresh-bookworm (made by debootstrap --variant=minbase
 # if missing, as ../shared/tools/fresh-machine.sh makes it).
 set -euo pipefail
@@ -16,12 +19,17 @@ fail() {
   exit 1
 }
 log=$build/package-build.log
+own_prefix=$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' "$build/CMakeCache.txt" 2> /dev/null || true)
+new_build=()
+[ -n "$own_prefix" ] || new_build=(-DCMAKE_BUILD_TYPE=Release -DPINEDA_TESTS=OFF)
 mkdir -p "$build"
 {
-  cmake -S "$root_dir" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr \
-    -DPINEDA_TESTS=OFF &&
+  cmake -S "$root_dir" -B "$build" -DCMAKE_INSTALL_PREFIX=/usr "${new_build[@]}" &&
     cmake --build "$build" -j"$(nproc)" &&
-    (cd "$build" && rm -f pineda_*.deb && cpack -G DEB)
+    (cd "$build" && rm -f pineda_*.deb && cpack -G DEB) &&
+    if [ -n "$own_prefix" ] && [ "$own_prefix" != /usr ]; then
+      cmake -S "$root_dir" -B "$build" -DCMAKE_INSTALL_PREFIX="$own_prefix"
+    fi
 } > "$log" 2>&1 || { tail -n 30 "$log"; fail "building the package (log: $log)"; }
 deb=$(ls "$build"/pineda_*_amd64.deb)
 echo "== package: $deb"
@@ -61,7 +69,7 @@ in_root() {
 snapshot='find / -xdev \( -path /proc -o -path /sys -o -path /dev -o -path /tmp -o -path /root \
   -o -path /run -o -path /var/lib/dpkg -o -path /var/lib/apt -o -path /var/log \
   -o -path /var/cache \) -prune -o -print | sort'
-xvfb='xvfb-run -a -s "-screen 0 1280x1024x24"'
+xvfb='xvfb-run -a -s "-screen 0 1280x1024x24 -noreset"'
 glvnd_packages='libglvnd0 libgl1 libglx0 libegl1 libglx-mesa0 libegl-mesa0 libgl1-mesa-dri'
 
 echo "== clean Debian 12 root: apt-get install mesa-utils xvfb xauth"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds Pineda and runs every test: the unit and end-to-end tests (ctest), the piglit
-# groups Pineda claims against conformance/expectations/, then the unit tests again built
-# with AddressSanitizer and UndefinedBehaviorSanitizer.
+# groups Pineda claims against conformance/expectations/, the Debian package in a clean root,
+# then the unit tests again built with AddressSanitizer and UndefinedBehaviorSanitizer.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -12,6 +12,9 @@ ctest --test-dir "$root/build" -j"$jobs" --output-on-failure
 timeout 600 python3 "$root/conformance/run.py" --platform glx --lib-dir "$root/build/lib" \
   --group 'spec@!opengl 1.0' --group 'spec@!opengl 1.1' --group 'spec@!opengl 1.2' \
   --group 'spec@!opengl 1.3' --group 'spec@!opengl 1.4' --group 'spec@!opengl 1.5' --expected-total 373
+
+# The Debian package, made from the build above, tried in a clean Debian 12 root (as root).
+"$root/scripts/package-test.sh" "$root/build"
 
 "$root/scripts/build.sh" "$root/build-asan" -DPINEDA_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
