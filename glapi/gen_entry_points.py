@@ -71,6 +71,11 @@ def read_commands(xml_path):
     return commands
 
 
+# Enum values an ES context takes beyond its feature and extensions. GL_MAX_CLIP_PLANES:
+# piglit's shader_runner_gles2 asks every ES 2.0 context for it (state/es2/es2_get.cpp).
+EXTRA_ENUMS = {"gles1": [], "gles2": ["GL_MAX_CLIP_PLANES"]}
+
+
 def read_es_api(xml_path, api, feature, extensions):
     """The commands and enum values an OpenGL ES context offers: gl.xml's `feature` of `api`
     ("gles1": GL_VERSION_ES_CM_1_0, "gles2": GL_ES_VERSION_2_0 only, not the later versions)
@@ -93,7 +98,7 @@ def read_es_api(xml_path, api, feature, extensions):
         if ext is None or api not in ext.get("supported").split("|"):
             sys.exit(f"{name}: not a {api} extension of the registry")
         requires += [r for r in ext.findall("require") if r.get("api") in (None, api)]
-    commands, enums = set(), set()
+    commands, enums = set(), {values[name] for name in EXTRA_ENUMS[api]}
     for r in requires:
         commands |= {c.get("name") for c in r.findall("command")}
         enums |= {values[e.get("name")] for e in r.findall("enum")}

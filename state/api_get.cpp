@@ -68,6 +68,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   const Drawable* d = ctx.draw_drawable();
   const int stencil_bits = d ? d->framebuffer.stencil.bits : 0;
   const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (ctx.es2() && query_es2(ctx, pname, out)) return true;
   if (ArrayField field; const ClientArray* a = client_array(ctx, pname, field)) {
     out = field == ArrayField::Type ? enums({double(a->type)})
                                     : ints({double(field == ArrayField::Size ? a->size : a->stride)});
@@ -247,7 +248,6 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_debug(ctx, pname, out)) return true;
   if (query_program_state(ctx, pname, out)) return true;
   if (ctx.es1() && query_es1(ctx, pname, out)) return true;
-  if (ctx.es2() && query_es2(ctx, pname, out)) return true;
   // Every capability is also a boolean state.
   bool* flag = server_capability(ctx, pname);
   if (!flag) flag = client_capability(ctx, pname);

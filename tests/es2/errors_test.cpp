@@ -66,6 +66,10 @@ TEST_F(Es2Errors, EnumsOutsideES2AreInvalidEnum) {
   glGetIntegerv(0x0BA0 /* GL_MATRIX_MODE */, &v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   EXPECT_EQ(v, -7);
+  // MAX_CLIP_DISTANCES_EXT's value, which piglit's shader_runner_gles2 asks for: 0, no error.
+  glGetIntegerv(0x0D32 /* GL_MAX_CLIP_PLANES */, &v);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(v, 0);
   glBindTexture(0x0DE0 /* GL_TEXTURE_1D */, 1);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glDrawArrays(0x0007 /* GL_QUADS */, 0, 4);
@@ -193,12 +197,14 @@ TEST_F(Es2Errors, ShadersAreGlslEs100) {
                      "#extension GL_OES_standard_derivatives : require\nprecision mediump float;\n"
                      "void main() { gl_FragColor = vec4(dFdx(gl_FragCoord.x)); }"),
             GL_TRUE);
-  const GLuint vs = glCreateShader(GL_VERTEX_SHADER);
+  const GLuint vs = glCreateShader(GL_VERTEX_SHADER), vs2 = glCreateShader(GL_VERTEX_SHADER);
   const char* source = "void main() { gl_Position = vec4(0.0); }";
   glShaderSource(vs, 1, &source, nullptr);
   glCompileShader(vs);
   const GLuint program = glCreateProgram();
   glAttachShader(program, vs);
+  glAttachShader(program, vs2);  // ES 2.0: one shader of each type
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glLinkProgram(program);
   GLint linked = -1;
   glGetProgramiv(program, GL_LINK_STATUS, &linked);
