@@ -214,3 +214,55 @@ TEST_F(Es2Errors, ShadersAreGlslEs100) {
 
 }  // namespace
 }  // namespace pineda::es2_test
+
+namespace pineda::es2_test {
+namespace {
+
+TEST(Es2Extensions, DiscardFramebufferErrorsAndContents) {
+  Es2Context context(4, 4);
+  ASSERT_TRUE(context.ok()) << context.error();
+  auto discard = reinterpret_cast<PFNGLDISCARDFRAMEBUFFEREXTPROC>(eglGetProcAddress("glDiscardFramebufferEXT"));
+  ASSERT_NE(discard, nullptr);
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const GLenum window[] = {GL_COLOR_EXT, GL_DEPTH_EXT, GL_STENCIL_EXT};
+  discard(GL_FRAMEBUFFER, 3, window);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(read_pixel(1, 1), 0x00FF00FFu);  // a hint: the contents stay
+  discard(GL_RENDERBUFFER, 1, window);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  discard(GL_FRAMEBUFFER, -1, window);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  const GLenum attachment[] = {GL_COLOR_ATTACHMENT0};
+  discard(GL_FRAMEBUFFER, 1, attachment);  // an object's name while the window is bound
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  GLuint fbo = 0;
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  discard(GL_FRAMEBUFFER, 1, attachment);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  discard(GL_FRAMEBUFFER, 1, window);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+}
+
+// GLSL ES 1.00 4.6.4: gl_FragCoord invariant needs gl_Position invariant; gl_PointCoord needs
+// gl_PointSize; gl_FrontFacing never.
+TEST(Es2Extensions, InvariantBuiltinsLinkage) {
+  Es2Context context(4, 4);
+  ASSERT_TRUE(context.ok()) << context.error();
+  const char* plain_vs = "void main() { gl_PointSize = 1.0; gl_Position = vec4(0.0); }";
+  const char* invariant_vs = "invariant gl_Position; void main() { gl_Position = vec4(0.0); }";
+  const char* fragcoord_fs =
+      "invariant gl_FragCoord; precision mediump float; void main() { gl_FragColor = vec4(gl_FragCoord.x); }";
+  const char* pointcoord_fs =
+      "invariant gl_PointCoord; precision mediump float; void main() { gl_FragColor = vec4(gl_PointCoord.x); }";
+  const char* plain_fs = "precision mediump float; void main() { gl_FragColor = vec4(gl_FragCoord.x); }";
+  EXPECT_EQ(build_program(plain_vs, fragcoord_fs, {}), 0u);
+  EXPECT_NE(build_program(invariant_vs, fragcoord_fs, {}), 0u);
+  EXPECT_EQ(build_program(plain_vs, pointcoord_fs, {}), 0u);
+  EXPECT_NE(build_program(plain_vs, plain_fs, {}), 0u);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+}  // namespace
+}  // namespace pineda::es2_test
