@@ -266,7 +266,9 @@ def es_enum_table(kind, enums):
 def gl_outputs(selected, es_commands, es_enums, es_extensions):
     h = [HEADER_NOTE, "#pragma once", "#include <GL/gl.h>", "#include <GL/glext.h>", "#include <cstddef>", "",
          "// OpenGL ES 1.1's type (GLES/gl.h), which GL/glext.h does not define.",
-         "typedef khronos_int32_t GLclampx;", "",
+         "typedef khronos_int32_t GLclampx;",
+         "// GL_KHR_debug's callback type in OpenGL ES (GLES2/gl2ext.h): the same as GLDEBUGPROC.",
+         "typedef GLDEBUGPROC GLDEBUGPROCKHR;", "",
          "namespace pineda { class Context; }", "", "namespace pineda::gl {", ""]
     for cmd, flags in selected:
         params = ", ".join(["Context& ctx"] + [d for d, _ in cmd.params])

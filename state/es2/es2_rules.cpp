@@ -42,6 +42,7 @@ bool es2_capability(GLenum cap) {
   switch (cap) {
     case GL_BLEND: case GL_CULL_FACE: case GL_DEPTH_TEST: case GL_DITHER: case GL_POLYGON_OFFSET_FILL:
     case GL_SAMPLE_ALPHA_TO_COVERAGE: case GL_SAMPLE_COVERAGE: case GL_SCISSOR_TEST: case GL_STENCIL_TEST:
+    case GL_DEBUG_OUTPUT: case GL_DEBUG_OUTPUT_SYNCHRONOUS:  // GL_KHR_debug
       return true;
     default: return false;
   }
@@ -64,14 +65,12 @@ bool es2_tex_image_allowed(Context& ctx, GLint internalformat, GLint border, GLe
     ctx.record_error(GL_INVALID_ENUM, "format or type is not one OpenGL ES 2.0 takes");
     return false;
   }
-  if (!known_format(GLenum(internalformat))) {
-    ctx.record_error(GL_INVALID_VALUE, "internalformat is not one OpenGL ES 2.0 takes");
-    return false;
-  }
   if (border != 0) {
     ctx.record_error(GL_INVALID_VALUE, "border is not 0");
     return false;
   }
+  // Also for the sized formats of later versions (Mesa's order; piglit's
+  // oes_packed_depth_stencil-depth-stencil-texture_gles2 expects it for DEPTH24_STENCIL8).
   if (GLenum(internalformat) != format) {
     ctx.record_error(GL_INVALID_OPERATION, "internalformat differs from format (OpenGL ES 2.0 3.7.1)");
     return false;

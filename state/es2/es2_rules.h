@@ -15,7 +15,8 @@ class Context;
 // glEnable/glDisable/glIsEnabled: ES 2.0 table 6.11's nine capabilities.
 bool es2_capability(GLenum cap);
 
-// glTexImage2D: false (error recorded) unless `internalformat` equals `format` and the pair
+// glTexImage2D: false (error recorded) unless `internalformat` equals `format` (else
+// INVALID_OPERATION, as Mesa, also for sized formats) and the pair
 // format/type is one ES 2.0 lists (table 3.4, OES_depth_texture, OES_packed_depth_stencil,
 // EXT_texture_format_BGRA8888); border must be 0.
 bool es2_tex_image_allowed(Context& ctx, GLint internalformat, GLint border, GLenum format, GLenum type);

@@ -69,6 +69,7 @@ void DeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers) {
     if (fs.renderbuffer_binding == name) fs.renderbuffer_binding = 0;
     if (it->second) detach_deleted(ctx, GL_RENDERBUFFER, name);
     fs.renderbuffers.erase(name);
+    ctx.debug.forget_label(GL_RENDERBUFFER, name);
   }
 }
 

@@ -84,6 +84,7 @@ void DeleteProgram(Context& ctx, GLuint program) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
   p->delete_pending = true;
+  ctx.debug.forget_label(GL_PROGRAM, program);
   destroy_program_if_unused(ctx, program);
 }
 

@@ -97,7 +97,7 @@ TEST_F(Es2Errors, TextureFormatRules) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB, 2, 2, 0, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, pixels);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));  // not a pair of table 3.4
   glTexImage2D(GL_TEXTURE_2D, 0, 0x8058 /* GL_RGBA8 */, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));  // sized internal formats are ES 3.0's
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));  // sized internal formats are ES 3.0's
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));  // border
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_FLOAT, pixels);
