@@ -8,8 +8,8 @@ inline constexpr int kMaxGLMajor = 2;
 inline constexpr int kMaxGLMinor = 0;
 // OpenGL ES 1.1 (the common profile) through EGL: EGL_OPENGL_ES_API, EGL_OPENGL_ES_BIT.
 inline constexpr bool kHasGLES1 = true;
-// 2 offers ES 2.0 through EGL (EGL_OPENGL_ES2_BIT) once it exists.
-inline constexpr int kMaxGLESMajor = 1;
+// OpenGL ES 2.0 through EGL: CONTEXT_CLIENT_VERSION 2, EGL_OPENGL_ES2_BIT.
+inline constexpr int kMaxGLESMajor = 2;
 
 inline constexpr bool kHasGLES2 = kMaxGLESMajor >= 2;
 inline constexpr bool kHasGLES = kHasGLES1 || kHasGLES2;

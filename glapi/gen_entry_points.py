@@ -6,7 +6,8 @@ the ones Pineda implements, so they are the only ones exported or returned by
 GetProcAddress. Every prototype comes from gl.xml / egl.xml.
 
 An OpenGL ES 1.1 context reaches only the functions of gl.xml's GL_VERSION_ES_CM_1_0 feature
-and of the extensions in es1_extensions.txt, and only with the enums they define; any other
+and of the extensions in es1_extensions.txt, and only with the enums they define; an OpenGL ES
+2.0 context likewise GL_ES_VERSION_2_0 and es2_extensions.txt; any other
 call records GL_INVALID_OPERATION (what Mesa does for a function outside the context's API),
 any other enum value GL_INVALID_ENUM. Functions flagged es_only are refused the same way by
 desktop GL contexts.
@@ -70,26 +71,34 @@ def read_commands(xml_path):
     return commands
 
 
-def read_es1_api(xml_path, extensions):
-    """The commands and enum values an ES 1.1 context offers: the GL_VERSION_ES_CM_1_0
-    feature and the listed extensions' gles1 requirements."""
+# Enum values an ES context takes beyond its feature and extensions. GL_MAX_CLIP_PLANES:
+# piglit's shader_runner_gles2 asks every ES 2.0 context for it (state/es2/es2_get.cpp).
+EXTRA_ENUMS = {"gles1": [], "gles2": ["GL_MAX_CLIP_PLANES"]}
+
+
+def read_es_api(xml_path, api, feature, extensions):
+    """The commands and enum values an OpenGL ES context offers: gl.xml's `feature` of `api`
+    ("gles1": GL_VERSION_ES_CM_1_0, "gles2": GL_ES_VERSION_2_0 only, not the later versions)
+    and the listed extensions' requirements for that api."""
     root = ET.parse(xml_path).getroot()
     values = {}
     for group in root.findall("enums"):
         for e in group.findall("enum"):
-            if e.get("api") in (None, "gles1") and e.get("name") not in values:
+            if e.get("api") in (None, api) and e.get("name") not in values:
                 values[e.get("name")] = int(e.get("value"), 0)
     requires = []
     for f in root.findall("feature"):
-        if f.get("api") == "gles1":
-            requires += f.findall("require")
+        if f.get("api") == api and f.get("name") == feature:
+            requires += [r for r in f.findall("require") if r.get("api") in (None, api)]
+    if not requires:
+        sys.exit(f"{feature}: not a feature of {api} in the registry")
     known = {e.get("name"): e for e in root.find("extensions")}
     for name in extensions:
         ext = known.get(name)
-        if ext is None or "gles1" not in ext.get("supported").split("|"):
-            sys.exit(f"{name}: not a gles1 extension of the registry")
-        requires += [r for r in ext.findall("require") if r.get("api") in (None, "gles1")]
-    commands, enums = set(), set()
+        if ext is None or api not in ext.get("supported").split("|"):
+            sys.exit(f"{name}: not a {api} extension of the registry")
+        requires += [r for r in ext.findall("require") if r.get("api") in (None, api)]
+    commands, enums = set(), {values[name] for name in EXTRA_ENUMS[api]}
     for r in requires:
         commands |= {c.get("name") for c in r.findall("command")}
         enums |= {values[e.get("name")] for e in r.findall("enum")}
@@ -176,16 +185,21 @@ def impl_name(cmd, flags):
     return cmd.name[2:]
 
 
-def api_gate(cmd, flags, es1_commands):
-    """The lines that refuse a call the context's API does not have."""
+ES_APIS = (("es1", "OpenGL ES 1.1"), ("es2", "OpenGL ES 2.0"))
+
+
+def api_gate(cmd, flags, es_commands):
+    """The lines that refuse a call the context's API does not have. `es_commands` maps
+    "es1"/"es2" to the commands of that API."""
     lines = []
-    if cmd.name not in es1_commands:
-        lines += ["  if (ctx->es1()) {", '    ctx->record_error(GL_INVALID_OPERATION, "not a command of OpenGL ES 1.1");', f"    {zero_return(cmd)}", "  }"]
-    else:
-        enum_params = [n for d, n in cmd.params if d.split()[0] == "GLenum" and "*" not in d]
-        if enum_params:
-            test = " || ".join(f"!pineda::glapi::es1_enum({n})" for n in enum_params)
-            lines += [f"  if (ctx->es1() && ({test})) {{", "    ctx->record_error(GL_INVALID_ENUM, \"an enum OpenGL ES 1.1 does not have\");",
+    enum_params = [n for d, n in cmd.params if d.split()[0] == "GLenum" and "*" not in d]
+    for kind, title in ES_APIS:
+        if cmd.name not in es_commands[kind]:
+            lines += [f"  if (ctx->{kind}()) {{", f'    ctx->record_error(GL_INVALID_OPERATION, "not a command of {title}");',
+                      f"    {zero_return(cmd)}", "  }"]
+        elif enum_params:
+            test = " || ".join(f"!pineda::glapi::{kind}_enum({n})" for n in enum_params)
+            lines += [f"  if (ctx->{kind}() && ({test})) {{", f'    ctx->record_error(GL_INVALID_ENUM, "an enum {title} does not have");',
                       f"    {zero_return(cmd)}", "  }"]
     if "es_only" in flags:
         lines += ["  if (!ctx->attribs().gles) {", '    ctx->record_error(GL_INVALID_OPERATION, "an OpenGL ES command");',
@@ -233,8 +247,8 @@ def proc_table(function_name, commands):
 HEADER_NOTE = "// Generated by glapi/gen_entry_points.py from the Khronos registry. Do not edit.\n"
 
 
-def es1_enum_table(enums):
-    lines = ["bool es1_enum(GLenum value) {", "  static const GLenum kValues[] = {"]
+def es_enum_table(kind, enums):
+    lines = [f"bool {kind}_enum(GLenum value) {{", "  static const GLenum kValues[] = {"]
     row = []
     for v in sorted(enums):
         row.append(f"0x{v:04X}")
@@ -249,10 +263,12 @@ def es1_enum_table(enums):
     return "\n".join(lines)
 
 
-def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
+def gl_outputs(selected, es_commands, es_enums, es_extensions):
     h = [HEADER_NOTE, "#pragma once", "#include <GL/gl.h>", "#include <GL/glext.h>", "#include <cstddef>", "",
          "// OpenGL ES 1.1's type (GLES/gl.h), which GL/glext.h does not define.",
-         "typedef khronos_int32_t GLclampx;", "",
+         "typedef khronos_int32_t GLclampx;",
+         "// GL_KHR_debug's callback type in OpenGL ES (GLES2/gl2ext.h): the same as GLDEBUGPROC.",
+         "typedef GLDEBUGPROC GLDEBUGPROCKHR;", "",
          "namespace pineda { class Context; }", "", "namespace pineda::gl {", ""]
     for cmd, flags in selected:
         params = ", ".join(["Context& ctx"] + [d for d, _ in cmd.params])
@@ -264,10 +280,12 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
     h += ["", "// Values a parameter-vector call (glLightfv, glTexParameterfv...) reads for `pname`.",
           "size_t list_param_count(GLenum pname);", "", "}  // namespace pineda::gl", "",
           "namespace pineda::glapi {", "",
-          "// Whether an OpenGL ES 1.1 context knows the enum value (gl.xml, es1_extensions.txt).",
+          "// Whether an OpenGL ES 1.1 / 2.0 context knows the enum value (gl.xml, es1/es2_extensions.txt).",
           "bool es1_enum(GLenum value);",
-          "// GL_EXTENSIONS of an OpenGL ES 1.1 context (es1_extensions.txt), with a trailing space.",
-          f'inline constexpr const char* kES1Extensions = "{" ".join(es1_extensions)} ";',
+          "bool es2_enum(GLenum value);",
+          "// GL_EXTENSIONS of an OpenGL ES 1.1 / 2.0 context (es1/es2_extensions.txt), with a trailing space.",
+          f'inline constexpr const char* kES1Extensions = "{" ".join(es_extensions["es1"])} ";',
+          f'inline constexpr const char* kES2Extensions = "{" ".join(es_extensions["es2"])} ";',
           "", "}  // namespace pineda::glapi", ""]
 
     c = [HEADER_NOTE, "#include <algorithm>", "#include <cstring>", "#include <iterator>", "#include <new>", "#include <stdexcept>", "",
@@ -282,7 +300,7 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
         c.append(f"  if (!ctx) {zero_return(cmd)}")
         c.append("  const auto shared_lock = pineda::lock_if_shared(*ctx->share_group());")
         c.append(f'  ctx->current_call = "{cmd.name}";')
-        body = api_gate(cmd, flags, es1_commands)
+        body = api_gate(cmd, flags, es_commands)
         body += list_recording(cmd, flags)
         if "inside_begin_end" not in flags:
             body.append("  if (ctx->inside_begin_end()) {")
@@ -301,7 +319,8 @@ def gl_outputs(selected, es1_commands, es1_enums, es1_extensions):
         c.append("}")
         c.append("")
     c += ["namespace pineda::glapi {", "", proc_table("lookup_gl_proc", [cmd for cmd, _ in selected]),
-          "", es1_enum_table(es1_enums), "", "}  // namespace pineda::glapi", ""]
+          "", es_enum_table("es1", es_enums["es1"]), "", es_enum_table("es2", es_enums["es2"]), "",
+          "}  // namespace pineda::glapi", ""]
     return "\n".join(h), "\n".join(c)
 
 
@@ -346,20 +365,24 @@ def main():
     ap.add_argument("--gl-list", required=True)
     ap.add_argument("--egl-list", required=True)
     ap.add_argument("--es1-extensions", required=True, help="the extensions of OpenGL ES 1.1 contexts")
+    ap.add_argument("--es2-extensions", required=True, help="the extensions of OpenGL ES 2.0 contexts")
     ap.add_argument("--out", required=True, help="directory for the generated files")
     args = ap.parse_args()
 
     gl = select(read_commands(args.gl_xml), read_list(args.gl_list), args.gl_list, "gl",
                 {"inside_begin_end", "not_compiled", "compile_custom", "es_only"})
-    es1_extensions = [name for name, _, _ in read_list(args.es1_extensions)]
-    es1_commands, es1_enums = read_es1_api(args.gl_xml, es1_extensions)
-    missing = sorted(es1_commands - {cmd.name for cmd, _ in gl})
-    if missing:
-        sys.exit(f"OpenGL ES 1.1 functions not in {args.gl_list}: {' '.join(missing)}")
+    es_extensions, es_commands, es_enums = {}, {}, {}
+    for kind, api, feature, path in (("es1", "gles1", "GL_VERSION_ES_CM_1_0", args.es1_extensions),
+                                     ("es2", "gles2", "GL_ES_VERSION_2_0", args.es2_extensions)):
+        es_extensions[kind] = [name for name, _, _ in read_list(path)]
+        es_commands[kind], es_enums[kind] = read_es_api(args.gl_xml, api, feature, es_extensions[kind])
+        missing = sorted(es_commands[kind] - {cmd.name for cmd, _ in gl})
+        if missing:
+            sys.exit(f"{feature} functions not in {args.gl_list}: {' '.join(missing)}")
     egl = select(read_commands(args.egl_xml), read_list(args.egl_list), args.egl_list, "egl",
                  set())
     os.makedirs(args.out, exist_ok=True)
-    gl_h, gl_c = gl_outputs(gl, es1_commands, es1_enums, es1_extensions)
+    gl_h, gl_c = gl_outputs(gl, es_commands, es_enums, es_extensions)
     egl_h, egl_c = egl_outputs(egl)
     write_if_changed(os.path.join(args.out, "gl_entry_points.h"), gl_h)
     write_if_changed(os.path.join(args.out, "gl_entry_points.cpp"), gl_c)

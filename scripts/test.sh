@@ -12,6 +12,9 @@ ctest --test-dir "$root/build" -j"$jobs" --output-on-failure
 timeout 600 python3 "$root/conformance/run.py" --platform glx --lib-dir "$root/build/lib" \
   --group 'spec@!opengl 1.0' --group 'spec@!opengl 1.1' --group 'spec@!opengl 1.2' \
   --group 'spec@!opengl 1.3' --group 'spec@!opengl 1.4' --group 'spec@!opengl 1.5' --expected-total 373
+# OpenGL ES 2.0 and GLSL ES 1.00, headless (about 10 s on 2 cores).
+timeout 300 python3 "$root/conformance/run.py" --platform surfaceless_egl --lib-dir "$root/build/lib" \
+  --group 'spec@!opengl es 2.0' --group 'spec@glsl-es-1.00' --expected-total 105
 
 # The Debian package, made from the build above, tried in a clean Debian 12 root (as root).
 "$root/scripts/package-test.sh" "$root/build"

@@ -6,6 +6,7 @@
 
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include "shader/es_invariance.h"
 #include "shader/front_end.h"
 #include "shader/interface.h"
 #include "shader/linked_program.h"
@@ -135,6 +136,10 @@ bool parse_link_lower(const CompiledShader* vertex, const CompiledShader* fragme
   const bool linked = program.link(EShMsgDefault);
   info_log = program.getInfoLog();
   if (!linked) return false;
+  const bool es = (vertex ? vertex->language : fragment->language) == Language::Es100;
+  if (es && !es_invariance_ok(vs ? program.getIntermediate(EShLangVertex) : nullptr,
+                              fs ? program.getIntermediate(EShLangFragment) : nullptr, info_log))
+    return false;
   iface.has_vertex_shader = vs != nullptr;
   iface.has_fragment_shader = fs != nullptr;
   std::string error;

@@ -36,7 +36,10 @@ bool valid_mode(Context& ctx, GLenum mode) {
   return false;
 }
 
-bool can_fetch(const Context& ctx) { return ctx.vertex_array.active() || ctx.programs.arrays[0].active(); }
+// OpenGL ES 2.0: attribute 0 is not special, a program draws with any arrays or none.
+bool can_fetch(const Context& ctx) {
+  return ctx.vertex_array.active() || ctx.programs.arrays[0].active() || (ctx.es2() && ctx.programs.active());
+}
 
 template <typename Index>
 void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {

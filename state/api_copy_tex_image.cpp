@@ -5,6 +5,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "raster/color_reduction.h"
+#include "state/es2/es2_rules.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
 #include "state/limits.h"
@@ -146,6 +147,9 @@ void with_tight_unpack(Context& ctx, Upload upload) {
 
 void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                     GLsizei width, GLsizei height, GLint border) {
+  if (ctx.es2() && !es2_copy_tex_image_format(internalformat))
+    return ctx.record_error(GL_INVALID_VALUE, "internalformat is not a base format of OpenGL ES 2.0");
+  if (ctx.es2() && border != 0) return ctx.record_error(GL_INVALID_VALUE, "border is not 0");
   if (!valid_copy_target(ctx, target, 2) || !valid_copy_internal_format(ctx, internalformat) ||
       !valid_copy_size(ctx, width, height))
     return;
@@ -167,6 +171,14 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
   }
   if (!has_read_color(ctx)) return;
   const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
+  if (ctx.es2()) {
+    // ES 2.0's glTexImage2D takes only format == internalformat: the pixels are passed in it.
+    const std::vector<uint8_t> base = es2_base_format_pixels(pixels, internalformat);
+    return with_tight_unpack(ctx, [&] {
+      TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, internalformat, GL_UNSIGNED_BYTE,
+                 base.data());
+    });
+  }
   with_tight_unpack(ctx, [&] {
     TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
                pixels.data());

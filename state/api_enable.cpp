@@ -3,6 +3,7 @@
 #include "state/capabilities.h"
 #include "state/color_material.h"
 #include "state/es1/es1_enums.h"
+#include "state/es2/es2_rules.h"
 #include "state/context.h"
 #include "state/programs/program_get.h"
 
@@ -22,6 +23,7 @@ bool is_unrendered_cap(GLenum cap) {
 
 bool* server_capability(Context& ctx, GLenum cap) {
   raster::DrawState& s = ctx.draw_state;
+  if (ctx.es2() && !es2_capability(cap)) return nullptr;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + raster::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
     case GL_ALPHA_TEST: return &s.alpha_test;
@@ -59,6 +61,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
 }
 
 bool* client_capability(Context& ctx, GLenum array) {
+  if (ctx.es2()) return nullptr;  // no client arrays but the generic ones
   switch (array) {
     case GL_VERTEX_ARRAY: return &ctx.vertex_array.enabled;
     case GL_COLOR_ARRAY: return &ctx.color_array.enabled;

@@ -68,6 +68,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   const Drawable* d = ctx.draw_drawable();
   const int stencil_bits = d ? d->framebuffer.stencil.bits : 0;
   const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (ctx.es2() && query_es2(ctx, pname, out)) return true;
   if (ArrayField field; const ClientArray* a = client_array(ctx, pname, field)) {
     out = field == ArrayField::Type ? enums({double(a->type)})
                                     : ints({double(field == ArrayField::Size ? a->size : a->stride)});
@@ -273,6 +274,8 @@ void get(Context& ctx, GLenum pname, T* params, Convert convert) {
 std::string version_string(const Context& ctx) {
   // OpenGL ES 1.1, 6.1.5: "OpenGL ES-CM 1.1" (the common profile), then vendor information.
   if (ctx.es1()) return std::string("OpenGL ES-CM 1.1 Pineda ") + PINEDA_VERSION_STRING;
+  // OpenGL ES 2.0, 6.1.5: "OpenGL ES N.M", then vendor information.
+  if (ctx.es2()) return std::string("OpenGL ES 2.0 Pineda ") + PINEDA_VERSION_STRING;
   return std::to_string(ctx.attribs().major) + "." + std::to_string(ctx.attribs().minor) + " Pineda " +
          PINEDA_VERSION_STRING;
 }
@@ -321,8 +324,10 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
         ctx.record_error(GL_INVALID_ENUM);
         return nullptr;
       }
-      return reinterpret_cast<const GLubyte*>("1.20");
+      // OpenGL ES 2.0, 6.1.5: "OpenGL ES GLSL ES N.M", then vendor information.
+      return reinterpret_cast<const GLubyte*>(ctx.es2() ? "OpenGL ES GLSL ES 1.00" : "1.20");
     case GL_EXTENSIONS:
+      if (ctx.es2()) return reinterpret_cast<const GLubyte*>(glapi::kES2Extensions);
       return reinterpret_cast<const GLubyte*>(ctx.es1() ? glapi::kES1Extensions : kExtensions.c_str());
     default: ctx.record_error(GL_INVALID_ENUM); return nullptr;
   }

@@ -5,6 +5,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "raster/color_reduction.h"
+#include "state/es2/es2_rules.h"
 #include "state/bitmap_layout.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
@@ -82,6 +83,9 @@ void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pna
 void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                 void* pixels) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (ctx.es2()) {
+    if (const GLenum error = es2_read_pixels_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
+  }
   if (!check_read_framebuffer(ctx)) return;
   if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();

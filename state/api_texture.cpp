@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "glapi/gl_entry_points.h"
+#include "state/es2/es2_rules.h"
 #include "state/context.h"
 #include "state/es1/es1_enums.h"
 #include "state/framebuffers/packed_depth_stencil.h"
@@ -260,6 +261,8 @@ bool known_pname(const Context& ctx, GLenum pname) { return pname != GL_TEXTURE_
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
   if (!tex || !known_pname(ctx, pname)) return ctx.record_error(GL_INVALID_ENUM);
+  if (ctx.es2() && !es2_tex_parameter_allowed(pname, static_cast<GLenum>(v[0])))
+    return ctx.record_error(GL_INVALID_ENUM, "not a wrap mode of OpenGL ES 2.0");
   if (const GLenum error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
 
@@ -396,6 +399,10 @@ void TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, 
 
 void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                 GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (ctx.es2()) {
+    if (!es2_tex_image_allowed(ctx, internalformat, border, format, type)) return;
+    internalformat = es2_storage_format(internalformat);
+  }
   tex_image(ctx, target, 2, level, internalformat, width, height, 1, border, format, type, pixels);
 }
 
@@ -420,6 +427,7 @@ void TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLin
                    GLsizei height, GLenum format, GLenum type, const void* pixels) {
   ImageTarget t;
   if (!image_target_of(target, 2, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  if (ctx.es2() && !es2_tex_sub_image_allowed(ctx, format, type)) return;
   tex_sub_image(ctx, t, level, xoffset, yoffset, 0, width, height, 1, format, type, pixels);
 }
 

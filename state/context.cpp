@@ -25,6 +25,11 @@ Context::Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> shar
   lighting.lights[0].diffuse = glm::vec4(1);
   lighting.lights[0].specular = glm::vec4(1);
   draw_state.point_params.size_max = kPointSizeRange[1];
+  if (es2()) {
+    // OpenGL ES 2.0 points are always sprites sized by gl_PointSize (ES 2.0 3.3).
+    programs.point_size_from_shader = true;
+    draw_state.point_params.sprite.enabled = true;
+  }
   share_group_->members.fetch_add(1, std::memory_order_acq_rel);
 }
 

@@ -104,6 +104,9 @@ class Context {
   const std::shared_ptr<ShareGroup>& share_group() const { return share_group_; }
   // An OpenGL ES 1.x context: the ES 1.1 subset of the API, with its enums (glapi/).
   bool es1() const { return attribs_.gles && attribs_.major == 1; }
+  // An OpenGL ES 2.0 context: the ES 2.0 subset (glapi/), shaders only (no fixed function),
+  // GLSL ES 1.00, generic attribute 0 not the position (state/es2/).
+  bool es2() const { return attribs_.gles && attribs_.major >= 2; }
 
   // Window-system binding (driver/). A null drawable is a surfaceless context.
   void make_current(Drawable* draw, Drawable* read);

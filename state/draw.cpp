@@ -92,6 +92,9 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
   if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
+  // OpenGL ES 2.0 has no fixed function: without a program the results are undefined (ES 2.0
+  // 2.15); Pineda draws nothing.
+  if (ctx.es2()) return;
   const int texture_units = snapshot_textures(ctx);
   ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
   // Feedback reports unit 0's coordinates even when no texture is enabled.

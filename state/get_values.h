@@ -31,6 +31,9 @@ bool query_get_values(Context& ctx, unsigned pname, GetValues& out);
 // The queries only OpenGL ES 1.1 has (state/es1/es1_get.cpp).
 bool query_es1(Context& ctx, unsigned pname, GetValues& out);
 
+// The queries only OpenGL ES 2.0 has (state/es2/es2_get.cpp).
+bool query_es2(Context& ctx, unsigned pname, GetValues& out);
+
 // The GL_KHR_debug limits, log size and debug group depth (state/debug/debug_get.cpp).
 bool query_debug(Context& ctx, unsigned pname, GetValues& out);
 

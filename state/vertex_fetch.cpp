@@ -70,8 +70,12 @@ void take_current_index(Context& ctx, size_t index) {
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
   out.source = static_cast<uint32_t>(std::min<size_t>(index, UINT32_MAX - 1));
-  if (!read_generic_position(ctx, index, out.position) && ctx.vertex_array.active())
-    read_array(ctx.vertex_array, index, out.position, false);
+  if (!read_generic_position(ctx, index, out.position)) {
+    if (ctx.vertex_array.active())
+      read_array(ctx.vertex_array, index, out.position, false);
+    else if (ctx.es2())  // ES 2.0: attribute 0 has a current value like the others
+      std::copy(ctx.programs.current_attrib[0].begin(), ctx.programs.current_attrib[0].end(), out.position);
+  }
   if (ctx.color_array.active()) {
     read_array(ctx.color_array, index, out.color, true);
   } else {

@@ -18,6 +18,13 @@ Lookup find_object(Context& ctx, GLenum identifier, GLuint name) {
     case GL_TEXTURE: exists = ctx.textures.is_texture(name); break;
     case GL_QUERY: exists = ctx.queries.names.exists(name); break;
     case GL_DISPLAY_LIST: exists = ctx.lists.exists(name); break;
+    case GL_SHADER: exists = ctx.programs.objects.shader(name) != nullptr; break;
+    case GL_PROGRAM: exists = ctx.programs.objects.program(name) != nullptr; break;
+    // A generated name that was never bound counts as an object here.
+    case GL_RENDERBUFFER: exists = name && ctx.framebuffers.renderbuffers.count(name); break;
+    case GL_FRAMEBUFFER:
+      exists = name && (ctx.framebuffers.framebuffers.count(name) || ctx.framebuffers.generated_framebuffers.count(name));
+      break;
     default: return Lookup::UnknownIdentifier;
   }
   return exists ? Lookup::Exists : Lookup::NoSuchObject;

@@ -106,6 +106,7 @@ void DeleteFramebuffers(Context& ctx, GLsizei n, const GLuint* framebuffers) {
     if (draw || read) bind(ctx, draw, read, 0);
     fs.framebuffers.erase(name);
     fs.generated_framebuffers.erase(name);
+    ctx.debug.forget_label(GL_FRAMEBUFFER, name);
   }
 }
 

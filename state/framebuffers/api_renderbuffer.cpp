@@ -3,6 +3,7 @@
 #include <new>
 
 #include "glapi/gl_entry_points.h"
+#include "state/es2/es2_rules.h"
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
 
@@ -68,6 +69,7 @@ void DeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers) {
     if (fs.renderbuffer_binding == name) fs.renderbuffer_binding = 0;
     if (it->second) detach_deleted(ctx, GL_RENDERBUFFER, name);
     fs.renderbuffers.erase(name);
+    ctx.debug.forget_label(GL_RENDERBUFFER, name);
   }
 }
 
@@ -88,6 +90,8 @@ void BindRenderbuffer(Context& ctx, GLenum target, GLuint renderbuffer) {
 }
 
 void RenderbufferStorage(Context& ctx, GLenum target, GLenum internalformat, GLsizei width, GLsizei height) {
+  if (ctx.es2() && target == GL_RENDERBUFFER && !es2_renderbuffer_format(internalformat))
+    return ctx.record_error(GL_INVALID_ENUM, "internalformat is not a renderable format of OpenGL ES 2.0");
   storage(ctx, target, 0, internalformat, width, height);
 }
 

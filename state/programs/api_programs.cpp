@@ -27,6 +27,13 @@ void AttachShader(Context& ctx, GLuint program, GLuint shader) {
   if (!s) return;
   if (std::find(p->attached.begin(), p->attached.end(), shader) != p->attached.end())
     return ctx.record_error(GL_INVALID_OPERATION);
+  if (ctx.es2()) {  // ES 2.0 2.10.3: one shader object of each type per program
+    for (GLuint other : p->attached) {
+      const ShaderObject* o = ctx.programs.objects.shader(other);
+      if (o && o->type == s->type)
+        return ctx.record_error(GL_INVALID_OPERATION, "the program already has a shader of that type");
+    }
+  }
   p->attached.push_back(shader);
   ++s->attachments;
 }
@@ -77,6 +84,7 @@ void DeleteProgram(Context& ctx, GLuint program) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
   p->delete_pending = true;
+  ctx.debug.forget_label(GL_PROGRAM, program);
   destroy_program_if_unused(ctx, program);
 }
 

@@ -60,6 +60,7 @@ void DeleteShader(Context& ctx, GLuint shader) {
   if (shader == 0) return;
   ShaderObject* s = shader_or_error(ctx, shader);
   if (!s) return;
+  ctx.debug.forget_label(GL_SHADER, shader);
   if (s->attachments > 0) {
     s->delete_pending = true;
     return;

@@ -17,7 +17,7 @@ bool valid_index(Context& ctx, GLuint index) {
 
 void set_attrib(Context& ctx, GLuint index, float x, float y, float z, float w) {
   if (!valid_index(ctx, index)) return;
-  if (index == 0) return Vertex4f(ctx, x, y, z, w);
+  if (index == 0 && !ctx.es2()) return Vertex4f(ctx, x, y, z, w);  // ES 2.0: not the position
   ctx.programs.current_attrib[index] = {x, y, z, w};
 }
 
@@ -70,8 +70,13 @@ void VertexAttribPointer(Context& ctx, GLuint index, GLint size, GLenum type, GL
   if (!valid_index(ctx, index)) return;
   if (size < 1 || size > 4 || stride < 0) return ctx.record_error(GL_INVALID_VALUE);
   switch (type) {
-    case GL_BYTE: case GL_UNSIGNED_BYTE: case GL_SHORT: case GL_UNSIGNED_SHORT:
-    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_DOUBLE: break;
+    case GL_BYTE: case GL_UNSIGNED_BYTE: case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_FLOAT: break;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_DOUBLE:
+      if (ctx.es2()) return ctx.record_error(GL_INVALID_ENUM);
+      break;
+    case GL_FIXED:  // OpenGL ES 2.0 2.8
+      if (!ctx.es2()) return ctx.record_error(GL_INVALID_ENUM);
+      break;
     default: return ctx.record_error(GL_INVALID_ENUM);
   }
   GenericArray& a = ctx.programs.arrays[index];
@@ -107,7 +112,7 @@ bool vertex_attrib_values(Context& ctx, GLuint index, GLenum pname, double out[4
     case GL_VERTEX_ATTRIB_ARRAY_NORMALIZED: out[0] = a.normalized; return true;
     case GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING: out[0] = buffer_name(a.buffer); return true;
     case GL_CURRENT_VERTEX_ATTRIB:
-      if (index == 0) {
+      if (index == 0 && !ctx.es2()) {
         ctx.record_error(GL_INVALID_OPERATION);
         return false;
       }

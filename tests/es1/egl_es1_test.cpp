@@ -60,7 +60,7 @@ class EglEs1 : public ::testing::Test {
 
 TEST_F(EglEs1, ClientApisNameBoth) { EXPECT_STREQ(eglQueryString(dpy, EGL_CLIENT_APIS), "OpenGL OpenGL_ES"); }
 
-TEST_F(EglEs1, EveryConfigRendersGLAndES1ButNotES2) {
+TEST_F(EglEs1, EveryConfigRendersGLES1AndES2) {
   EGLint n = 0;
   ASSERT_TRUE(eglGetConfigs(dpy, nullptr, 0, &n));
   ASSERT_EQ(n, 7);
@@ -70,7 +70,7 @@ TEST_F(EglEs1, EveryConfigRendersGLAndES1ButNotES2) {
     EGLint renderable = 0, conformant = 0;
     EXPECT_TRUE(eglGetConfigAttrib(dpy, c, EGL_RENDERABLE_TYPE, &renderable));
     EXPECT_TRUE(eglGetConfigAttrib(dpy, c, EGL_CONFORMANT, &conformant));
-    EXPECT_EQ(renderable, EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT);
+    EXPECT_EQ(renderable, EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT | EGL_OPENGL_ES2_BIT);
     EXPECT_EQ(conformant, EGL_OPENGL_BIT);
   }
   const EGLint es[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
@@ -81,7 +81,7 @@ TEST_F(EglEs1, EveryConfigRendersGLAndES1ButNotES2) {
   const EGLint defaults[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
   EXPECT_EQ(count(es), 7);
   EXPECT_EQ(count(both), 7);
-  EXPECT_EQ(count(es2), 0);
+  EXPECT_EQ(count(es2), 7);
   EXPECT_EQ(count(defaults), 7);
 }
 
@@ -135,11 +135,11 @@ TEST_F(EglEs1, CreateContextMajor1GivesES11) {
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
 }
 
-TEST_F(EglEs1, ES2IsNotOffered) {
+TEST_F(EglEs1, ES3IsNotOffered) {
   ASSERT_TRUE(eglBindAPI(EGL_OPENGL_ES_API));
   EGLConfig config = first(kES1Renderable);
-  const EGLint v2[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-  EXPECT_EQ(create(config, v2), EGL_NO_CONTEXT);
+  const EGLint v3[] = {EGL_CONTEXT_CLIENT_VERSION, 3, EGL_NONE};
+  EXPECT_EQ(create(config, v3), EGL_NO_CONTEXT);
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
 }
 
