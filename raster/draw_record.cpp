@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "raster/blend_over.h"
+#include "raster/fill_rows.h"
 #include "raster/fragment_pipeline.h"
 #include "raster/shader_quads.h"
 
@@ -84,6 +85,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
                  state.point_smooth || state.line_smooth;
   d.key.count_samples = state.sample_counter != nullptr;
   d.routine = select_quad_routine(d.key, path);
+  if (const QuadRoutine fill = select_fill_routine(d, fb, path)) d.routine = fill;
   if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
     d.planes = 0;
     d.secondary_plane = d.fog_plane = -1;

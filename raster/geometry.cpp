@@ -33,7 +33,14 @@ int clamp_to_int(int64_t v) { return static_cast<int>(std::clamp<int64_t>(v, INT
 int64_t snap(double window) {
   // Beyond the guard band only by clipping's rounding; the clamp keeps llround defined.
   if (std::isnan(window)) return 0;
-  return std::llround(std::clamp(window, -4.0 * kGuardBand, 4.0 * kGuardBand) * kSubpixelOne);
+  const double v = std::clamp(window, -4.0 * kGuardBand, 4.0 * kGuardBand) * kSubpixelOne;
+  // std::llround (halves away from zero) without its library call: |v| < 2^26, so the
+  // truncation and the remainder are exact.
+  int64_t r = static_cast<int64_t>(v);
+  const double rest = v - static_cast<double>(r);
+  if (rest >= 0.5) ++r;
+  else if (rest <= -0.5) --r;
+  return r;
 }
 
 // Clipping keeps w >= 1e-30, but cancellation in an intersection can still produce w = 0;
@@ -95,14 +102,13 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   }
 }
 
-ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
-  ClipVert c;
+void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
   for (int i = 0; i < 4; ++i) c.pos[i] = v.clip[i];
   if (shader_) {
     const float* in = varyings_ + (&v - vertex_base_) * varying_count_;
     std::copy(in, in + varying_count_, c.attr);
     for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = 0.0;
-    return c;
+    return;
   }
   for (int i = 0; i < 4; ++i) {
     c.attr[i] = v.color[i];
@@ -116,12 +122,10 @@ ClipVert GeometryStage::to_clip(const ClipVertex& v) const {
   }
   c.attr[kClipFogAttr] = v.fog;
   for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
-  return c;
 }
 
-WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
+void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
   const DrawRecord& d = scene_.current_draw();
-  WinVert w;
   w.inv_w = 1.0 / v.pos[3];
   w.fx = std::clamp<double>((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
   w.fy = std::clamp<double>((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
@@ -132,8 +136,9 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   w.z = z * d.depth_max;
   if (shader_) {
     w.varyings = v.attr;
-    return w;
+    return;
   }
+  w.varyings = nullptr;
   const int color = back_color ? 4 : 0;
   for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
   for (int k = 0; k < d.num_units; ++k) {
@@ -147,7 +152,6 @@ WinVert GeometryStage::to_window(const ClipVert& v, bool back_color) const {
   if (d.secondary_plane >= 0)
     for (int i = 0; i < 3; ++i) w.attr[d.secondary_plane + i] = v.attr[kClipSecondaryAttrs + (back_color ? 3 : 0) + i];
   if (d.fog_plane >= 0) w.attr[d.fog_plane] = v.attr[kClipFogAttr];
-  return w;
 }
 
 SetupParams GeometryStage::params(const Style& style) const {
@@ -284,17 +288,21 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
   if (!active_) return;
   for (const ClipVertex* p : v)
     if (!finite_position(*p)) return;
-  in_.clear();
-  for (const ClipVertex* p : v) in_.push_back(to_clip(*p));
+  in_.resize(v.size());
+  for (size_t i = 0; i < v.size(); ++i) to_clip(*v[i], in_[i]);
   for (ClipVert& c : in_) flatten_varyings(c, provoking);
-  clip_polygon(in_, volume_, clipped_, scratch_);
-  if (clipped_.size() < 3) return;
+  // Most polygons lie inside the clip volume: they are used as they are, not copied.
+  bool inside = true;
+  for (const ClipVert& c : in_) inside &= clip_outcode(c, volume_) == 0;
+  if (!inside) clip_polygon(in_, volume_, clipped_, scratch_);
+  std::vector<ClipVert>& visible = inside ? in_ : clipped_;  // Fill may change it; in_ is not read after Fill
+  if (visible.size() < 3) return;
 
   // Facing from the snapped window positions of the visible part.
-  window_.clear();
-  for (const ClipVert& c : clipped_) {
-    window_.push_back(to_window(c, false));
-    if (!has_window_position(window_.back())) return;
+  window_.resize(visible.size());
+  for (size_t i = 0; i < visible.size(); ++i) {
+    to_window(visible[i], false, window_[i]);
+    if (!has_window_position(window_[i])) return;
   }
   int64_t area = 0;
   for (size_t i = 1; i + 1 < window_.size(); ++i) area += signed_area2(window_[0], window_[i], window_[i + 1]);
@@ -308,9 +316,9 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
     if (area == 0) return;
     style.depth_offset = polygon_offset(window_, s.offset_fill);
     if (!front)
-      for (size_t i = 0; i < clipped_.size(); ++i) {
-        use_back_varyings(clipped_[i]);
-        window_[i] = to_window(clipped_[i], true);
+      for (size_t i = 0; i < visible.size(); ++i) {
+        use_back_varyings(visible[i]);
+        to_window(visible[i], true, window_[i]);
       }
     const SetupParams p = params(style);
     for (size_t i = 1; i + 1 < window_.size(); ++i) {

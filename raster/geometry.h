@@ -41,8 +41,19 @@ class GeometryStage final : public PrimitiveSink {
     double depth_offset = 0.0;
   };
 
-  ClipVert to_clip(const ClipVertex& v) const;
-  WinVert to_window(const ClipVert& v, bool back_color) const;
+  // Into `c` (a ClipVert is large: polygons fill theirs in place).
+  void to_clip(const ClipVertex& v, ClipVert& c) const;
+  ClipVert to_clip(const ClipVertex& v) const {
+    ClipVert c;
+    to_clip(v, c);
+    return c;
+  }
+  void to_window(const ClipVert& v, bool back_color, WinVert& w) const;  // into w: as to_clip
+  WinVert to_window(const ClipVert& v, bool back_color) const {
+    WinVert w;
+    to_window(v, back_color, w);
+    return w;
+  }
   SetupParams params(const Style& style) const;
   Style style_for(const ClipVertex& provoking, bool back_facing) const;
   void emit(const PrimSetup& prim);

@@ -53,10 +53,9 @@ void Scene::retain_textures(const DrawRecord& draw) {
   }
 }
 
-void Scene::add_prim(PrimSetup prim) {
+void Scene::add_prim(const PrimSetup& prim) {
   const PixelRect r = intersect(prim.bounds, render_area());
   if (r.empty() || draws_.empty()) return;
-  prim.draw = static_cast<uint32_t>(draws_.size() - 1);
   const uint32_t index = static_cast<uint32_t>(prims_.size());
   bool used = false;
   for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
@@ -71,7 +70,9 @@ void Scene::add_prim(PrimSetup prim) {
       ++commands_;
       used = true;
     }
-  if (used) prims_.push_back(prim);
+  if (!used) return;
+  prims_.push_back(prim);
+  prims_.back().draw = static_cast<uint32_t>(draws_.size() - 1);
 }
 
 void Scene::add_prim(PrimSetup prim, const Plane* varying_planes, int count) {

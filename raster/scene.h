@@ -26,7 +26,7 @@ class Scene {
   // Primitives added afterwards belong to this draw.
   void begin_draw(DrawRecord&& draw);
   const DrawRecord& current_draw() const { return draws_.back(); }
-  void add_prim(PrimSetup prim);
+  void add_prim(const PrimSetup& prim);
   // A primitive of a programmable draw with its varying planes (copied into the scene).
   void add_prim(PrimSetup prim, const Plane* varying_planes, int count);
   void add_clear(const ClearRecord& clear);

@@ -69,13 +69,18 @@ constexpr int kMaxQuadsPerRow = kTileSize / 2;
 void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
-  uint8_t masks[kMaxQuadsPerRow];
+  // The masks of quad rows whose two pixel rows are inside clip: the same for every such row.
+  uint8_t inner[kMaxQuadsPerRow], masks[kMaxQuadsPerRow];
+  for (int q = 0; q < count; ++q) {
+    const int x = x0 + 2 * q;
+    inner[q] = static_cast<uint8_t>((x >= clip.x0 && x < clip.x1 ? 5 : 0) | (x + 1 >= clip.x0 && x + 1 < clip.x1 ? 10 : 0));
+  }
   for (int y = block.y0 & ~1; y < block.y1; y += 2) {
-    const bool rows_inside = y >= clip.y0 && y + 1 < clip.y1;
-    for (int q = 0; q < count; ++q) {
-      const int x = x0 + 2 * q;
-      masks[q] = rows_inside && x >= clip.x0 && x + 1 < clip.x1 ? 0xf : static_cast<uint8_t>(rect_mask(x, y, clip));
+    if (y >= clip.y0 && y + 1 < clip.y1) {
+      sink.row(x0, y, count, inner);
+      continue;
     }
+    for (int q = 0; q < count; ++q) masks[q] = static_cast<uint8_t>(rect_mask(x0 + 2 * q, y, clip));
     sink.row(x0, y, count, masks);
   }
 }
@@ -108,6 +113,10 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
 
 void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
   constexpr int kBlock = 16, kSub = 4;
+  if (classify(p, area) == BlockCover::Full) {  // rows as wide as the tile: fewer, longer calls
+    emit_full(area, area, sink);
+    return;
+  }
   for (int by = area.y0 & ~(kBlock - 1); by < area.y1; by += kBlock)
     for (int bx = area.x0 & ~(kBlock - 1); bx < area.x1; bx += kBlock) {
       const PixelRect block = intersect({bx, by, bx + kBlock, by + kBlock}, area);

@@ -1,0 +1,17 @@
+// Fill routines for the most common fixed-function draws: untextured, no stencil, alpha test,
+// fog, colour sum, stipple or smoothing, a depth test or none, no blending or SRC_ALPHA /
+// ONE_MINUS_SRC_ALPHA. A row of 2x2 quads is shaded 8x2 pixels (16 lanes) at a time, each pixel
+// row as one 8-lane vector, depth tested and written in those lanes; the pixels are the same,
+// bit for bit, as the generic quad routines' (fragment_pipeline.cpp).
+#pragma once
+
+#include "raster/draw_record.h"
+#include "raster/framebuffer.h"
+#include "raster/simd_path.h"
+
+namespace pineda::raster {
+
+// The fill routine for the draw, or null when its key needs the generic one.
+QuadRoutine select_fill_routine(const DrawRecord& d, const Framebuffer& fb, SimdPath path = SimdPath::Best);
+
+}  // namespace pineda::raster
