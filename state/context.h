@@ -170,7 +170,8 @@ class Context {
   std::vector<raster::VertexInput> fetched;   // client-array vertices of the current draw
   std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
-  // (empty when the material did not change inside the primitive).
+  // (empty when the material did not change inside the primitive); the first is the one in
+  // effect at glBegin.
   struct MaterialChange {
     size_t first;
     raster::Material front, back;
