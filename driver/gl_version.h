@@ -5,7 +5,7 @@
 namespace pineda::driver {
 
 inline constexpr int kMaxGLMajor = 2;
-inline constexpr int kMaxGLMinor = 0;
+inline constexpr int kMaxGLMinor = 1;
 // OpenGL ES 1.1 (the common profile) through EGL: EGL_OPENGL_ES_API, EGL_OPENGL_ES_BIT.
 inline constexpr bool kHasGLES1 = true;
 // OpenGL ES 2.0 through EGL: CONTEXT_CLIENT_VERSION 2, EGL_OPENGL_ES2_BIT.

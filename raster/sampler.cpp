@@ -7,14 +7,14 @@
 #include "raster/quad_vector.h"
 #include "raster/sampler_depth.h"
 #include "raster/sampler_volume.h"
+#include "raster/srgb.h"
 #include "raster/texel_addressing.h"
 
 namespace pineda::raster {
 namespace {
 
 F4 fetch(const TextureLevel& level, int i, int j) {
-  const uint32_t texel = level.texels[static_cast<size_t>(j) * level.width + i];
-  return from_unorm8(U4{texel, texel >> 8, texel >> 16, texel >> 24});
+  return texel_to_rgba(level, level.texels[static_cast<size_t>(j) * level.width + i]);
 }
 
 F4 texel_or_border(const TextureLevel& level, const Sampler& sampler, int i, int j) {
@@ -153,7 +153,8 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
                  float out[4][4]) {
   if (image.depth) return sample_depth_quad(image, sampler, s, t, nullptr, out);
-  if (sampler.wrap_s == TexWrap::Repeat && sampler.wrap_t == TexWrap::Repeat)
+  // sRGB images take the general path, whose one texel fetch decodes them.
+  if (sampler.wrap_s == TexWrap::Repeat && sampler.wrap_t == TexWrap::Repeat && !image.levels[0].srgb)
     sample_quad_wrapped<true>(image, sampler, s, t, out);
   else
     sample_quad_wrapped<false>(image, sampler, s, t, out);

@@ -116,7 +116,7 @@ bool wrap_supported(TexWrap w) { return w == TexWrap::Repeat || w == TexWrap::Cl
 }  // namespace
 
 QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {
-  if (image.depth || image.kind != TexKind::Planar) return nullptr;
+  if (image.depth || image.kind != TexKind::Planar || image.levels.empty() || image.levels[0].srgb) return nullptr;
   const TexFilter min = sampler.min_filter;
   if (sampler.mag_filter != TexFilter::Linear ||
       !(min == TexFilter::Linear || min == TexFilter::LinearMipmapNearest || min == TexFilter::LinearMipmapLinear))

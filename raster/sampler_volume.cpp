@@ -4,6 +4,7 @@
 
 #include "raster/mip_selection.h"
 #include "raster/quad_vector.h"
+#include "raster/srgb.h"
 #include "raster/texel_addressing.h"
 
 namespace pineda::raster {
@@ -15,8 +16,7 @@ F4 texel_or_border(const TextureLevel& level, const Sampler& sampler, int i, int
     const F4 c = load4(sampler.border_color), zero = splat(0.f), one = splat(1.f);
     return c < zero ? zero : (one < c ? one : c);
   }
-  const uint32_t texel = level.texels[(static_cast<size_t>(k) * level.height + j) * level.width + i];
-  return from_unorm8(U4{texel, texel >> 8, texel >> 16, texel >> 24});
+  return texel_to_rgba(level, level.texels[(static_cast<size_t>(k) * level.height + j) * level.width + i]);
 }
 
 float volume_lambda(const TextureLevel& base, const float s[4], const float t[4], const float r[4]) {

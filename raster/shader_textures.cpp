@@ -13,7 +13,8 @@ using shader::SamplerKind;
 
 bool kind_matches(const TextureImage& image, SamplerKind kind) {
   switch (kind) {
-    case SamplerKind::Tex1D: case SamplerKind::Tex2D: return image.kind == TexKind::Planar && !image.depth;
+    // A depth texture read by sampler1D/2D gives its depth as DEPTH_TEXTURE_MODE places it (GL 2.0 3.8.14).
+    case SamplerKind::Tex1D: case SamplerKind::Tex2D: return image.kind == TexKind::Planar;
     case SamplerKind::Tex3D: return image.kind == TexKind::Volume;
     case SamplerKind::Cube: return image.kind == TexKind::Cube;
     case SamplerKind::Shadow1D: case SamplerKind::Shadow2D: return image.kind == TexKind::Planar && image.depth;

@@ -20,6 +20,7 @@ struct TextureLevel {
   // RGBA8, R in the lowest byte; row 0 first (t = 0), slice 0 first (r = 0, or the +X face)
   std::vector<uint32_t> texels;
   int depth = 1;  // slices of a 3D level; the six faces of a cube map level
+  bool srgb = false;  // R, G, B are sRGB-encoded: decoded per texel before filtering (raster/srgb.h)
 };
 
 // How the sampler addresses the image: 1D and 2D textures are Planar (s, t), 3D textures

@@ -19,6 +19,11 @@ timeout 300 python3 "$root/conformance/run.py" --platform surfaceless_egl --lib-
 # The Debian package, made from the build above, tried in a clean Debian 12 root (as root).
 "$root/scripts/package-test.sh" "$root/build"
 
+# GL 2.0/2.1 and GLSL 1.10/1.20 headless (4991 tests, about 90 s here).
+timeout 600 python3 "$root/conformance/run.py" --platform surfaceless_egl --lib-dir "$root/build/lib" \
+  --group 'spec@!opengl 2.0' --group 'spec@!opengl 2.1' --group 'spec@glsl-1.10' --group 'spec@glsl-1.20' \
+  --expected-total 4991
+
 "$root/scripts/build.sh" "$root/build-asan" -DPINEDA_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$root/build-asan" -j"$jobs" --output-on-failure

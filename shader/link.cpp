@@ -117,31 +117,33 @@ bool assign_locations(const Interface& iface, const std::vector<AttributeBinding
 
 // glslang's part under its lock: parse, link, lower. Its objects die before the lock is
 // released; the rest of link() runs unlocked.
-bool parse_link_lower(const CompiledShader* vertex, const CompiledShader* fragment, Interface& iface,
-                      LinkedProgram& out, std::string& info_log) {
+bool parse_link_lower(const std::vector<const CompiledShader*>& vertex,
+                      const std::vector<const CompiledShader*>& fragment, Interface& iface, LinkedProgram& out,
+                      std::string& info_log) {
   std::lock_guard<std::mutex> hold(front_end::glslang_lock());
   std::string log;
-  std::unique_ptr<glslang::TShader> vs, fs;
-  if (vertex && !(vs = front_end::parse(*vertex, log))) {
-    info_log = "error: vertex shader does not compile\n" + log;
-    return false;
-  }
-  if (fragment && !(fs = front_end::parse(*fragment, log))) {
-    info_log = "error: fragment shader does not compile\n" + log;
-    return false;
-  }
+  std::vector<std::unique_ptr<glslang::TShader>> units;  // declared first: they outlive the TProgram
   glslang::TProgram program;
-  if (vs) program.addShader(vs.get());
-  if (fs) program.addShader(fs.get());
+  for (const auto* stage : {&vertex, &fragment})
+    for (const CompiledShader* s : *stage) {
+      std::unique_ptr<glslang::TShader> unit = front_end::parse(*s, log);
+      if (!unit) {
+        info_log = std::string("error: ") + (stage == &vertex ? "vertex" : "fragment") + " shader does not compile\n" + log;
+        return false;
+      }
+      program.addShader(unit.get());
+      units.push_back(std::move(unit));
+    }
   const bool linked = program.link(EShMsgDefault);
   info_log = program.getInfoLog();
   if (!linked) return false;
-  const bool es = (vertex ? vertex->language : fragment->language) == Language::Es100;
+  const bool vs = !vertex.empty(), fs = !fragment.empty();
+  const bool es = (vs ? vertex[0] : fragment[0])->language == Language::Es100;
   if (es && !es_invariance_ok(vs ? program.getIntermediate(EShLangVertex) : nullptr,
                               fs ? program.getIntermediate(EShLangFragment) : nullptr, info_log))
     return false;
-  iface.has_vertex_shader = vs != nullptr;
-  iface.has_fragment_shader = fs != nullptr;
+  iface.has_vertex_shader = vs;
+  iface.has_fragment_shader = fs;
   std::string error;
   if (fs) {
     out.fragment_.emplace();
@@ -164,15 +166,23 @@ bool parse_link_lower(const CompiledShader* vertex, const CompiledShader* fragme
 
 LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
                 const std::vector<AttributeBinding>& bindings) {
+  std::vector<const CompiledShader*> vs, fs;
+  if (vertex) vs.push_back(vertex);
+  if (fragment) fs.push_back(fragment);
+  return link(vs, fs, bindings);
+}
+
+LinkResult link(const std::vector<const CompiledShader*>& vertex, const std::vector<const CompiledShader*>& fragment,
+                const std::vector<AttributeBinding>& bindings) {
   LinkResult result;
-  if (!vertex && !fragment) {
+  if (vertex.empty() && fragment.empty()) {
     result.info_log = "error: no shaders attached\n";
     return result;
   }
-  if ((vertex && vertex->stage != Stage::Vertex) || (fragment && fragment->stage != Stage::Fragment)) {
-    result.info_log = "error: shader of the wrong stage\n";
-    return result;
-  }
+  for (const CompiledShader* s : vertex)
+    if (!s || s->stage != Stage::Vertex) return result.info_log = "error: shader of the wrong stage\n", result;
+  for (const CompiledShader* s : fragment)
+    if (!s || s->stage != Stage::Fragment) return result.info_log = "error: shader of the wrong stage\n", result;
   Interface iface;
   auto linked_program = std::make_shared<LinkedProgram>();
   if (!parse_link_lower(vertex, fragment, iface, *linked_program, result.info_log)) return result;

@@ -1210,9 +1210,13 @@ void Lowerer::run(const glslang::TIntermediate& tree) {
       functions_[a->getName().c_str()] = a;
     } else if (a && a->getOp() == glslang::EOpLinkerObjects) {
       for (TIntermNode* o : a->getSequence())
-        if (TIntermSymbol* s = o->getAsSymbolNode())
+        if (TIntermSymbol* s = o->getAsSymbolNode()) {
           if (s->getQualifier().storage == glslang::EvqVaryingOut)
             declared_outputs_[s->getName().c_str()] = var_type(s->getType(), s->getName().c_str());
+          // A uniform with a GLSL 1.20 initializer is active even when unread (as Mesa): the
+          // application may set it.
+          if (s->getQualifier().storage == glslang::EvqUniform && !s->getConstArray().empty()) symbol_place(s);
+        }
     } else {
       globals.push_back(n);
     }

@@ -165,6 +165,10 @@ struct LinkResult {
 // at this link. Initial uniform values are zero.
 LinkResult link(const CompiledShader* vertex, const CompiledShader* fragment,
                 const std::vector<AttributeBinding>& bindings);
+// The same with any number of shaders per stage (desktop GLSL: glslang links the compilation
+// units of a stage into one, one of them defining main()); an empty list is a missing stage.
+LinkResult link(const std::vector<const CompiledShader*>& vertex, const std::vector<const CompiledShader*>& fragment,
+                const std::vector<AttributeBinding>& bindings);
 
 // The IR of a program as text, for PINEDA_DUMP_IR=1 and tests.
 std::string dump_ir(const Program& program);

@@ -5,6 +5,7 @@
 #include "raster/pixel_rect.h"
 #include "state/context.h"
 #include "state/draw.h"
+#include "state/pixel_buffer.h"
 #include "state/pixel_unpack.h"
 
 namespace pineda::gl {
@@ -43,8 +44,14 @@ void Bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloat 
   if (!check_draw_framebuffer(ctx)) return;
   RasterPosition& rp = ctx.raster_pos;
   if (!rp.valid) return;
-  if (!pixel_rect_feedback(ctx, GL_BITMAP_TOKEN) && bitmap && width > 0 && height > 0 && ctx.draw_drawable())
-    ctx.render_to_draw_buffers([&] { draw_bitmap(ctx, width, height, xorig, yorig, bitmap); });
+  if (!pixel_rect_feedback(ctx, GL_BITMAP_TOKEN) && width > 0 && height > 0) {
+    const void* data = bitmap;  // a bad pixel unpack buffer range leaves the raster position too (as Mesa)
+    if (!unpack_pixels(ctx, data, client_image_extent(ctx.unpack, width, height, 1, false, GL_COLOR_INDEX, GL_BITMAP)))
+      return;
+    if (data && ctx.draw_drawable())
+      ctx.render_to_draw_buffers(
+          [&] { draw_bitmap(ctx, width, height, xorig, yorig, static_cast<const GLubyte*>(data)); });
+  }
   rp.window[0] += xmove;
   rp.window[1] += ymove;
 }

@@ -13,8 +13,12 @@ std::shared_ptr<BufferObject>* binding(Context& ctx, GLenum target) {
   switch (target) {
     case GL_ARRAY_BUFFER: return &ctx.buffers.array;
     case GL_ELEMENT_ARRAY_BUFFER: return &ctx.buffers.element_array;
-    default: ctx.record_error(GL_INVALID_ENUM); return nullptr;
+    case GL_PIXEL_PACK_BUFFER: if (!ctx.es1()) return &ctx.pack.buffer; break;
+    case GL_PIXEL_UNPACK_BUFFER: if (!ctx.es1()) return &ctx.unpack.buffer; break;
+    default: break;
   }
+  ctx.record_error(GL_INVALID_ENUM);
+  return nullptr;
 }
 
 // The buffer bound to `target`, or null with the error the spec names (no buffer bound:
@@ -57,6 +61,8 @@ void unbind_everywhere(Context& ctx, GLuint name) {
   };
   drop(ctx.buffers.array);
   drop(ctx.buffers.element_array);
+  drop(ctx.pack.buffer);
+  drop(ctx.unpack.buffer);
   for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array,
                          &ctx.fog_coord_array, &ctx.secondary_color_array})
     drop(a->buffer);

@@ -5,6 +5,7 @@
 #include "raster/color_reduction.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
+#include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
 #include "state/pixel_rect_draw.h"
 #include "state/pixel_transfer.h"
@@ -80,7 +81,9 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
   if (!check_draw_framebuffer(ctx)) return;
   if (const GLenum error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_DRAW_PIXEL_TOKEN)) return;
-  if (!pixels || width == 0 || height == 0 || !ctx.draw_drawable()) return;
+  if (width == 0 || height == 0 || !ctx.draw_drawable()) return;
+  if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, 1, false, format, type)) || !pixels)
+    return;
   PixelRectImage image;
   image.width = width;
   image.height = height;

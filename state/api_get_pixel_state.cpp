@@ -19,6 +19,11 @@ bool query_pixel_state(Context& ctx, unsigned pname, GetValues& out) {
     case GL_CURRENT_RASTER_COLOR:
       out = {GetKind::Color, {rp.color[0], rp.color[1], rp.color[2], rp.color[3]}};
       return true;
+    case GL_CURRENT_RASTER_SECONDARY_COLOR: {
+      const float* c = rp.secondary_color;
+      out = {GetKind::Color, {c[0], c[1], c[2], c[3]}};
+      return true;
+    }
     case GL_CURRENT_RASTER_INDEX: out = get_floats({1.0}); return true;  // no colour-index mode
     case GL_CURRENT_RASTER_TEXTURE_COORDS: {
       const float* t = rp.texcoord[ctx.active_texture];

@@ -5,6 +5,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
+#include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
 #include "state/texture_format.h"
 #include "state/texture_target.h"
@@ -47,10 +48,15 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
       ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
   if (size_t(level) >= levels.size() || levels[level].width == 0) return;  // nothing defined
   const bool depth_texture = is_depth_level(levels[level]);
+  const TextureLevelData& l = levels[level];
+  const bool volume = t.kind == TexTarget::T3D;
+  auto writes = [&] {
+    return pack_pixels(ctx, pixels, client_image_extent(ctx.pack, l.width, l.height, l.depth, volume, format, type)) &&
+           pixels;
+  };
   if (packed_ds) {  // a DEPTH_STENCIL level only
-    if (levels[level].stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION);
-    if (!pixels) return;
-    const TextureLevelData& l = levels[level];
+    if (l.stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION);
+    if (!writes()) return;
     const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, l.width);
     auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
     for (int y = 0; y < l.height; ++y)
@@ -64,13 +70,11 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
     return;
   }
   if (depth_texture != (format == GL_DEPTH_COMPONENT)) return ctx.record_error(GL_INVALID_OPERATION);  // as Mesa
-  if (!pixels) return;
+  if (!writes()) return;
   // The border texels of a bordered level are not kept: only the inner image is written.
-  const TextureLevelData& l = levels[level];
   const ImageLayout layout = image_layout(ctx.pack, l.width, format, type);
   const size_t image_rows = ctx.pack.image_height > 0 ? size_t(ctx.pack.image_height) : size_t(l.height);
   const size_t image_stride = layout.row_stride * image_rows;
-  const bool volume = t.kind == TexTarget::T3D;
   auto* out = static_cast<uint8_t*>(pixels) + layout.offset + (volume ? size_t(ctx.pack.skip_images) * image_stride : 0);
   for (int z = 0; z < l.depth; ++z)
     for (int y = 0; y < l.height; ++y)

@@ -71,7 +71,8 @@ void note_material_before_change(Context& ctx) {
 void note_material_after_change(Context& ctx) {
   if (!ctx.in_begin_end) return;
   auto& changes = ctx.immediate_materials;
-  if (changes.back().first == ctx.immediate.size())
+  // The first entry stays the material at glBegin, which programs read (draw.cpp).
+  if (changes.size() > 1 && changes.back().first == ctx.immediate.size())
     changes.back() = {ctx.immediate.size(), ctx.lighting.front, ctx.lighting.back};
   else
     changes.push_back({ctx.immediate.size(), ctx.lighting.front, ctx.lighting.back});

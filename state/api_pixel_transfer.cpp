@@ -1,10 +1,14 @@
 // glPixelTransfer, glPixelZoom, glPixelMap and glGetPixelMap (GL 1.5 spec 3.6.3, 6.1.3).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/packed_image.h"
+#include "state/pixel_buffer.h"
+#include "state/unaligned.h"
 
 namespace pineda::gl {
 namespace {
@@ -54,14 +58,16 @@ GLenum pixel_map_error(GLenum map, GLsizei size) {
   return GL_NO_ERROR;
 }
 
+// With a pixel unpack buffer bound, `values` is an offset into it (no pixel store mode applies).
 template <typename T>
 void set_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
   if (const GLenum error = pixel_map_error(map, size); error != GL_NO_ERROR) return ctx.record_error(error);
-  if (!values) return;
+  const void* data = values;
+  if (!unpack_pixels(ctx, data, size_t(size) * sizeof(T)) || !data) return;
   std::vector<float>& table = ctx.pixel_maps[map];
   table.resize(size_t(size));
   for (GLsizei i = 0; i < size; ++i) {
-    const double v = double(values[i]);
+    const double v = double(load_unaligned<T>(static_cast<const uint8_t*>(data) + sizeof(T) * size_t(i)));
     table[i] = is_index_map(map) ? static_cast<float>(v)
                                  : std::clamp(static_cast<float>(v / normalize_max), 0.f, 1.f);
   }
@@ -72,24 +78,31 @@ template <typename T>
 void compile_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
   const GLenum error = pixel_map_error(map, size);
   std::vector<T> copy;
-  if (error == GL_NO_ERROR && values) copy.assign(values, values + size);
+  const void* data = values;
+  if (error == GL_NO_ERROR && unpack_pixels(ctx, data, size_t(size) * sizeof(T)) && data) {
+    copy.resize(size_t(size));
+    std::memcpy(copy.data(), data, size_t(size) * sizeof(T));
+  }
   ctx.record_list_command([=, copy = std::move(copy)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     if (error != GL_NO_ERROR) return c.record_error(error);
-    set_map(c, map, size, copy.empty() ? nullptr : copy.data(), normalize_max);
+    with_packed_unpack(c, [&] { set_map(c, map, size, copy.empty() ? nullptr : copy.data(), normalize_max); });
   });
 }
 
 template <typename T>
 void get_map(Context& ctx, GLenum map, T* values, double normalize_max) {
   if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM);
-  if (!values) return;
   const std::vector<float>& table = ctx.pixel_maps[map];
+  void* data = values;
+  if (!pack_pixels(ctx, data, table.size() * sizeof(T)) || !data) return;
   for (size_t i = 0; i < table.size(); ++i) {
     const double v = table[i];
-    if (normalize_max == 1.0) values[i] = static_cast<T>(v);
-    else if (is_index_map(map)) values[i] = static_cast<T>(std::clamp(v, 0.0, normalize_max));
-    else values[i] = static_cast<T>(std::llround(v * normalize_max));
+    T out;
+    if (normalize_max == 1.0) out = static_cast<T>(v);
+    else if (is_index_map(map)) out = static_cast<T>(std::clamp(v, 0.0, normalize_max));
+    else out = static_cast<T>(std::llround(v * normalize_max));
+    std::memcpy(static_cast<uint8_t*>(data) + sizeof(T) * i, &out, sizeof(T));
   }
 }
 

@@ -9,6 +9,7 @@
 #include "state/bitmap_layout.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
+#include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
 #include "state/pixel_transfer.h"
 
@@ -89,7 +90,9 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   if (!check_read_framebuffer(ctx)) return;
   if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
-  if (!d || !pixels || width == 0 || height == 0) return;
+  if (!d || width == 0 || height == 0) return;
+  if (!pack_pixels(ctx, pixels, client_image_extent(ctx.pack, width, height, 1, false, format, type)) || !pixels)
+    return;
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
   // Pixels outside the framebuffer are undefined in GL; Pineda leaves the memory untouched.

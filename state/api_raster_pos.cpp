@@ -17,6 +17,7 @@ void set_raster_pos(Context& ctx, double x, double y, double z, double w) {
   for (int i = 0; i < 4; ++i) v.position[i] = static_cast<float>(position[i]);
   std::copy(ctx.current_color, ctx.current_color + 4, v.color);
   std::copy(ctx.current_normal, ctx.current_normal + 3, v.normal);
+  std::copy(ctx.extras.current_secondary_color, ctx.extras.current_secondary_color + 3, v.secondary_color);
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4, v.texcoord[u]);
   const raster::ClipVertex out = transform_single_vertex(ctx, v);
@@ -36,6 +37,9 @@ void set_raster_pos(Context& ctx, double x, double y, double z, double w) {
   rp.window[2] = static_cast<float>((vp.far_z - vp.near_z) * 0.5 * zd + (vp.far_z + vp.near_z) * 0.5);
   rp.window[3] = c[3];
   std::copy(out.color, out.color + 4, rp.color);
+  // Lit: the specular colour the lighting gives (0 unless separate specular); unlit: the current one.
+  for (int i = 0; i < 4; ++i) rp.secondary_color[i] = std::clamp(ctx.extras.current_secondary_color[i], 0.f, 1.f);
+  if (ctx.lighting.enabled) std::copy(out.secondary, out.secondary + 3, rp.secondary_color);
   for (int u = 0; u < raster::kMaxTextureUnits; ++u) std::copy(out.texcoord[u], out.texcoord[u] + 4, rp.texcoord[u]);
   rp.distance = ctx.extras.fog_coord_source == GL_FOG_COORDINATE ? ctx.extras.current_fog_coord
                                                                  : static_cast<float>(glm::length(glm::dvec3(eye)));
@@ -53,6 +57,7 @@ void set_window_pos(Context& ctx, double x, double y, double z) {
   rp.window[2] = static_cast<float>(vp.near_z + std::clamp(z, 0.0, 1.0) * (vp.far_z - vp.near_z));
   rp.window[3] = 1.f;
   for (int i = 0; i < 4; ++i) rp.color[i] = std::clamp(ctx.current_color[i], 0.f, 1.f);
+  for (int i = 0; i < 4; ++i) rp.secondary_color[i] = std::clamp(ctx.extras.current_secondary_color[i], 0.f, 1.f);
   for (int u = 0; u < raster::kMaxTextureUnits; ++u)
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4, rp.texcoord[u]);
   rp.distance = ctx.extras.fog_coord_source == GL_FOG_COORDINATE ? ctx.extras.current_fog_coord : 0.f;

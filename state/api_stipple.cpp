@@ -3,6 +3,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/pixel_buffer.h"
 #include "state/stipple_image.h"
 
 namespace pineda::gl {
@@ -13,20 +14,32 @@ void LineStipple(Context& ctx, GLint factor, GLushort pattern) {
   l.pattern = pattern;
 }
 
+namespace {
+
+size_t stipple_extent(const PixelStore& store) {
+  return client_image_extent(store, 32, 32, 1, false, GL_COLOR_INDEX, GL_BITMAP);
+}
+
+}  // namespace
+
 void PolygonStipple(Context& ctx, const GLubyte* mask) {
-  if (!mask) return;
-  ctx.draw_state.polygon_stipple.rows = unpack_stipple(ctx.unpack, mask);
+  const void* data = mask;
+  if (!unpack_pixels(ctx, data, stipple_extent(ctx.unpack)) || !data) return;
+  ctx.draw_state.polygon_stipple.rows = unpack_stipple(ctx.unpack, static_cast<const GLubyte*>(data));
 }
 
 void GetPolygonStipple(Context& ctx, GLubyte* mask) {
-  if (!mask) return;
-  pack_stipple(ctx.pack, ctx.draw_state.polygon_stipple.rows, mask);
+  void* data = mask;
+  if (!pack_pixels(ctx, data, stipple_extent(ctx.pack)) || !data) return;
+  pack_stipple(ctx.pack, ctx.draw_state.polygon_stipple.rows, static_cast<GLubyte*>(data));
 }
 
-// The image is read at compile time, under the unpack state of that time (GL 1.5 section 5.4).
+// The image is read at compile time, under the unpack state of that time (GL 1.5 section 5.4),
+// from the pixel unpack buffer when one is bound.
 void compile_PolygonStipple(Context& ctx, const GLubyte* mask) {
-  if (!mask) return;
-  const StippleRows rows = unpack_stipple(ctx.unpack, mask);
+  const void* data = mask;
+  if (!unpack_pixels(ctx, data, stipple_extent(ctx.unpack)) || !data) return;
+  const StippleRows rows = unpack_stipple(ctx.unpack, static_cast<const GLubyte*>(data));
   ctx.record_list_command([rows](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
     c.draw_state.polygon_stipple.rows = rows;

@@ -10,6 +10,7 @@
 #include "state/framebuffers/packed_depth_stencil.h"
 #include "state/enum_translate.h"
 #include "state/limits.h"
+#include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
 #include "state/pixel_unpack.h"
 #include "state/tex_image_checks.h"
@@ -145,6 +146,8 @@ void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint in
                               : TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
     return;
   }
+  if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, dims == 3, format, type)))
+    return;
   // Allocated before the level changes, so that running out of memory leaves the texture as it was.
   TextureLevelData image{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
   image.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
@@ -178,7 +181,9 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
     return ctx.record_error(GL_INVALID_VALUE);
   const TextureFormat storage = *texture_format(l.internal_format);
   if (!valid_depth_use(ctx, storage, target.kind, format)) return;
-  const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, target.kind == TexTarget::T3D};
+  const bool volume = target.kind == TexTarget::T3D;
+  if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, volume, format, type))) return;
+  const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, volume};
   if (storage.stencil)
     unpack_depth_stencil_into(ctx, l, box, pixels);
   else if (storage.depth)

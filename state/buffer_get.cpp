@@ -10,6 +10,11 @@ bool query_buffer_binding(const Context& ctx, GLenum pname, GLuint& name) {
   switch (pname) {
     case GL_ARRAY_BUFFER_BINDING: name = buffer_name(ctx.buffers.array); return true;
     case GL_ELEMENT_ARRAY_BUFFER_BINDING: name = buffer_name(ctx.buffers.element_array); return true;
+    case GL_PIXEL_PACK_BUFFER_BINDING:
+    case GL_PIXEL_UNPACK_BUFFER_BINDING:
+      if (ctx.es1()) return false;
+      name = buffer_name(pname == GL_PIXEL_PACK_BUFFER_BINDING ? ctx.pack.buffer : ctx.unpack.buffer);
+      return true;
     case GL_INDEX_ARRAY_BUFFER_BINDING: array = &ctx.index_array; break;
     case GL_VERTEX_ARRAY_BUFFER_BINDING: array = &ctx.vertex_array; break;
     case GL_NORMAL_ARRAY_BUFFER_BINDING: array = &ctx.normal_array; break;

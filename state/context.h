@@ -69,6 +69,9 @@ struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
   GLint image_height = 0, skip_images = 0;  // 3D images only
   GLboolean swap_bytes = GL_FALSE, lsb_first = GL_FALSE;
+  // PIXEL_PACK_BUFFER / PIXEL_UNPACK_BUFFER (state/pixel_buffer.h): kept with the pixel store
+  // state, as PushClientAttrib saves it.
+  std::shared_ptr<BufferObject> buffer;
 };
 
 // What glPushClientAttrib saves; glPopClientAttrib restores the groups of `mask` only.
@@ -170,7 +173,8 @@ class Context {
   std::vector<raster::VertexInput> fetched;   // client-array vertices of the current draw
   std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
-  // (empty when the material did not change inside the primitive).
+  // (empty when the material did not change inside the primitive); the first is the one in
+  // effect at glBegin.
   struct MaterialChange {
     size_t first;
     raster::Material front, back;

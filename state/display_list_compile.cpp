@@ -9,6 +9,7 @@
 #include "state/draw.h"
 #include "state/enum_translate.h"
 #include "state/packed_image.h"
+#include "state/pixel_buffer.h"
 #include "state/tex_image_checks.h"
 #include "state/texture_target.h"
 #include "state/vertex_fetch.h"
@@ -73,10 +74,14 @@ std::optional<float> fetch_indexed(const Context& ctx, GLsizei count, const Inde
   return fetch_index(ctx, indices[count - 1]);
 }
 
-// A copy of the pixels a texture image call reads, or empty when it reads none.
-std::vector<uint8_t> texture_pixels(const Context& ctx, bool reads, GLsizei width, GLsizei height, GLsizei depth,
+// A copy of the pixels a texture image call reads (from the pixel unpack buffer when one is
+// bound), or empty when it reads none.
+std::vector<uint8_t> texture_pixels(Context& ctx, bool reads, GLsizei width, GLsizei height, GLsizei depth,
                                     bool volume, GLenum format, GLenum type, const void* pixels) {
-  if (!reads || !pixels || width == 0 || height == 0 || depth == 0) return {};
+  if (!reads || width == 0 || height == 0 || depth == 0) return {};
+  if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, volume, format, type)) ||
+      !pixels)
+    return {};
   return pack_client_image(ctx.unpack, width, height, depth, volume, format, type, pixels);
 }
 

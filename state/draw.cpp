@@ -91,6 +91,17 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   if (!ctx.draw_drawable() || vertices.empty()) return;
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
+  // A program reads gl_FrontMaterial/gl_BackMaterial once per draw: the material in effect at
+  // glBegin; materials set inside the primitive only light fixed-function vertices (as Mesa).
+  struct MaterialAtBegin {
+    Context& ctx;
+    raster::Material front, back;
+    bool swapped;
+    ~MaterialAtBegin() {
+      if (swapped) ctx.lighting.front = front, ctx.lighting.back = back;
+    }
+  } restore{ctx, ctx.lighting.front, ctx.lighting.back, ctx.programs.active() && !materials.empty()};
+  if (restore.swapped) ctx.lighting.front = materials[0].front, ctx.lighting.back = materials[0].back;
   if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
   // OpenGL ES 2.0 has no fixed function: without a program the results are undefined (ES 2.0
   // 2.15); Pineda draws nothing.

@@ -6,6 +6,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/packed_image.h"
+#include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
 
 namespace pineda::gl {
@@ -13,8 +14,10 @@ namespace pineda::gl {
 void compile_DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
   // DEPTH_STENCIL / UNSIGNED_INT_24_8 pixels are laid out as one-component UNSIGNED_INT ones.
   const bool packed_ds = format == GL_DEPTH_STENCIL && type == GL_UNSIGNED_INT_24_8;
-  const bool reads = pixels && width > 0 && height > 0 &&
-                     (packed_ds || pixel_rect_format_type_error(format, type) == GL_NO_ERROR);
+  const bool reads = width > 0 && height > 0 &&
+                     (packed_ds || pixel_rect_format_type_error(format, type) == GL_NO_ERROR) &&
+                     unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, 1, false, format, type)) &&
+                     pixels;
   auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, packed_ds ? GL_RED : format,
                                          packed_ds ? GL_UNSIGNED_INT : type, pixels)
                      : std::vector<uint8_t>{};
@@ -27,8 +30,12 @@ void compile_DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum form
 
 void compile_Bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
                     GLfloat ymove, const GLubyte* bitmap) {
-  const bool reads = bitmap && width > 0 && height > 0;
-  auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, GL_COLOR_INDEX, GL_BITMAP, bitmap)
+  const void* data = bitmap;
+  const bool reads =
+      width > 0 && height > 0 &&
+      unpack_pixels(ctx, data, client_image_extent(ctx.unpack, width, height, 1, false, GL_COLOR_INDEX, GL_BITMAP)) &&
+      data;
+  auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, GL_COLOR_INDEX, GL_BITMAP, data)
                      : std::vector<uint8_t>{};
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);

@@ -23,6 +23,7 @@ struct RasterPosition {
   float window[4] = {0, 0, 0, 1};  // x, y, z in window coordinates; w is the clip w
   bool valid = true;
   float color[4] = {1, 1, 1, 1};
+  float secondary_color[4] = {0, 0, 0, 1};  // GL 2.1's CURRENT_RASTER_SECONDARY_COLOR
   float texcoord[raster::kMaxTextureUnits][4] = {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}};
   float distance = 0.f;  // from the eye, for fog
 };

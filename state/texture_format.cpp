@@ -29,6 +29,10 @@ TextureFormat depth_format(uint8_t bits) {
   f.depth = bits;
   return f;
 }
+TextureFormat srgb(TextureFormat f) {
+  f.srgb = true;
+  return f;
+}
 TextureFormat intensity() {
   TextureFormat f;
   f.base = TexBaseFormat::Intensity;
@@ -67,6 +71,10 @@ GLint generic_compressed_base(GLint internal_format) {
     case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
     case GL_COMPRESSED_RGB: return GL_RGB;
     case GL_COMPRESSED_RGBA: return GL_RGBA;
+    case GL_COMPRESSED_SRGB: return GL_SRGB;
+    case GL_COMPRESSED_SRGB_ALPHA: return GL_SRGB_ALPHA;
+    case GL_COMPRESSED_SLUMINANCE: return GL_SLUMINANCE;
+    case GL_COMPRESSED_SLUMINANCE_ALPHA: return GL_SLUMINANCE_ALPHA;
     default: return 0;
   }
 }
@@ -102,6 +110,10 @@ std::optional<TextureFormat> texture_format(GLint internal_format) {
     case GL_RGB10_A2: return rgba(TexBaseFormat::RGBA, 8, 8, 8, 2);
     case 4: case GL_RGBA: case GL_RGBA8: case GL_RGBA12: case GL_RGBA16:
       return rgba(TexBaseFormat::RGBA, 8, 8, 8, 8);
+    case GL_SRGB: case GL_SRGB8: return srgb(rgba(TexBaseFormat::RGB, 8, 8, 8, 0));
+    case GL_SRGB_ALPHA: case GL_SRGB8_ALPHA8: return srgb(rgba(TexBaseFormat::RGBA, 8, 8, 8, 8));
+    case GL_SLUMINANCE: case GL_SLUMINANCE8: return srgb(luminance_alpha(8, 0));
+    case GL_SLUMINANCE_ALPHA: case GL_SLUMINANCE8_ALPHA8: return srgb(luminance_alpha(8, 8));
     case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24: return depth_format(24);
     case GL_DEPTH_COMPONENT16: return depth_format(16);
     case GL_DEPTH_COMPONENT32: return depth_format(32);

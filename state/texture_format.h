@@ -23,6 +23,9 @@ struct TextureFormat {
   // hold the depth as a float's bits (depth_texel).
   uint8_t depth = 0;
   uint8_t stencil = 0;  // DEPTH_STENCIL formats (EXT_packed_depth_stencil): the stencil bits
+  // An sRGB format (GL 2.1, EXT_texture_sRGB): texels keep the sRGB-encoded values as given;
+  // the sampler decodes them (raster/srgb.h).
+  bool srgb = false;
 };
 
 // The storage of a colour internal format (1..4, the base formats and the sized ones), or

@@ -175,6 +175,7 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
     out.width = in.width;
     out.height = in.height;
     out.depth = faces == 1 ? in.depth : faces;
+    out.srgb = texture_format(in.internal_format).value_or(TextureFormat{}).srgb;
     out.texels.reserve(size_t(out.width) * out.height * out.depth);
     for (int f = 0; f < faces; ++f) {
       const std::vector<uint32_t>& texels = face_levels(f)[base + l].texels;

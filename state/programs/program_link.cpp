@@ -16,7 +16,7 @@ void link_program(Context& ctx, ProgramObject& p) {
   p.validate_status = false;
   p.executable.reset();
   p.info_log.clear();
-  const ShaderObject* stages[2] = {nullptr, nullptr};  // vertex, fragment
+  std::vector<const shader::CompiledShader*> stages[2];  // vertex, fragment: several of a stage link as one
   for (GLuint name : p.attached) {
     const ShaderObject* s = ctx.programs.objects.shader(name);
     if (!s) continue;
@@ -24,26 +24,19 @@ void link_program(Context& ctx, ProgramObject& p) {
       p.info_log = "error: shader " + std::to_string(name) + " is not compiled\n";
       return;
     }
-    const int stage = s->type == GL_VERTEX_SHADER ? 0 : 1;
-    if (stages[stage]) {
-      p.info_log = std::string("error: several ") + (stage == 0 ? "vertex" : "fragment") +
-                   " shaders in one program are not supported\n";
-      return;
-    }
-    stages[stage] = s;
+    stages[s->type == GL_VERTEX_SHADER ? 0 : 1].push_back(s->compiled.get());
   }
-  if (ctx.attribs().gles && (!stages[0] || !stages[1])) {
+  if (ctx.attribs().gles && (stages[0].empty() || stages[1].empty())) {
     p.info_log = "error: a program needs a vertex and a fragment shader\n";
     return;
   }
   auto exec = std::make_shared<LinkedProgram>();
-  exec->vertex_shader = stages[0] != nullptr;
-  exec->fragment_shader = stages[1] != nullptr;
-  if (stages[0] || stages[1]) {
+  exec->vertex_shader = !stages[0].empty();
+  exec->fragment_shader = !stages[1].empty();
+  if (exec->vertex_shader || exec->fragment_shader) {
     std::vector<shader::AttributeBinding> bindings;
     for (const auto& [name, location] : p.bindings) bindings.push_back({name, static_cast<int>(location)});
-    shader::LinkResult result = shader::link(stages[0] ? stages[0]->compiled.get() : nullptr,
-                                             stages[1] ? stages[1]->compiled.get() : nullptr, bindings);
+    shader::LinkResult result = shader::link(stages[0], stages[1], bindings);
     p.info_log = std::move(result.info_log);
     if (!result.program) return;
     exec->program = std::move(result.program);

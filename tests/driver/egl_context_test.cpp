@@ -86,7 +86,7 @@ TEST_F(EglContext, VersionsUpTo15Succeed) {
 
 TEST_F(EglContext, HigherOrInvalidVersionsAreBadMatch) {
   EGLConfig cfg = config();
-  const EGLint versions[][2] = {{2, 1}, {3, 3}, {4, 6}, {1, 6}, {0, 9},
+  const EGLint versions[][2] = {{2, 2}, {3, 0}, {3, 3}, {4, 6}, {1, 6}, {0, 9},
                                 {5, 0}};
   for (auto [major, minor] : versions) {
     const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, minor,

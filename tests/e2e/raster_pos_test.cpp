@@ -183,5 +183,22 @@ TEST_F(RasterPosTest, CompiledIntoDisplayLists) {
   EXPECT_EQ(position(), (std::array<float, 4>{9, 8, 0, 1}));
 }
 
+// GL 2.1: CURRENT_RASTER_SECONDARY_COLOR, (0, 0, 0, 1) at first; unlit, the current
+// secondary colour (clamped) at RasterPos and WindowPos.
+TEST_F(RasterPosTest, SecondaryColor) {
+  std::array<float, 4> c{};
+  glGetFloatv(GL_CURRENT_RASTER_SECONDARY_COLOR, c.data());
+  EXPECT_EQ(c, (std::array<float, 4>{0, 0, 0, 1}));
+  glSecondaryColor3f(0.25f, 0.5f, 2.f);
+  glRasterPos2f(0, 0);
+  glGetFloatv(GL_CURRENT_RASTER_SECONDARY_COLOR, c.data());
+  EXPECT_EQ(c, (std::array<float, 4>{0.25f, 0.5f, 1.f, 1.f}));
+  glSecondaryColor3f(0.75f, 0.f, 0.f);
+  glWindowPos2i(1, 1);
+  glGetFloatv(GL_CURRENT_RASTER_SECONDARY_COLOR, c.data());
+  EXPECT_EQ(c, (std::array<float, 4>{0.75f, 0.f, 0.f, 1.f}));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda::test

@@ -97,7 +97,7 @@ TEST_F(EglEs1, ESConfigServesADesktopContext) {
   ASSERT_NE(ctx, EGL_NO_CONTEXT);
   EXPECT_EQ(context_value(ctx, EGL_CONTEXT_CLIENT_TYPE), EGL_OPENGL_API);
   ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx));
-  EXPECT_EQ(gl_string(GL_VERSION).rfind("2.0 Pineda", 0), 0u) << gl_string(GL_VERSION);
+  EXPECT_EQ(gl_string(GL_VERSION).rfind("2.1 Pineda", 0), 0u) << gl_string(GL_VERSION);
 }
 
 TEST_F(EglEs1, InitialApiIsES) {

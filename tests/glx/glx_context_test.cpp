@@ -17,7 +17,7 @@ GLXContext create_attribs(Display* dpy, GLXFBConfig config, std::vector<int> att
 
 TEST_F(GlxContextTest, CreateContextAttribsVersions) {
   GLXFBConfig config = rgba8(true, true);
-  for (auto [major, minor] : {std::pair{1, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}, {1, 5}, {2, 0}}) {
+  for (auto [major, minor] : {std::pair{1, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}, {1, 5}, {2, 0}, {2, 1}}) {
     GLXContext ctx = create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major,
                                                   GLX_CONTEXT_MINOR_VERSION_ARB, minor});
     EXPECT_NE(ctx, nullptr) << major << "." << minor;
@@ -29,7 +29,7 @@ TEST_F(GlxContextTest, CreateContextAttribsVersions) {
   EXPECT_TRUE(take_errors().empty());
 
   // Versions above the implemented one are GLXBadFBConfig; ones GL never had BadMatch.
-  for (auto [major, minor, error] : {std::tuple{2, 1, glx_error_base() + GLXBadFBConfig},
+  for (auto [major, minor, error] : {std::tuple{3, 0, glx_error_base() + GLXBadFBConfig},
                                      {3, 3, glx_error_base() + GLXBadFBConfig},
                                      {1, 6, int{BadMatch}}, {4, 7, int{BadMatch}}}) {
     EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major,

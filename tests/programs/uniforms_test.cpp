@@ -321,5 +321,21 @@ TEST_F(UniformInitializerTest, Glsl120InitializersAreTheStartingValues) {
   EXPECT_EQ(got[0], 0.f);
 }
 
+// An unread uniform with an initializer stays active (as Mesa; piglit uniform-initializer
+// *-set-by-API): it has a location and its value; an unread one without is inactive.
+TEST_F(UniformInitializerTest, UnreadInitializedUniformsAreActive) {
+  const GLuint p = link("void main() { gl_Position = gl_Vertex; }\n",
+                        "#version 120\nuniform float unread = 0.75; uniform float plain;\n"
+                        "void main() { gl_FragColor = vec4(1.0); }\n");
+  ASSERT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
+  const GLint location = glGetUniformLocation(p, "unread");
+  ASSERT_GE(location, 0);
+  GLfloat got = 0.f;
+  glGetUniformfv(p, location, &got);
+  EXPECT_EQ(got, 0.75f);
+  EXPECT_EQ(glGetUniformLocation(p, "plain"), -1);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda::test

@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <memory>
 
+#include "raster/srgb.h"
 #include "tests/raster/test_support.h"
 
 namespace pineda::raster::test {
@@ -225,3 +227,26 @@ TEST(Texture, IncompleteImagesDisableTheUnit) {
 
 }  // namespace
 }  // namespace pineda::raster::test
+
+namespace pineda::raster {
+namespace {
+
+// GL 2.1 equation 3.27 at a few exact points.
+TEST(SrgbDecode, FollowsTheSpecCurve) {
+  const auto& decode = srgb_decode_table();
+  EXPECT_EQ(decode[0], 0.f);
+  EXPECT_EQ(decode[255], 1.f);
+  EXPECT_NEAR(decode[0x80], 0.2158605, 1e-6);
+  EXPECT_NEAR(decode[10], 10 / 255.0 / 12.92, 1e-7);  // the linear segment (10 / 255 <= 0.04045)
+  EXPECT_NEAR(decode[11], std::pow((11 / 255.0 + 0.055) / 1.055, 2.4), 1e-7);
+  TextureLevel level;
+  level.srgb = true;
+  const F4 rgba = texel_to_rgba(level, 0x80FF0080u);  // R 0x80, G 0, B 0xFF, A 0x80
+  EXPECT_NEAR(rgba[0], 0.2158605f, 1e-6f);
+  EXPECT_EQ(rgba[1], 0.f);
+  EXPECT_EQ(rgba[2], 1.f);
+  EXPECT_EQ(rgba[3], 128 / 255.f);  // alpha is linear
+}
+
+}  // namespace
+}  // namespace pineda::raster

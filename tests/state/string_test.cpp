@@ -14,9 +14,9 @@ std::string get_string(GLenum name) {
   return s ? reinterpret_cast<const char*>(s) : "<null>";
 }
 
-TEST_F(StringTest, VersionStartsWithTwoZeroPineda) {
+TEST_F(StringTest, VersionStartsWithTwoOnePineda) {
   const std::string version = get_string(GL_VERSION);
-  EXPECT_EQ(version.rfind("2.0 Pineda", 0), 0u) << version;
+  EXPECT_EQ(version.rfind("2.1 Pineda", 0), 0u) << version;
 }
 
 TEST_F(StringTest, RendererAndVendorNamePineda) {
