@@ -66,25 +66,27 @@ bool EglSession::open(int width, int height, std::string& error) {
   return freshContext(error);
 }
 
-bool EglSession::freshContext(std::string& error, bool es1) {
+bool EglSession::freshContext(std::string& error, ContextApi api) {
   destroyContext();
-  if (es1) {
-    const EGLint es1Attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 1, EGL_NONE};
+  if (api == ContextApi::ES11 || api == ContextApi::ES20) {
+    const EGLint version = api == ContextApi::ES11 ? 1 : 2;
+    const EGLint esAttribs[] = {EGL_CONTEXT_CLIENT_VERSION, version, EGL_NONE};
     eglBindAPI(EGL_OPENGL_ES_API);
-    context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, es1Attribs);
+    context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, esAttribs);
     eglBindAPI(EGL_OPENGL_API);
     if (context_ == EGL_NO_CONTEXT) {
-      error = eglError("eglCreateContext (OpenGL ES 1.1)");
+      error = eglError(version == 1 ? "eglCreateContext (OpenGL ES 1.1)" : "eglCreateContext (OpenGL ES 2.0)");
       return false;
     }
     return makeCurrent(error);
   }
-  const EGLint versioned[] = {EGL_CONTEXT_MAJOR_VERSION, 1, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
+  const EGLint major = api == ContextApi::GL11 ? 1 : 2;  // 1.1 or 2.1
+  const EGLint versioned[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
   context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, versioned);
-  if (context_ == EGL_NO_CONTEXT)  // EGL 1.4 without EGL_KHR_create_context
+  if (context_ == EGL_NO_CONTEXT && api == ContextApi::GL11)  // EGL 1.4 without EGL_KHR_create_context
     context_ = eglCreateContext(display_, config_, EGL_NO_CONTEXT, nullptr);
   if (context_ == EGL_NO_CONTEXT) {
-    error = eglError("eglCreateContext (OpenGL 1.1)");
+    error = eglError(api == ContextApi::GL11 ? "eglCreateContext (OpenGL 1.1)" : "eglCreateContext (OpenGL 2.1)");
     return false;
   }
   return makeCurrent(error);

@@ -1,11 +1,14 @@
 #pragma once
 // Headless EGL: a display (surfaceless platform when available), an RGBA8 + depth 24 +
-// stencil 8 pbuffer, and desktop OpenGL 1.1 (or OpenGL ES 1.1) contexts made current on it.
+// stencil 8 pbuffer, and desktop OpenGL or OpenGL ES contexts made current on it.
 #include <EGL/egl.h>
 
 #include <string>
 
 namespace pineda::tools {
+
+// The API and version a context is asked for.
+enum class ContextApi { GL11, GL21, ES11, ES20 };
 
 class EglSession {
  public:
@@ -17,8 +20,8 @@ class EglSession {
   // Returns false and sets `error` on failure.
   bool open(int width, int height, std::string& error);
   // Replaces the current context with a new one, so each scene starts from GL's initial state;
-  // an OpenGL ES 1.1 one when `es1`.
-  bool freshContext(std::string& error, bool es1 = false);
+  // of the API `api` asks for.
+  bool freshContext(std::string& error, ContextApi api = ContextApi::GL11);
 
  private:
   bool makeCurrent(std::string& error);

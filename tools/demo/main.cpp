@@ -104,8 +104,8 @@ int run(const Options& options) {
     if (!options.scenes.empty() &&
         std::find(options.scenes.begin(), options.scenes.end(), entry.name) == options.scenes.end())
       continue;
-    // Each scene but the first gets a fresh context; an ES 1.1 scene always gets its own.
-    if ((!firstScene || entry.es1) && !session.freshContext(error, entry.es1)) {
+    // Each scene but the first gets a fresh context; a scene of another API always gets its own.
+    if ((!firstScene || entry.api != tools::ContextApi::GL11) && !session.freshContext(error, entry.api)) {
       std::fprintf(stderr, "pineda-demo: %s\n", error.c_str());
       return 1;
     }

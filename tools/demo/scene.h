@@ -1,9 +1,12 @@
 #pragma once
-// A demo scene: GL 1.1 calls (and ARB_multitexture where a scene says so), or OpenGL ES 1.1 ones. Each scene runs in a fresh context, so it sets up
-// everything it needs in its constructor and assumes GL's initial state.
+// A demo scene: GL 1.1 calls (and ARB_multitexture where a scene says so), or the OpenGL 2.1,
+// ES 1.1 or ES 2.0 ones of the context its entry asks for. Each scene runs in a fresh context,
+// so it sets up everything it needs in its constructor and assumes GL's initial state.
 #include <memory>
 #include <string_view>
 #include <vector>
+
+#include "egl_session.h"
 
 namespace pineda::demo {
 
@@ -17,7 +20,7 @@ class Scene {
 struct SceneEntry {
   std::string_view name;
   std::unique_ptr<Scene> (*create)(int width, int height);
-  bool es1 = false;  // an OpenGL ES 1.1 scene (GLES/gl.h), run in an ES 1.1 context
+  tools::ContextApi api = tools::ContextApi::GL11;  // the context the scene runs in
 };
 
 const std::vector<SceneEntry>& allScenes();
@@ -32,5 +35,7 @@ std::unique_ptr<Scene> createLinesPoints(int width, int height);
 std::unique_ptr<Scene> createLitFog(int width, int height);
 std::unique_ptr<Scene> createEs1Fixed(int width, int height);
 std::unique_ptr<Scene> createSmooth(int width, int height);
+std::unique_ptr<Scene> createEs2FboLit(int width, int height);
+std::unique_ptr<Scene> createGl21Shaded(int width, int height);
 
 }  // namespace pineda::demo
