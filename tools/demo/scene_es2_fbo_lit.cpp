@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scene.h"
+#include "shader_program.h"
 
 namespace pineda::demo {
 namespace {
@@ -80,41 +81,6 @@ void main() {
     gl_FragColor = v_color;
 })";
 
-GLuint compile(GLenum type, const char* source) {
-  GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    std::fprintf(stderr, "es2_fbo_lit: shader does not compile: %s\n", log);
-  }
-  return shader;
-}
-
-// Attribute i is bound to the i-th name, so that both programs can use fixed indices.
-GLuint link(const char* vertex, const char* fragment, std::initializer_list<const char*> attributes) {
-  GLuint program = glCreateProgram();
-  GLuint vs = compile(GL_VERTEX_SHADER, vertex), fs = compile(GL_FRAGMENT_SHADER, fragment);
-  glAttachShader(program, vs);
-  glAttachShader(program, fs);
-  GLuint index = 0;
-  for (const char* name : attributes) glBindAttribLocation(program, index++, name);
-  glLinkProgram(program);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetProgramInfoLog(program, sizeof log, nullptr, log);
-    std::fprintf(stderr, "es2_fbo_lit: program does not link: %s\n", log);
-  }
-  return program;
-}
-
 struct CubeVertex {
   float position[3], normal[3], texcoord[2];
 };
@@ -141,8 +107,8 @@ class Es2FboLit final : public Scene {
  public:
   Es2FboLit(int width, int height) : width_(width), height_(height) {
     buildCube(cube_, cube_indices_);
-    cube_program_ = link(kCubeVertex, kCubeFragment, {"position", "normal", "texcoord"});
-    panel_program_ = link(kPanelVertex, kPanelFragment, {"position", "color"});
+    cube_program_ = linkProgram("es2_fbo_lit", kCubeVertex, kCubeFragment, {"position", "normal", "texcoord"});
+    panel_program_ = linkProgram("es2_fbo_lit", kPanelVertex, kPanelFragment, {"position", "color"});
 
     // An 8x8 checker of warm and cool squares, repeated twice across each face.
     std::vector<std::uint8_t> texels(8 * 8 * 4);

@@ -8,10 +8,10 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <vector>
 
 #include "scene.h"
+#include "shader_program.h"
 
 namespace pineda::demo {
 namespace {
@@ -50,20 +50,6 @@ void main() {
   gl_FragColor = vec4(color, 1.0);
 })";
 
-GLuint compile(GLenum type, const char* source) {
-  GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[1024] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    std::fprintf(stderr, "gl21_shaded: shader does not compile: %s\n", log);
-  }
-  return shader;
-}
-
 struct TorusVertex {
   float position[3], normal[3], texcoord[2];
 };
@@ -72,18 +58,7 @@ class Gl21Shaded final : public Scene {
  public:
   Gl21Shaded(int width, int height) {
     buildTorus();
-    program_ = glCreateProgram();
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    glLinkProgram(program_);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-      char log[1024] = {};
-      glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-      std::fprintf(stderr, "gl21_shaded: program does not link: %s\n", log);
-    }
+    program_ = linkProgram("gl21_shaded", kVertex, kFragment);
     glUseProgram(program_);
     glUniform1i(glGetUniformLocation(program_, "stripes"), 0);
     // Columns: s scaled by 4 (around the ring), t by 2 (around the tube), a slant of s into t.
