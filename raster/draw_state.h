@@ -116,8 +116,9 @@ struct DrawState {
   bool dither = true;  // accepted; Pineda never dithers (exact output)
   std::array<bool, 4> color_write = {true, true, true, true};
 
-  // Texturing (fixed function); a unit is enabled when its image is non-null.
-  std::array<TextureUnit, kMaxTextureUnits> texture_units;
+  // Texturing; a unit is enabled when its image is non-null. Fixed function reads the first
+  // kMaxTextureUnits, shaders all texture image units.
+  std::array<TextureUnit, kMaxTextureImageUnits> texture_units;
 
   // Set while an occlusion query is active: the draw counts its passing samples here.
   std::shared_ptr<SampleCounter> sample_counter;

@@ -38,7 +38,7 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
 
 void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)[kLanes], shader::LodMode mode,
                                const float* lod, shader::LaneMask live, float (*out)[kLanes]) const {
-  const TextureUnit* tu = unit >= 0 && unit < kMaxTextureUnits ? &units_[unit] : nullptr;
+  const TextureUnit* tu = unit >= 0 && unit < kMaxTextureImageUnits ? &units_[unit] : nullptr;
   const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
   if (image && !kind_matches(*image, kind)) image = nullptr;
   const bool one_d = kind == SamplerKind::Tex1D || kind == SamplerKind::Shadow1D;

@@ -10,13 +10,13 @@ namespace pineda::raster {
 
 class UnitTextureAccess final : public shader::TextureAccess {
  public:
-  explicit UnitTextureAccess(const std::array<TextureUnit, kMaxTextureUnits>& units) : units_(units) {}
+  explicit UnitTextureAccess(const std::array<TextureUnit, kMaxTextureImageUnits>& units) : units_(units) {}
   // A unit without a complete texture of the sampler's kind reads (0, 0, 0, 1).
   void sample(int unit, shader::SamplerKind kind, const float (*coords)[shader::kLanes], shader::LodMode mode,
               const float* lod, shader::LaneMask live, float (*out)[shader::kLanes]) const override;
 
  private:
-  const std::array<TextureUnit, kMaxTextureUnits>& units_;
+  const std::array<TextureUnit, kMaxTextureImageUnits>& units_;
 };
 
 }  // namespace pineda::raster

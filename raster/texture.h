@@ -9,7 +9,11 @@
 
 namespace pineda::raster {
 
+// Fixed-function texture units (environments, texgen, matrices, coordinate sets)...
 constexpr int kMaxTextureUnits = 4;
+// ...and the texture image units shaders sample (GL 2.0 MAX_TEXTURE_IMAGE_UNITS and
+// MAX_COMBINED_TEXTURE_IMAGE_UNITS; ES 2.0 requires 8): the first kMaxTextureUnits are both.
+constexpr int kMaxTextureImageUnits = 8;
 
 // Which components a texture really has; decides how TexEnv combines it.
 enum class TexBaseFormat : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, RGB, RGBA };

@@ -105,7 +105,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.extra_draw_buffers = ctx.extra_draw_buffers;
   f.read_buffer = ctx.read_buffer;
   f.list_base = ctx.list_base;
-  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
+  for (int u = 0; u < raster::kMaxTextureImageUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
     f.units[u].enabled_1d = ctx.texture_units[u].enabled_1d;
     f.units[u].enabled_2d = ctx.texture_units[u].enabled_2d;
     f.units[u].enabled_3d = ctx.texture_units[u].enabled_3d;
@@ -113,7 +113,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   }
   if (mask & GL_TEXTURE_BIT) {
     f.active_texture = ctx.active_texture;
-    for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+    for (int u = 0; u < raster::kMaxTextureImageUnits; ++u) {
       const TextureUnitState& unit = ctx.texture_units[u];
       AttribFrame::Unit& s = f.units[u];
       s.bound_1d = unit.bound_1d;
@@ -152,7 +152,7 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   ctx.lighting.color_material.enabled = f.lighting.color_material.enabled;
   ctx.normalize = f.normalize;
   ctx.rescale_normal = f.rescale_normal;
-  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+  for (int u = 0; u < raster::kMaxTextureImageUnits; ++u) {
     ctx.texture_units[u].enabled_1d = f.units[u].enabled_1d;
     ctx.texture_units[u].enabled_2d = f.units[u].enabled_2d;
     ctx.texture_units[u].enabled_3d = f.units[u].enabled_3d;
@@ -284,7 +284,7 @@ void restore(Context& ctx, const AttribFrame& f) {
   if (m & GL_EVAL_BIT) ctx.eval.attribs = f.eval;
   if (m & GL_LIST_BIT) ctx.list_base = f.list_base;
   if (m & GL_TEXTURE_BIT) {
-    for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
+    for (int u = 0; u < raster::kMaxTextureImageUnits; ++u) {
       TextureUnitState& unit = ctx.texture_units[u];
       const AttribFrame::Unit& saved = f.units[u];
       unit.enabled_1d = saved.enabled_1d;

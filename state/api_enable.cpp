@@ -21,9 +21,23 @@ bool is_unrendered_cap(GLenum cap) {
 
 }  // namespace
 
+bool missing_texture_unit_state(const Context& ctx, GLenum pname) {
+  if (ctx.es2() || ctx.fixed_function_texture_unit()) return false;
+  switch (pname) {
+    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: case GL_TEXTURE_CUBE_MAP:
+    case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T: case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
+    case GL_CURRENT_TEXTURE_COORDS: case GL_CURRENT_RASTER_TEXTURE_COORDS:
+    case GL_TEXTURE_MATRIX: case GL_TRANSPOSE_TEXTURE_MATRIX: case GL_TEXTURE_STACK_DEPTH:
+      return true;
+    default:
+      return false;
+  }
+}
+
 bool* server_capability(Context& ctx, GLenum cap) {
   raster::DrawState& s = ctx.draw_state;
   if (ctx.es2() && !es2_capability(cap)) return nullptr;
+  if (missing_texture_unit_state(ctx, cap)) return nullptr;
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + raster::kMaxLights) return &ctx.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
     case GL_ALPHA_TEST: return &s.alpha_test;
@@ -82,6 +96,7 @@ namespace {
 // Mesa's compatibility profile, the tie-breaker, also takes the client arrays here (as
 // glEnableClientState), and piglit relies on it; compiled into a list, they switch on replay.
 void set_capability(Context& ctx, GLenum cap, bool value) {
+  if (missing_texture_unit_state(ctx, cap)) return ctx.record_error(GL_INVALID_OPERATION);
   bool* flag = server_capability(ctx, cap);
   if (!flag) flag = client_capability(ctx, cap);
   if (!flag) return ctx.record_error(GL_INVALID_ENUM, "cap " + hex_enum(cap) + " is not a capability");
@@ -101,6 +116,10 @@ void Enable(Context& ctx, GLenum cap) { set_capability(ctx, cap, true); }
 void Disable(Context& ctx, GLenum cap) { set_capability(ctx, cap, false); }
 
 GLboolean IsEnabled(Context& ctx, GLenum cap) {
+  if (missing_texture_unit_state(ctx, cap)) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return GL_FALSE;
+  }
   if (bool* flag = server_capability(ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
   if (bool* flag = client_capability(ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
   ctx.record_error(GL_INVALID_ENUM);

@@ -68,6 +68,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   const Drawable* d = ctx.draw_drawable();
   const int stencil_bits = d ? d->framebuffer.stencil.bits : 0;
   const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
+  if (missing_texture_unit_state(ctx, pname)) return false;
   if (ctx.es2() && query_es2(ctx, pname, out)) return true;
   if (ArrayField field; const ClientArray* a = client_array(ctx, pname, field)) {
     out = field == ArrayField::Type ? enums({double(a->type)})
@@ -266,6 +267,7 @@ GLint to_int(Kind kind, double v) {
 template <typename T, typename Convert>
 void get(Context& ctx, GLenum pname, T* params, Convert convert) {
   Values values;
+  if (missing_texture_unit_state(ctx, pname)) return ctx.record_error(GL_INVALID_OPERATION);
   if (!query(ctx, pname, values)) return ctx.record_error(GL_INVALID_ENUM);
   if (!params) return;
   for (size_t i = 0; i < values.v.size(); ++i) params[i] = convert(values.kind, values.v[i]);

@@ -10,17 +10,27 @@
 namespace pineda::gl {
 namespace {
 
-MatrixStack& current_stack(Context& ctx) {
+// Null, with GL_INVALID_OPERATION, for the texture stack of a texture image unit past
+// MAX_TEXTURE_COORDS: it has none (GL 2.0 2.11.2).
+MatrixStack* current_stack(Context& ctx) {
   switch (ctx.matrix_mode) {
-    case GL_PROJECTION: return ctx.projection;
-    case GL_TEXTURE: return ctx.texture_matrix[ctx.active_texture];
-    default: return ctx.modelview;
+    case GL_PROJECTION: return &ctx.projection;
+    case GL_TEXTURE:
+      if (ctx.active_texture >= raster::kMaxTextureUnits) {
+        ctx.record_error(GL_INVALID_OPERATION);
+        return nullptr;
+      }
+      return &ctx.texture_matrix[ctx.active_texture];
+    default: return &ctx.modelview;
   }
 }
 
+void load(Context& ctx, const glm::dmat4& m) {
+  if (MatrixStack* s = current_stack(ctx)) s->top() = m;
+}
+
 void multiply(Context& ctx, const glm::dmat4& m) {
-  glm::dmat4& top = current_stack(ctx).top();
-  top = top * m;
+  if (MatrixStack* s = current_stack(ctx)) s->top() = s->top() * m;
 }
 
 template <typename T>
@@ -44,12 +54,12 @@ void MatrixMode(Context& ctx, GLenum mode) {
   ctx.matrix_mode = mode;
 }
 
-void LoadIdentity(Context& ctx) { current_stack(ctx).top() = glm::dmat4(1.0); }
+void LoadIdentity(Context& ctx) { load(ctx, glm::dmat4(1.0)); }
 void LoadMatrixf(Context& ctx, const GLfloat* m) {
-  if (m) current_stack(ctx).top() = from_column_major(m);
+  if (m) load(ctx, from_column_major(m));
 }
 void LoadMatrixd(Context& ctx, const GLdouble* m) {
-  if (m) current_stack(ctx).top() = from_column_major(m);
+  if (m) load(ctx, from_column_major(m));
 }
 void MultMatrixf(Context& ctx, const GLfloat* m) {
   if (m) multiply(ctx, from_column_major(m));
@@ -60,10 +70,10 @@ void MultMatrixd(Context& ctx, const GLdouble* m) {
 
 // GL 1.3 (ARB_transpose_matrix): the same matrices given row by row.
 void LoadTransposeMatrixf(Context& ctx, const GLfloat* m) {
-  if (m) current_stack(ctx).top() = glm::transpose(from_column_major(m));
+  if (m) load(ctx, glm::transpose(from_column_major(m)));
 }
 void LoadTransposeMatrixd(Context& ctx, const GLdouble* m) {
-  if (m) current_stack(ctx).top() = glm::transpose(from_column_major(m));
+  if (m) load(ctx, glm::transpose(from_column_major(m)));
 }
 void MultTransposeMatrixf(Context& ctx, const GLfloat* m) {
   if (m) multiply(ctx, glm::transpose(from_column_major(m)));
@@ -77,15 +87,17 @@ void MultTransposeMatrixfARB(Context& ctx, const GLfloat* m) { MultTransposeMatr
 void MultTransposeMatrixdARB(Context& ctx, const GLdouble* m) { MultTransposeMatrixd(ctx, m); }
 
 void PushMatrix(Context& ctx) {
-  MatrixStack& s = current_stack(ctx);
-  if (s.stack.size() >= s.max_depth) return ctx.record_error(GL_STACK_OVERFLOW);
-  s.stack.push_back(s.top());
+  MatrixStack* s = current_stack(ctx);
+  if (!s) return;
+  if (s->stack.size() >= s->max_depth) return ctx.record_error(GL_STACK_OVERFLOW);
+  s->stack.push_back(s->top());
 }
 
 void PopMatrix(Context& ctx) {
-  MatrixStack& s = current_stack(ctx);
-  if (s.stack.size() <= 1) return ctx.record_error(GL_STACK_UNDERFLOW);
-  s.stack.pop_back();
+  MatrixStack* s = current_stack(ctx);
+  if (!s) return;
+  if (s->stack.size() <= 1) return ctx.record_error(GL_STACK_UNDERFLOW);
+  s->stack.pop_back();
 }
 
 void Rotated(Context& ctx, GLdouble angle, GLdouble x, GLdouble y, GLdouble z) { rotate(ctx, angle, x, y, z); }

@@ -8,9 +8,9 @@
 namespace pineda::gl {
 namespace {
 
-// The unit index named by GL_TEXTUREi, or -1 when it is not a unit this context has.
-int unit_index(GLenum texture) {
-  if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + raster::kMaxTextureUnits) return -1;
+// The unit index named by GL_TEXTUREi, or -1 when it is not one of the first `units`.
+int unit_index(GLenum texture, int units = raster::kMaxTextureUnits) {
+  if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + GLenum(units)) return -1;
   return int(texture - GL_TEXTURE0);
 }
 
@@ -23,8 +23,10 @@ void set_multi_texcoord(Context& ctx, GLenum target, float s, float t, float r, 
 
 }  // namespace
 
+// Any texture image unit (MAX_COMBINED_TEXTURE_IMAGE_UNITS); OpenGL ES 1.1 has the
+// fixed-function units only. Texture coordinate sets stay MAX_TEXTURE_COORDS.
 void ActiveTexture(Context& ctx, GLenum texture) {
-  const int unit = unit_index(texture);
+  const int unit = unit_index(texture, ctx.es1() ? raster::kMaxTextureUnits : raster::kMaxTextureImageUnits);
   if (unit < 0) return ctx.record_error(GL_INVALID_ENUM);
   ctx.active_texture = GLuint(unit);
 }

@@ -63,6 +63,7 @@ float* scale_param(TexEnvState& env, GLenum pname) {
 }
 
 void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
+  if (!ctx.fixed_function_texture_unit()) return ctx.record_error(GL_INVALID_OPERATION);
   TexEnvState& env = ctx.texture_units[ctx.active_texture].env;
   if (target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS) {
     env.lod_bias = v[0];
@@ -87,6 +88,10 @@ void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
 // The values of an environment parameter and how many there are; 0 (and an error) when
 // it is not one.
 int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
+  if (!ctx.fixed_function_texture_unit()) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return 0;
+  }
   TexEnvState& env = ctx.texture_units[ctx.active_texture].env;
   if (target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS) {
     v[0] = env.lod_bias;

@@ -16,6 +16,10 @@ TexGenCoordState* coord_state(Context& ctx, GLenum coord) {
     ctx.record_error(GL_INVALID_ENUM);
     return nullptr;
   }
+  if (!ctx.fixed_function_texture_unit()) {
+    ctx.record_error(GL_INVALID_OPERATION);
+    return nullptr;
+  }
   return &ctx.extras.texgen[ctx.active_texture][coord - GL_S];
 }
 

@@ -76,7 +76,7 @@ struct AttribFrame {
     GLuint bound_3d, bound_cube;
     SavedTextureParams params_3d, params_cube;
   };
-  std::array<Unit, raster::kMaxTextureUnits> units;
+  std::array<Unit, raster::kMaxTextureImageUnits> units;  // of the texture image units
   GLuint active_texture = 0;
 };
 

@@ -6,7 +6,11 @@ namespace pineda {
 
 class Context;
 
-// The flag for a server capability (glEnable) or null when `cap` is not one.
+// Whether `pname` (an enable or a glGet) is fixed-function state of the active texture unit
+// that the unit, a texture image unit past MAX_TEXTURE_UNITS, does not have.
+bool missing_texture_unit_state(const Context& ctx, GLenum pname);
+// The flag for a server capability (glEnable) or null when `cap` is not one (or is one of a
+// texture unit's and the active unit has no fixed-function state).
 bool* server_capability(Context& ctx, GLenum cap);
 // The flag for a client array (glEnableClientState) or null when `array` is not one.
 bool* client_capability(Context& ctx, GLenum array);

@@ -110,6 +110,10 @@ class Context {
   // An OpenGL ES 2.0 context: the ES 2.0 subset (glapi/), shaders only (no fixed function),
   // GLSL ES 1.00, generic attribute 0 not the position (state/es2/).
   bool es2() const { return attribs_.gles && attribs_.major >= 2; }
+  // Whether the active texture unit has fixed-function state (environment, texgen, enables,
+  // texture matrix, coordinate set); texture image units past MAX_TEXTURE_UNITS have bindings
+  // only, and the fixed-function calls give GL_INVALID_OPERATION there (GL 2.0 2.7, 3.8).
+  bool fixed_function_texture_unit() const { return active_texture < raster::kMaxTextureUnits; }
 
   // Window-system binding (driver/). A null drawable is a surfaceless context.
   void make_current(Drawable* draw, Drawable* read);
@@ -239,7 +243,9 @@ class Context {
   PixelStore pack, unpack;
 
   // Textures
-  std::array<TextureUnitState, raster::kMaxTextureUnits> texture_units;
+  // Texture image units: the bindings of all, the fixed-function state (enables, environment,
+  // texture coordinates) of the first raster::kMaxTextureUnits only.
+  std::array<TextureUnitState, raster::kMaxTextureImageUnits> texture_units;
   TextureNamespace& textures;  // the share group's
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;

@@ -8,7 +8,8 @@ bool* vertex_extras_capability(Context& ctx, GLenum cap) {
   raster::DrawState& s = ctx.draw_state;
   VertexExtrasState& x = ctx.extras;
   if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + raster::kMaxClipPlanes) return &x.clip_plane_enabled[cap - GL_CLIP_PLANE0];
-  if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q) return &x.texgen[ctx.active_texture][cap - GL_TEXTURE_GEN_S].enabled;
+  if (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q)
+    return ctx.fixed_function_texture_unit() ? &x.texgen[ctx.active_texture][cap - GL_TEXTURE_GEN_S].enabled : nullptr;
   switch (cap) {
     case GL_FOG: return &s.fog.enabled;
     case GL_LINE_STIPPLE: return &s.line_stipple.enabled;

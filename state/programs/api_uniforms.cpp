@@ -63,7 +63,7 @@ void set_vector(Context& ctx, GLint location, GLsizei count, int components, Sou
   if (n > 0 && !v) return;
   if (is_sampler(t.base))
     for (int i = 0; i < n; ++i)
-      if (v[i] < 0 || v[i] >= raster::kMaxTextureUnits) return ctx.record_error(GL_INVALID_VALUE);
+      if (v[i] < 0 || v[i] >= raster::kMaxTextureImageUnits) return ctx.record_error(GL_INVALID_VALUE);
   for (int e = 0; e < n; ++e) {
     const size_t at = static_cast<size_t>(u->offset + (element + e) * u->stride);
     if (at + components > exec->values.size()) return;

@@ -40,7 +40,7 @@ void snapshot_sampler_textures(Context& ctx, const shader::Program& program, con
       const size_t at = static_cast<size_t>(u.offset + e * u.stride);
       if (at >= values.size()) break;
       const int index = static_cast<int>(values[at]);
-      if (index < 0 || index >= raster::kMaxTextureUnits) continue;
+      if (index < 0 || index >= raster::kMaxTextureImageUnits) continue;
       raster::TextureUnit& out = state.texture_units[index];
       TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[index], target), binding_enum(target));
       out.image = tex.snapshot();

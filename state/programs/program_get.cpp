@@ -14,9 +14,9 @@ bool query_program_state(Context& ctx, unsigned pname, GetValues& out) {
     case GL_MAX_VERTEX_UNIFORM_COMPONENTS: out = get_ints({kMaxUniformComponents}); return true;
     case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS: out = get_ints({kMaxUniformComponents}); return true;
     case GL_MAX_VARYING_FLOATS: out = get_ints({shader::kMaxVaryingFloats}); return true;
-    case GL_MAX_TEXTURE_IMAGE_UNITS: out = get_ints({raster::kMaxTextureUnits}); return true;
-    case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: out = get_ints({raster::kMaxTextureUnits}); return true;
-    case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: out = get_ints({raster::kMaxTextureUnits}); return true;
+    case GL_MAX_TEXTURE_IMAGE_UNITS: out = get_ints({raster::kMaxTextureImageUnits}); return true;
+    case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: out = get_ints({raster::kMaxTextureImageUnits}); return true;
+    case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS: out = get_ints({raster::kMaxTextureImageUnits}); return true;
     case GL_MAX_TEXTURE_COORDS: out = get_ints({raster::kMaxTextureUnits}); return true;
     default: return false;
   }

@@ -55,15 +55,15 @@ void link_program(Context& ctx, ProgramObject& p) {
 }
 
 bool samplers_consistent(const LinkedProgram& exec, std::string* log) {
-  shader::BaseType unit_type[raster::kMaxTextureUnits];
-  bool used[raster::kMaxTextureUnits] = {};
+  shader::BaseType unit_type[raster::kMaxTextureImageUnits];
+  bool used[raster::kMaxTextureImageUnits] = {};
   for (const shader::Uniform& u : exec.uniforms.active) {
     if (!is_sampler(u.type.base)) continue;
     for (int e = 0; e < std::max(u.array_size, 1); ++e) {
       const size_t at = static_cast<size_t>(u.offset + e * u.stride);
       if (at >= exec.values.size()) continue;
       const int unit = static_cast<int>(exec.values[at]);
-      if (unit < 0 || unit >= raster::kMaxTextureUnits) continue;
+      if (unit < 0 || unit >= raster::kMaxTextureImageUnits) continue;
       if (used[unit] && unit_type[unit] != u.type.base) {
         if (log) *log = "error: samplers of different types use texture unit " + std::to_string(unit) + "\n";
         return false;

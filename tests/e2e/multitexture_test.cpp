@@ -155,7 +155,7 @@ TEST_F(MultitextureTest, QueriesAreUnitSelected) {
 
 TEST_F(MultitextureTest, UnitsBeyondTheLastAreInvalidEnums) {
   glActiveTexture(GL_TEXTURE2);
-  glActiveTexture(GL_TEXTURE4);
+  glActiveTexture(GL_TEXTURE8);  // past the 8 texture image units
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   GLint v = 0;
   glGetIntegerv(GL_ACTIVE_TEXTURE, &v);

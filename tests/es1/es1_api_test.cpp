@@ -124,5 +124,18 @@ TEST(DesktopContext, RefusesESOnlyFunctions) {
   EXPECT_EQ(gl_string(GL_EXTENSIONS).find("GL_OES_fixed_point"), std::string::npos);
 }
 
+// ES 1.1 has the 4 fixed-function texture units only (desktop GL 2.0 has 8 texture image units).
+TEST_F(Es1Api, ActiveTextureTakesFourUnits) {
+  glActiveTexture(GL_TEXTURE3);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glActiveTexture(GL_TEXTURE4);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  GLint v = 0;
+  glGetIntegerv(GL_ACTIVE_TEXTURE, &v);
+  EXPECT_EQ(v, GL_TEXTURE3);
+  glGetIntegerv(GL_MAX_TEXTURE_UNITS, &v);
+  EXPECT_EQ(v, 4);
+}
+
 }  // namespace
 }  // namespace pineda::es1_test

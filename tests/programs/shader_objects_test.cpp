@@ -238,7 +238,7 @@ TEST_F(ShaderObjectsTest, LimitsAndDefaults) {
   glGetIntegerv(GL_MAX_VARYING_FLOATS, &v);
   EXPECT_EQ(v, 64);
   glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &v);
-  EXPECT_EQ(v, 4);
+  EXPECT_EQ(v, 8);
   glGetIntegerv(GL_CURRENT_PROGRAM, &v);
   EXPECT_EQ(v, 0);
   EXPECT_FALSE(glIsEnabled(GL_VERTEX_PROGRAM_POINT_SIZE));
