@@ -14,6 +14,17 @@ root_dir=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root_dir/build-deb}
 
 "$root_dir/scripts/install-deps.sh"
+# cpack's DEB generator runs dpkg-shlibdeps (dpkg-dev), which needs `file`; the clean root
+# comes from debootstrap.
+missing=()
+for p in file dpkg-dev debootstrap; do
+  dpkg-query -W -f='${Status}' "$p" 2> /dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  apt-get update -q > /dev/null
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}" > /dev/null
+fi
 fail() {
   echo "FAIL: $*"
   exit 1
@@ -37,7 +48,6 @@ dpkg-deb --info "$deb" | sed -n 's/^ \(Package\|Version\|Architecture\|Depends\)
 
 base=/var/tmp/fresh-bookworm
 if [ ! -x "$base/bin/bash" ]; then
-  command -v debootstrap > /dev/null || { apt-get update -q && apt-get install -y -q debootstrap; } > /dev/null
   mirror=$(sed -n 's/^URIs: //p' /etc/apt/sources.list.d/debian.sources 2> /dev/null | head -n 1)
   debootstrap --variant=minbase bookworm "$base" ${mirror:+"$mirror"} > /dev/null
 fi
