@@ -48,7 +48,8 @@ dpkg-deb --info "$deb" | sed -n 's/^ \(Package\|Version\|Architecture\|Depends\)
 
 base=/var/tmp/fresh-bookworm
 if [ ! -x "$base/bin/bash" ]; then
-  mirror=$(sed -n 's/^URIs: //p' /etc/apt/sources.list.d/debian.sources 2> /dev/null | head -n 1)
+  # Debian's mirror where sources are in deb822 form; a debootstrap root has none (the default then).
+  mirror=$(sed -n "s/^URIs: //p" /etc/apt/sources.list.d/debian.sources 2> /dev/null | head -n 1 || true)
   debootstrap --variant=minbase bookworm "$base" ${mirror:+"$mirror"} > /dev/null
 fi
 chroot_dir=$(mktemp -d -p /var/tmp pineda-package.XXXXXX)
