@@ -2,46 +2,15 @@
 
 namespace pineda::es2_test {
 
-Es2Context::Es2Context(int width, int height) {
-  display_ = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (display_ == EGL_NO_DISPLAY || !eglInitialize(display_, nullptr, nullptr)) {
-    error_ = "no surfaceless display";
-    return;
-  }
-  const EGLint config_attribs[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
-                                   EGL_RED_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint n = 0;
-  if (!eglChooseConfig(display_, config_attribs, &config, 1, &n) || n < 1) {
-    error_ = "no config";
-    return;
-  }
-  if (!eglBindAPI(EGL_OPENGL_ES_API)) {
-    error_ = "eglBindAPI failed";
-    return;
-  }
-  const EGLint context_attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
-  context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
-  if (context_ == EGL_NO_CONTEXT) {
-    error_ = "eglCreateContext failed: " + std::to_string(eglGetError());
-    return;
-  }
-  const EGLint surface_attribs[] = {EGL_WIDTH, width, EGL_HEIGHT, height, EGL_NONE};
-  surface_ = eglCreatePbufferSurface(display_, config, surface_attribs);
-  if (surface_ == EGL_NO_SURFACE) {
-    error_ = "eglCreatePbufferSurface failed";
-    return;
-  }
-  if (!eglMakeCurrent(display_, surface_, surface_, context_)) error_ = "eglMakeCurrent failed";
+namespace {
+constexpr EGLint kClientVersion2[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
 }
 
-Es2Context::~Es2Context() {
-  if (display_ == EGL_NO_DISPLAY) return;
-  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
-  if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
-  eglBindAPI(EGL_OPENGL_API);
-}
+Es2Context::Es2Context(int width, int height)
+    : EglContext(EGL_OPENGL_ES_API, kClientVersion2, width, height, EGL_OPENGL_ES2_BIT) {}
+
+// Later code in the same thread binds desktop GL again, as before the ES 2.0 context.
+Es2Context::~Es2Context() { eglBindAPI(EGL_OPENGL_API); }
 
 namespace {
 

@@ -10,25 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/es1/egl_context.h"
+
 namespace pineda::es2_test {
 
-class Es2Context {
- public:
+// The ES 1.1 tests' EGL context (tests/es1/egl_context.h), asked for ES 2.0 on an ES2 config.
+struct Es2Context : es1_test::EglContext {
   explicit Es2Context(int width = 16, int height = 16);
   ~Es2Context();
-  Es2Context(const Es2Context&) = delete;
-  Es2Context& operator=(const Es2Context&) = delete;
-
-  bool ok() const { return context_ != EGL_NO_CONTEXT && surface_ != EGL_NO_SURFACE; }
-  const std::string& error() const { return error_; }
-  EGLDisplay display() const { return display_; }
-  EGLContext context() const { return context_; }
-
- private:
-  EGLDisplay display_ = EGL_NO_DISPLAY;
-  EGLContext context_ = EGL_NO_CONTEXT;
-  EGLSurface surface_ = EGL_NO_SURFACE;
-  std::string error_;
 };
 
 // A linked program of the two sources with `bindings` (attribute name, location) applied;
