@@ -52,6 +52,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
     std::copy(ctx.texture_units[u].current_texcoord, ctx.texture_units[u].current_texcoord + 4,
               f.current_texcoord[u].begin());
   f.current_edge_flag = ctx.current_edge_flag;
+  f.current_generic = ctx.programs.current_attrib;
   f.color_index = ctx.color_index;
   f.eval = ctx.eval.attribs;
   f.raster_pos = ctx.raster_pos;
@@ -105,6 +106,8 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.extra_draw_buffers = ctx.extra_draw_buffers;
   f.read_buffer = ctx.read_buffer;
   f.list_base = ctx.list_base;
+  f.program_point_size = ctx.programs.point_size_from_shader;
+  f.program_two_side = ctx.programs.two_side;
   for (int u = 0; u < raster::kMaxTextureImageUnits; ++u) {  // enables: GL_ENABLE_BIT and GL_TEXTURE_BIT
     f.units[u].enabled_1d = ctx.texture_units[u].enabled_1d;
     f.units[u].enabled_2d = ctx.texture_units[u].enabled_2d;
@@ -152,6 +155,8 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   ctx.lighting.color_material.enabled = f.lighting.color_material.enabled;
   ctx.normalize = f.normalize;
   ctx.rescale_normal = f.rescale_normal;
+  ctx.programs.point_size_from_shader = f.program_point_size;
+  ctx.programs.two_side = f.program_two_side;
   for (int u = 0; u < raster::kMaxTextureImageUnits; ++u) {
     ctx.texture_units[u].enabled_1d = f.units[u].enabled_1d;
     ctx.texture_units[u].enabled_2d = f.units[u].enabled_2d;
@@ -174,6 +179,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     for (int u = 0; u < raster::kMaxTextureUnits; ++u)
       std::copy(f.current_texcoord[u].begin(), f.current_texcoord[u].end(), ctx.texture_units[u].current_texcoord);
     ctx.current_edge_flag = f.current_edge_flag;
+    ctx.programs.current_attrib = f.current_generic;
     ctx.color_index.current_index = f.color_index.current_index;
     ctx.raster_pos = f.raster_pos;
   }
@@ -344,6 +350,7 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   f.fog_coord_array = ctx.fog_coord_array;
   f.secondary_color_array = ctx.secondary_color_array;
   f.client_active_texture = ctx.client_active_texture;
+  f.generic_arrays = ctx.programs.arrays;
   ctx.client_attrib_stack.push_back(f);
 }
 
@@ -367,6 +374,7 @@ void PopClientAttrib(Context& ctx) {
     ctx.fog_coord_array = f.fog_coord_array;
     ctx.secondary_color_array = f.secondary_color_array;
     ctx.client_active_texture = f.client_active_texture;
+    ctx.programs.arrays = f.generic_arrays;
   }
 }
 

@@ -15,6 +15,7 @@
 #include "state/draw_buffer_list.h"
 #include "state/evaluator.h"
 #include "state/pixel_state.h"
+#include "state/programs/program_state.h"
 #include "state/stencil_faces.h"
 #include "state/vertex_extras_state.h"
 #include "state/tex_env_state.h"
@@ -39,6 +40,7 @@ struct AttribFrame {
   float current_color[4], current_normal[3];
   std::array<std::array<float, 4>, raster::kMaxTextureUnits> current_texcoord;
   bool current_edge_flag;
+  std::array<std::array<float, 4>, kMaxVertexAttribs> current_generic;  // CURRENT_VERTEX_ATTRIB
   EvalAttribState eval;  // GL_EVAL_BIT; the map enables are also in GL_ENABLE_BIT
   ColorIndexState color_index;  // current index: CURRENT_BIT; clear index and mask: COLOR_BUFFER_BIT
   RasterPosition raster_pos;
@@ -47,6 +49,7 @@ struct AttribFrame {
   // rasterization, fragment, enables (kept whole; restored field by field)
   raster::DrawState draw_state;
   bool enable_cull, normalize, rescale_normal;
+  bool program_point_size, program_two_side;  // GL_VERTEX_PROGRAM_POINT_SIZE, _TWO_SIDE (enable group)
   GLenum cull_face_mode, front_face, polygon_mode_front, polygon_mode_back, shade_model, matrix_mode;
   raster::Lighting lighting;
   GLenum color_material_face, color_material_mode;

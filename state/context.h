@@ -85,6 +85,7 @@ struct ClientAttribFrame {
   ClientArray index_array{.size = 1};
   std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
   GLuint client_active_texture = 0;
+  std::array<GenericArray, kMaxVertexAttribs> generic_arrays;  // GL 2.0 table 6.7: vertex-array group
 };
 
 struct TextureUnitState {
@@ -261,7 +262,7 @@ class Context {
   QueryState queries;
   RenderModeState render_mode;  // glRenderMode: selection and feedback
   AccumState accum;
-  ProgramState programs;  // GL 2.0 shader and program objects, generic attributes (state/programs/)
+  ProgramState programs{share_group_->programs};  // GL 2.0 shader and program objects, generic attributes (state/programs/)
 
   FramebufferState framebuffers;  // framebuffer and renderbuffer objects (state/framebuffers/)
 

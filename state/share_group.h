@@ -1,6 +1,7 @@
 // The objects that contexts created with a share list (glXCreateContext's shareList,
 // eglCreateContext's share_context, OSMesa's sharelist) hold in common: textures (the
-// default ones too, as Mesa), buffer objects and display lists. Queries stay per context.
+// default ones too, as Mesa), buffer objects, display lists, shader and program objects.
+// Queries and framebuffer objects stay per context.
 #pragma once
 #include <atomic>
 #include <memory>
@@ -8,6 +9,7 @@
 
 #include "state/buffer_object.h"
 #include "state/display_list.h"
+#include "state/programs/program_objects.h"
 #include "state/texture_object.h"
 
 namespace pineda {
@@ -16,6 +18,7 @@ struct ShareGroup {
   TextureNamespace textures;
   ObjectNames<BufferObject> buffers;
   DisplayLists lists;
+  ShaderProgramNames programs;
 
   // Contexts of a group may run on different threads: while the group has more than one
   // member, every GL call holds this lock (glapi/), so calls on shared objects never race.

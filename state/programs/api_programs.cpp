@@ -73,10 +73,7 @@ void UseProgram(Context& ctx, GLuint program) {
     if (!p->link_status || !p->executable) return ctx.record_error(GL_INVALID_OPERATION);
     exec = p->executable;
   }
-  const GLuint previous = ps.current;
-  ps.current = program;
-  ps.current_exec = std::move(exec);
-  if (previous != program) destroy_program_if_unused(ctx, previous);
+  ps.use(program, std::move(exec));
 }
 
 void DeleteProgram(Context& ctx, GLuint program) {
@@ -85,7 +82,7 @@ void DeleteProgram(Context& ctx, GLuint program) {
   if (!p) return;
   p->delete_pending = true;
   ctx.debug.forget_label(GL_PROGRAM, program);
-  destroy_program_if_unused(ctx, program);
+  ctx.programs.objects.destroy_program_if_unused(program);
 }
 
 GLboolean IsProgram(Context& ctx, GLuint program) {

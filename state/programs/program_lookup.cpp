@@ -17,19 +17,6 @@ ProgramObject* program_or_error(Context& ctx, GLuint name) {
   return nullptr;
 }
 
-void destroy_program_if_unused(Context& ctx, GLuint name) {
-  ProgramState& ps = ctx.programs;
-  ProgramObject* p = ps.objects.program(name);
-  if (!p || !p->delete_pending || ps.current == name) return;
-  for (GLuint shader_name : p->attached) {
-    ShaderObject* s = ps.objects.shader(shader_name);
-    if (!s) continue;
-    --s->attachments;
-    if (s->delete_pending && s->attachments <= 0) ps.objects.remove_shader(shader_name);
-  }
-  ps.objects.remove_program(name);
-}
-
 void copy_string_out(const std::string& s, GLsizei buf_size, GLsizei* length, GLchar* out) {
   GLsizei n = 0;
   if (out && buf_size > 0) {

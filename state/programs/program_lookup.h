@@ -12,10 +12,6 @@ namespace pineda {
 ShaderObject* shader_or_error(Context& ctx, GLuint name);
 ProgramObject* program_or_error(Context& ctx, GLuint name);
 
-// Frees a program flagged for deletion once nothing holds it (it is not in use), detaching
-// its shaders (which may free them in turn).
-void destroy_program_if_unused(Context& ctx, GLuint name);
-
 // glGet*InfoLog / glGetShaderSource: copies at most bufSize - 1 characters and a NUL.
 void copy_string_out(const std::string& s, GLsizei buf_size, GLsizei* length, GLchar* out);
 

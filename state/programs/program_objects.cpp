@@ -31,4 +31,16 @@ ProgramObject* ShaderProgramNames::program(GLuint name) {
   return it == programs_.end() ? nullptr : it->second.get();
 }
 
+void ShaderProgramNames::destroy_program_if_unused(GLuint name) {
+  ProgramObject* p = program(name);
+  if (!p || !p->delete_pending || p->contexts_using > 0) return;
+  for (GLuint shader_name : p->attached) {
+    ShaderObject* s = shader(shader_name);
+    if (!s) continue;
+    --s->attachments;
+    if (s->delete_pending && s->attachments <= 0) remove_shader(shader_name);
+  }
+  remove_program(name);
+}
+
 }  // namespace pineda

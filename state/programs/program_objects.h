@@ -41,10 +41,12 @@ struct ProgramObject {
   bool link_status = false, validate_status = false;
   std::string info_log;
   bool delete_pending = false;
+  int contexts_using = 0;  // contexts of the share group with this program current
   std::shared_ptr<LinkedProgram> executable;  // null until a link succeeds, and after one fails
 };
 
-// Shader and program objects share one name space (GL 2.0 2.15.1).
+// Shader and program objects share one name space (GL 2.0 2.15.1), held by the share group
+// (GL 2.1 Appendix D: shader and program objects are shared).
 class ShaderProgramNames {
  public:
   GLuint create_shader(GLenum type);
@@ -54,6 +56,9 @@ class ShaderProgramNames {
   bool exists(GLuint name) const { return name != 0 && (shaders_.count(name) || programs_.count(name)); }
   void remove_shader(GLuint name) { shaders_.erase(name); }
   void remove_program(GLuint name) { programs_.erase(name); }
+  // Frees a program flagged for deletion once no context uses it, and the shaders only it
+  // kept alive (GL 2.0 2.15.3).
+  void destroy_program_if_unused(GLuint name);
 
  private:
   GLuint next_name();

@@ -14,9 +14,6 @@
 
 namespace pineda {
 
-
-
-
 constexpr int kMaxVertexAttribs = shader::kMaxVertexAttribs;
 
 struct GenericArray {
@@ -31,7 +28,15 @@ struct GenericArray {
 };
 
 struct ProgramState {
-  ShaderProgramNames objects;
+  explicit ProgramState(ShaderProgramNames& shared_objects) : objects(shared_objects) {}
+  ProgramState(const ProgramState&) = delete;
+  ProgramState& operator=(const ProgramState&) = delete;
+  ~ProgramState() { use(0, nullptr); }  // a destroyed context stops using its program
+
+  // Makes `program` (a linked program's name, or 0) current, releasing the previous one.
+  void use(GLuint program, std::shared_ptr<LinkedProgram> exec);
+
+  ShaderProgramNames& objects;  // the share group's
   GLuint current = 0;                            // glUseProgram's name (0: fixed function)
   std::shared_ptr<LinkedProgram> current_exec;   // what draws run; kept when a relink fails
   bool point_size_from_shader = false;           // GL_VERTEX_PROGRAM_POINT_SIZE

@@ -249,5 +249,21 @@ TEST_F(ShaderObjectsTest, LimitsAndDefaults) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// Both program enables belong to the enable attribute group (GL 2.1 table 6.36).
+TEST_F(ShaderObjectsTest, ProgramEnablesArePushedWithTheEnableBit) {
+  glEnable(GL_VERTEX_PROGRAM_POINT_SIZE);
+  glPushAttrib(GL_ENABLE_BIT);
+  glDisable(GL_VERTEX_PROGRAM_POINT_SIZE);
+  glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
+  glPopAttrib();
+  EXPECT_TRUE(glIsEnabled(GL_VERTEX_PROGRAM_POINT_SIZE));
+  EXPECT_FALSE(glIsEnabled(GL_VERTEX_PROGRAM_TWO_SIDE));
+  glPushAttrib(GL_CURRENT_BIT);  // another group leaves them alone
+  glEnable(GL_VERTEX_PROGRAM_TWO_SIDE);
+  glPopAttrib();
+  EXPECT_TRUE(glIsEnabled(GL_VERTEX_PROGRAM_TWO_SIDE));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda::test

@@ -106,5 +106,42 @@ TEST_F(VertexAttribsTest, PointerStateAndErrors) {
   EXPECT_EQ(v, 3);  // unchanged by the failed calls
 }
 
+// Current generic attributes belong to the current group, generic arrays to the client
+// vertex-array group (GL 2.0 tables 6.5 and 6.7).
+TEST_F(VertexAttribsTest, PushAndPopAttribSaveGenericAttributesAndArrays) {
+  glVertexAttrib4f(5, 1, 2, 3, 4);
+  glPushAttrib(GL_CURRENT_BIT);
+  glVertexAttrib4f(5, 9, 9, 9, 9);
+  glPopAttrib();
+  GLfloat v[4] = {};
+  glGetVertexAttribfv(5, GL_CURRENT_VERTEX_ATTRIB, v);
+  EXPECT_EQ(v[0], 1.f);
+  EXPECT_EQ(v[3], 4.f);
+
+  const GLfloat data[4] = {};
+  glVertexAttribPointer(6, 2, GL_FLOAT, GL_FALSE, 8, data);
+  glEnableVertexAttribArray(6);
+  glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+  glDisableVertexAttribArray(6);
+  glVertexAttribPointer(6, 4, GL_SHORT, GL_TRUE, 0, nullptr);
+  glPopClientAttrib();
+  GLint i = -1;
+  glGetVertexAttribiv(6, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &i);
+  EXPECT_EQ(i, GL_TRUE);
+  glGetVertexAttribiv(6, GL_VERTEX_ATTRIB_ARRAY_SIZE, &i);
+  EXPECT_EQ(i, 2);
+  glGetVertexAttribiv(6, GL_VERTEX_ATTRIB_ARRAY_STRIDE, &i);
+  EXPECT_EQ(i, 8);
+  void* p = nullptr;
+  glGetVertexAttribPointerv(6, GL_VERTEX_ATTRIB_ARRAY_POINTER, &p);
+  EXPECT_EQ(p, static_cast<const void*>(data));
+  glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);  // another group leaves them alone
+  glDisableVertexAttribArray(6);
+  glPopClientAttrib();
+  glGetVertexAttribiv(6, GL_VERTEX_ATTRIB_ARRAY_ENABLED, &i);
+  EXPECT_EQ(i, GL_FALSE);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda::test
