@@ -45,10 +45,10 @@ enum class Copy { Baseline, Avx2, Avx512 };
 
 template <int kBits, Copy kCopy>
 constexpr QuadRoutine routine_for() {
-  constexpr bool z = kBits & 1, b = kBits & 2, f = kBits & 4, c = kBits & 8;
-  if constexpr (kCopy == Copy::Avx512) return &fill_avx512::fill_rows<z, b, f, c>;
-  else if constexpr (kCopy == Copy::Avx2) return &fill_avx2::fill_rows<z, b, f, c>;
-  else return &fill_sse2::fill_rows<z, b, f, c>;
+  constexpr bool z = kBits & 1, b = kBits & 2, f = kBits & 4, c = kBits & 8, st = kBits & 16;
+  if constexpr (kCopy == Copy::Avx512) return &fill_avx512::fill_rows<z, st, b, f, c>;
+  else if constexpr (kCopy == Copy::Avx2) return &fill_avx2::fill_rows<z, st, b, f, c>;
+  else return &fill_sse2::fill_rows<z, st, b, f, c>;
 }
 
 template <Copy kCopy, int... kBits>
@@ -56,19 +56,20 @@ constexpr auto make_table(std::integer_sequence<int, kBits...>) {
   return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits, kCopy>()...};
 }
 
-constexpr auto kBaseline = make_table<Copy::Baseline>(std::make_integer_sequence<int, 16>{});
-constexpr auto kAvx2 = make_table<Copy::Avx2>(std::make_integer_sequence<int, 16>{});
-constexpr auto kAvx512 = make_table<Copy::Avx512>(std::make_integer_sequence<int, 16>{});
+constexpr auto kBaseline = make_table<Copy::Baseline>(std::make_integer_sequence<int, 32>{});
+constexpr auto kAvx2 = make_table<Copy::Avx2>(std::make_integer_sequence<int, 32>{});
+constexpr auto kAvx512 = make_table<Copy::Avx512>(std::make_integer_sequence<int, 32>{});
 
 }  // namespace
 
 QuadRoutine select_fill_routine(const DrawRecord& d, const Framebuffer& fb, SimdPath path) {
   const FragmentKey& k = d.key;
-  if (d.state.shader || k.textured || k.stencil || k.extras || d.state.alpha_test) return nullptr;
+  if (d.state.shader || k.textured || k.extras || d.state.alpha_test) return nullptr;
   if (k.blend && !k.blend_over) return nullptr;  // other blends and logic ops
   if (k.depth && !(d.depth_max < 2147483647.0)) return nullptr;  // 32-bit depth: row_depth's conversion
   if (fb.color.reduction.active) return nullptr;
-  const int bits = (k.depth ? 1 : 0) | (k.blend ? 2 : 0) | (k.flat ? 4 : 0) | (k.count_samples ? 8 : 0);
+  const int bits = (k.depth ? 1 : 0) | (k.blend ? 2 : 0) | (k.flat ? 4 : 0) | (k.count_samples ? 8 : 0) |
+                   (k.stencil ? 16 : 0);
   if (uses_avx512(path)) return kAvx512[bits];
   return (uses_avx2(path) ? kAvx2 : kBaseline)[bits];
 }
