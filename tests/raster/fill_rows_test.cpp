@@ -1,8 +1,8 @@
 // The fill routines (raster/fill_rows.cpp) against the generic quad routines: the same colour
 // depth and stencil buffers and sample counts, bit for bit, on every SIMD copy, for random
 // triangles over odd-sized framebuffers, with depth functions, stencil functions and operations
-// (front and back faces), blending, colour masks, flat and perspective colours and both colour
-// orders.
+// (front and back faces), blending, colour masks, flat and perspective colours, both colour
+// orders, and MODULATE of an RGBA or RGB texture (bilinear, mipmapped or not).
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -32,7 +32,23 @@ struct Config {
   ColorFormat format = ColorFormat::RGBA8;
   bool stencil = false;
   StencilFace front, back;  // back: every other triangle faces back
+  bool textured = false;  // unit 0: MODULATE, bilinear, REPEAT on s and CLAMP_TO_EDGE on t
+  bool mipmapped = false;
+  TexBaseFormat texture_format = TexBaseFormat::RGBA;
 };
+
+std::shared_ptr<const TextureImage> random_texture(const Config& c) {
+  std::mt19937 rng(11);
+  auto image = std::make_shared<TextureImage>();
+  image->base_format = c.texture_format;
+  for (int size = 16; size >= 1; size /= 2) {
+    TextureLevel level{size, size, {}};
+    for (int i = 0; i < size * size; ++i) level.texels.push_back(static_cast<uint32_t>(rng()));
+    image->levels.push_back(std::move(level));
+    if (!c.mipmapped) break;
+  }
+  return image;
+}
 
 struct Buffers {
   std::vector<uint8_t> color;
@@ -47,6 +63,7 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
   SetupParams params;
   params.clip = {0, 0, w, h};
   params.flat = c.flat;
+  params.planes = c.textured ? kColorPlanes + kTexPlanesPerUnit : kColorPlanes;
   while (prims.size() < 60) {
     WinVert v[3];
     // Small and large triangles: a centre, then vertices around it.
@@ -59,6 +76,9 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
       vert.z = unit(rng) * 16777215.0;
       vert.inv_w = c.perspective ? 0.2 + unit(rng) : 1.0;
       for (int k = 0; k < 4; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 1.2 - 0.1);
+      // s, t, q: a few repeats of the texture across a triangle, q near 1
+      for (int k = 4; k < 6; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 5.0 - 2.0);
+      vert.attr[6] = static_cast<float>(0.5 + unit(rng));
     }
     for (int k = 0; k < 4; ++k) params.flat_color[k] = v[2].attr[k];
     params.back_facing = prims.size() % 2 == 1;
@@ -88,6 +108,14 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
   s.stencil_test = c.stencil;
   s.stencil_front = c.front;
   s.stencil_back = c.back;
+  if (c.textured) {
+    TextureUnit& unit = s.texture_units[0];
+    unit.image = random_texture(c);
+    unit.sampler.min_filter = c.mipmapped ? TexFilter::LinearMipmapLinear : TexFilter::Linear;
+    unit.sampler.mag_filter = TexFilter::Linear;
+    unit.sampler.wrap_s = TexWrap::Repeat;
+    unit.sampler.wrap_t = TexWrap::ClampToEdge;
+  }
   DrawRecord d = make_draw_record(s, target.fb, path);
   const QuadRoutine fill_routine = select_fill_routine(d, target.fb, path);
   EXPECT_NE(fill_routine, nullptr);
@@ -210,6 +238,24 @@ TEST(FillRows, StencilMatchesTheGenericRoutine) {
   }
 }
 
+TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
+  Config c;
+  c.textured = true;
+  expect_same_as_generic(c, "textured");
+  c.mipmapped = true;
+  c.perspective = true;
+  expect_same_as_generic(c, "textured, mipmapped, perspective");
+  c.texture_format = TexBaseFormat::RGB;
+  c.blend = true;
+  c.depth = false;
+  expect_same_as_generic(c, "RGB texture, blend");
+  c.flat = true;
+  c.format = ColorFormat::BGRA8;
+  c.mask_alpha = true;
+  c.depth = true;
+  expect_same_as_generic(c, "textured, flat, BGRA, alpha masked");
+}
+
 TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
   test::OwnedFramebuffer target(8, 8);
   DrawState s = test::state_for(8, 8);
@@ -218,6 +264,16 @@ TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
   s = test::state_for(8, 8);
   s.blend = true;  // ONE, ZERO: not SRC_ALPHA, ONE_MINUS_SRC_ALPHA
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s = test::state_for(8, 8);
+  s.texture_units[0].image = random_texture(Config{});
+  s.texture_units[0].sampler.min_filter = TexFilter::Linear;  // the fast sampler's
+  s.texture_units[0].env_mode = TexEnvMode::Replace;  // only MODULATE
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.texture_units[0].env_mode = TexEnvMode::Modulate;
+  s.stencil_test = true;  // textured: not with stencil
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.stencil_test = false;
+  EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s = test::state_for(8, 8);
   s.fog.enabled = true;
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
