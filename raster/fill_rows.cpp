@@ -16,6 +16,7 @@
 // FMA: the build turns contraction off), so the same pixels.
 namespace pineda::raster::fill_sse2 {
 namespace {
+constexpr bool kDoubles8 = false;
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_sse2
@@ -24,6 +25,7 @@ namespace {
 #pragma GCC target("avx2")
 namespace pineda::raster::fill_avx2 {
 namespace {
+constexpr bool kDoubles8 = false;
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx2
@@ -33,6 +35,7 @@ namespace {
 #pragma GCC target("avx512f,avx512bw,avx512vl,avx512dq")
 namespace pineda::raster::fill_avx512 {
 namespace {
+constexpr bool kDoubles8 = true;  // 512-bit vectors of 8 doubles
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx512
