@@ -16,6 +16,7 @@
 // FMA: the build turns contraction off), so the same pixels.
 namespace pineda::raster::fill_sse2 {
 namespace {
+constexpr bool kDoubles8 = false;
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_sse2
@@ -24,6 +25,7 @@ namespace {
 #pragma GCC target("avx2")
 namespace pineda::raster::fill_avx2 {
 namespace {
+constexpr bool kDoubles8 = false;
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx2
@@ -33,6 +35,7 @@ namespace {
 #pragma GCC target("avx512f,avx512bw,avx512vl,avx512dq")
 namespace pineda::raster::fill_avx512 {
 namespace {
+constexpr bool kDoubles8 = true;  // 512-bit vectors of 8 doubles
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx512
@@ -43,34 +46,45 @@ namespace {
 
 enum class Copy { Baseline, Avx2, Avx512 };
 
+// Bits 0-4: depth, blend, flat, sample count, stencil; bit 5: textured (MODULATE in lanes),
+// which has routines only without stencil and sample count (table index bits 0-2).
 template <int kBits, Copy kCopy>
 constexpr QuadRoutine routine_for() {
-  constexpr bool z = kBits & 1, b = kBits & 2, f = kBits & 4, c = kBits & 8;
-  if constexpr (kCopy == Copy::Avx512) return &fill_avx512::fill_rows<z, b, f, c>;
-  else if constexpr (kCopy == Copy::Avx2) return &fill_avx2::fill_rows<z, b, f, c>;
-  else return &fill_sse2::fill_rows<z, b, f, c>;
+  constexpr bool z = kBits & 1, b = kBits & 2, f = kBits & 4, c = kBits & 8, st = kBits & 16, t = kBits & 32;
+  if constexpr (kCopy == Copy::Avx512) return &fill_avx512::fill_rows<z, st, b, f, c, t>;
+  else if constexpr (kCopy == Copy::Avx2) return &fill_avx2::fill_rows<z, st, b, f, c, t>;
+  else return &fill_sse2::fill_rows<z, st, b, f, c, t>;
 }
 
-template <Copy kCopy, int... kBits>
+template <Copy kCopy, int kTextured, int... kBits>
 constexpr auto make_table(std::integer_sequence<int, kBits...>) {
-  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits, kCopy>()...};
+  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits | kTextured, kCopy>()...};
 }
 
-constexpr auto kBaseline = make_table<Copy::Baseline>(std::make_integer_sequence<int, 16>{});
-constexpr auto kAvx2 = make_table<Copy::Avx2>(std::make_integer_sequence<int, 16>{});
-constexpr auto kAvx512 = make_table<Copy::Avx512>(std::make_integer_sequence<int, 16>{});
+template <Copy kCopy>
+struct Tables {
+  static constexpr auto plain = make_table<kCopy, 0>(std::make_integer_sequence<int, 32>{});
+  static constexpr auto textured = make_table<kCopy, 32>(std::make_integer_sequence<int, 8>{});
+};
+
+template <Copy kCopy>
+QuadRoutine pick(bool textured, int bits) {
+  return textured ? Tables<kCopy>::textured[bits] : Tables<kCopy>::plain[bits];
+}
 
 }  // namespace
 
 QuadRoutine select_fill_routine(const DrawRecord& d, const Framebuffer& fb, SimdPath path) {
   const FragmentKey& k = d.key;
-  if (d.state.shader || k.textured || k.stencil || k.extras || d.state.alpha_test) return nullptr;
+  if (d.state.shader || k.extras || d.state.alpha_test) return nullptr;
+  if (k.textured && (!d.modulate_in_lanes || k.stencil || k.count_samples)) return nullptr;
   if (k.blend && !k.blend_over) return nullptr;  // other blends and logic ops
   if (k.depth && !(d.depth_max < 2147483647.0)) return nullptr;  // 32-bit depth: row_depth's conversion
   if (fb.color.reduction.active) return nullptr;
-  const int bits = (k.depth ? 1 : 0) | (k.blend ? 2 : 0) | (k.flat ? 4 : 0) | (k.count_samples ? 8 : 0);
-  if (uses_avx512(path)) return kAvx512[bits];
-  return (uses_avx2(path) ? kAvx2 : kBaseline)[bits];
+  const int bits = (k.depth ? 1 : 0) | (k.blend ? 2 : 0) | (k.flat ? 4 : 0) | (k.count_samples ? 8 : 0) |
+                   (k.stencil ? 16 : 0);
+  if (uses_avx512(path)) return pick<Copy::Avx512>(k.textured, bits);
+  return uses_avx2(path) ? pick<Copy::Avx2>(k.textured, bits) : pick<Copy::Baseline>(k.textured, bits);
 }
 
 }  // namespace pineda::raster

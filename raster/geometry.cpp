@@ -1,6 +1,7 @@
 #include "raster/geometry.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "raster/fragment_ops.h"
@@ -283,9 +284,45 @@ double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool en
   return std::isfinite(offset) ? offset : 0.0;
 }
 
+const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
+  const size_t index = static_cast<size_t>(&v - vertex_base_);
+  if (index >= vertex_count_) return nullptr;
+  if (window_cache_.empty()) window_cache_.resize(std::min(kWindowCacheSlots, std::bit_ceil(vertex_count_)));
+  WindowSlot& slot = window_cache_[index & (window_cache_.size() - 1)];
+  if (slot.index != index) {
+    slot.index = index;
+    slot.usable = false;
+    if (finite_position(v)) {
+      to_clip(v, cache_clip_);
+      if (clip_outcode(cache_clip_, volume_) == 0) {
+        to_window(cache_clip_, false, slot.window);
+        slot.usable = has_window_position(slot.window);
+      }
+    }
+  }
+  return slot.usable ? &slot.window : nullptr;
+}
+
+// polygon() for a triangle of cached vertices that is culled or filled front facing without
+// an offset; false leaves the triangle to polygon()'s general path (the same result).
+bool GeometryStage::fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking) {
+  const WinVert* w[3];
+  for (int i = 0; i < 3; ++i)
+    if (!(w[i] = cached_window(*v[i]))) return false;
+  const int64_t area = signed_area2(*w[0], *w[1], *w[2]);
+  const DrawState& s = scene_.current_draw().state;
+  const bool front = s.front_ccw ? area > 0 : area < 0;
+  if (s.cull_face && (front ? s.cull_front : s.cull_back)) return true;
+  if (!front || s.polygon_front != PolygonMode::Fill || s.offset_fill) return false;
+  if (area == 0) return true;
+  if (setup_triangle(*w[0], *w[1], *w[2], params(style_for(provoking, false)), cached_prim_)) emit(cached_prim_);
+  return true;
+}
+
 void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
                             const ClipVertex& provoking) {
   if (!active_) return;
+  if (v.size() == 3 && vertex_base_ && !shader_ && !reference_ && fill_cached_triangle(v, provoking)) return;
   for (const ClipVertex* p : v)
     if (!finite_position(*p)) return;
   in_.resize(v.size());

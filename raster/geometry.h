@@ -1,6 +1,7 @@
 // The per-draw front end: clipping, facing and culling, polygon modes, setup and binning of
 // the primitives that assembly produces.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -25,6 +26,13 @@ class GeometryStage final : public PrimitiveSink {
 
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
   bool active() const { return active_; }
+
+  // The draw's vertices (the ones assembly passes are elements of it): fixed-function polygons
+  // inside the clip volume take their window positions from a cache of the recent ones.
+  void set_vertices(std::span<const ClipVertex> vertices) {
+    vertex_base_ = vertices.data();
+    vertex_count_ = vertices.size();
+  }
 
   // A programmable draw: vertex i of `vertices` has the varyings at varyings + i * count,
   // count = the program's varying_floats().
@@ -61,6 +69,8 @@ class GeometryStage final : public PrimitiveSink {
   void draw_point(const ClipVert& v, const Style& style, float size);
   float point_size_of(const ClipVertex& v) const;  // derived, before rounding
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
+  const WinVert* cached_window(const ClipVertex& v);
+  bool fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking);
   void use_back_varyings(ClipVert& v) const;
   void flatten_varyings(ClipVert& v, const ClipVertex& provoking) const;
 
@@ -77,6 +87,22 @@ class GeometryStage final : public PrimitiveSink {
   float stipple_count_ = 0.f;  // major-axis length of the strip's lines so far (line stipple)
   std::vector<ClipVert> in_, clipped_, scratch_;
   std::vector<WinVert> window_;
+
+  // Post-transform cache of fixed-function draws: the front-colour window vertex of vertex
+  // `index` in slot index & (size - 1), usable when the vertex lies inside the clip volume
+  // (shared vertices of a mesh are transformed to the window once, not once per triangle).
+  struct WindowSlot {
+    size_t index = SIZE_MAX;
+    bool usable = false;
+    WinVert window;
+  };
+  static constexpr size_t kWindowCacheSlots = 1024;
+  std::vector<WindowSlot> window_cache_;
+  size_t vertex_count_ = 0;
+  ClipVert cache_clip_;  // the vertex being cached (large: not on the stack per call)
+  // The cached triangles' setup, reused: a PrimSetup is large, and setup_triangle writes the
+  // same fields for every triangle of the draw (the others keep their defaults).
+  PrimSetup cached_prim_;
 
   // Programmable draws (DrawState::shader)
   const ShaderDraw* shader_ = nullptr;

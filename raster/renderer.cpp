@@ -55,6 +55,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   }
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, [this] { flush(); }, impl_->reference);
+  geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
   if (scene.full()) flush();

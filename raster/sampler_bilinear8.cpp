@@ -75,7 +75,11 @@ template <TexWrap kWrapS, TexWrap kWrapT>
   store4(sa, s);
   store4(ta, t);
   const int max_level = static_cast<int>(image.levels.size()) - 1;
-  const LevelChoice choice = choose_levels(sampler, quad_lambda(image.levels[0], sa, ta), max_level);
+  // Without mipmaps both magnification and minification filter level 0 bilinearly: the level
+  // of detail changes nothing (choose_levels returns level 0 for any lambda).
+  const LevelChoice choice = sampler.min_filter == TexFilter::Linear
+                                 ? LevelChoice{}
+                                 : choose_levels(sampler, quad_lambda(image.levels[0], sa, ta), max_level);
   I4 v[4];
   bilinear_level<kWrapS, kWrapT>(image.levels[choice.first], s, t, v);
   if (choice.two) {

@@ -112,7 +112,14 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
 }
 
 void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
-  constexpr int kBlock = 16, kSub = 4;
+  constexpr int kBlock = 16, kSub = 4, kSmall = 16;
+  // A small triangle (most of a dense mesh's): its few quads are edge-tested directly, without
+  // classifying blocks first (the same pixels: coverage is exact at every level). Classifying
+  // the area first costs small_tris 3% more instructions than it saves on covered areas.
+  if (area.x1 - area.x0 <= kSmall && area.y1 - area.y0 <= kSmall) {
+    emit_tested(p, area, area, sink);
+    return;
+  }
   if (classify(p, area) == BlockCover::Full) {  // rows as wide as the tile: fewer, longer calls
     emit_full(area, area, sink);
     return;

@@ -1,7 +1,8 @@
 // The fill routines (raster/fill_rows.cpp) against the generic quad routines: the same colour
-// and depth buffers and sample counts, bit for bit, on every SIMD copy, for random triangles over
-// odd-sized framebuffers, with depth functions, blending, colour masks, flat and perspective
-// colours and both colour orders.
+// depth and stencil buffers and sample counts, bit for bit, on every SIMD copy, for random
+// triangles over odd-sized framebuffers, with depth functions, stencil functions and operations
+// (front and back faces), blending, colour masks, flat and perspective colours, both colour
+// orders, and MODULATE of an RGBA or RGB texture (bilinear, mipmapped or not).
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -29,11 +30,30 @@ struct Config {
   bool mask_alpha = false;  // colour mask without alpha
   bool count = false;
   ColorFormat format = ColorFormat::RGBA8;
+  bool stencil = false;
+  StencilFace front, back;  // back: every other triangle faces back
+  bool textured = false;  // unit 0: MODULATE, bilinear, REPEAT on s and CLAMP_TO_EDGE on t
+  bool mipmapped = false;
+  TexBaseFormat texture_format = TexBaseFormat::RGBA;
 };
+
+std::shared_ptr<const TextureImage> random_texture(const Config& c) {
+  std::mt19937 rng(11);
+  auto image = std::make_shared<TextureImage>();
+  image->base_format = c.texture_format;
+  for (int size = 16; size >= 1; size /= 2) {
+    TextureLevel level{size, size, {}};
+    for (int i = 0; i < size * size; ++i) level.texels.push_back(static_cast<uint32_t>(rng()));
+    image->levels.push_back(std::move(level));
+    if (!c.mipmapped) break;
+  }
+  return image;
+}
 
 struct Buffers {
   std::vector<uint8_t> color;
   std::vector<uint32_t> depth;
+  std::vector<uint8_t> stencil;
   uint64_t passed = 0;
 };
 
@@ -43,6 +63,7 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
   SetupParams params;
   params.clip = {0, 0, w, h};
   params.flat = c.flat;
+  params.planes = c.textured ? kColorPlanes + kTexPlanesPerUnit : kColorPlanes;
   while (prims.size() < 60) {
     WinVert v[3];
     // Small and large triangles: a centre, then vertices around it.
@@ -55,8 +76,12 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
       vert.z = unit(rng) * 16777215.0;
       vert.inv_w = c.perspective ? 0.2 + unit(rng) : 1.0;
       for (int k = 0; k < 4; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 1.2 - 0.1);
+      // s, t, q: a few repeats of the texture across a triangle, q near 1
+      for (int k = 4; k < 6; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 5.0 - 2.0);
+      vert.attr[6] = static_cast<float>(0.5 + unit(rng));
     }
     for (int k = 0; k < 4; ++k) params.flat_color[k] = v[2].attr[k];
+    params.back_facing = prims.size() % 2 == 1;
     PrimSetup prim;
     if (setup_triangle(v[0], v[1], v[2], params, prim)) prims.push_back(prim);
   }
@@ -64,10 +89,12 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
 }
 
 Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int h, SimdPath path, bool generic) {
-  test::OwnedFramebuffer target(w, h, 24, false, c.format);
+  test::OwnedFramebuffer target(w, h, 24, c.stencil, c.format);
   std::mt19937 fill(7);
   for (uint8_t& b : target.color) b = static_cast<uint8_t>(fill());
   for (uint32_t& z : target.depth) z = fill() & 0xffffff;
+  // Small values, so that the comparisons with small references go both ways; and the ends.
+  for (uint8_t& v : target.stencil_buf) v = static_cast<uint8_t>(fill() % 5 == 0 ? 255 : fill() % 4);
   DrawState s = test::state_for(w, h);
   s.depth_test = c.depth;
   s.depth_func = c.func;
@@ -78,6 +105,17 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
   s.flat_shading = c.flat;
   if (c.mask_alpha) s.color_write[3] = false;
   if (c.count) s.sample_counter = std::make_shared<SampleCounter>();
+  s.stencil_test = c.stencil;
+  s.stencil_front = c.front;
+  s.stencil_back = c.back;
+  if (c.textured) {
+    TextureUnit& unit = s.texture_units[0];
+    unit.image = random_texture(c);
+    unit.sampler.min_filter = c.mipmapped ? TexFilter::LinearMipmapLinear : TexFilter::Linear;
+    unit.sampler.mag_filter = TexFilter::Linear;
+    unit.sampler.wrap_s = TexWrap::Repeat;
+    unit.sampler.wrap_t = TexWrap::ClampToEdge;
+  }
   DrawRecord d = make_draw_record(s, target.fb, path);
   const QuadRoutine fill_routine = select_fill_routine(d, target.fb, path);
   EXPECT_NE(fill_routine, nullptr);
@@ -90,6 +128,7 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
         out.passed += rasterize_in_tile(prim, d, target.fb, {tx, ty, std::min(tx + kTileSize, w), std::min(ty + kTileSize, h)});
   out.color = target.color;
   out.depth = target.depth;
+  out.stencil = target.stencil_buf;
   return out;
 }
 
@@ -100,11 +139,13 @@ void expect_same_as_generic(const Config& c, const std::string& name) {
     const Buffers generic = render(c, prims, w, h, SimdPath::Baseline, true);
     for (const SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
       const Buffers fill = render(c, prims, w, h, path, false);
-      int color_diff = 0, depth_diff = 0;
+      int color_diff = 0, depth_diff = 0, stencil_diff = 0;
       for (size_t i = 0; i < fill.color.size(); ++i) color_diff += fill.color[i] != generic.color[i];
       for (size_t i = 0; i < fill.depth.size(); ++i) depth_diff += fill.depth[i] != generic.depth[i];
+      for (size_t i = 0; i < fill.stencil.size(); ++i) stencil_diff += fill.stencil[i] != generic.stencil[i];
       EXPECT_EQ(color_diff, 0) << name << " " << w << "x" << h << " path " << static_cast<int>(path);
       EXPECT_EQ(depth_diff, 0) << name << " " << w << "x" << h << " path " << static_cast<int>(path);
+      EXPECT_EQ(stencil_diff, 0) << name << " " << w << "x" << h << " path " << static_cast<int>(path);
       EXPECT_EQ(fill.passed, generic.passed) << name;
     }
   }
@@ -154,17 +195,85 @@ TEST(FillRows, BlendOverMatchesTheGenericRoutine) {
   expect_same_as_generic(c, "blend, BGRA, depth, flat");
 }
 
+// Every stencil function against reference 2 (value mask 3), and every operation in each of
+// the three places, with and without depth, front and back faces differing.
+TEST(FillRows, StencilMatchesTheGenericRoutine) {
+  const StencilOp ops[] = {StencilOp::Keep,   StencilOp::Zero,   StencilOp::Replace,  StencilOp::Incr,
+                           StencilOp::Decr,   StencilOp::Invert, StencilOp::IncrWrap, StencilOp::DecrWrap};
+  for (int f = 0; f < 8; ++f) {
+    Config c;
+    c.stencil = true;
+    c.front.func = static_cast<CompareFunc>(f);
+    c.front.ref = 2;
+    c.front.value_mask = 3;
+    c.front.fail = StencilOp::Invert;
+    c.front.depth_fail = StencilOp::Incr;
+    c.front.depth_pass = StencilOp::Replace;
+    c.back = c.front;
+    c.back.func = static_cast<CompareFunc>(7 - f);
+    c.back.ref = 1;
+    c.back.write_mask = 0x0f;
+    expect_same_as_generic(c, "stencil func " + std::to_string(f));
+  }
+  for (int k = 0; k < 8; ++k) {
+    Config c;
+    c.stencil = true;
+    c.front.func = CompareFunc::GreaterEqual;
+    c.front.ref = 2;
+    c.front.fail = ops[k];
+    c.front.depth_fail = ops[(k + 3) % 8];
+    c.front.depth_pass = ops[(k + 5) % 8];
+    c.back = c.front;
+    c.back.func = CompareFunc::NotEqual;
+    c.back.ref = 255;
+    c.back.fail = ops[(k + 1) % 8];
+    c.back.depth_pass = ops[(k + 6) % 8];
+    c.back.write_mask = 0xf3;
+    c.blend = k % 2 == 1;
+    c.depth_write = k % 3 != 0;
+    c.count = k % 4 == 2;
+    expect_same_as_generic(c, "stencil ops " + std::to_string(k));
+    c.depth = false;
+    expect_same_as_generic(c, "stencil ops, no depth " + std::to_string(k));
+  }
+}
+
+TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
+  Config c;
+  c.textured = true;
+  expect_same_as_generic(c, "textured");
+  c.mipmapped = true;
+  c.perspective = true;
+  expect_same_as_generic(c, "textured, mipmapped, perspective");
+  c.texture_format = TexBaseFormat::RGB;
+  c.blend = true;
+  c.depth = false;
+  expect_same_as_generic(c, "RGB texture, blend");
+  c.flat = true;
+  c.format = ColorFormat::BGRA8;
+  c.mask_alpha = true;
+  c.depth = true;
+  expect_same_as_generic(c, "textured, flat, BGRA, alpha masked");
+}
+
 TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
   test::OwnedFramebuffer target(8, 8);
   DrawState s = test::state_for(8, 8);
   s.alpha_test = true;
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s = test::state_for(8, 8);
-  s.stencil_test = true;
-  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
-  s = test::state_for(8, 8);
   s.blend = true;  // ONE, ZERO: not SRC_ALPHA, ONE_MINUS_SRC_ALPHA
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s = test::state_for(8, 8);
+  s.texture_units[0].image = random_texture(Config{});
+  s.texture_units[0].sampler.min_filter = TexFilter::Linear;  // the fast sampler's
+  s.texture_units[0].env_mode = TexEnvMode::Replace;  // only MODULATE
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.texture_units[0].env_mode = TexEnvMode::Modulate;
+  s.stencil_test = true;  // textured: not with stencil
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.stencil_test = false;
+  EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s = test::state_for(8, 8);
   s.fog.enabled = true;
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
