@@ -98,6 +98,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   const int nv = program.varying_floats();
   alignas(64) float varyings[shader::kMaxVaryingFloats][kLanes];
   const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
+  const bool frag_coord = program.reads_frag_coord();
   for (int k = 0; k < 4; ++k) {
     const Quad& q = quads[k < n ? k : 0];  // unused lanes repeat quad 0: derivatives stay finite
     const F4 w = eval_plane(p.inv_w, q.ox, q.oy);
@@ -107,6 +108,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       if (p.perspective) value *= inv;
       store4(&varyings[v][4 * k], value);
     }
+    if (!frag_coord && !point) continue;
     for (int i = 0; i < 4; ++i) {
       const int lane = 4 * k + i;
       const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
@@ -124,6 +126,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   }
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
+  block.run = 0xffff;  // the unused quads repeat quad 0
   const UnitTextureAccess textures(s.texture_units);
   program.run_fragments(sd.uniforms.data(), &textures, block);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raster/sampler.h"
+#include "raster/sampler_bilinear8.h"
 
 namespace pineda::raster {
 namespace {
@@ -43,6 +44,11 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   if (image && !kind_matches(*image, kind)) image = nullptr;
   const bool one_d = kind == SamplerKind::Tex1D || kind == SamplerKind::Shadow1D;
   const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D;
+  // 2D lookups of RGBA8 images with linear filters take the fixed-function unit's fast sampler
+  // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler.
+  const QuadSampler fast = image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit
+                               ? select_bilinear8_sampler(*image, tu->sampler)
+                               : nullptr;
   for (int q = 0; q < kLanes / 4; ++q) {
     const int first = 4 * q;
     if (!((live >> first) & 0xf) || !image) {
@@ -54,27 +60,35 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
     }
     Sampler sampler = tu->sampler;
     if (shadow) sampler.compare = true;
-    float s[4], t[4], r[4], texel[4][4];
-    for (int i = 0; i < 4; ++i) {
-      s[i] = coords[0][first + i];
-      t[i] = one_d ? 0.5f : coords[1][first + i];
-      r[i] = shadow ? coords[2][first + i] : (kind == SamplerKind::Tex3D || kind == SamplerKind::Cube ? coords[2][first + i] : 0.f);
-    }
-    if (mode == shader::LodMode::Explicit) {
-      // One level per lane: each lane is sampled alone at its own level of detail.
-      for (int i = 0; i < 4; ++i) {
-        Sampler one = sampler;
-        const float l = lod && std::isfinite(lod[first + i]) ? lod[first + i] : 0.f;
-        one.min_lod = one.max_lod = std::clamp(l, sampler.min_lod, sampler.max_lod);
-        one.lod_bias = 0.f;
-        const float si[4] = {s[i], s[i], s[i], s[i]}, ti[4] = {t[i], t[i], t[i], t[i]}, ri[4] = {r[i], r[i], r[i], r[i]};
-        float lane[4][4];
-        sample_quad(*image, one, si, ti, ri, lane);
-        std::copy(lane[0], lane[0] + 4, texel[i]);
-      }
+    float texel[4][4];
+    if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) sampler.lod_bias += lod[first];
+    if (fast) {
+      F4 lanes[4];
+      fast(*image, sampler, load4(&coords[0][first]), load4(&coords[1][first]), lanes);
+      for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < 4; ++i) texel[i][c] = lanes[c][i];
     } else {
-      if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) sampler.lod_bias += lod[first];
-      sample_quad(*image, sampler, s, t, r, texel);
+      float s[4], t[4], r[4];
+      for (int i = 0; i < 4; ++i) {
+        s[i] = coords[0][first + i];
+        t[i] = one_d ? 0.5f : coords[1][first + i];
+        r[i] = shadow ? coords[2][first + i] : (kind == SamplerKind::Tex3D || kind == SamplerKind::Cube ? coords[2][first + i] : 0.f);
+      }
+      if (mode == shader::LodMode::Explicit) {
+        // One level per lane: each lane is sampled alone at its own level of detail.
+        for (int i = 0; i < 4; ++i) {
+          Sampler one = sampler;
+          const float l = lod && std::isfinite(lod[first + i]) ? lod[first + i] : 0.f;
+          one.min_lod = one.max_lod = std::clamp(l, sampler.min_lod, sampler.max_lod);
+          one.lod_bias = 0.f;
+          const float si[4] = {s[i], s[i], s[i], s[i]}, ti[4] = {t[i], t[i], t[i], t[i]}, ri[4] = {r[i], r[i], r[i], r[i]};
+          float lane[4][4];
+          sample_quad(*image, one, si, ti, ri, lane);
+          std::copy(lane[0], lane[0] + 4, texel[i]);
+        }
+      } else {
+        sample_quad(*image, sampler, s, t, r, texel);
+      }
     }
     for (int i = 0; i < 4; ++i) {
       if (!image->depth) apply_base_format(image->base_format, texel[i]);

@@ -27,6 +27,7 @@ struct LaneIo {
   const float* inputs = nullptr;   // vertex inputs [slot][4][kLanes]
   float* outputs = nullptr;        // vertex outputs [float][kLanes]
   FragmentBlock* block = nullptr;  // fragments
+  LaneMask needed = 0xFFFF;        // lanes whose results are used (texture lookups read only these)
 };
 
 // Runs `stage` over the lanes of `mask`; returns the lanes that executed discard.

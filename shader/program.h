@@ -120,6 +120,11 @@ class TextureAccess {
 // (dFdx: lane ^ 1, dFdy: lane ^ 2) and implicit LOD come from real neighbours.
 struct FragmentBlock {
   LaneMask live = 0;                  // in: covered; out: covered and not discarded
+  // Lanes to run. 0: every lane of a quad with a live pixel. A caller that fills the lanes of
+  // quads without a live pixel with a copy of a live quad (raster/ does) runs all 16, so that
+  // straight-line code never blends under a partial mask; texture lookups still read only the
+  // quads with a live pixel, and the other lanes' results are unspecified.
+  LaneMask run = 0;
   const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
   float frag_coord[4][kLanes] = {};   // x+0.5, y+0.5, window z, 1/w
   LaneMask front_facing = 0;
@@ -143,6 +148,7 @@ class Program {
   virtual bool uses_discard() const = 0;
   virtual int draw_buffers_written() const = 0;  // 1 for gl_FragColor, else highest gl_FragData + 1
   virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
+  virtual bool reads_frag_coord() const = 0;          // reads("gl_FragCoord"), without the lookup
 
   // `uniforms` has uniform_floats() values; `textures` may be null when no sampler is used.
   virtual void run_vertices(const float* uniforms, const TextureAccess* textures,
