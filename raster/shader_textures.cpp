@@ -23,6 +23,18 @@ bool kind_matches(const TextureImage& image, SamplerKind kind) {
   return false;
 }
 
+// GL 2.0 table 3.20: what a shader reads of each base format (four lanes, as apply_base_format).
+void apply_base_format4(TexBaseFormat format, F4 t[4]) {
+  switch (format) {
+    case TexBaseFormat::Alpha: t[0] = t[1] = t[2] = splat(0.f); break;
+    case TexBaseFormat::Luminance: t[1] = t[2] = t[0]; t[3] = splat(1.f); break;
+    case TexBaseFormat::LuminanceAlpha: t[1] = t[2] = t[0]; break;
+    case TexBaseFormat::Intensity: t[1] = t[2] = t[3] = t[0]; break;
+    case TexBaseFormat::RGB: t[3] = splat(1.f); break;
+    case TexBaseFormat::RGBA: break;
+  }
+}
+
 // GL 2.0 table 3.20: what a shader reads of each base format.
 void apply_base_format(TexBaseFormat format, float t[4]) {
   switch (format) {
@@ -60,35 +72,35 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
     }
     Sampler sampler = tu->sampler;
     if (shadow) sampler.compare = true;
-    float texel[4][4];
     if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) sampler.lod_bias += lod[first];
     if (fast) {
       F4 lanes[4];
       fast(*image, sampler, load4(&coords[0][first]), load4(&coords[1][first]), lanes);
-      for (int c = 0; c < 4; ++c)
-        for (int i = 0; i < 4; ++i) texel[i][c] = lanes[c][i];
-    } else {
-      float s[4], t[4], r[4];
+      apply_base_format4(image->base_format, lanes);
+      for (int c = 0; c < 4; ++c) store4(&out[c][first], lanes[c]);
+      continue;
+    }
+    float texel[4][4];
+    float s[4], t[4], r[4];
+    for (int i = 0; i < 4; ++i) {
+      s[i] = coords[0][first + i];
+      t[i] = one_d ? 0.5f : coords[1][first + i];
+      r[i] = shadow ? coords[2][first + i] : (kind == SamplerKind::Tex3D || kind == SamplerKind::Cube ? coords[2][first + i] : 0.f);
+    }
+    if (mode == shader::LodMode::Explicit) {
+      // One level per lane: each lane is sampled alone at its own level of detail.
       for (int i = 0; i < 4; ++i) {
-        s[i] = coords[0][first + i];
-        t[i] = one_d ? 0.5f : coords[1][first + i];
-        r[i] = shadow ? coords[2][first + i] : (kind == SamplerKind::Tex3D || kind == SamplerKind::Cube ? coords[2][first + i] : 0.f);
+        Sampler one = sampler;
+        const float l = lod && std::isfinite(lod[first + i]) ? lod[first + i] : 0.f;
+        one.min_lod = one.max_lod = std::clamp(l, sampler.min_lod, sampler.max_lod);
+        one.lod_bias = 0.f;
+        const float si[4] = {s[i], s[i], s[i], s[i]}, ti[4] = {t[i], t[i], t[i], t[i]}, ri[4] = {r[i], r[i], r[i], r[i]};
+        float lane[4][4];
+        sample_quad(*image, one, si, ti, ri, lane);
+        std::copy(lane[0], lane[0] + 4, texel[i]);
       }
-      if (mode == shader::LodMode::Explicit) {
-        // One level per lane: each lane is sampled alone at its own level of detail.
-        for (int i = 0; i < 4; ++i) {
-          Sampler one = sampler;
-          const float l = lod && std::isfinite(lod[first + i]) ? lod[first + i] : 0.f;
-          one.min_lod = one.max_lod = std::clamp(l, sampler.min_lod, sampler.max_lod);
-          one.lod_bias = 0.f;
-          const float si[4] = {s[i], s[i], s[i], s[i]}, ti[4] = {t[i], t[i], t[i], t[i]}, ri[4] = {r[i], r[i], r[i], r[i]};
-          float lane[4][4];
-          sample_quad(*image, one, si, ti, ri, lane);
-          std::copy(lane[0], lane[0] + 4, texel[i]);
-        }
-      } else {
-        sample_quad(*image, sampler, s, t, r, texel);
-      }
+    } else {
+      sample_quad(*image, sampler, s, t, r, texel);
     }
     for (int i = 0; i < 4; ++i) {
       if (!image->depth) apply_base_format(image->base_format, texel[i]);
