@@ -75,7 +75,8 @@ struct Quad {
 };
 
 // Shades up to four quads of row y as one block; returns the samples that passed depth.
-uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, Quad* quads, int n) {
+uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, Quad* quads, int n,
+                     const float* uniform_values) {
   const ShaderDraw& sd = *d.state.shader;
   const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
@@ -127,6 +128,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
+  block.uniform_values = uniform_values;
   const UnitTextureAccess textures(s.texture_units);
   program.run_fragments(sd.uniforms.data(), &textures, block);
 
@@ -166,6 +168,7 @@ uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Fram
   if (!d.state.shader || !d.state.shader->program) return 0;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
   const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const float* uniform_values = d.state.shader->fragment_uniform_values();
   uint32_t passed = 0;
   Quad quads[4];
   int n = 0;
@@ -178,11 +181,11 @@ uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Fram
     quads[n].ox = ox0 + splat(static_cast<float>(2 * q));
     quads[n].oy = oy;
     if (++n == 4) {
-      passed += shade_block(d, p, fb, y, quads, n);
+      passed += shade_block(d, p, fb, y, quads, n, uniform_values);
       n = 0;
     }
   }
-  if (n) passed += shade_block(d, p, fb, y, quads, n);
+  if (n) passed += shade_block(d, p, fb, y, quads, n, uniform_values);
   return passed;
 }
 

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "raster/simd_path.h"
+#include "shader/hoist.h"
 
 // The vector helpers pass 32- and 64-byte vectors but are always inlined into one copy.
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -40,7 +41,11 @@ inline int clamp_index(float x, int limit) {
 }  // namespace
 
 void StageCode::prepare() {
-  exec = code.insts;
+  HoistedCode hoisted = hoist_uniform_operations(code);
+  exec = std::move(hoisted.insts);
+  exec_textures = std::move(hoisted.textures);
+  uniform_ops = std::move(hoisted.uniform_ops);
+  slots = hoisted.slots;
   for (ir::Inst& in : exec) {
     if (in.op == Op::Texture) continue;  // its operands stay in code.textures
     in.d = offset(in.d);
@@ -58,6 +63,24 @@ void StageCode::prepare() {
   constant_lanes.resize(code.constants.size() * kLanes);
   for (size_t i = 0; i < code.constants.size(); ++i)
     for (int l = 0; l < kLanes; ++l) constant_lanes[i * kLanes + l] = code.constants[i];
+}
+
+void StageCode::compute_uniform_ops(const float* uniforms, float* slot_lanes) const {
+  if (slots == 0) return;
+  // The scalar semantics constant folding uses: the same values the lanes would compute.
+  const ir::FlushDenormals flush;
+  auto value = [&](Operand o) -> float& { return slot_lanes[static_cast<size_t>(o - code.registers) * kLanes]; };
+  auto read = [&](Operand o) { return ir::is_const(o) ? code.const_value(o) : value(o); };
+  for (const ir::Inst& in : uniform_ops) {
+    float v = 0.0f;
+    if (in.op == Op::LoadUniform) v = uniforms[in.i0];
+    else if (ir::op_arity(in.op) == 1) v = ir::eval_unary(in.op, read(in.a));
+    else if (ir::op_arity(in.op) == 2) v = ir::eval_binary(in.op, read(in.a), read(in.b));
+    else v = ir::eval_ternary(in.op, read(in.a), read(in.b), read(in.c));
+    value(in.d) = v;
+  }
+  for (int s = 0; s < slots; ++s)
+    for (int l = 1; l < kLanes; ++l) slot_lanes[s * kLanes + l] = slot_lanes[s * kLanes];
 }
 
 namespace {

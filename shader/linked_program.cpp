@@ -26,8 +26,16 @@ void LinkedProgram::run_fragments(const float* uniforms, const TextureAccess* te
   io.textures = textures;
   io.block = &block;
   io.needed = quads;
+  io.slot_lanes = block.uniform_values;
   const LaneMask discarded = execute(*fragment_, Stage::Fragment, block.run ? block.run : quads, io);
   block.live &= static_cast<LaneMask>(~discarded);
+}
+
+std::vector<float> LinkedProgram::fragment_uniform_values(const float* uniforms) const {
+  if (!fragment_ || fragment_->slots == 0) return {};
+  std::vector<float> values(static_cast<size_t>(fragment_->slots) * kLanes);
+  fragment_->compute_uniform_ops(uniforms, values.data());
+  return values;
 }
 
 std::string dump_ir(const Program& program) {

@@ -125,6 +125,8 @@ struct FragmentBlock {
   // straight-line code never blends under a partial mask; texture lookups still read only the
   // quads with a live pixel, and the other lanes' results are unspecified.
   LaneMask run = 0;
+  // Program::fragment_uniform_values() of this draw's uniforms, or null (computed per block).
+  const float* uniform_values = nullptr;
   const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
   float frag_coord[4][kLanes] = {};   // x+0.5, y+0.5, window z, 1/w
   LaneMask front_facing = 0;
@@ -155,6 +157,9 @@ class Program {
                             VertexBatch& batch) const = 0;
   virtual void run_fragments(const float* uniforms, const TextureAccess* textures,
                              FragmentBlock& block) const = 0;
+  // What the fragment shader computes from uniforms alone (shader/hoist.h), for
+  // FragmentBlock::uniform_values: computed once per draw instead of once per block.
+  virtual std::vector<float> fragment_uniform_values(const float* uniforms) const = 0;
 };
 
 struct AttributeBinding {
