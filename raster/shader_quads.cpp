@@ -92,7 +92,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       if (count) passed += static_cast<uint32_t>(__builtin_popcount(quads[k].mask));
     }
   }
-  shader::FragmentBlock block;
+  shader::FragmentBlock block;  // filled below as far as the program reads it
   for (int k = 0; k < n; ++k) block.live |= static_cast<shader::LaneMask>(quads[k].mask << (4 * k));
   if (!block.live) return passed;
 
@@ -125,6 +125,10 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       }
     }
   }
+  if (!point || !(point[2] > 0.f)) std::fill(&block.point_coord[0][0], &block.point_coord[0][0] + 2 * kLanes, 0.f);
+  // A colour buffer the program does not write reads as zeros.
+  if (sd.color_output >= program.draw_buffers_written())
+    std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0

@@ -115,7 +115,8 @@ class TextureAccess {
                       const float* lod, LaneMask live, float (*out)[kLanes]) const = 0;
 };
 
-// One 4x4 block of fragments. Lane i is pixel (x0 + (i & 1) + 2 * ((i >> 2) & 1),
+// One 4x4 block of fragments (value-initialize it, FragmentBlock{}, for zeros: the arrays have
+// no initializers, so that raster/ fills only what a program reads). Lane i is pixel (x0 + (i & 1) + 2 * ((i >> 2) & 1),
 // y0 + ((i >> 1) & 1) + 2 * (i >> 3)): lanes 4q..4q+3 form 2x2 quad q, so derivatives
 // (dFdx: lane ^ 1, dFdy: lane ^ 2) and implicit LOD come from real neighbours.
 struct FragmentBlock {
@@ -128,11 +129,11 @@ struct FragmentBlock {
   // Program::fragment_uniform_values() of this draw's uniforms, or null (computed per block).
   const float* uniform_values = nullptr;
   const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
-  float frag_coord[4][kLanes] = {};   // x+0.5, y+0.5, window z, 1/w
+  float frag_coord[4][kLanes];        // x+0.5, y+0.5, window z, 1/w
   LaneMask front_facing = 0;
-  float point_coord[2][kLanes] = {};
-  float color[kMaxDrawBuffers][4][kLanes] = {};  // out: gl_FragColor (broadcast) or gl_FragData[i]
-  float depth[kLanes] = {};                      // out, when writes_depth()
+  float point_coord[2][kLanes];
+  float color[kMaxDrawBuffers][4][kLanes];  // out: gl_FragColor (broadcast) or gl_FragData[i] < draw_buffers_written()
+  float depth[kLanes];                      // out, when writes_depth()
 };
 
 // A linked program: immutable, safe to run from several threads at once.
