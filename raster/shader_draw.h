@@ -2,6 +2,7 @@
 // values (the draw runs later on worker threads while the application changes them).
 #pragma once
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "shader/program.h"
@@ -13,6 +14,26 @@ struct ShaderDraw {
   std::vector<float> uniforms;  // program->uniform_floats() values
   bool two_side = false;        // back-facing polygons read the varyings' back_offset values
   int color_output = 0;         // the gl_FragData index written to the colour buffer
+
+  // program->fragment_uniform_values(uniforms), computed by the first block that asks (on any
+  // worker thread); null when the fragment shader has none.
+  const float* fragment_uniform_values() const {
+    std::call_once(uniform_values_.once, [this] {
+      if (program) uniform_values_.values = program->fragment_uniform_values(uniforms.data());
+    });
+    return uniform_values_.values.empty() ? nullptr : uniform_values_.values.data();
+  }
+
+ private:
+  // A copy (a draw that changes some uniforms) starts without values.
+  struct UniformValues {
+    std::once_flag once;
+    std::vector<float> values;
+    UniformValues() = default;
+    UniformValues(const UniformValues&) {}
+    UniformValues& operator=(const UniformValues&) { return *this; }
+  };
+  mutable UniformValues uniform_values_;
 };
 
 }  // namespace pineda::raster

@@ -75,7 +75,8 @@ struct Quad {
 };
 
 // Shades up to four quads of row y as one block; returns the samples that passed depth.
-uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, Quad* quads, int n) {
+uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, Quad* quads, int n,
+                     const float* uniform_values) {
   const ShaderDraw& sd = *d.state.shader;
   const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
@@ -91,13 +92,14 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       if (count) passed += static_cast<uint32_t>(__builtin_popcount(quads[k].mask));
     }
   }
-  shader::FragmentBlock block;
+  shader::FragmentBlock block;  // filled below as far as the program reads it
   for (int k = 0; k < n; ++k) block.live |= static_cast<shader::LaneMask>(quads[k].mask << (4 * k));
   if (!block.live) return passed;
 
   const int nv = program.varying_floats();
   alignas(64) float varyings[shader::kMaxVaryingFloats][kLanes];
   const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
+  const bool frag_coord = program.reads_frag_coord();
   for (int k = 0; k < 4; ++k) {
     const Quad& q = quads[k < n ? k : 0];  // unused lanes repeat quad 0: derivatives stay finite
     const F4 w = eval_plane(p.inv_w, q.ox, q.oy);
@@ -107,6 +109,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       if (p.perspective) value *= inv;
       store4(&varyings[v][4 * k], value);
     }
+    if (!frag_coord && !point) continue;
     for (int i = 0; i < 4; ++i) {
       const int lane = 4 * k + i;
       const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
@@ -122,8 +125,14 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       }
     }
   }
+  if (!point || !(point[2] > 0.f)) std::fill(&block.point_coord[0][0], &block.point_coord[0][0] + 2 * kLanes, 0.f);
+  // A colour buffer the program does not write reads as zeros.
+  if (sd.color_output >= program.draw_buffers_written())
+    std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
+  block.run = 0xffff;  // the unused quads repeat quad 0
+  block.uniform_values = uniform_values;
   const UnitTextureAccess textures(s.texture_units);
   program.run_fragments(sd.uniforms.data(), &textures, block);
 
@@ -163,6 +172,7 @@ uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Fram
   if (!d.state.shader || !d.state.shader->program) return 0;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
   const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const float* uniform_values = d.state.shader->fragment_uniform_values();
   uint32_t passed = 0;
   Quad quads[4];
   int n = 0;
@@ -175,11 +185,11 @@ uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Fram
     quads[n].ox = ox0 + splat(static_cast<float>(2 * q));
     quads[n].oy = oy;
     if (++n == 4) {
-      passed += shade_block(d, p, fb, y, quads, n);
+      passed += shade_block(d, p, fb, y, quads, n, uniform_values);
       n = 0;
     }
   }
-  if (n) passed += shade_block(d, p, fb, y, quads, n);
+  if (n) passed += shade_block(d, p, fb, y, quads, n, uniform_values);
   return passed;
 }
 

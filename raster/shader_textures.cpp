@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "raster/sampler.h"
+#include "raster/sampler_bilinear8.h"
 
 namespace pineda::raster {
 namespace {
@@ -20,6 +21,18 @@ bool kind_matches(const TextureImage& image, SamplerKind kind) {
     case SamplerKind::Shadow1D: case SamplerKind::Shadow2D: return image.kind == TexKind::Planar && image.depth;
   }
   return false;
+}
+
+// GL 2.0 table 3.20: what a shader reads of each base format (four lanes, as apply_base_format).
+void apply_base_format4(TexBaseFormat format, F4 t[4]) {
+  switch (format) {
+    case TexBaseFormat::Alpha: t[0] = t[1] = t[2] = splat(0.f); break;
+    case TexBaseFormat::Luminance: t[1] = t[2] = t[0]; t[3] = splat(1.f); break;
+    case TexBaseFormat::LuminanceAlpha: t[1] = t[2] = t[0]; break;
+    case TexBaseFormat::Intensity: t[1] = t[2] = t[3] = t[0]; break;
+    case TexBaseFormat::RGB: t[3] = splat(1.f); break;
+    case TexBaseFormat::RGBA: break;
+  }
 }
 
 // GL 2.0 table 3.20: what a shader reads of each base format.
@@ -43,6 +56,11 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   if (image && !kind_matches(*image, kind)) image = nullptr;
   const bool one_d = kind == SamplerKind::Tex1D || kind == SamplerKind::Shadow1D;
   const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D;
+  // 2D lookups of RGBA8 images with linear filters take the fixed-function unit's fast sampler
+  // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler.
+  const QuadSampler fast = image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit
+                               ? select_bilinear8_sampler(*image, tu->sampler)
+                               : nullptr;
   for (int q = 0; q < kLanes / 4; ++q) {
     const int first = 4 * q;
     if (!((live >> first) & 0xf) || !image) {
@@ -54,7 +72,16 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
     }
     Sampler sampler = tu->sampler;
     if (shadow) sampler.compare = true;
-    float s[4], t[4], r[4], texel[4][4];
+    if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) sampler.lod_bias += lod[first];
+    if (fast) {
+      F4 lanes[4];
+      fast(*image, sampler, load4(&coords[0][first]), load4(&coords[1][first]), lanes);
+      apply_base_format4(image->base_format, lanes);
+      for (int c = 0; c < 4; ++c) store4(&out[c][first], lanes[c]);
+      continue;
+    }
+    float texel[4][4];
+    float s[4], t[4], r[4];
     for (int i = 0; i < 4; ++i) {
       s[i] = coords[0][first + i];
       t[i] = one_d ? 0.5f : coords[1][first + i];
@@ -73,7 +100,6 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
         std::copy(lane[0], lane[0] + 4, texel[i]);
       }
     } else {
-      if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) sampler.lod_bias += lod[first];
       sample_quad(*image, sampler, s, t, r, texel);
     }
     for (int i = 0; i < 4; ++i) {

@@ -226,6 +226,7 @@ LinkResult link(const std::vector<const CompiledShader*>& vertex, const std::vec
   linked_program->uses_discard_ = iface.uses_discard;
   linked_program->draw_buffers_ = iface.draw_buffers;
   linked_program->reads_ = iface.reads;
+  linked_program->reads_frag_coord_ = iface.reads.count("gl_FragCoord") != 0;
   for (auto* stage : {&linked_program->vertex_, &linked_program->fragment_})
     if (*stage) {
       optimize((*stage)->code);

@@ -18,15 +18,24 @@ void LinkedProgram::run_fragments(const float* uniforms, const TextureAccess* te
   if (!fragment_ || block.live == 0) return;
   // Every lane of a quad with a covered pixel runs, so that derivatives and implicit LOD
   // see real neighbours; only covered lanes come out live.
-  LaneMask mask = 0;
+  LaneMask quads = 0;
   for (int q = 0; q < 4; ++q)
-    if (block.live >> (4 * q) & 0xF) mask |= static_cast<LaneMask>(0xF << (4 * q));
+    if (block.live >> (4 * q) & 0xF) quads |= static_cast<LaneMask>(0xF << (4 * q));
   LaneIo io;
   io.uniforms = uniforms;
   io.textures = textures;
   io.block = &block;
-  const LaneMask discarded = execute(*fragment_, Stage::Fragment, mask, io);
+  io.needed = quads;
+  io.slot_lanes = block.uniform_values;
+  const LaneMask discarded = execute(*fragment_, Stage::Fragment, block.run ? block.run : quads, io);
   block.live &= static_cast<LaneMask>(~discarded);
+}
+
+std::vector<float> LinkedProgram::fragment_uniform_values(const float* uniforms) const {
+  if (!fragment_ || fragment_->slots == 0) return {};
+  std::vector<float> values(static_cast<size_t>(fragment_->slots) * kLanes);
+  fragment_->compute_uniform_ops(uniforms, values.data());
+  return values;
 }
 
 std::string dump_ir(const Program& program) {

@@ -22,6 +22,7 @@ class LinkedProgram final : public Program {
   bool uses_discard_ = false;
   int draw_buffers_ = 0;
   std::set<std::string> reads_;
+  bool reads_frag_coord_ = false;
   std::optional<StageCode> vertex_;
   std::optional<StageCode> fragment_;
 
@@ -36,8 +37,10 @@ class LinkedProgram final : public Program {
   bool uses_discard() const override { return uses_discard_; }
   int draw_buffers_written() const override { return draw_buffers_; }
   bool reads(const char* builtin) const override { return reads_.count(builtin) != 0; }
+  bool reads_frag_coord() const override { return reads_frag_coord_; }
   void run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const override;
   void run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const override;
+  std::vector<float> fragment_uniform_values(const float* uniforms) const override;
 };
 
 }  // namespace pineda::shader

@@ -115,17 +115,25 @@ class TextureAccess {
                       const float* lod, LaneMask live, float (*out)[kLanes]) const = 0;
 };
 
-// One 4x4 block of fragments. Lane i is pixel (x0 + (i & 1) + 2 * ((i >> 2) & 1),
+// One 4x4 block of fragments (value-initialize it, FragmentBlock{}, for zeros: the arrays have
+// no initializers, so that raster/ fills only what a program reads). Lane i is pixel (x0 + (i & 1) + 2 * ((i >> 2) & 1),
 // y0 + ((i >> 1) & 1) + 2 * (i >> 3)): lanes 4q..4q+3 form 2x2 quad q, so derivatives
 // (dFdx: lane ^ 1, dFdy: lane ^ 2) and implicit LOD come from real neighbours.
 struct FragmentBlock {
   LaneMask live = 0;                  // in: covered; out: covered and not discarded
+  // Lanes to run. 0: every lane of a quad with a live pixel. A caller that fills the lanes of
+  // quads without a live pixel with a copy of a live quad (raster/ does) runs all 16, so that
+  // straight-line code never blends under a partial mask; texture lookups still read only the
+  // quads with a live pixel, and the other lanes' results are unspecified.
+  LaneMask run = 0;
+  // Program::fragment_uniform_values() of this draw's uniforms, or null (computed per block).
+  const float* uniform_values = nullptr;
   const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
-  float frag_coord[4][kLanes] = {};   // x+0.5, y+0.5, window z, 1/w
+  float frag_coord[4][kLanes];        // x+0.5, y+0.5, window z, 1/w
   LaneMask front_facing = 0;
-  float point_coord[2][kLanes] = {};
-  float color[kMaxDrawBuffers][4][kLanes] = {};  // out: gl_FragColor (broadcast) or gl_FragData[i]
-  float depth[kLanes] = {};                      // out, when writes_depth()
+  float point_coord[2][kLanes];
+  float color[kMaxDrawBuffers][4][kLanes];  // out: gl_FragColor (broadcast) or gl_FragData[i] < draw_buffers_written()
+  float depth[kLanes];                      // out, when writes_depth()
 };
 
 // A linked program: immutable, safe to run from several threads at once.
@@ -143,12 +151,16 @@ class Program {
   virtual bool uses_discard() const = 0;
   virtual int draw_buffers_written() const = 0;  // 1 for gl_FragColor, else highest gl_FragData + 1
   virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
+  virtual bool reads_frag_coord() const = 0;          // reads("gl_FragCoord"), without the lookup
 
   // `uniforms` has uniform_floats() values; `textures` may be null when no sampler is used.
   virtual void run_vertices(const float* uniforms, const TextureAccess* textures,
                             VertexBatch& batch) const = 0;
   virtual void run_fragments(const float* uniforms, const TextureAccess* textures,
                              FragmentBlock& block) const = 0;
+  // What the fragment shader computes from uniforms alone (shader/hoist.h), for
+  // FragmentBlock::uniform_values: computed once per draw instead of once per block.
+  virtual std::vector<float> fragment_uniform_values(const float* uniforms) const = 0;
 };
 
 struct AttributeBinding {

@@ -47,7 +47,7 @@ inline const Varying* find_varying(const Program& p, const std::string& name) {
 struct FragmentRun {
   std::vector<float> uniforms;
   std::vector<float> varyings;
-  FragmentBlock block;
+  FragmentBlock block{};
   explicit FragmentRun(const Program& p) : uniforms(p.uniform_floats() + 1, 0.0f), varyings((p.varying_floats() + 1) * kLanes, 0.0f) {
     block.live = 0xFFFF;
     block.front_facing = 0xFFFF;

@@ -1,6 +1,6 @@
 #pragma once
-// A benchmark scene: GL 1.1 calls only. Each scene runs in a fresh context, so it sets up
-// everything it needs in its constructor and assumes GL's initial state. The bench counts
+// A benchmark scene: GL 1.1 calls (the glsl_* scenes: GL 2.1 and GLSL 1.20). Each scene runs
+// in a fresh context, so it sets up everything it needs in its constructor and assumes GL's initial state. The bench counts
 // rasterized fragments with the stencil buffer, so a scene that uses it says so (and gets no count).
 #include <memory>
 #include <string_view>
@@ -37,5 +37,7 @@ std::unique_ptr<BenchScene> createStateChanges(int width, int height);
 std::unique_ptr<BenchScene> createCopyBlur(int width, int height);
 std::unique_ptr<BenchScene> createWireframe(int width, int height);
 std::unique_ptr<BenchScene> createStencilReflection(int width, int height);
+std::unique_ptr<BenchScene> createGlslLit(int width, int height);
+std::unique_ptr<BenchScene> createGlslSkinned(int width, int height);
 
 }  // namespace pineda::bench

@@ -15,6 +15,10 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
       {"wireframe", "a 64x64 height field as 130 line strips and 4225 two-pixel points, depth test", createWireframe},
       {"stencil_reflection", "a mirror through the stencil buffer: 24 lit cubes drawn reflected, blended floor, upright",
        createStencilReflection},
+      {"glsl_lit", "GLSL: 6 full-screen layers lit per pixel (normalize, pow, texture2D); first = compile+link+frame",
+       createGlslLit},
+      {"glsl_skinned", "GLSL: 204800 triangles skinned by 4 of 8 bone matrices in the vertex shader; first = link+frame",
+       createGlslSkinned},
   };
   return scenes;
 }

@@ -1,0 +1,88 @@
+// Vertex and fragment outputs at the end of a stage.
+#include "shader/lowerer.h"
+
+namespace pineda::shader::lowering {
+
+// The epilogue: vertex outputs to their output floats (varyings by name, the built-in
+// colours to the fragment inputs they feed), fragment outputs to the block.
+void Lowerer::route_outputs() {
+  if (stage_ == Stage::Fragment) {
+    for (const OutputVar& o : outputs_) {
+      if (o.name == "gl_FragColor") {
+        iface_.draw_buffers = std::max(iface_.draw_buffers, 1);
+        for (int c = 0; c < 4; ++c)
+          code_.insts.push_back(ir::Inst{Op::StoreColor, kNone, o.reg + c, kNone, kNone, c, 1});
+      } else if (o.name == "gl_FragData") {
+        for (int b = 0; b < iface_.draw_buffers && b < o.type.array; ++b)
+          for (int c = 0; c < 4; ++c)
+            code_.insts.push_back(ir::Inst{Op::StoreColor, kNone, o.reg + b * 4 + c, kNone, kNone, b * 4 + c, 0});
+      } else if (o.name == "gl_FragDepth") {
+        iface_.writes_depth = true;
+        code_.insts.push_back(ir::Inst{Op::StoreDepth, kNone, o.reg});
+      }
+    }
+    return;
+  }
+  std::vector<std::pair<int, Operand>> stores;  // output float, register
+  for (const OutputVar& o : outputs_) {
+    auto store_range = [&](int first_float, int reg, int n) {
+      for (int c = 0; c < n; ++c) stores.emplace_back(kOutFirstVarying + first_float + c, reg + c);
+    };
+    if (o.name == "gl_Position") {
+      for (int c = 0; c < 4; ++c) stores.emplace_back(kOutPosition + c, o.reg + c);
+      continue;
+    }
+    if (o.name == "gl_PointSize") {
+      iface_.writes_point_size = true;
+      stores.emplace_back(kOutPointSize, o.reg);
+      continue;
+    }
+    if (o.name == "gl_ClipVertex") continue;  // user clip planes use eye coordinates (README.md)
+    std::string target = o.name;
+    bool back = false;
+    if (o.name == "gl_FrontColor") target = "gl_Color";
+    else if (o.name == "gl_BackColor") target = "gl_Color", back = true;
+    else if (o.name == "gl_FrontSecondaryColor") target = "gl_SecondaryColor";
+    else if (o.name == "gl_BackSecondaryColor") target = "gl_SecondaryColor", back = true;
+    VaryingVar* v = iface_.find_varying(target);
+    if (!v && !iface_.has_fragment_shader && starts_with_gl(target)) {
+      VarType t = o.type;
+      if (target == "gl_Color" || target == "gl_SecondaryColor") t = VarType::vec(4);
+      v = &iface_.add_varying(target, t);
+    }
+    if (!v) continue;  // not read by the fragment shader
+    if (back) {
+      if (v->back_offset < 0) {
+        v->back_offset = iface_.varying_floats;
+        iface_.varying_floats += 4;
+      }
+      store_range(v->back_offset, o.reg, 4);
+      continue;
+    }
+    if (!starts_with_gl(target) && !(v->type == o.type))
+      fail("error: vertex shader output `" + o.name + "' declared as type `" + type_name(o.type) +
+           "', but fragment shader input declared as type `" + type_name(v->type) + "'\n");
+    const int n = std::min(o.type.size(), v->type.size());
+    store_range(v->offset, o.reg, n);
+  }
+  std::vector<bool> written(kOutFirstVarying + iface_.varying_floats, false);
+  for (auto& [index, reg] : stores) {
+    written[index] = true;
+    code_.insts.push_back(ir::Inst{Op::StoreOutput, kNone, reg, kNone, kNone, index});
+  }
+  for (size_t i = 0; i < written.size(); ++i)
+    if (!written[i]) code_.insts.push_back(ir::Inst{Op::StoreOutput, kNone, k(0.0f), kNone, kNone, static_cast<int>(i)});
+  // Fragment inputs that the vertex shader does not declare.
+  if (iface_.has_fragment_shader)
+    for (const VaryingVar& v : iface_.varyings) {
+      if (starts_with_gl(v.name)) continue;
+      auto d = declared_outputs_.find(v.name);
+      if (d == declared_outputs_.end())
+        fail("error: fragment shader varying " + v.name + " not written by vertex shader\n");
+      if (!(d->second == v.type))
+        fail("error: vertex shader output `" + v.name + "' declared as type `" + type_name(d->second) +
+             "', but fragment shader input declared as type `" + type_name(v.type) + "'\n");
+    }
+}
+
+}  // namespace pineda::shader::lowering
