@@ -74,6 +74,8 @@ void Lowerer::route_outputs() {
     const int n = std::min(o.type.size(), v->type.size());
     store_range(v->offset, o.reg, n);
   }
+  // GLSL 1.10 and 1.20 (as Mesa, which only warns for GLSL ES): the vertex shader writes it.
+  if (position_reg == kNone && !es_) fail("error: vertex shader does not write to `gl_Position'\n");
   if (!writes_clip_vertex && position_reg != kNone)
     for (int c = 0; c < 4; ++c) stores.emplace_back(kOutClipVertex + c, position_reg + c);
   std::vector<bool> written(kOutFirstVarying + iface_.varying_floats, false);

@@ -127,6 +127,16 @@ TEST(Link, GlobalInitializedDifferentlyInTwoShadersOfAStageIsALinkError) {
   EXPECT_NE(r.info_log.find("global variable `g' has multiple initializers"), std::string::npos) << r.info_log;
 }
 
+// As Mesa: an error for desktop GLSL 1.10/1.20, allowed (undefined position) in GLSL ES 1.00.
+TEST(Link, VertexShaderMustWriteGlPosition) {
+  auto vs = compile_ok(Stage::Vertex, "void main() { gl_FrontColor = vec4(0.3); }\n");
+  LinkResult r = link(vs.get(), nullptr, {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("vertex shader does not write to `gl_Position'"), std::string::npos) << r.info_log;
+  auto es = compile_ok(Stage::Vertex, "void main() {}\n", Language::Es100);
+  EXPECT_NE(link(es.get(), nullptr, {}).program, nullptr);
+}
+
 TEST(Link, ClipVertexOutputsDefaultToThePosition) {
   auto written = link_ok("void main() { gl_Position = vec4(1.0, 2.0, 3.0, 4.0); gl_ClipVertex = vec4(5.0); }\n", "");
   auto unwritten = link_ok("void main() { gl_Position = vec4(1.0, 2.0, 3.0, 4.0); }\n", "");
