@@ -92,7 +92,6 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
     reference_ = false;  // the reference path has no fragment shader stage
     varying_count_ = shader_->program->varying_floats();
     volume_.attrs = varying_count_;
-    volume_.user_planes = 0;  // gl_ClipVertex is not supported: user planes do not clip
     varying_planes_.assign(static_cast<size_t>(varying_count_) + 1, Plane{});
     if (s.flat_shading)
       for (const shader::Varying& v : shader_->program->varyings()) {
@@ -108,7 +107,7 @@ void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
   if (shader_) {
     const float* in = varyings_ + (&v - vertex_base_) * varying_count_;
     std::copy(in, in + varying_count_, c.attr);
-    for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = 0.0;
+    for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
     return;
   }
   for (int i = 0; i < 4; ++i) {

@@ -8,6 +8,7 @@
 
 #include "shader/es_invariance.h"
 #include "shader/front_end.h"
+#include "shader/global_initializers.h"
 #include "shader/interface.h"
 #include "shader/linked_program.h"
 #include "shader/lower.h"
@@ -134,6 +135,12 @@ bool parse_link_lower(const std::vector<const CompiledShader*>& vertex,
       program.addShader(unit.get());
       units.push_back(std::move(unit));
     }
+  for (const auto* stage : {&vertex, &fragment}) {
+    std::vector<const glslang::TIntermediate*> trees;
+    for (const auto& unit : units)
+      if ((unit->getStage() == EShLangVertex) == (stage == &vertex)) trees.push_back(unit->getIntermediate());
+    if (trees.size() > 1 && !global_initializers_unique(trees, info_log)) return false;
+  }
   const bool linked = program.link(EShMsgDefault);
   info_log = program.getInfoLog();
   if (!linked) return false;

@@ -1,6 +1,8 @@
 // Vertex and fragment outputs at the end of a stage.
 #include "shader/lowerer.h"
 
+#include <algorithm>
+
 namespace pineda::shader::lowering {
 
 // The epilogue: vertex outputs to their output floats (varyings by name, the built-in
@@ -24,12 +26,15 @@ void Lowerer::route_outputs() {
     return;
   }
   std::vector<std::pair<int, Operand>> stores;  // output float, register
+  Operand position_reg = kNone;
+  bool writes_clip_vertex = false;
   for (const OutputVar& o : outputs_) {
     auto store_range = [&](int first_float, int reg, int n) {
       for (int c = 0; c < n; ++c) stores.emplace_back(kOutFirstVarying + first_float + c, reg + c);
     };
     if (o.name == "gl_Position") {
       for (int c = 0; c < 4; ++c) stores.emplace_back(kOutPosition + c, o.reg + c);
+      position_reg = o.reg;
       continue;
     }
     if (o.name == "gl_PointSize") {
@@ -37,7 +42,11 @@ void Lowerer::route_outputs() {
       stores.emplace_back(kOutPointSize, o.reg);
       continue;
     }
-    if (o.name == "gl_ClipVertex") continue;  // user clip planes use eye coordinates (README.md)
+    if (o.name == "gl_ClipVertex") {
+      for (int c = 0; c < 4; ++c) stores.emplace_back(kOutClipVertex + c, o.reg + c);
+      writes_clip_vertex = true;
+      continue;
+    }
     std::string target = o.name;
     bool back = false;
     if (o.name == "gl_FrontColor") target = "gl_Color";
@@ -65,6 +74,10 @@ void Lowerer::route_outputs() {
     const int n = std::min(o.type.size(), v->type.size());
     store_range(v->offset, o.reg, n);
   }
+  // GLSL 1.10 and 1.20 (as Mesa, which only warns for GLSL ES): the vertex shader writes it.
+  if (position_reg == kNone && !es_) fail("error: vertex shader does not write to `gl_Position'\n");
+  if (!writes_clip_vertex && position_reg != kNone)
+    for (int c = 0; c < 4; ++c) stores.emplace_back(kOutClipVertex + c, position_reg + c);
   std::vector<bool> written(kOutFirstVarying + iface_.varying_floats, false);
   for (auto& [index, reg] : stores) {
     written[index] = true;
@@ -77,7 +90,10 @@ void Lowerer::route_outputs() {
     for (const VaryingVar& v : iface_.varyings) {
       if (starts_with_gl(v.name)) continue;
       auto d = declared_outputs_.find(v.name);
-      if (d == declared_outputs_.end())
+      const bool written = std::any_of(outputs_.begin(), outputs_.end(), [&](const OutputVar& o) { return o.name == v.name; });
+      // Desktop GLSL: declared and never used is not written either (as Mesa); in GLSL ES the
+      // value is undefined.
+      if (d == declared_outputs_.end() || (!written && !es_))
         fail("error: fragment shader varying " + v.name + " not written by vertex shader\n");
       if (!(d->second == v.type))
         fail("error: vertex shader output `" + v.name + "' declared as type `" + type_name(d->second) +

@@ -116,6 +116,7 @@ void Lowerer::stmt(TIntermNode* node) {
 void Lowerer::run(const glslang::TIntermediate& tree) {
   TIntermAggregate* root = tree.getTreeRoot() ? tree.getTreeRoot()->getAsAggregate() : nullptr;
   if (!root) fail("error: empty shader\n");
+  es_ = tree.getProfile() == EEsProfile;
   std::vector<TIntermNode*> globals;
   for (TIntermNode* n : root->getSequence()) {
     TIntermAggregate* a = n->getAsAggregate();

@@ -195,6 +195,7 @@ class Lowerer {
   std::vector<OutputVar> outputs_;
   std::map<std::string, std::pair<VarType, int>> interface_vars_;  // inputs / outputs by name
   std::map<std::string, VarType> declared_outputs_;
+  bool es_ = false;  // GLSL ES 1.00
 };
 
 }  // namespace pineda::shader::lowering

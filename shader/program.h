@@ -86,12 +86,15 @@ struct Varying {
   int back_offset = -1;
 };
 
-// Vertex outputs: floats 0..3 gl_Position, 4 gl_PointSize, then `varying_floats` floats
-// that raster/ interpolates (perspective-correct) and hands to the fragment shader in the
-// same order. Outputs the vertex shader does not write hold 0 (gl_Position (0,0,0,0)).
+// Vertex outputs: floats 0..3 gl_Position, 4 gl_PointSize, 5..8 gl_ClipVertex (the user
+// clip planes' eye-space point; gl_Position when the shader does not write it, as Mesa),
+// then `varying_floats` floats that raster/ interpolates (perspective-correct) and hands to
+// the fragment shader in the same order. Outputs the vertex shader does not write hold 0
+// (gl_Position (0,0,0,0)).
 constexpr int kOutPosition = 0;
 constexpr int kOutPointSize = 4;
-constexpr int kOutFirstVarying = 5;
+constexpr int kOutClipVertex = 5;
+constexpr int kOutFirstVarying = 9;
 
 struct VertexBatch {
   int count = 0;                 // live vertices, 1..kLanes (lanes past count hold garbage)

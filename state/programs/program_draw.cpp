@@ -114,6 +114,13 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
       raster::ClipVertex& c = out[first + lane];
       c = raster::ClipVertex{};
       for (int i = 0; i < 4; ++i) c.clip[i] = result[static_cast<size_t>(shader::kOutPosition + i) * kLanes + lane];
+      const glm::dvec4 clip_vertex(result[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
+                                   result[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
+                                   result[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
+                                   result[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
+      for (int p = 0; p < raster::kMaxClipPlanes; ++p)  // GL 2.0 2.12: planes test gl_ClipVertex
+        if (ctx.extras.clip_plane_enabled[p])
+          c.clip_distance[p] = static_cast<float>(glm::dot(ctx.extras.clip_planes[p], clip_vertex));
       for (auto* color : {c.color, c.back_color}) std::fill(color, color + 4, 0.f);
       for (auto& tc : c.texcoord) std::fill(tc, tc + 4, 0.f);
       c.edge_flag = vertices[first + lane].edge_flag;
@@ -205,6 +212,9 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
   state.point_params.attenuation[0] = 1.f;
   state.point_params.attenuation[1] = state.point_params.attenuation[2] = 0.f;
   state.shader = shader_draw;
+  state.clip_planes = 0;  // the planes test gl_ClipVertex (run_vertex_shader)
+  for (int p = 0; p < raster::kMaxClipPlanes; ++p)
+    if (ctx.extras.clip_plane_enabled[p]) state.clip_planes |= 1u << p;
 
   // Vertex-shader texture lookups read the same (usable) images the fragments will.
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());

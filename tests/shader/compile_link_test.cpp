@@ -86,8 +86,20 @@ TEST(Link, VaryingNotDeclaredByVertexShader) {
   EXPECT_NE(r.info_log.find("varying v not written by vertex shader"), std::string::npos) << r.info_log;
 }
 
-TEST(Link, DeclaredButUnwrittenVaryingIsZero) {
-  auto p = link_ok("varying vec4 v;\nvoid main() { gl_Position = vec4(1.0); }\n",
+// As Mesa (piglit glsl-1.10 linker/varying-read-but-not-written): a varying the fragment
+// shader reads must be written by the vertex shader, not only declared.
+TEST(Link, DeclaredButUnwrittenVaryingIsALinkError) {
+  auto vs = compile_ok(Stage::Vertex, "varying vec4 v;\nvoid main() { gl_Position = vec4(1.0); }\n");
+  auto fs = compile_ok(Stage::Fragment, "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n");
+  LinkResult r = link(vs.get(), fs.get(), {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("varying v not written by vertex shader"), std::string::npos) << r.info_log;
+}
+
+// A varying the vertex shader reads back without writing is still "written" as far as the
+// linker knows; it holds 0.
+TEST(Link, VaryingOnlyReadByTheVertexShaderIsZero) {
+  auto p = link_ok("varying vec4 v;\nvoid main() { gl_Position = vec4(1.0) + v * 0.0; }\n",
                    "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n");
   ASSERT_TRUE(p);
   VertexRun run(*p);
@@ -96,6 +108,46 @@ TEST(Link, DeclaredButUnwrittenVaryingIsZero) {
   ASSERT_TRUE(v);
   for (int c = 0; c < 4; ++c) EXPECT_EQ(run.out(kOutFirstVarying + v->offset + c, 3), 0.0f);
   EXPECT_EQ(run.out(kOutPosition + 3, 3), 1.0f);
+}
+
+TEST(Link, GlobalInitializedDifferentlyInTwoShadersOfAStageIsALinkError) {
+  auto a = compile_ok(Stage::Vertex, "float g = 1.0;\nvoid helper() {}\n");
+  auto b = compile_ok(Stage::Vertex, "float g = 2.0;\nvoid main() { gl_Position = vec4(g); }\n");
+  LinkResult r = link({a.get(), b.get()}, {}, {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("initializers for global variable `g' have differing values"), std::string::npos) << r.info_log;
+  auto c = compile_ok(Stage::Vertex, "float g;\nvoid main() { gl_Position = vec4(g); }\n");
+  EXPECT_NE(link({a.get(), c.get()}, {}, {}).program, nullptr);  // one initializer is fine
+  auto same = compile_ok(Stage::Vertex, "float g = 1.0;\nvoid main() { gl_Position = vec4(g); }\n");
+  EXPECT_NE(link({a.get(), same.get()}, {}, {}).program, nullptr);  // the same constant too
+  auto u = compile_ok(Stage::Vertex, "uniform float k;\nfloat g = sin(k);\nvoid helper() {}\n");
+  auto v = compile_ok(Stage::Vertex, "uniform float k;\nfloat g = sin(k);\nvoid main() { gl_Position = vec4(g); }\n");
+  r = link({u.get(), v.get()}, {}, {});
+  EXPECT_EQ(r.program, nullptr);  // not a constant: two initializers, even the same expression
+  EXPECT_NE(r.info_log.find("global variable `g' has multiple initializers"), std::string::npos) << r.info_log;
+}
+
+// As Mesa: an error for desktop GLSL 1.10/1.20, allowed (undefined position) in GLSL ES 1.00.
+TEST(Link, VertexShaderMustWriteGlPosition) {
+  auto vs = compile_ok(Stage::Vertex, "void main() { gl_FrontColor = vec4(0.3); }\n");
+  LinkResult r = link(vs.get(), nullptr, {});
+  EXPECT_EQ(r.program, nullptr);
+  EXPECT_NE(r.info_log.find("vertex shader does not write to `gl_Position'"), std::string::npos) << r.info_log;
+  auto es = compile_ok(Stage::Vertex, "void main() {}\n", Language::Es100);
+  EXPECT_NE(link(es.get(), nullptr, {}).program, nullptr);
+}
+
+TEST(Link, ClipVertexOutputsDefaultToThePosition) {
+  auto written = link_ok("void main() { gl_Position = vec4(1.0, 2.0, 3.0, 4.0); gl_ClipVertex = vec4(5.0); }\n", "");
+  auto unwritten = link_ok("void main() { gl_Position = vec4(1.0, 2.0, 3.0, 4.0); }\n", "");
+  ASSERT_TRUE(written && unwritten);
+  VertexRun a(*written), b(*unwritten);
+  a.run(*written);
+  b.run(*unwritten);
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_EQ(a.out(kOutClipVertex + c, 2), 5.0f);
+    EXPECT_EQ(b.out(kOutClipVertex + c, 2), static_cast<float>(c + 1));
+  }
 }
 
 TEST(Link, UniformTypeClashBetweenStages) {
