@@ -86,4 +86,17 @@ void resolve_rgba8(const Framebuffer& fb, int x, int y, uint8_t out[4]) {
   for (int c = 0; c < 4; ++c) out[c] = static_cast<uint8_t>((sum[c] + n / 2) / n);
 }
 
+void resolve_color(const Framebuffer& fb, const ColorBuffer& out) {
+  const unsigned n = static_cast<unsigned>(fb.samples);
+  for (int y = 0; y < fb.height; ++y) {
+    const uint8_t* in = fb.color.base + fb.color.stride * y;
+    uint8_t* row = out.base + out.stride * y;
+    for (int i = 0; i < fb.width * 4; ++i) {
+      unsigned sum = 0;
+      for (int s = 0; s < fb.samples; ++s) sum += in[fb.color.sample_stride * s + i];
+      row[i] = static_cast<uint8_t>((sum + n / 2) / n);
+    }
+  }
+}
+
 }  // namespace pineda::raster

@@ -42,5 +42,8 @@ uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw
 
 // Averages the samples of pixel (x, y) into RGBA bytes: (sum + samples / 2) / samples.
 void resolve_rgba8(const Framebuffer& fb, int x, int y, uint8_t out[4]);
+// Resolves every pixel of fb's colour planes into `out`, a single-sampled buffer of the same
+// size and byte order (a multisampled window's back buffer, for swaps and reads).
+void resolve_color(const Framebuffer& fb, const ColorBuffer& out);
 
 }  // namespace pineda::raster
