@@ -41,6 +41,12 @@ TEST_F(GlxMultisampleTest, WindowResolvesOnReadAndSwap) {
   glXSwapBuffers(dpy, w);
   EXPECT_EQ(x_pixel(w, 4, 8), 0x800000u);
   EXPECT_EQ(x_pixel(w, 3, 8), 0xff0000u);
+  // The accumulation buffer loads the resolved colour and returns into every sample (were it
+  // sample 0 only, column 3 would resolve to (127 + 3 * 255) / 4 = 223).
+  glAccum(GL_LOAD, 0.5f);
+  glAccum(GL_RETURN, 1.f);
+  EXPECT_EQ(gl_pixel(4, 8), 0x400000u);
+  EXPECT_EQ(gl_pixel(3, 8), 0x7f0000u);  // 255 / 2 through the accumulation buffer
   EXPECT_TRUE(take_errors().empty());
   glXMakeCurrent(dpy, None, nullptr);
 }
