@@ -8,6 +8,7 @@
 #include "driver/egl_thread.h"
 #include "driver/gl_version.h"
 #include "glapi/egl_entry_points.h"
+#include "raster/multisample.h"
 
 namespace pineda::egl {
 namespace {
@@ -24,6 +25,9 @@ constexpr Config kConfigs[] = {
     {3, 8, 8, 8, 8, 16, 0, EGL_PBUFFER_BIT, kRenderable}, {4, 8, 8, 8, 8, 24, 0, EGL_PBUFFER_BIT, kRenderable},
     {5, 8, 8, 8, 8, 24, 8, EGL_PBUFFER_BIT, kRenderable}, {6, 8, 8, 8, 8, 32, 0, EGL_PBUFFER_BIT, kRenderable},
     {7, 8, 8, 8, 8, 32, 8, EGL_PBUFFER_BIT, kRenderable},
+    // 4x multisampled (sorted after the single-sampled ones of the same colour buffer).
+    {8, 8, 8, 8, 8, 0, 0, EGL_PBUFFER_BIT, kRenderable, 0, EGL_NONE, raster::kMaxSamples},
+    {9, 8, 8, 8, 8, 24, 8, EGL_PBUFFER_BIT, kRenderable, 0, EGL_NONE, raster::kMaxSamples},
 };
 
 enum class Match { AtLeast, Exact, Mask, Ignore };
@@ -149,6 +153,8 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
     case EGL_STENCIL_SIZE: *value = c.stencil; return true;
     case EGL_CONFIG_ID: *value = c.id; return true;
     case EGL_SURFACE_TYPE: *value = c.surface_type; return true;
+    case EGL_SAMPLE_BUFFERS: *value = c.samples > 0; return true;
+    case EGL_SAMPLES: *value = c.samples; return true;
     case EGL_RENDERABLE_TYPE: *value = c.renderable_type; return true;
     case EGL_CONFORMANT: *value = c.renderable_type & kConformant; return true;
     case EGL_COLOR_BUFFER_TYPE: *value = EGL_RGB_BUFFER; return true;
@@ -167,8 +173,6 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint* value) {
     case EGL_ALPHA_MASK_SIZE:
     case EGL_LUMINANCE_SIZE:
     case EGL_LEVEL:
-    case EGL_SAMPLE_BUFFERS:
-    case EGL_SAMPLES:
     case EGL_TRANSPARENT_RED_VALUE:
     case EGL_TRANSPARENT_GREEN_VALUE:
     case EGL_TRANSPARENT_BLUE_VALUE: *value = 0; return true;

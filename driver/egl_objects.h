@@ -28,6 +28,7 @@ struct Config {
   // On the X11 platform: the X visual that windows and pixmaps of this config use.
   EGLint native_visual_id = 0;
   EGLint native_visual_type = EGL_NONE;
+  EGLint samples = 0;  // EGL_SAMPLES: 0, or 4 with EGL_SAMPLE_BUFFERS 1
 };
 
 struct Surface;
@@ -48,6 +49,7 @@ struct Surface {
   bool largest_pbuffer = false;
   EGLint swap_interval = 1;
   std::vector<uint8_t> color;
+  std::vector<uint8_t> sample_color;  // a multisampled config's 4 colour planes (color is their resolve)
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
   pineda::Drawable drawable;

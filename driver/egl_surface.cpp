@@ -9,15 +9,19 @@
 #include "driver/egl_thread.h"
 #include "driver/egl_x11.h"
 #include "glapi/egl_entry_points.h"
+#include "raster/multisample.h"
 
 namespace pineda::egl {
 namespace {
 
 void allocate(Surface& s) {
   size_t pixels = static_cast<size_t>(s.width) * static_cast<size_t>(s.height);
+  // A multisampled config renders into 4 planes; `color` is their resolve (Drawable::resolved).
+  const int samples = s.config->samples > 1 ? s.config->samples : 1;
   s.color.assign(pixels * 4, 0);
-  s.depth.assign(s.config->depth ? pixels : 0, 0);
-  s.stencil.assign(s.config->stencil ? pixels : 0, 0);
+  s.sample_color.assign(samples > 1 ? pixels * 4 * samples : 0, 0);
+  s.depth.assign(s.config->depth ? pixels * samples : 0, 0);
+  s.stencil.assign(s.config->stencil ? pixels * samples : 0, 0);
 
   raster::Framebuffer& fb = s.drawable.framebuffer;
   fb.width = s.width;
@@ -25,6 +29,14 @@ void allocate(Surface& s) {
   fb.color = {s.color.data(), static_cast<ptrdiff_t>(s.width) * 4, raster::ColorFormat::RGBA8};
   fb.depth = {s.config->depth ? s.depth.data() : nullptr, s.width, s.config->depth};
   fb.stencil = {s.config->stencil ? s.stencil.data() : nullptr, s.width, s.config->stencil};
+  fb.samples = samples;
+  s.drawable.resolved = {};
+  if (samples > 1) {
+    s.drawable.resolved = fb.color;
+    fb.color.base = s.sample_color.data();
+    fb.color.sample_stride = static_cast<ptrdiff_t>(pixels) * 4;
+    fb.depth.sample_stride = fb.stencil.sample_stride = static_cast<ptrdiff_t>(pixels);
+  }
   s.drawable.red_bits = s.config->red;
   s.drawable.green_bits = s.config->green;
   s.drawable.blue_bits = s.config->blue;
@@ -149,7 +161,9 @@ EGLBoolean SwapBuffers(EGLDisplay dpy, EGLSurface surface) {
   // A pbuffer has nothing to present; swapping completes the rendering (and the frame can
   // be captured).
   t.context->gl->finish();
-  driver::capture_frame(s->drawable.framebuffer.color, s->width, s->height);
+  const raster::Framebuffer& fb = s->drawable.framebuffer;
+  if (fb.samples > 1) raster::resolve_color(fb, s->drawable.resolved);
+  driver::capture_frame(fb.samples > 1 ? s->drawable.resolved : fb.color, s->width, s->height);
   return succeed(EGL_TRUE);
 }
 

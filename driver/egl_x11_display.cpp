@@ -23,7 +23,8 @@ bool initialize_x11(Display& display) {
   if (visuals.empty()) return true;  // pbuffers only
   const VisualID visual = visuals.front().visualid;
   for (Config& c : display.configs) {
-    c.surface_type |= EGL_WINDOW_BIT | EGL_PIXMAP_BIT;
+    // Multisampled: double-buffered windows only (glx_drawable.cpp), no pixmaps.
+    c.surface_type |= c.samples ? EGL_WINDOW_BIT : EGL_WINDOW_BIT | EGL_PIXMAP_BIT;
     c.native_visual_id = static_cast<EGLint>(visual);
     c.native_visual_type = TrueColor;
   }

@@ -58,6 +58,7 @@ std::shared_ptr<glx::Config> glx_config_of(const Config& c, int screen, int x_de
   g->depth = c.depth;
   g->stencil = c.stencil;
   g->double_buffered = double_buffered;
+  g->samples = c.samples;
   return g;
 }
 

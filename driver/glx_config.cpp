@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "raster/multisample.h"
 #include "state/accum.h"
 
 namespace pineda::glx {
@@ -14,19 +15,20 @@ struct Variant {
   bool double_buffered;
   bool depth_stencil;
   int alpha;
+  int samples;
 };
 
+// The single-sampled configs, then the 4x multisampled ones (double-buffered only), so that
+// the first ids stay what they were.
 std::vector<Variant> variants_for_depth(int depth) {
   std::vector<Variant> out;
-  for (bool db : {true, false})
-    for (bool ds : {true, false}) {
-      if (depth == 24) {
-        out.push_back({db, ds, 0});
-        out.push_back({db, ds, 8});
-      } else {
-        out.push_back({db, ds, 8});
+  for (int samples : {0, raster::kMaxSamples})
+    for (bool db : {true, false})
+      for (bool ds : {true, false}) {
+        if (samples && !db) continue;
+        if (depth == 24) out.push_back({db, ds, 0, samples});
+        out.push_back({db, ds, 8, samples});
       }
-    }
   return out;
 }
 
@@ -80,6 +82,7 @@ std::vector<std::unique_ptr<Config>> build_configs(Display* dpy) {
         c->depth = variants[i].depth_stencil ? 24 : 0;
         c->stencil = variants[i].depth_stencil ? 8 : 0;
         c->double_buffered = variants[i].double_buffered;
+        c->samples = variants[i].samples;
         c->visual_canonical = seen.insert(v.visualid).second;
         configs.push_back(std::move(c));
       }
@@ -118,7 +121,8 @@ int config_attribute(const Config& c, int attribute, int* value) {
     case GLX_TRANSPARENT_ALPHA_VALUE: *value = 0; break;
     case GLX_MAX_PBUFFER_WIDTH: case GLX_MAX_PBUFFER_HEIGHT: *value = kMaxDrawableSize; break;
     case GLX_MAX_PBUFFER_PIXELS: *value = kMaxDrawableSize * kMaxDrawableSize; break;
-    case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES: *value = 0; break;
+    case GLX_SAMPLE_BUFFERS: *value = c.samples > 0; break;
+    case GLX_SAMPLES: *value = c.samples; break;
     case GLX_SCREEN: *value = c.screen; break;
     default: return GLX_BAD_ATTRIBUTE;
   }
@@ -208,13 +212,14 @@ int requested_color_bits(const Config& c, const Request& r) {
          (counts(GLX_BLUE_SIZE) ? c.blue : 0) + (counts(GLX_ALPHA_SIZE) ? c.alpha : 0);
 }
 
-// GLX 1.4 section 3.3.3's sort (caveats, samples, accumulation and visual type are the same
-// for every Pineda config): true when `a` comes before `b`.
+// GLX 1.4 section 3.3.3's sort (caveats, accumulation and visual type are the same for every
+// Pineda config): true when `a` comes before `b`. Fewer samples first.
 bool fbconfig_before(const Config& a, const Config& b, const Request& r) {
   const int color_a = requested_color_bits(a, r), color_b = requested_color_bits(b, r);
   if (color_a != color_b) return color_a > color_b;
   if (a.buffer_size() != b.buffer_size()) return a.buffer_size() < b.buffer_size();
   if (a.double_buffered != b.double_buffered) return !a.double_buffered;
+  if (a.samples != b.samples) return a.samples < b.samples;
   if (a.depth != b.depth) return a.depth > b.depth;
   if (a.stencil != b.stencil) return a.stencil < b.stencil;
   return a.id < b.id;

@@ -3,6 +3,7 @@
 #include <X11/Xutil.h>
 
 #include "driver/frame_capture.h"
+#include "raster/multisample.h"
 
 #include <cstring>
 #include <mutex>
@@ -43,8 +44,12 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   }
   if (double_buffered) d.back.assign(count * 4, 0);
   d.allocated = true;
-  d.depth.assign(d.config->depth ? count : 0, 0);
-  d.stencil.assign(d.config->stencil ? count : 0, 0);
+  // A multisampled config renders into 4 planes of colour, depth and stencil; `back` is the
+  // resolved colour.
+  const int samples = double_buffered && d.config->samples > 1 ? d.config->samples : 1;
+  d.sample_color.assign(samples > 1 ? count * 4 * samples : 0, 0);
+  d.depth.assign(d.config->depth ? count * samples : 0, 0);
+  d.stencil.assign(d.config->stencil ? count * samples : 0, 0);
   d.width = width;
   d.height = height;
 
@@ -60,6 +65,14 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   d.drawable.front = double_buffered ? bottom_up(d.pixels) : raster::ColorBuffer{};
   fb.depth = {d.depth.empty() ? nullptr : d.depth.data(), width, d.config->depth};
   fb.stencil = {d.stencil.empty() ? nullptr : d.stencil.data(), width, d.config->stencil};
+  fb.samples = samples;
+  d.drawable.resolved = {};
+  if (samples > 1) {
+    d.drawable.resolved = fb.color;
+    fb.color = bottom_up(d.sample_color.data());
+    fb.color.sample_stride = static_cast<ptrdiff_t>(count) * 4;
+    fb.depth.sample_stride = fb.stencil.sample_stride = static_cast<ptrdiff_t>(count);
+  }
   d.drawable.red_bits = d.config->red;
   d.drawable.green_bits = d.config->green;
   d.drawable.blue_bits = d.config->blue;
@@ -141,6 +154,8 @@ void present(DrawableObject& d, bool checked) {
 }
 
 void swap_and_present(DrawableObject& d) {
+  const raster::Framebuffer& fb = d.drawable.framebuffer;
+  if (fb.samples > 1 && d.drawable.resolved.base) raster::resolve_color(fb, d.drawable.resolved);
   if (!d.back.empty()) std::memcpy(d.pixels, d.back.data(), d.back.size());
   present(d);
 }

@@ -31,6 +31,7 @@ struct Config {
   int red = 8, green = 8, blue = 8, alpha = 0;
   int depth = 0, stencil = 0;
   bool double_buffered = false;
+  int samples = 0;  // GLX_SAMPLES: 0, or 4 with GLX_SAMPLE_BUFFERS 1 (double-buffered configs)
   // The first config of its visual: the one the visual-based calls (glXChooseVisual,
   // glXGetConfig, glXCreateContext) stand for.
   bool visual_canonical = false;
@@ -71,6 +72,7 @@ struct DrawableObject {
   std::unique_ptr<SharedImage> shm;
   std::vector<uint8_t> color;
   std::vector<uint8_t> back;
+  std::vector<uint8_t> sample_color;  // a multisampled config's 4 colour planes (back is their resolve)
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
   pineda::Drawable drawable;

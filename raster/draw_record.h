@@ -3,6 +3,8 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "raster/draw_state.h"
 #include "raster/framebuffer.h"
@@ -53,6 +55,10 @@ struct DrawRecord {
   uint8_t stencil_ref[2] = {0, 0};  // front, back
   bool color_write_any = true;
   bool color_write_all = true;
+  // Multisampled framebuffers only (raster/multisample.h): the samples the draw may cover, and
+  // one record per sample when they differ (alpha to coverage), else null.
+  uint32_t sample_mask = ~0u;
+  std::shared_ptr<const std::vector<DrawRecord>> sample_draws;
 };
 
 // `path`: which copy of the fragment routine and samplers runs.

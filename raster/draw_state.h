@@ -79,6 +79,15 @@ struct PolygonStipple {
   }();
 };
 
+// GL 1.5 sections 3.2.1 and 4.1.3: how a draw's fragments cover the samples of a multisampled
+// framebuffer. Single-sampled framebuffers ignore it.
+struct MultisampleState {
+  bool multisample = true;  // GL_MULTISAMPLE: off, every sample takes the pixel centre's coverage
+  bool alpha_to_coverage = false, alpha_to_one = false, sample_coverage = false;
+  float coverage_value = 1.f;
+  bool coverage_invert = false;
+};
+
 struct DrawState {
   Viewport viewport;
   bool scissor_test = false;
@@ -115,6 +124,7 @@ struct DrawState {
   LogicOp logic_op = LogicOp::Copy;
   bool dither = true;  // accepted; Pineda never dithers (exact output)
   std::array<bool, 4> color_write = {true, true, true, true};
+  MultisampleState multisample;
 
   // Texturing; a unit is enabled when its image is non-null. Fixed function reads the first
   // kMaxTextureUnits, shaders all texture image units.

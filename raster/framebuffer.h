@@ -27,6 +27,7 @@ struct ColorBuffer {
   ptrdiff_t stride = 0;
   ColorFormat format = ColorFormat::RGBA8;
   ColorReduction reduction;
+  ptrdiff_t sample_stride = 0;  // bytes from one sample's plane to the next (multisampled)
 };
 
 // Depth values are unsigned integers of `bits` bits (16, 24 or 32), one uint32 per pixel.
@@ -35,6 +36,7 @@ struct DepthBuffer {
   uint32_t* base = nullptr;
   ptrdiff_t stride = 0;  // in elements
   int bits = 0;
+  ptrdiff_t sample_stride = 0;  // elements from one sample's plane to the next
 };
 
 // bits == 0 means there is no stencil buffer; otherwise 8.
@@ -42,11 +44,15 @@ struct StencilBuffer {
   uint8_t* base = nullptr;
   ptrdiff_t stride = 0;  // in elements
   int bits = 0;
+  ptrdiff_t sample_stride = 0;  // elements from one sample's plane to the next
 };
 
+// A multisampled framebuffer (samples > 1) keeps each sample as a whole plane of every
+// buffer: sample s of a pixel is where the pixel is in plane s (raster/multisample.h).
 struct Framebuffer {
   int width = 0;
   int height = 0;
+  int samples = 1;
   ColorBuffer color;
   DepthBuffer depth;
   StencilBuffer stencil;

@@ -157,6 +157,7 @@ void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) co
 SetupParams GeometryStage::params(const Style& style) const {
   SetupParams p;
   p.clip = clip_rect_;
+  p.sample_bounds = scene_.framebuffer().samples > 1;
   p.planes = scene_.current_draw().planes;
   p.flat = style.flat;
   for (int i = 0; i < 4; ++i) p.flat_color[i] = style.flat_color[i];

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "raster/fragment_ops.h"
+#include "raster/multisample.h"
 
 namespace pineda::raster {
 namespace {
@@ -42,21 +43,29 @@ void PixelFragmentWriter::fragment(int x, int y, const float rgba[4], double dep
   for (int c = 0; c < 4; ++c) prim_.flat_color[c] = clamp01(rgba[c]);
   prim_.z0 = (depth > 0.0 ? (depth < 1.0 ? depth : 1.0) : 0.0) * record_.depth_max;
   const uint8_t mask = static_cast<uint8_t>(1u << ((x & 1) + 2 * (y & 1)));
-  const uint32_t passed = record_.routine(record_, prim_, fb_, x & ~1, y & ~1, 1, &mask);
+  uint32_t passed = 0;
+  for (int sample = 0; sample < fb_.samples; ++sample) {  // every sample of a multisampled pixel
+    const Framebuffer plane = fb_.samples > 1 ? sample_plane(fb_, sample) : fb_;
+    passed += record_.routine(record_, prim_, plane, x & ~1, y & ~1, 1, &mask);
+  }
   if (passed) record_.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);  // occlusion query
 }
 
 void PixelFragmentWriter::depth(int x, int y, double z) {
   if (!inside(x, y) || !fb_.depth.base || fb_.depth.bits == 0) return;
   const double clamped = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
-  fb_.depth.base[static_cast<ptrdiff_t>(y) * fb_.depth.stride + x] = static_cast<uint32_t>(clamped * record_.depth_max + 0.5);
+  for (int sample = 0; sample < fb_.samples; ++sample)
+    fb_.depth.base[fb_.depth.sample_stride * sample + static_cast<ptrdiff_t>(y) * fb_.depth.stride + x] =
+        static_cast<uint32_t>(clamped * record_.depth_max + 0.5);
 }
 
 void PixelFragmentWriter::stencil(int x, int y, uint32_t value) {
   if (!inside(x, y) || !fb_.stencil.base || fb_.stencil.bits == 0) return;
-  uint8_t& s = fb_.stencil.base[static_cast<ptrdiff_t>(y) * fb_.stencil.stride + x];
   const uint8_t mask = record_.state.stencil_front.write_mask;
-  s = static_cast<uint8_t>((s & ~mask) | (value & mask));
+  for (int sample = 0; sample < fb_.samples; ++sample) {
+    uint8_t& s = fb_.stencil.base[fb_.stencil.sample_stride * sample + static_cast<ptrdiff_t>(y) * fb_.stencil.stride + x];
+    s = static_cast<uint8_t>((s & ~mask) | (value & mask));
+  }
 }
 
 }  // namespace pineda::raster

@@ -4,6 +4,7 @@
 #include "raster/draw_record.h"
 #include "raster/fragment_pipeline.h"
 #include "raster/geometry.h"
+#include "raster/multisample.h"
 #include "raster/primitive.h"
 #include "raster/reference_lines_points.h"
 #include "raster/reference_mode.h"
@@ -49,6 +50,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   Scene& scene = impl_->scene;
   if (scene.render_area().empty() || vertices.empty()) return;
   DrawRecord record = make_draw_record(state, impl_->fb, impl_->simd);
+  if (impl_->fb.samples > 1) prepare_sample_draws(record, impl_->fb, impl_->simd);
   if (impl_->reference && !state.shader) {
     flush();  // queued clears first: reference primitives are drawn into the framebuffer at once
     record.routine = reference_plane_quads;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "raster/multisample.h"
 #include "raster/raster_limits.h"
 #include "raster/tile_raster.h"
 #include "raster/worker_pool.h"
@@ -63,7 +64,8 @@ void Scene::add_prim(const PrimSetup& prim) {
   bool used = false;
   for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
     for (int tx = r.x0 >> kTileShift; tx <= (r.x1 - 1) >> kTileShift; ++tx) {
-      if (prim.kind == CoverageKind::Triangle) {
+      // Coverage tests at pixel centres; a multisampled triangle may cover only samples of a tile.
+      if (prim.kind == CoverageKind::Triangle && fb_.samples == 1) {
         const PixelRect tile{tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize};
         if (!triangle_may_touch(prim, intersect(tile, r))) continue;
       }
@@ -117,13 +119,16 @@ void Scene::run_tile(int tile) const {
   const int tx = tile % tiles_x_, ty = tile / tiles_x_;
   const PixelRect rect = intersect({tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize},
                                    render_area());
+  const bool multisampled = fb_.samples > 1;
   for (const uint32_t cmd : bins_[tile]) {
     if (cmd & kClearBit) {
-      apply_clear(clears_[cmd & ~kClearBit], fb_, rect);
+      if (multisampled) apply_clear_samples(clears_[cmd & ~kClearBit], fb_, rect);
+      else apply_clear(clears_[cmd & ~kClearBit], fb_, rect);
     } else {
       const PrimSetup& prim = prims_[cmd];
       const DrawRecord& draw = draws_[prim.draw];
-      const uint64_t passed = rasterize_in_tile(prim, draw, fb_, rect);
+      const uint64_t passed =
+          multisampled ? rasterize_samples_in_tile(prim, draw, fb_, rect) : rasterize_in_tile(prim, draw, fb_, rect);
       if (passed) draw.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);
     }
   }

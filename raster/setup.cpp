@@ -123,7 +123,10 @@ bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const 
                       static_cast<int>(ceil_div(min_y - kSubpixelHalf, kSubpixelOne)),
                       static_cast<int>(floor_div(max_x - kSubpixelHalf, kSubpixelOne) + 1),
                       static_cast<int>(floor_div(max_y - kSubpixelHalf, kSubpixelOne) + 1)};
-  out.bounds = intersect(box, params.clip);
+  // Multisampled: pixels whose area meets the box, for samples off the centre.
+  const PixelRect sample_box{static_cast<int>(floor_div(min_x, kSubpixelOne)), static_cast<int>(floor_div(min_y, kSubpixelOne)),
+                             static_cast<int>(ceil_div(max_x, kSubpixelOne)), static_cast<int>(ceil_div(max_y, kSubpixelOne))};
+  out.bounds = intersect(params.sample_bounds ? sample_box : box, params.clip);
   if (out.bounds.empty()) return false;
 
   out.kind = CoverageKind::Triangle;

@@ -19,6 +19,7 @@ struct WinVert {
 struct SetupParams {
   uint32_t draw = 0;
   PixelRect clip;   // viewport ∩ scissor ∩ framebuffer
+  bool sample_bounds = false;  // multisampled: a triangle's bounds hold every pixel it overlaps
   int planes = 4;   // how many of attr[] are interpolated
   bool flat = false;
   float flat_color[4] = {0, 0, 0, 0};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "glapi/gl_entry_points.h"
+#include "raster/multisample.h"
 #include "state/accum.h"
 #include "state/context.h"
 
@@ -91,10 +92,16 @@ void Accum(Context& ctx, GLenum op, GLfloat value) {
       const raster::Framebuffer& fb = read->framebuffer;
       if (!fb.color.base) return;
       const AccumRect area{r.x0, r.y0, std::min(r.x1, fb.width), std::min(r.y1, fb.height)};
+      if (fb.samples > 1 && read->resolved.base) {  // a multisampled window: its resolved colour
+        raster::resolve_color(fb, read->resolved);
+        return accumulate(ctx, area, read->resolved, value, op == GL_LOAD);
+      }
       return accumulate(ctx, area, fb.color, value, op == GL_LOAD);
     }
     case GL_RETURN:
-      if (draw->framebuffer.color.base) return_to_color(ctx, r, draw->framebuffer.color, value);
+      if (!draw->framebuffer.color.base) return;
+      for (int sample = 0; sample < draw->framebuffer.samples; ++sample)  // every sample of each pixel
+        return_to_color(ctx, r, raster::sample_plane(draw->framebuffer, sample).color, value);
       return;
     default: return scale_or_bias(ctx, r, value, op == GL_ADD);
   }

@@ -120,7 +120,7 @@ bool has_read_color(Context& ctx) {
 
 // Sizes no texture can have are rejected before any pixel is read.
 bool valid_copy_size(Context& ctx, GLsizei width, GLsizei height) {
-  if (!check_read_framebuffer(ctx)) return false;
+  if (!check_read_single_sampled(ctx)) return false;
   if (width >= 0 && height >= 0 && width <= kMaxTextureSize + 2 && height <= kMaxTextureSize + 2) return true;
   ctx.record_error(GL_INVALID_VALUE);
   return false;

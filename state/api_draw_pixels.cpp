@@ -107,7 +107,7 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   // GL_DEPTH_STENCIL: EXT_packed_depth_stencil's copy of both, as Mesa takes it at any version.
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
     return ctx.record_error(GL_INVALID_ENUM);
-  if (!check_draw_framebuffer(ctx) || !check_read_framebuffer(ctx)) return;
+  if (!check_draw_framebuffer(ctx) || !check_read_single_sampled(ctx)) return;
   const Drawable* draw = ctx.draw_drawable();
   const Drawable* read = ctx.read_drawable();
   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;

@@ -311,7 +311,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
       "GL_SGIS_texture_lod GL_EXT_texture_lod_bias "
       "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array GL_KHR_debug "
-      "GL_ARB_framebuffer_object GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_packed_depth_stencil "
+      "GL_ARB_framebuffer_object GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample "
+      "GL_EXT_packed_depth_stencil "
       "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 "
       "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object "
       "GL_EXT_texture_sRGB ";  // a trailing space, as Mesa (programs split on it)

@@ -9,9 +9,11 @@
 namespace pineda {
 namespace {
 
-// Every framebuffer Pineda makes is single-sampled: the GLX and EGL configs offer no samples.
-constexpr int kSampleBuffers = 0;
-constexpr int kSamples = 0;
+// The draw framebuffer's sample count: 1 when single-sampled (and without one).
+int draw_samples(Context& ctx) {
+  const Drawable* d = ctx.draw_drawable();
+  return d ? d->framebuffer.samples : 1;
+}
 
 }  // namespace
 
@@ -31,8 +33,8 @@ bool query_multisample(Context& ctx, unsigned pname, GetValues& out) {
   switch (pname) {
     case GL_SAMPLE_COVERAGE_VALUE: out = get_floats({m.coverage_value}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out = get_bools({double(m.coverage_invert)}); return true;
-    case GL_SAMPLE_BUFFERS: out = get_ints({kSampleBuffers}); return true;
-    case GL_SAMPLES: out = get_ints({kSamples}); return true;
+    case GL_SAMPLE_BUFFERS: out = get_ints({draw_samples(ctx) > 1 ? 1.0 : 0.0}); return true;
+    case GL_SAMPLES: out = get_ints({draw_samples(ctx) > 1 ? double(draw_samples(ctx)) : 0.0}); return true;
     default: return false;
   }
 }

@@ -87,7 +87,7 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   if (ctx.es2()) {
     if (const GLenum error = es2_read_pixels_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   }
-  if (!check_read_framebuffer(ctx)) return;
+  if (!check_read_single_sampled(ctx)) return;
   if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
   if (!d || width == 0 || height == 0) return;

@@ -210,7 +210,7 @@ class Context {
   raster::Lighting lighting;
   GLenum color_material_face = GL_FRONT_AND_BACK, color_material_mode = GL_AMBIENT_AND_DIFFUSE;
   VertexExtrasState extras;  // fog, clip planes, texgen, secondary colour (state/api_fog.cpp...)
-  MultisampleState multisample;
+  MultisampleState& multisample = draw_state.multisample;
   // Capabilities GL 1.1 accepts whose rendering Pineda does not do yet (fog, stipple,
   // smoothing, clip planes, texgen, evaluators): the enable bit is kept for glIsEnabled.
   std::unordered_map<GLenum, bool> unrendered_caps;

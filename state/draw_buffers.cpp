@@ -2,6 +2,7 @@
 #include <cstring>
 #include <vector>
 
+#include "raster/multisample.h"
 #include "state/context.h"
 
 namespace pineda {
@@ -152,6 +153,14 @@ raster::Framebuffer Context::read_framebuffer() const {
   if (!read) return raster::Framebuffer{};
   raster::Framebuffer fb = read->framebuffer;
   if (reads_front(read_buffer)) fb.color = read->front_color();
+  if (fb.samples > 1 && read->resolved.base) {  // a multisampled window reads resolved colour, sample 0's depth
+    if (!reads_front(read_buffer)) {
+      renderer_->flush();
+      raster::resolve_color(fb, read->resolved);
+      fb.color = read->resolved;
+    }
+    fb.samples = 1;
+  }
   return fb;
 }
 

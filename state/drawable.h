@@ -13,6 +13,10 @@ struct Drawable {
   // The front buffer of a double-buffered drawable whose driver keeps one (framebuffer.color
   // is then the back buffer). Otherwise unset, and GL_FRONT names framebuffer.color.
   raster::ColorBuffer front;
+  // A multisampled window (framebuffer.samples > 1): the single-sampled back buffer that
+  // swaps and reads see, resolved from the sample planes when they need it. Unset otherwise
+  // (and for framebuffer objects, which are read sample by sample or not at all).
+  raster::ColorBuffer resolved;
 
   // Set by the context when it renders into the front buffer; the driver clears it when it
   // has shown the front buffer (glFlush shows front-buffer drawing, as in Mesa).

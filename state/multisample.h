@@ -1,21 +1,17 @@
-// GL 1.3 multisample state (ARB_multisample). Pineda's framebuffers are single-sampled
-// (SAMPLE_BUFFERS is 0), so by GL 1.5 section 3.2.1 multisample rasterization is never on and
-// this state changes no fragment: it is kept for glGet, glIsEnabled and the attribute stack.
+// GL 1.3 multisample state (ARB_multisample). It lives in the draw snapshot
+// (raster::MultisampleState, Context::multisample refers to it) and changes fragments only in
+// multisampled framebuffers (SAMPLE_BUFFERS 1), as GL 1.5 section 3.2.1 says.
 #pragma once
 #include <GL/gl.h>
 
+#include "raster/draw_state.h"
 #include "state/get_values.h"
 
 namespace pineda {
 
 struct AttribFrame;
 
-struct MultisampleState {
-  bool multisample = true;  // GL_MULTISAMPLE
-  bool alpha_to_coverage = false, alpha_to_one = false, sample_coverage = false;
-  float coverage_value = 1.f;
-  bool coverage_invert = false;
-};
+using MultisampleState = raster::MultisampleState;
 
 // The enable flag of `cap`, or null when it is not a multisample capability.
 bool* multisample_capability(Context& ctx, GLenum cap);

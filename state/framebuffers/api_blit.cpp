@@ -8,6 +8,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "raster/color_reduction.h"
+#include "raster/multisample.h"
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
 
@@ -40,7 +41,8 @@ SourceImage read_source(const raster::Framebuffer& fb, bool opaque, GLint sx0, G
       const size_t k = size_t(j) * img.width + i;
       if (color) {
         uint8_t* o = &img.color[4 * k];
-        raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * y + 4 * x, o);
+        if (fb.samples > 1) raster::resolve_rgba8(fb, x, y, o);  // depth and stencil: sample 0's
+        else raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * y + 4 * x, o);
         if (opaque) o[3] = 255;
       }
       if (depth) img.depth[k] = fb.depth.base[fb.depth.stride * y + x];
@@ -89,8 +91,22 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
   const bool color = (mask & GL_COLOR_BUFFER_BIT) && src_fb.color.base;
   if ((!color && !depth && !stencil) || srcX0 == srcX1 || srcY0 == srcY1 || dstX0 == dstX1 || dstY0 == dstY1) return;
 
+  // GL 3.0 4.3.3 (EXT_framebuffer_multisample): samples are copied between equal counts, a
+  // multisampled source is resolved into a single-sampled destination, a single-sampled one
+  // replicated into every sample; a multisampled source takes no scaling nor offset.
+  const int src_samples = src_fb.samples, dst_samples = dst_all.samples;
+  if (src_samples > 1 && dst_samples > 1 && src_samples != dst_samples)
+    return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' sample counts differ");
+  if (src_samples > 1 && (srcX0 != dstX0 || srcY0 != dstY0 || srcX1 != dstX1 || srcY1 != dstY1))
+    return ctx.record_error(GL_INVALID_OPERATION, "a multisampled source and the destination differ in their rectangles");
+  const bool per_sample = src_samples > 1 && dst_samples > 1;
+
   ctx.finish();
-  const SourceImage img = read_source(src_fb, read->alpha_bits == 0, srcX0, srcY0, srcX1, srcY1, color, depth, stencil);
+  std::vector<SourceImage> images;  // one per sample when copied sample by sample
+  for (int sample = 0; sample < (per_sample ? src_samples : 1); ++sample)
+    images.push_back(read_source(per_sample ? raster::sample_plane(src_fb, sample) : src_fb, read->alpha_bits == 0, srcX0,
+                                 srcY0, srcX1, srcY1, color, depth, stencil));
+  const SourceImage& img = images[0];
   if (img.width <= 0 || img.height <= 0) return;
   const Axis ax{double(srcX0), (double(srcX1) - srcX0) / (double(dstX1) - dstX0), double(dstX0)};
   const Axis ay{double(srcY0), (double(srcY1) - srcY0) / (double(dstY1) - dstY0), double(dstY0)};
@@ -100,9 +116,7 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
   auto inside = [&](double u, double v) {
     return u >= img.x0 && u < img.x0 + img.width && v >= img.y0 && v < img.y0 + img.height;
   };
-  ctx.render_to_draw_buffers([&] {
-    ctx.finish();
-    const raster::Framebuffer& fb = ctx.renderer().framebuffer();
+  auto copy_into = [&](const raster::Framebuffer& fb, const SourceImage& img) {
     int x0 = std::max(std::min(dstX0, dstX1), 0), x1 = int(std::min<int64_t>(std::max(dstX0, dstX1), fb.width));
     int y0 = std::max(std::min(dstY0, dstY1), 0), y1 = int(std::min<int64_t>(std::max(dstY0, dstY1), fb.height));
     const raster::DrawState& s = ctx.draw_state;
@@ -144,6 +158,12 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
         if (stencil) fb.stencil.base[fb.stencil.stride * y + x] = img.stencil[k];
       }
     }
+  };
+  ctx.render_to_draw_buffers([&] {
+    ctx.finish();
+    const raster::Framebuffer& fb = ctx.renderer().framebuffer();
+    for (int sample = 0; sample < fb.samples; ++sample)
+      copy_into(fb.samples > 1 ? raster::sample_plane(fb, sample) : fb, images[per_sample ? sample : 0]);
   });
 }
 

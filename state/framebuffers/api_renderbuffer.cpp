@@ -1,5 +1,6 @@
 // glGen/Delete/Is/BindRenderbuffer(s), glRenderbufferStorage(Multisample) and
 // glGetRenderbufferParameteriv.
+#include <algorithm>
 #include <new>
 
 #include "glapi/gl_entry_points.h"
@@ -22,7 +23,7 @@ void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat
   if (!format) return ctx.record_error(GL_INVALID_ENUM);
   if (width < 0 || height < 0 || width > kMaxRenderbufferSize || height > kMaxRenderbufferSize)
     return ctx.record_error(GL_INVALID_VALUE);
-  if (samples != 0) return ctx.record_error(GL_INVALID_VALUE);  // MAX_SAMPLES is 0: no multisampling
+  if (samples > kMaxSamples) return ctx.record_error(GL_INVALID_VALUE, "samples is greater than GL_MAX_SAMPLES");
   Renderbuffer* rb = bound_renderbuffer(ctx);
   if (!rb) return ctx.record_error(GL_INVALID_OPERATION);
   resolve_rendered_textures(ctx);
@@ -32,7 +33,9 @@ void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat
   fresh.height = height;
   fresh.internal_format = internalformat;
   fresh.format = *format;
-  const size_t n = size_t(width) * size_t(height);
+  // As Mesa: the smallest supported count not below the one asked for (any of 1..4 gives 4).
+  fresh.samples = samples > 0 ? kMaxSamples : 0;
+  const size_t n = size_t(width) * size_t(height) * size_t(std::max(fresh.samples, 1));
   try {
     if (format->kind == RenderableFormat::Kind::Color) fresh.color.assign(n, 0);
     if (format->has_depth()) fresh.depth.assign(n, 0);
@@ -112,7 +115,7 @@ void GetRenderbufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint
     case GL_RENDERBUFFER_WIDTH: value = rb->width; break;
     case GL_RENDERBUFFER_HEIGHT: value = rb->height; break;
     case GL_RENDERBUFFER_INTERNAL_FORMAT: value = GLint(rb->internal_format); break;
-    case GL_RENDERBUFFER_SAMPLES: value = 0; break;
+    case GL_RENDERBUFFER_SAMPLES: value = rb->samples; break;
     // A renderbuffer without storage has no bits yet.
     case GL_RENDERBUFFER_RED_SIZE: value = color && rb->width ? f.color.red : 0; break;
     case GL_RENDERBUFFER_GREEN_SIZE: value = color && rb->width ? f.color.green : 0; break;

@@ -13,7 +13,7 @@ bool query_framebuffers(Context& ctx, unsigned pname, GetValues& out) {
     case GL_RENDERBUFFER_BINDING: out = get_ints({double(fs.renderbuffer_binding)}); return true;
     case GL_MAX_RENDERBUFFER_SIZE: out = get_ints({double(kMaxRenderbufferSize)}); return true;
     case GL_MAX_COLOR_ATTACHMENTS: out = get_ints({double(kMaxColorAttachments)}); return true;
-    case GL_MAX_SAMPLES: out = get_ints({0}); return true;
+    case GL_MAX_SAMPLES: out = get_ints({kMaxSamples}); return true;
     default: return false;
   }
 }

@@ -30,11 +30,16 @@ struct TextureLevelData;
 
 constexpr int kMaxColorAttachments = 8;
 constexpr int kMaxRenderbufferSize = 8192;
+// GL_MAX_SAMPLES: llvmpipe's only multisample count; 1..4 samples are rounded up to it.
+constexpr int kMaxSamples = 4;
 
 struct Renderbuffer {
   GLsizei width = 0, height = 0;
   GLenum internal_format = GL_RGBA;
   RenderableFormat format;
+  // GL_RENDERBUFFER_SAMPLES: 0, or 4 (multisampled: every buffer holds 4 planes of
+  // width x height, sample s in plane s; raster/multisample.h).
+  GLsizei samples = 0;
   std::vector<uint32_t> color;  // RGBA8, R in the lowest byte, bottom row first
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
@@ -110,6 +115,9 @@ void resolve_if_rendered(Context& ctx, const TextureObject& tex);
 // when it is complete; otherwise GL_INVALID_FRAMEBUFFER_OPERATION is recorded.
 bool check_draw_framebuffer(Context& ctx);
 bool check_read_framebuffer(Context& ctx);
+// As check_read_framebuffer, for glReadPixels, glCopyTex(Sub)Image and glCopyPixels, which
+// cannot read a multisampled framebuffer object (ARB_framebuffer_object: INVALID_OPERATION).
+bool check_read_single_sampled(Context& ctx);
 
 // Detaches a deleted texture or renderbuffer (`type` GL_TEXTURE or GL_RENDERBUFFER) from every
 // framebuffer object that has it (Pineda detaches textures from unbound ones too: their

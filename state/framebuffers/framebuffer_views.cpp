@@ -33,6 +33,8 @@ GLint image_internal_format(Context& ctx, const Attachment& a) {
   return level ? level->internal_format : 0;
 }
 
+GLsizei attachment_samples(const Attachment& a) { return a.type == GL_RENDERBUFFER ? a.renderbuffer->samples : 0; }
+
 double depth_max(int bits) { return std::ldexp(1.0, bits) - 1.0; }
 
 // The depth texture's texels as integers of `bits` bits, when the texture changed since the
@@ -60,6 +62,7 @@ raster::ColorBuffer color_buffer(Context& ctx, const Attachment& a, const Render
   if (a.type == GL_RENDERBUFFER) {
     cb.base = reinterpret_cast<uint8_t*>(a.renderbuffer->color.data());
     cb.stride = ptrdiff_t(a.renderbuffer->width) * 4;
+    cb.sample_stride = cb.stride * a.renderbuffer->height;
     return cb;
   }
   TextureLevelData* level = attached_level(ctx, a);
@@ -85,6 +88,7 @@ void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& vi
     if (a.type == GL_NONE || !image_size(ctx, a, w, h)) continue;
     out.width = std::min(out.width, w);
     out.height = std::min(out.height, h);
+    out.samples = std::max(attachment_samples(a), 1);  // the same for all: the framebuffer is complete
   }
   view.red_bits = view.green_bits = view.blue_bits = view.alpha_bits = 0;
   const int point = buffer == GL_NONE ? -1 : attachment_point(buffer);
@@ -104,6 +108,7 @@ void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& vi
     if (depth.type == GL_RENDERBUFFER) {
       out.depth.base = depth.renderbuffer->depth.data();
       out.depth.stride = depth.renderbuffer->width;
+      out.depth.sample_stride = out.depth.stride * depth.renderbuffer->height;
     } else {
       const TextureLevelData* level = attached_level(ctx, depth);
       import_depth(ctx, depth, *level, format.depth_bits);
@@ -116,6 +121,7 @@ void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& vi
     out.stencil.bits = 8;
     out.stencil.base = stencil.renderbuffer->stencil.data();
     out.stencil.stride = stencil.renderbuffer->width;
+    out.stencil.sample_stride = out.stencil.stride * stencil.renderbuffer->height;
   } else if (stencil.type == GL_TEXTURE) {  // a DEPTH_STENCIL texture's indices, rendered in place
     TextureLevelData* level = attached_level(ctx, stencil);
     out.stencil.bits = 8;
@@ -163,6 +169,7 @@ std::optional<RenderableFormat> attachment_format(Context& ctx, const Attachment
 
 GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_rules) {
   int images = 0, width = -1, height = -1;
+  GLsizei samples = 0;
   bool sizes_differ = false, formats_differ = false;
   GLint color_format = 0;
   for (int p = 0; p < kAttachmentPoints; ++p) {
@@ -179,8 +186,11 @@ GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_ru
     if (images++ == 0) {
       width = w;
       height = h;
-    } else if (w != width || h != height) {
-      sizes_differ = true;
+      samples = attachment_samples(a);
+    } else {
+      if (w != width || h != height) sizes_differ = true;
+      // ARB_framebuffer_object, EXT_framebuffer_multisample: one RENDERBUFFER_SAMPLES for all.
+      if (attachment_samples(a) != samples) return GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE;
     }
     if (p < kMaxColorAttachments) {
       const GLint f = image_internal_format(ctx, a);
@@ -271,6 +281,14 @@ bool check_read_framebuffer(Context& ctx) {
   refresh_framebuffer_views(ctx);
   if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
   ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  return false;
+}
+
+bool check_read_single_sampled(Context& ctx) {
+  if (!check_read_framebuffer(ctx)) return false;
+  const FramebufferObject* fb = ctx.framebuffers.read_object();
+  if (!fb || fb->read_view.framebuffer.samples == 1) return true;
+  ctx.record_error(GL_INVALID_OPERATION, "the read framebuffer is multisampled");
   return false;
 }
 

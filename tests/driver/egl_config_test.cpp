@@ -33,7 +33,7 @@ class EglConfig : public EglTest {
 TEST_F(EglConfig, GetConfigsCountsAndCopies) {
   EGLint n = 0;
   ASSERT_TRUE(eglGetConfigs(dpy, nullptr, 0, &n));
-  EXPECT_EQ(n, 7);
+  EXPECT_EQ(n, 9);  // 7 single-sampled, 2 multisampled
   std::vector<EGLConfig> configs(n);
   EGLint got = 0;
   ASSERT_TRUE(eglGetConfigs(dpy, configs.data(), 3, &got));
@@ -61,8 +61,9 @@ TEST_F(EglConfig, EveryConfigIsRgba8888PbufferOpenGL) {
     EXPECT_EQ(attrib(c, EGL_CONFORMANT), EGL_OPENGL_BIT);
     EXPECT_EQ(attrib(c, EGL_COLOR_BUFFER_TYPE), EGL_RGB_BUFFER);
     EXPECT_EQ(attrib(c, EGL_CONFIG_CAVEAT), EGL_NONE);
-    EXPECT_EQ(attrib(c, EGL_SAMPLES), 0);
-    EXPECT_EQ(attrib(c, EGL_SAMPLE_BUFFERS), 0);
+    const EGLint samples = attrib(c, EGL_SAMPLES);
+    EXPECT_TRUE(samples == 0 || samples == 4) << samples;
+    EXPECT_EQ(attrib(c, EGL_SAMPLE_BUFFERS), samples ? 1 : 0);
     EXPECT_EQ(attrib(c, EGL_NATIVE_VISUAL_ID), 0);
     EXPECT_EQ(attrib(c, EGL_TRANSPARENT_TYPE), EGL_NONE);
     EXPECT_EQ(attrib(c, EGL_MAX_PBUFFER_WIDTH), 8192);
@@ -82,20 +83,24 @@ TEST_F(EglConfig, DefaultsAskForWindowsAndES) {
 TEST_F(EglConfig, SortsBySmallerDepthThenStencil) {
   auto all = choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                      EGL_NONE});
-  std::vector<Sizes> expected = {{0, 0}, {0, 8}, {16, 0}, {24, 0}, {24, 8}, {32, 0}, {32, 8}};
+  // EGL 1.5 3.4.1.2: fewer samples before the depth size, so the 4x configs come last.
+  std::vector<Sizes> expected = {{0, 0}, {0, 8}, {16, 0}, {24, 0}, {24, 8}, {32, 0}, {32, 8}, {0, 0}, {24, 8}};
   EXPECT_EQ(all, expected);
 }
 
 TEST_F(EglConfig, MatchesAtLeastSizes) {
   auto configs = choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                          EGL_RED_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_NONE});
-  std::vector<Sizes> expected = {{24, 8}, {32, 8}};
+  std::vector<Sizes> expected = {{24, 8}, {32, 8}, {24, 8}};
   EXPECT_EQ(configs, expected);
   EXPECT_TRUE(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                       EGL_RED_SIZE, 9, EGL_NONE})
                   .empty());
+  EXPECT_EQ(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SAMPLE_BUFFERS, 1,
+                    EGL_SAMPLES, 2, EGL_NONE}),
+            (std::vector<Sizes>{{0, 0}, {24, 8}}));
   EXPECT_TRUE(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                      EGL_SAMPLES, 4, EGL_NONE})
+                      EGL_SAMPLES, 8, EGL_NONE})
                   .empty());
 }
 
@@ -110,11 +115,11 @@ TEST_F(EglConfig, ES2OnlyWhenOfferedAndNoWindows) {
   EXPECT_EQ(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT,
                     EGL_NONE})
                 .size(),
-            offers_gles2() ? 7u : 0u);
+            offers_gles2() ? 9u : 0u);
   EXPECT_EQ(choose({EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT,
                     EGL_NONE})
                 .size(),
-            7u);
+            9u);
   EXPECT_TRUE(choose({EGL_SURFACE_TYPE, EGL_WINDOW_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                       EGL_NONE})
                   .empty());

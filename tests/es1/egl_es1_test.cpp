@@ -63,7 +63,7 @@ TEST_F(EglEs1, ClientApisNameBoth) { EXPECT_STREQ(eglQueryString(dpy, EGL_CLIENT
 TEST_F(EglEs1, EveryConfigRendersGLES1AndES2) {
   EGLint n = 0;
   ASSERT_TRUE(eglGetConfigs(dpy, nullptr, 0, &n));
-  ASSERT_EQ(n, 7);
+  ASSERT_EQ(n, 9);
   std::vector<EGLConfig> configs(n);
   ASSERT_TRUE(eglGetConfigs(dpy, configs.data(), n, &n));
   for (EGLConfig c : configs) {
@@ -79,10 +79,10 @@ TEST_F(EglEs1, EveryConfigRendersGLES1AndES2) {
   const EGLint es2[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES2_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
   // The default EGL_RENDERABLE_TYPE is EGL_OPENGL_ES_BIT (EGL 1.5, table 3.4).
   const EGLint defaults[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
-  EXPECT_EQ(count(es), 7);
-  EXPECT_EQ(count(both), 7);
-  EXPECT_EQ(count(es2), 7);
-  EXPECT_EQ(count(defaults), 7);
+  EXPECT_EQ(count(es), 9);
+  EXPECT_EQ(count(both), 9);
+  EXPECT_EQ(count(es2), 9);
+  EXPECT_EQ(count(defaults), 9);
 }
 
 // What real programs do (issue 11): choose with EGL_OPENGL_ES_BIT, then ask for desktop GL 1.3.

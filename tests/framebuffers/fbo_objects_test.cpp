@@ -18,7 +18,7 @@ TEST_F(FboObjectsTest, DefaultsAndLimits) {
   for (const char* name : {"GL_ARB_framebuffer_object ", "GL_EXT_framebuffer_object ", "GL_EXT_framebuffer_blit ",
                            "GL_EXT_packed_depth_stencil "})
     EXPECT_NE(ext.find(name), std::string::npos) << name;
-  EXPECT_EQ(get_int(GL_MAX_SAMPLES), 0);
+  EXPECT_EQ(get_int(GL_MAX_SAMPLES), 4);
 }
 
 TEST_F(FboObjectsTest, NamesExistOnceBound) {
@@ -132,8 +132,8 @@ TEST_F(FboObjectsTest, RenderbufferStorageAndParameters) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 4, 8193);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, 4, 4);
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));  // MAX_SAMPLES is 0
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 5, GL_RGBA8, 4, 4);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));  // MAX_SAMPLES is 4
   glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_TEXTURE_WIDTH, &v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glDeleteRenderbuffers(1, &rb);

@@ -30,8 +30,10 @@ TEST_F(GlxConfigTest, EveryConfigIsRgba8OnATrueColorVisual) {
     EXPECT_EQ(attrib(dpy, c, GLX_DRAWABLE_TYPE), GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT);
     EXPECT_EQ(attrib(dpy, c, GLX_X_RENDERABLE), True);
     EXPECT_EQ(attrib(dpy, c, GLX_X_VISUAL_TYPE), GLX_TRUE_COLOR);
-    EXPECT_EQ(attrib(dpy, c, GLX_SAMPLES), 0);
-    EXPECT_EQ(attrib(dpy, c, GLX_SAMPLE_BUFFERS), 0);
+    // Single-sampled, or 4x multisampled and double-buffered.
+    const int samples = attrib(dpy, c, GLX_SAMPLES);
+    EXPECT_TRUE(samples == 0 || (samples == 4 && attrib(dpy, c, GLX_DOUBLEBUFFER) == True)) << samples;
+    EXPECT_EQ(attrib(dpy, c, GLX_SAMPLE_BUFFERS), samples ? 1 : 0);
     EXPECT_EQ(attrib(dpy, c, GLX_CONFIG_CAVEAT), GLX_NONE);
     const int depth = attrib(dpy, c, GLX_DEPTH_SIZE), stencil = attrib(dpy, c, GLX_STENCIL_SIZE);
     EXPECT_TRUE((depth == 24 && stencil == 8) || (depth == 0 && stencil == 0));
@@ -46,6 +48,39 @@ TEST_F(GlxConfigTest, EveryConfigIsRgba8OnATrueColorVisual) {
   XFree(configs);
   for (bool db : {false, true})
     for (bool ds : {false, true}) EXPECT_NE(rgba8(db, ds), nullptr) << db << ds;
+}
+
+TEST_F(GlxConfigTest, MultisampledConfigsSortAfterSingleSampled) {
+  int n = 0;
+  const int any[] = {GLX_DOUBLEBUFFER, True, None};
+  GLXFBConfig* configs = glXChooseFBConfig(dpy, screen, any, &n);
+  ASSERT_GT(n, 0);
+  EXPECT_EQ(attrib(dpy, configs[0], GLX_SAMPLES), 0);
+  // GLX 1.4 table 3.4: after the buffer size and double buffering, fewer samples first.
+  int last_samples = 0, last_size = 0, multisampled = 0;
+  for (int i = 0; i < n; ++i) {
+    const int samples = attrib(dpy, configs[i], GLX_SAMPLES), size = attrib(dpy, configs[i], GLX_BUFFER_SIZE);
+    if (size == last_size) EXPECT_GE(samples, last_samples) << i;
+    last_samples = samples;
+    last_size = size;
+    multisampled += samples > 0;
+  }
+  EXPECT_GT(multisampled, 0);
+  XFree(configs);
+  for (int asked : {1, 2, 4}) {
+    const int ms[] = {GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, asked, None};
+    configs = glXChooseFBConfig(dpy, screen, ms, &n);
+    ASSERT_GT(n, 0) << asked;
+    for (int i = 0; i < n; ++i) {
+      EXPECT_EQ(attrib(dpy, configs[i], GLX_SAMPLES), 4);
+      EXPECT_EQ(attrib(dpy, configs[i], GLX_SAMPLE_BUFFERS), 1);
+    }
+    XFree(configs);
+  }
+  const int too_many[] = {GLX_SAMPLES, 8, None};
+  configs = glXChooseFBConfig(dpy, screen, too_many, &n);
+  EXPECT_EQ(n, 0);
+  if (configs) XFree(configs);
 }
 
 TEST_F(GlxConfigTest, InvalidConfigAttribute) {
@@ -85,7 +120,7 @@ TEST_F(GlxConfigTest, ChooseByIdAndImpossibleRequests) {
   ASSERT_EQ(n, 1);
   EXPECT_EQ(configs[0], c);
   XFree(configs);
-  EXPECT_EQ(choose({GLX_SAMPLES, 4}), nullptr);
+  EXPECT_EQ(choose({GLX_SAMPLES, 8}), nullptr);
   EXPECT_EQ(choose({GLX_ACCUM_RED_SIZE, 17}), nullptr);
   EXPECT_NE(choose({GLX_ACCUM_RED_SIZE, 16, GLX_ACCUM_ALPHA_SIZE, 1}), nullptr);  // 16-bit accumulation
   EXPECT_EQ(choose({GLX_RENDER_TYPE, GLX_COLOR_INDEX_BIT}), nullptr);

@@ -1,16 +1,19 @@
-// A quad covering [0, w] x [0, h] at depth z, for tests under GlTest::pixel_projection().
+// Quads in window pixels at depth z, for tests under GlTest::pixel_projection().
 #pragma once
 #include <GL/gl.h>
 
 namespace pineda::test {
 
-inline void draw_window_quad(float w, float h, float z = 0.f) {
+// A quad covering [x0, x1] x [y0, y1] at depth z.
+inline void draw_rect(float x0, float y0, float x1, float y1, float z = 0.f) {
   glBegin(GL_QUADS);
-  glVertex3f(0, 0, z);
-  glVertex3f(w, 0, z);
-  glVertex3f(w, h, z);
-  glVertex3f(0, h, z);
+  glVertex3f(x0, y0, z);
+  glVertex3f(x1, y0, z);
+  glVertex3f(x1, y1, z);
+  glVertex3f(x0, y1, z);
   glEnd();
 }
+
+inline void draw_window_quad(float w, float h, float z = 0.f) { draw_rect(0, 0, w, h, z); }
 
 }  // namespace pineda::test

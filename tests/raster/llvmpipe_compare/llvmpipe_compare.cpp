@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "raster/multisample.h"
 #include "raster/renderer.h"
 
 namespace {
@@ -34,7 +35,10 @@ struct Scene {
   bool flat = false, depth = false, textured = false, line_mode = false;
   float offset_factor = 0, offset_units = 0;
   bool blend = false;  // SrcAlpha, OneMinusSrcAlpha over a coloured background
+  bool msaa = false;   // 4x multisampled, resolved (llvmpipe: a renderbuffer and glBlitFramebuffer)
 };
+
+GLuint single_fbo = 0, msaa_fbo = 0;
 
 struct Texture {
   std::shared_ptr<TextureImage> image = std::make_shared<TextureImage>();
@@ -59,6 +63,18 @@ bool init_gl() {
   glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, kW, kH);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+  single_fbo = fbo;
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) return false;
+  GLuint ms_rb[2];
+  glGenFramebuffers(1, &msaa_fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, msaa_fbo);
+  glGenRenderbuffers(2, ms_rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, ms_rb[0]);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, kW, kH);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_rb[0]);
+  glBindRenderbuffer(GL_RENDERBUFFER, ms_rb[1]);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH24_STENCIL8, kW, kH);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, ms_rb[1]);
   glViewport(0, 0, kW, kH);
   glDisable(GL_DITHER);
   return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
@@ -68,6 +84,7 @@ const float kBackground[4] = {0.3f, 0.6f, 0.9f, 0.45f};
 
 std::vector<uint8_t> draw_gl(const std::vector<Vert>& v, const Scene& sc) {
   const float* bg = sc.blend ? kBackground : nullptr;
+  glBindFramebuffer(GL_FRAMEBUFFER, sc.msaa ? msaa_fbo : single_fbo);
   glClearColor(bg ? bg[0] : 0, bg ? bg[1] : 0, bg ? bg[2] : 0, bg ? bg[3] : 0);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -89,19 +106,26 @@ std::vector<uint8_t> draw_gl(const std::vector<Vert>& v, const Scene& sc) {
     glVertex4f(p.x, p.y, p.z, p.w);
   }
   glEnd();
+  if (sc.msaa) {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, single_fbo);
+    glBlitFramebuffer(0, 0, kW, kH, 0, 0, kW, kH, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, single_fbo);
+  }
   std::vector<uint8_t> out(kW * kH * 4);
   glReadPixels(0, 0, kW, kH, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
   return out;
 }
 
 std::vector<uint8_t> draw_pineda(const std::vector<Vert>& v, const Scene& sc, const Texture& tex) {
-  std::vector<uint8_t> color(kW * kH * 4);
-  std::vector<uint32_t> depth(kW * kH);
+  const int samples = sc.msaa ? kMaxSamples : 1;
+  std::vector<uint8_t> color(kW * kH * 4 * samples), resolved(kW * kH * 4);
+  std::vector<uint32_t> depth(kW * kH * samples);
   Framebuffer fb;
   fb.width = kW;
   fb.height = kH;
-  fb.color = {color.data(), kW * 4, ColorFormat::RGBA8};
-  fb.depth = {depth.data(), kW, 24};
+  fb.samples = samples;
+  fb.color = {color.data(), kW * 4, ColorFormat::RGBA8, {}, kW * kH * 4};
+  fb.depth = {depth.data(), kW, 24, kW * kH};
   Renderer r(1);
   r.set_framebuffer(fb);
   ClearState c;
@@ -145,7 +169,9 @@ std::vector<uint8_t> draw_pineda(const std::vector<Vert>& v, const Scene& sc, co
   }
   r.draw(s, sc.mode, cv);
   r.flush();
-  return color;
+  if (!sc.msaa) return color;
+  resolve_color(fb, {resolved.data(), kW * 4, ColorFormat::RGBA8});
+  return resolved;
 }
 
 Texture make_texture() {
@@ -223,5 +249,9 @@ int main() {
   compare("points", 100, 20, false, {GL_POINTS, Primitive::Points}, tex);
   compare("points size 5", 100, 20, false, {GL_POINTS, Primitive::Points, 1, 5}, tex);
   compare("textured", 100, 3, true, {GL_TRIANGLES, Primitive::Triangles, 1, 1, false, false, true}, tex);
+  compare("msaa triangles", 300, 3, false,
+          {GL_TRIANGLES, Primitive::Triangles, 1, 1, false, false, false, false, 0, 0, false, true}, tex);
+  compare("msaa depth", 100, 12, true,
+          {GL_TRIANGLES, Primitive::Triangles, 1, 1, false, true, false, false, 0, 0, false, true}, tex);
   return 0;
 }

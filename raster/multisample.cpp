@@ -1,0 +1,102 @@
+#include "raster/multisample.h"
+
+#include <cmath>
+
+#include "raster/color_reduction.h"
+#include "raster/raster_limits.h"
+#include "raster/tile_raster.h"
+
+namespace pineda::raster {
+
+Framebuffer sample_plane(const Framebuffer& fb, int sample) {
+  Framebuffer plane = fb;
+  plane.samples = 1;
+  if (plane.color.base) plane.color.base += fb.color.sample_stride * sample;
+  if (plane.depth.base) plane.depth.base += fb.depth.sample_stride * sample;
+  if (plane.stencil.base) plane.stencil.base += fb.stencil.sample_stride * sample;
+  return plane;
+}
+
+uint32_t sample_coverage_mask(const MultisampleState& ms, int samples) {
+  const uint32_t all = (1u << samples) - 1;
+  if (!ms.sample_coverage) return all;
+  const int n = static_cast<int>(std::nearbyint(ms.coverage_value * samples));
+  const uint32_t mask = (1u << n) - 1;
+  return ms.coverage_invert ? all & ~mask : mask;
+}
+
+const DrawRecord& sample_draw(const DrawRecord& draw, int sample) {
+  return draw.sample_draws ? (*draw.sample_draws)[sample] : draw;
+}
+
+void prepare_sample_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path) {
+  const MultisampleState& ms = draw.state.multisample;
+  if (!ms.multisample) return;  // GL 1.5 3.2.1: the multisample fragment operations are off too
+  draw.sample_mask = sample_coverage_mask(ms, fb.samples);
+  // Alpha to coverage keeps round(alpha * samples) samples: sample s when alpha >= (s + 1/2) /
+  // samples, an alpha test per sample. With the application's own alpha test it is not applied.
+  if (!ms.alpha_to_coverage || draw.state.alpha_test) return;
+  auto records = std::make_shared<std::vector<DrawRecord>>();
+  for (int s = 0; s < fb.samples; ++s) {
+    DrawState state = draw.state;
+    state.alpha_test = true;
+    state.alpha_func = CompareFunc::GreaterEqual;
+    state.alpha_ref = (s + 0.5f) / static_cast<float>(fb.samples);
+    records->push_back(make_draw_record(state, fb, path));
+    records->back().sample_mask = draw.sample_mask;
+  }
+  draw.sample_draws = std::move(records);
+}
+
+void apply_clear_samples(const ClearRecord& clear, const Framebuffer& fb, const PixelRect& tile) {
+  for (int s = 0; s < fb.samples; ++s) apply_clear(clear, sample_plane(fb, s), tile);
+}
+
+uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
+                                   const PixelRect& tile) {
+  const bool per_sample = prim.kind == CoverageKind::Triangle && prim.smooth.size == 0.0 &&
+                          draw.state.multisample.multisample;
+  uint64_t passed = 0;
+  PrimSetup shifted;
+  if (per_sample) shifted = prim;
+  for (int s = 0; s < fb.samples; ++s) {
+    if (!((draw.sample_mask >> s) & 1)) continue;
+    const Framebuffer plane = sample_plane(fb, s);
+    const DrawRecord& d = sample_draw(draw, s);
+    if (!per_sample) {  // lines, points and GL_MULTISAMPLE off: the pixel centre's coverage
+      passed += rasterize_in_tile(prim, d, plane, tile);
+      continue;
+    }
+    const SampleOffset o = kSampleOffsets4x[s];
+    for (int e = 0; e < 3; ++e) shifted.edges[e].c = prim.edges[e].c + prim.edges[e].a * o.dx + prim.edges[e].b * o.dy;
+    shifted.z0 = prim.z0 + (prim.dzdx * o.dx + prim.dzdy * o.dy) / kSubpixelOne;
+    passed += rasterize_in_tile(shifted, d, plane, tile);
+  }
+  return passed;
+}
+
+void resolve_rgba8(const Framebuffer& fb, int x, int y, uint8_t out[4]) {
+  unsigned sum[4] = {0, 0, 0, 0};
+  for (int s = 0; s < fb.samples; ++s) {
+    uint8_t rgba[4];
+    read_rgba8(fb.color, fb.color.base + fb.color.sample_stride * s + fb.color.stride * y + 4 * x, rgba);
+    for (int c = 0; c < 4; ++c) sum[c] += rgba[c];
+  }
+  const unsigned n = static_cast<unsigned>(fb.samples);
+  for (int c = 0; c < 4; ++c) out[c] = static_cast<uint8_t>((sum[c] + n / 2) / n);
+}
+
+void resolve_color(const Framebuffer& fb, const ColorBuffer& out) {
+  const unsigned n = static_cast<unsigned>(fb.samples);
+  for (int y = 0; y < fb.height; ++y) {
+    const uint8_t* in = fb.color.base + fb.color.stride * y;
+    uint8_t* row = out.base + out.stride * y;
+    for (int i = 0; i < fb.width * 4; ++i) {
+      unsigned sum = 0;
+      for (int s = 0; s < fb.samples; ++s) sum += in[fb.color.sample_stride * s + i];
+      row[i] = static_cast<uint8_t>((sum + n / 2) / n);
+    }
+  }
+}
+
+}  // namespace pineda::raster

@@ -1,0 +1,49 @@
+// Multisampled framebuffers (Framebuffer::samples > 1): each sample is a whole plane of every
+// buffer, and a draw is rasterized once per sample with its coverage (edge functions) and depth
+// taken at that sample's position. Colour and texture coordinates stay at the pixel centre, so
+// every sample of a pixel gets the same shaded colour: shading once per pixel, as GL 1.5
+// section 3.2.1 allows. Single-sampled framebuffers never reach this code.
+#pragma once
+#include <cstdint>
+
+#include "raster/clear.h"
+#include "raster/draw_record.h"
+#include "raster/framebuffer.h"
+#include "raster/prim_setup.h"
+
+namespace pineda::raster {
+
+constexpr int kMaxSamples = 4;
+
+// The standard 4x pattern (D3D's, Gallium's and so llvmpipe's), as offsets from the pixel
+// centre in sub-pixels (1/256 px), y up: samples at (0.375, 0.125), (0.875, 0.375),
+// (0.125, 0.625), (0.625, 0.875) of the pixel from its lower-left corner.
+struct SampleOffset {
+  int dx, dy;
+};
+constexpr SampleOffset kSampleOffsets4x[kMaxSamples] = {{-32, -96}, {96, -32}, {-96, 32}, {32, 96}};
+
+// The view of one sample's plane: a single-sampled framebuffer.
+Framebuffer sample_plane(const Framebuffer& fb, int sample);
+
+// glSampleCoverage's mask (GL 1.5 4.1.3): the first round(value * samples) samples, inverted
+// when asked; all samples when SAMPLE_COVERAGE is off.
+uint32_t sample_coverage_mask(const MultisampleState& ms, int samples);
+
+// A draw's record for sample `sample` when the draw needs one of its own (alpha to coverage
+// becomes an alpha test per sample), otherwise `draw` itself.
+const DrawRecord& sample_draw(const DrawRecord& draw, int sample);
+// Makes the per-sample records of a draw into a multisampled framebuffer.
+void prepare_sample_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path);
+
+void apply_clear_samples(const ClearRecord& clear, const Framebuffer& fb, const PixelRect& tile);
+uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
+                                   const PixelRect& tile);
+
+// Averages the samples of pixel (x, y) into RGBA bytes: (sum + samples / 2) / samples.
+void resolve_rgba8(const Framebuffer& fb, int x, int y, uint8_t out[4]);
+// Resolves every pixel of fb's colour planes into `out`, a single-sampled buffer of the same
+// size and byte order (a multisampled window's back buffer, for swaps and reads).
+void resolve_color(const Framebuffer& fb, const ColorBuffer& out);
+
+}  // namespace pineda::raster

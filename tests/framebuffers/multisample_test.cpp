@@ -1,0 +1,292 @@
+// Multisampled renderbuffers (EXT_framebuffer_multisample, ARB_framebuffer_object) and the
+// multisample fragment operations: coverage at the standard 4x positions, depth per sample,
+// SAMPLE_COVERAGE, SAMPLE_ALPHA_TO_COVERAGE, GL_MULTISAMPLE off, resolve by glBlitFramebuffer.
+//
+// Samples lie at (0.375, 0.125), (0.875, 0.375), (0.125, 0.625), (0.625, 0.875) of a pixel
+// (from its lower-left corner). The resolve averages the 4 samples rounding to nearest:
+// k of 4 samples at 255 over 0 give (255 k + 2) / 4 = 0, 64, 128, 191, 255.
+#include <array>
+
+#include "tests/framebuffers/fbo_test.h"
+
+namespace pineda::test {
+namespace {
+
+constexpr int kSize = 16;
+
+class MultisampleTest : public FboTest {
+ protected:
+  void SetUp() override {
+    FboTest::SetUp();
+    ms_fb_ = make_fbo();
+    ms_color_ = make_ms_renderbuffer(GL_RGBA8, 4);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, ms_color_);
+    ms_depth_ = make_ms_renderbuffer(GL_DEPTH_COMPONENT24, 4);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ms_depth_);
+    resolve_fb_ = make_fbo();
+    resolve_color_ = make_renderbuffer(GL_RGBA8, kSize, kSize);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, resolve_color_);
+    glBindFramebuffer(GL_FRAMEBUFFER, ms_fb_);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  void TearDown() override {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    GLuint fbs[] = {ms_fb_, resolve_fb_}, rbs[] = {ms_color_, ms_depth_, resolve_color_};
+    glDeleteFramebuffers(2, fbs);
+    glDeleteRenderbuffers(3, rbs);
+    FboTest::TearDown();
+  }
+
+  GLuint make_ms_renderbuffer(GLenum format, int samples) {
+    GLuint rb = 0;
+    glGenRenderbuffers(1, &rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, kSize, kSize);
+    return rb;
+  }
+
+  static void rect(float x0, float y0, float x1, float y1, float z = 0.f) { draw_rect(x0, y0, x1, y1, z); }
+
+  // Resolves the multisampled framebuffer into the single-sampled one and reads pixel (x, y).
+  std::array<int, 4> resolved(int x, int y) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fb_);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fb_);
+    glBlitFramebuffer(0, 0, kSize, kSize, 0, 0, kSize, kSize, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+    uint8_t p[4] = {0, 0, 0, 0};
+    glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+    glBindFramebuffer(GL_FRAMEBUFFER, ms_fb_);
+    return {p[0], p[1], p[2], p[3]};
+  }
+
+  GLuint ms_fb_ = 0, ms_color_ = 0, ms_depth_ = 0, resolve_fb_ = 0, resolve_color_ = 0;
+};
+
+using Rgba = std::array<int, 4>;
+
+TEST_F(MultisampleTest, StateDefaultsAndQueries) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  EXPECT_EQ(get_int(GL_MAX_SAMPLES), 4);
+  EXPECT_EQ(get_int(GL_SAMPLE_BUFFERS), 0);  // the window's buffers are single-sampled
+  EXPECT_EQ(get_int(GL_SAMPLES), 0);
+  EXPECT_TRUE(glIsEnabled(GL_MULTISAMPLE));
+  EXPECT_FALSE(glIsEnabled(GL_SAMPLE_ALPHA_TO_COVERAGE));
+  EXPECT_FALSE(glIsEnabled(GL_SAMPLE_ALPHA_TO_ONE));
+  EXPECT_FALSE(glIsEnabled(GL_SAMPLE_COVERAGE));
+  GLfloat value = -1;
+  glGetFloatv(GL_SAMPLE_COVERAGE_VALUE, &value);
+  EXPECT_EQ(value, 1.f);
+  GLboolean invert = GL_TRUE;
+  glGetBooleanv(GL_SAMPLE_COVERAGE_INVERT, &invert);
+  EXPECT_EQ(invert, GL_FALSE);
+  glBindFramebuffer(GL_FRAMEBUFFER, ms_fb_);
+  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  EXPECT_EQ(get_int(GL_SAMPLE_BUFFERS), 1);
+  EXPECT_EQ(get_int(GL_SAMPLES), 4);
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+  EXPECT_EQ(get_int(GL_SAMPLE_BUFFERS), 0);
+  EXPECT_EQ(get_int(GL_SAMPLES), 0);
+  const std::string ext = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  EXPECT_NE(ext.find("GL_EXT_framebuffer_multisample "), std::string::npos);
+}
+
+TEST_F(MultisampleTest, SampleCountsRoundUpToFour) {
+  GLuint rb = 0;
+  glGenRenderbuffers(1, &rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb);
+  for (int asked : {0, 1, 2, 3, 4}) {
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, asked, GL_RGBA8, 4, 4);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    GLint samples = -1;
+    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+    EXPECT_EQ(samples, asked == 0 ? 0 : 4) << asked;
+  }
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, 5, GL_RGBA8, 4, 4);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, -1, GL_RGBA8, 4, 4);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  GLint samples = -1;
+  glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+  EXPECT_EQ(samples, 4);  // the failed calls changed nothing
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 4, 4);
+  glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+  EXPECT_EQ(samples, 0);
+  glRenderbufferStorageMultisampleEXT(GL_RENDERBUFFER, 2, GL_DEPTH_COMPONENT24, 4, 4);
+  glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+  EXPECT_EQ(samples, 4);
+  glDeleteRenderbuffers(1, &rb);
+}
+
+TEST_F(MultisampleTest, MixedSampleCountsAreIncomplete) {
+  const GLuint depth = make_renderbuffer(GL_DEPTH_COMPONENT24, kSize, kSize);
+  glBindFramebuffer(GL_FRAMEBUFFER, ms_fb_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE));
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_FRAMEBUFFER_OPERATION));
+  // A texture has no samples either.
+  const GLuint tex = make_texture(GL_RGBA8, kSize, kSize);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ms_depth_);
+  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, tex, 0);
+  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE));
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+  EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glDeleteTextures(1, &tex);
+  glDeleteRenderbuffers(1, &depth);
+}
+
+TEST_F(MultisampleTest, ReadsFromAMultisampledFramebufferAreErrors) {
+  uint8_t p[4];
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glCopyPixels(0, 0, 1, 1, GL_COLOR);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  const GLuint tex = make_texture(GL_RGBA8, 4, 4);
+  glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 4, 4);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glDeleteTextures(1, &tex);
+}
+
+TEST_F(MultisampleTest, BlitErrors) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fb_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fb_);
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 16, 16, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // scaled
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glBlitFramebuffer(0, 0, 8, 8, 1, 0, 9, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // moved
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glBlitFramebuffer(0, 8, 8, 0, 0, 8, 8, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // mirrored alike: allowed
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Right edges at x = 2 + t cover the samples of pixel column 2 whose x is below t.
+TEST_F(MultisampleTest, CoverageOfAnEdgeAcrossAPixel) {
+  glColor3f(1, 1, 1);
+  const float t[5] = {0.f, 0.25f, 0.5f, 0.75f, 1.f};
+  for (int band = 0; band < 5; ++band) rect(0, 3 * band, 2 + t[band], 3 * band + 3);
+  const int expected[5] = {0, 64, 128, 191, 255};
+  for (int band = 0; band < 5; ++band) {
+    EXPECT_EQ(resolved(2, 3 * band + 1), (Rgba{expected[band], expected[band], expected[band], expected[band]})) << band;
+    EXPECT_EQ(resolved(1, 3 * band + 1), (Rgba{255, 255, 255, 255})) << band;
+    EXPECT_EQ(resolved(3, 3 * band + 1), (Rgba{0, 0, 0, 0})) << band;
+  }
+}
+
+// Top edges at y = 2 + t: samples at y 0.125, 0.375, 0.625, 0.875. An edge through a sample:
+// the top edge does not own it (the fill rule at samples as at pixel centres).
+TEST_F(MultisampleTest, CoverageOfATopEdgeAndTheFillRule) {
+  glColor3f(1, 1, 1);
+  rect(0, 0, 3, 2.3f);     // samples below 0.3: one
+  rect(4, 0, 7, 2.375f);   // through sample 1's y: one
+  rect(8, 0, 11, 2.4f);    // above it (positions snap to 1/256 px): two
+  EXPECT_EQ(resolved(1, 2)[0], 64);
+  EXPECT_EQ(resolved(5, 2)[0], 64);
+  EXPECT_EQ(resolved(9, 2)[0], 128);
+}
+
+// A triangle edge on the diagonal through pixel (2, 2)'s lower-left and upper-right corners:
+// samples below it are (0.375, 0.125) and (0.875, 0.375).
+TEST_F(MultisampleTest, CoverageOfADiagonalEdge) {
+  glColor3f(1, 0, 0);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(0, 0);
+  glVertex2f(16, 0);
+  glVertex2f(16, 16);
+  glEnd();
+  EXPECT_EQ(resolved(2, 2), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(3, 2), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(2, 3), (Rgba{0, 0, 0, 0}));
+}
+
+// Each sample keeps its own depth: the far quad shows only where the near one left samples.
+TEST_F(MultisampleTest, DepthIsTestedPerSample) {
+  glEnable(GL_DEPTH_TEST);
+  glColor3f(1, 0, 0);
+  rect(0, 0, 4.5f, 16, 0.5f);  // near: glOrtho(..., -1, 1) puts z = 0.5 at depth 0.25
+  glColor3f(0, 1, 0);
+  rect(0, 0, 16, 16, -0.4f);
+  glDisable(GL_DEPTH_TEST);
+  EXPECT_EQ(resolved(4, 8), (Rgba{128, 128, 0, 255}));
+  EXPECT_EQ(resolved(3, 8), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(5, 8), (Rgba{0, 255, 0, 255}));
+}
+
+TEST_F(MultisampleTest, SampleCoverage) {
+  glEnable(GL_SAMPLE_COVERAGE);
+  glSampleCoverage(0.5f, GL_FALSE);  // samples 0 and 1
+  glColor3f(1, 0, 0);
+  rect(0, 0, 16, 16);
+  glSampleCoverage(0.5f, GL_TRUE);  // samples 2 and 3
+  glColor3f(0, 1, 0);
+  rect(0, 0, 16, 16);
+  glSampleCoverage(0.25f, GL_FALSE);  // sample 0: blue over red
+  glColor3f(0, 0, 1);
+  rect(0, 0, 8, 16);
+  glDisable(GL_SAMPLE_COVERAGE);
+  EXPECT_EQ(resolved(12, 8), (Rgba{128, 128, 0, 255}));
+  EXPECT_EQ(resolved(4, 8), (Rgba{64, 128, 64, 255}));
+}
+
+TEST_F(MultisampleTest, AlphaToCoverage) {
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  const float alpha[4] = {0.1f, 0.3f, 0.5f, 0.8f};  // round(alpha * 4) samples: 0, 1, 2, 3
+  for (int band = 0; band < 4; ++band) {
+    glColor4f(1, 1, 1, alpha[band]);
+    rect(0, 4 * band, 16, 4 * band + 4);
+  }
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  const int expected[4] = {0, 64, 128, 191};
+  for (int band = 0; band < 4; ++band) EXPECT_EQ(resolved(8, 4 * band + 2)[0], expected[band]) << band;
+}
+
+// With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
+// SAMPLE_COVERAGE no longer applies.
+TEST_F(MultisampleTest, MultisampleDisabledUsesPixelCentres) {
+  glDisable(GL_MULTISAMPLE);
+  glEnable(GL_SAMPLE_COVERAGE);
+  glSampleCoverage(0.5f, GL_FALSE);
+  glColor3f(1, 1, 1);
+  rect(0, 0, 2.4f, 4);
+  rect(0, 4, 2.6f, 8);
+  glDisable(GL_SAMPLE_COVERAGE);
+  glEnable(GL_MULTISAMPLE);
+  EXPECT_EQ(resolved(2, 2)[0], 0);
+  EXPECT_EQ(resolved(2, 6)[0], 255);
+  EXPECT_EQ(resolved(1, 6)[0], 255);
+}
+
+TEST_F(MultisampleTest, ClearAndBlitBetweenSampleCounts) {
+  glClearColor(0.2f, 0.4f, 0.6f, 0.8f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  EXPECT_EQ(resolved(5, 5), (Rgba{51, 102, 153, 204}));
+  // Single-sampled into multisampled: every sample takes the source pixel.
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_fb_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, ms_fb_);
+  glBlitFramebuffer(0, 0, 8, 16, 0, 0, 8, 16, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(resolved(3, 3), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(12, 3), (Rgba{51, 102, 153, 204}));
+  // Multisampled into multisampled: sample by sample.
+  GLuint fb2 = make_fbo();
+  GLuint rb2 = make_ms_renderbuffer(GL_RGBA8, 4);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb2);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(0, 1, 0);
+  rect(0, 0, 2.5f, 16);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fb2);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, ms_fb_);
+  glBlitFramebuffer(0, 0, 16, 16, 0, 0, 16, 16, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(resolved(2, 8), (Rgba{0, 128, 0, 128}));
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &fb2);
+  glDeleteRenderbuffers(1, &rb2);
+}
+
+}  // namespace
+}  // namespace pineda::test
