@@ -72,6 +72,14 @@ void builtin_input(const raster::VertexInput& v, shader::BuiltinAttribute kind, 
   }
 }
 
+// Bit p: user clip plane p is enabled.
+uint32_t enabled_clip_planes(const Context& ctx) {
+  uint32_t planes = 0;
+  for (int p = 0; p < raster::kMaxClipPlanes; ++p)
+    if (ctx.extras.clip_plane_enabled[p]) planes |= 1u << p;
+  return planes;
+}
+
 // Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
 // varyings into `varyings` (program.varying_floats() per vertex).
 void run_vertex_shader(const Context& ctx, const shader::Program& program, const float* uniforms,
@@ -85,6 +93,7 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
   out.resize(vertices.size());
   varyings.resize(vertices.size() * static_cast<size_t>(nv));
   const auto& attributes = program.attributes();
+  const uint32_t planes = enabled_clip_planes(ctx);
   for (size_t first = 0; first < vertices.size(); first += kLanes) {
     const int count = static_cast<int>(std::min<size_t>(kLanes, vertices.size() - first));
     std::fill(in.begin(), in.end(), 0.f);
@@ -118,9 +127,10 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
                                    result[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
                                    result[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
                                    result[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
-      for (int p = 0; p < raster::kMaxClipPlanes; ++p)  // GL 2.0 2.12: planes test gl_ClipVertex
-        if (ctx.extras.clip_plane_enabled[p])
-          c.clip_distance[p] = static_cast<float>(glm::dot(ctx.extras.clip_planes[p], clip_vertex));
+      for (uint32_t left = planes; left; left &= left - 1) {  // GL 2.0 2.12: planes test gl_ClipVertex
+        const int p = __builtin_ctz(left);
+        c.clip_distance[p] = static_cast<float>(glm::dot(ctx.extras.clip_planes[p], clip_vertex));
+      }
       for (auto* color : {c.color, c.back_color}) std::fill(color, color + 4, 0.f);
       for (auto& tc : c.texcoord) std::fill(tc, tc + 4, 0.f);
       c.edge_flag = vertices[first + lane].edge_flag;
@@ -212,9 +222,7 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
   state.point_params.attenuation[0] = 1.f;
   state.point_params.attenuation[1] = state.point_params.attenuation[2] = 0.f;
   state.shader = shader_draw;
-  state.clip_planes = 0;  // the planes test gl_ClipVertex (run_vertex_shader)
-  for (int p = 0; p < raster::kMaxClipPlanes; ++p)
-    if (ctx.extras.clip_plane_enabled[p]) state.clip_planes |= 1u << p;
+  state.clip_planes = enabled_clip_planes(ctx);  // the planes test gl_ClipVertex (run_vertex_shader)
 
   // Vertex-shader texture lookups read the same (usable) images the fragments will.
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
