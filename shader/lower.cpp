@@ -43,6 +43,9 @@ constexpr int kMaxInlineDepth = 64;
 // calls end in a link error rather than exhausting memory.
 constexpr int kMaxInstructions = 1 << 18;
 constexpr int kMaxRegisters = 1 << 18;
+// Expressions nested in expressions, through inlined calls too: rv() recurses once per level
+// (several kB of stack each under AddressSanitizer).
+constexpr int kMaxExpressionDepth = 512;
 
 bool starts_with_gl(const std::string& name) { return name.compare(0, 3, "gl_") == 0; }
 
@@ -318,6 +321,7 @@ class Lowerer {
   std::unordered_map<long long, int> globals_;
   std::vector<std::unordered_map<long long, int>> scopes_;
   std::vector<Call> calls_;
+  int expression_depth_ = 0;
   std::vector<OutputVar> outputs_;
   std::map<std::string, std::pair<VarType, int>> interface_vars_;  // inputs / outputs by name
   std::map<std::string, VarType> declared_outputs_;
@@ -612,6 +616,14 @@ Val Lowerer::constant(const glslang::TConstUnionArray& a, int n) {
 
 Val Lowerer::rv(TIntermTyped* node) {
   check_size();
+  if (expression_depth_ >= kMaxExpressionDepth)
+    fail("error: expressions nested too deeply (more than " + std::to_string(kMaxExpressionDepth) +
+         " levels, through inlined calls)\n");
+  struct Nested {
+    int& depth;
+    explicit Nested(int& d) : depth(++d) {}
+    ~Nested() { --depth; }
+  } nested(expression_depth_);
   if (TIntermConstantUnion* c = node->getAsConstantUnion())
     return constant(c->getConstArray(), var_type(node->getType()).size());
   if (TIntermSymbol* s = node->getAsSymbolNode()) return load(symbol_place(s));
