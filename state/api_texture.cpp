@@ -196,7 +196,7 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
 // Sets one parameter; returns the error the spec names for a bad one.
 GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   TexParams& p = tex.params;
-  const GLenum e = static_cast<GLenum>(v[0]);
+  const GLenum e = enum_from_float(v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
@@ -266,7 +266,7 @@ bool known_pname(const Context& ctx, GLenum pname) { return pname != GL_TEXTURE_
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
   if (!tex || !known_pname(ctx, pname)) return ctx.record_error(GL_INVALID_ENUM);
-  if (ctx.es2() && !es2_tex_parameter_allowed(pname, static_cast<GLenum>(v[0])))
+  if (ctx.es2() && !es2_tex_parameter_allowed(pname, enum_from_float(v[0])))
     return ctx.record_error(GL_INVALID_ENUM, "not a wrap mode of OpenGL ES 2.0");
   if (const GLenum error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
