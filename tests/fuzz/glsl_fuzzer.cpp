@@ -22,7 +22,9 @@
 
 namespace {
 
-constexpr int kSize = 8;
+// One 4x4 fragment block: a shader that loops until the executor's iteration budget ends its
+// loops costs that budget once per vertex batch and fragment block of the draws.
+constexpr int kSize = 4;
 constexpr size_t kMaxShaders = 6;
 constexpr EGLint kEs2Attribs[] = {EGL_CONTEXT_CLIENT_VERSION, 2, EGL_NONE};
 constexpr EGLint kGl21Attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1, EGL_NONE};
@@ -129,20 +131,19 @@ void bind_textures() {
   glActiveTexture(GL_TEXTURE0);
 }
 
-// Every active attribute (and attribute 0, the position) reads a client array of 6 vertices
-// that cover the viewport; then triangles, lines and points.
+// Every active attribute (and attribute 0, the position) reads a client array of 4 vertices:
+// a triangle over the viewport, a line across it and a point inside.
 void draw(GLuint program) {
-  static const GLfloat kVertices[6 * 4] = {-1, -1, 0.5f, 1, 1,  -1, 0, 1, -1, 1,  -0.5f, 1,
-                                           1,  1,  0,    1, -0.5f, 0.25f, 0, 1, 0.75f, -0.25f, 0.25f, 2};
+  static const GLfloat kVertices[4 * 4] = {-1, -1, 0.5f, 1, 3, -1, 0, 1, -1, 3, -0.5f, 1, 0.1f, 0.2f, 0, 2};
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, kVertices);
   for_each_active(program, false, [](GLint, GLint location, GLint, GLenum) {
     glEnableVertexAttribArray(GLuint(location));
     glVertexAttribPointer(GLuint(location), 4, GL_FLOAT, GL_FALSE, 0, kVertices);
   });
-  glDrawArrays(GL_TRIANGLES, 0, 6);
-  glDrawArrays(GL_LINE_STRIP, 0, 6);
-  glDrawArrays(GL_POINTS, 0, 6);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDrawArrays(GL_LINES, 2, 2);
+  glDrawArrays(GL_POINTS, 3, 1);
   uint8_t pixels[kSize * kSize * 4];
   glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_UNSIGNED_BYTE, pixels);
 }

@@ -6,6 +6,8 @@
 # passes its sanitizer build), otherwise build-fuzz, configured here without the tests.
 # Exits non-zero when a target crashes, trips a sanitizer, times out or runs out of memory;
 # the input that did it is left in BUILD/findings/<target>/.
+# PINEDA_FUZZ_SEED fixes libFuzzer's random seed (scripts/test.sh: 1, so that CI repeats the
+# same mutations and a red run reproduces); unset, each run explores anew.
 # Usage: tests/fuzz/run.sh SECONDS [TARGET...]
 set -euo pipefail
 seconds=${1:?usage: tests/fuzz/run.sh SECONDS [TARGET...]}
@@ -26,10 +28,11 @@ for target in "${targets[@]}"; do
   # New inputs go to the build's corpus; the committed seeds are only read.
   corpus=$build/corpus/$target findings=$build/findings/$target
   mkdir -p "$corpus" "$findings"
-  dict=()
-  [ -f "$root/tests/fuzz/$target.dict" ] && dict=(-dict="$root/tests/fuzz/$target.dict")
+  options=()
+  [ -n "${PINEDA_FUZZ_SEED:-}" ] && options+=(-seed="$PINEDA_FUZZ_SEED")
+  [ -f "$root/tests/fuzz/$target.dict" ] && options+=(-dict="$root/tests/fuzz/$target.dict")
   if ! "$build/tests/fuzz/pineda_${target}_fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-      -malloc_limit_mb=512 -max_len=4096 -print_final_stats=1 -artifact_prefix="$findings/" "${dict[@]}" \
+      -malloc_limit_mb=512 -max_len=4096 -print_final_stats=1 -artifact_prefix="$findings/" "${options[@]}" \
       "$corpus" "$root/tests/fuzz/corpus/$target"; then
     echo "fuzz target $target failed; reproducer in $findings/" >&2
     status=1
