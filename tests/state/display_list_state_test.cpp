@@ -1,4 +1,5 @@
 // Display lists: names, compilation state, errors, and what is compiled or executed at once.
+#define GL_GLEXT_PROTOTYPES
 #include <cmath>
 
 #include "tests/e2e/support/gl_test.h"
@@ -167,6 +168,21 @@ TEST_F(DisplayListStateTest, CallListsFloatOffsetsBeyondGLintNameNoList) {
   glCallLists(4, GL_FLOAT, offsets);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   EXPECT_EQ(get_floats(GL_CURRENT_COLOR, 4), (std::vector<GLfloat>{0, 1, 0, 1}));
+}
+
+// Found by the API fuzzer (out of memory: 8 GB copied): a compiled glDrawBuffers copies its
+// names only for a count glDrawBuffers accepts; the list names the error when it runs.
+TEST_F(DisplayListStateTest, CompiledDrawBuffersWithHugeCountCopiesNothing) {
+  GLint before = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &before);
+  const GLenum bufs[1] = {GL_FRONT_LEFT};
+  glNewList(1, GL_COMPILE);
+  glDrawBuffers(2147483647, bufs);  // the immediate call reads nothing either
+  glEndList();
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glCallList(1);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(get_int(GL_DRAW_BUFFER), before);
 }
 
 TEST_F(DisplayListStateTest, RecursionStopsAtTheNestingLimit) {
