@@ -1,11 +1,10 @@
 // Display lists: glNewList/glEndList/glCallList(s)/glGenLists/glDeleteLists/glIsList/glListBase.
-#include <algorithm>
-#include <cmath>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/es1/es1_enums.h"
+#include "state/pixel_state.h"
 #include "state/unaligned.h"
 
 namespace pineda::gl {
@@ -23,11 +22,6 @@ void call_list(Context& ctx, GLuint name) {
   for (const ListCommand& command : list->commands) command(ctx);
 }
 
-// A GL_FLOAT list-name offset of glCallLists: truncated, clamped to GLint (NaN is 0).
-GLint float_list_offset(GLfloat f) {
-  return std::isnan(f) ? 0 : static_cast<GLint>(std::clamp(static_cast<double>(f), -2147483648.0, 2147483647.0));
-}
-
 // The list-name offsets of glCallLists, decoded by type; false for an invalid type.
 bool decode_names(GLsizei n, GLenum type, const void* lists, std::vector<GLuint>& out) {
   const auto* b = static_cast<const uint8_t*>(lists);
@@ -40,7 +34,7 @@ bool decode_names(GLsizei n, GLenum type, const void* lists, std::vector<GLuint>
       case GL_UNSIGNED_SHORT: out[i] = load_unaligned<GLushort>(b + 2 * i); break;
       case GL_INT: out[i] = GLuint(load_unaligned<GLint>(b + 4 * i)); break;
       case GL_UNSIGNED_INT: out[i] = load_unaligned<GLuint>(b + 4 * i); break;
-      case GL_FLOAT: out[i] = GLuint(float_list_offset(load_unaligned<GLfloat>(b + 4 * i))); break;
+      case GL_FLOAT: out[i] = GLuint(truncate_int_param(load_unaligned<GLfloat>(b + 4 * i))); break;
       case GL_2_BYTES: out[i] = b[2 * i] * 256u + b[2 * i + 1]; break;
       case GL_3_BYTES: out[i] = (b[3 * i] * 256u + b[3 * i + 1]) * 256u + b[3 * i + 2]; break;
       case GL_4_BYTES:

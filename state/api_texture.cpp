@@ -12,6 +12,7 @@
 #include "state/limits.h"
 #include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
+#include "state/pixel_state.h"
 #include "state/pixel_unpack.h"
 #include "state/tex_image_checks.h"
 #include "state/texture_format.h"
@@ -226,8 +227,8 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
     case GL_TEXTURE_LOD_BIAS: p.lod_bias = v[0]; break;
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
-      if (v[0] < 0.f) return GL_INVALID_VALUE;
-      const GLint level = GLint(std::min(v[0], 2147483647.f));
+      if (!(v[0] >= 0.f)) return GL_INVALID_VALUE;  // negative or NaN
+      const GLint level = v[0] >= 2147483648.f ? 2147483647 : GLint(v[0]);
       (pname == GL_TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = level;
       break;
     }
@@ -492,7 +493,7 @@ void GetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params)
   bool colour;
   if (!get_tex_parameter(ctx, target, pname, v, count, colour)) return ctx.record_error(GL_INVALID_ENUM);
   if (!params) return;
-  for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : GLint(v[i]);
+  for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : truncate_int_param(v[i]);
 }
 
 void GetTexLevelParameteriv(Context& ctx, GLenum target, GLint level, GLenum pname, GLint* params) {

@@ -247,5 +247,31 @@ TEST_F(ErrorTest, EnumAsHugeOrNanFloatIsInvalidEnum) {
   EXPECT_EQ(tex_env_mode, GL_MODULATE);
 }
 
+// Found by the API fuzzer (UBSan: 2^31 converted to int): a texture level given as a float is
+// clamped to GLint; NaN is GL_INVALID_VALUE like a negative level.
+TEST_F(ErrorTest, TextureLevelAsHugeOrNanFloat) {
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3e9f);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLint level = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, &level);
+  EXPECT_EQ(level, 2147483647);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, std::nanf(""));
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, &level);
+  EXPECT_EQ(level, 0);
+}
+
+// Found by the API fuzzer (UBSan: NaN converted to int): float state that holds NaN reads as 0
+// through glGetIntegerv.
+TEST_F(ErrorTest, NanStateReadsAsZeroInteger) {
+  glPolygonOffset(std::nanf(""), 2.f);
+  GLint v[2] = {-1, -1};
+  glGetIntegerv(GL_POLYGON_OFFSET_FACTOR, &v[0]);
+  glGetIntegerv(GL_POLYGON_OFFSET_UNITS, &v[1]);
+  EXPECT_EQ(v[0], 0);
+  EXPECT_EQ(v[1], 2);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda::test
