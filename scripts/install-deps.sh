@@ -9,6 +9,7 @@ packages=(
   piglit waffle-utils   # conformance/run.py (piglit only recommends waffle-utils, whose wflinfo its runner calls)
   libglm-dev libpng-dev libgtest-dev googletest
   glslang-dev glslang-tools   # shader/: the GLSL front end (its CMake files need the tools package)
+  clang libclang-rt-dev   # the sanitizer build and the fuzz targets (libclang-rt-dev: ASan, UBSan, libFuzzer; clang's packages only recommend it)
   freeglut3-dev libglfw3-dev libsdl2-dev apitrace apitrace-tracers   # the X program tests (tests/x11apps)
 )
 missing=()

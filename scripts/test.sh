@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds Pineda and runs every test: the unit and end-to-end tests (ctest), the piglit
 # groups Pineda claims against conformance/expectations/, the Debian package in a clean root,
-# then the unit tests again built with AddressSanitizer and UndefinedBehaviorSanitizer.
+# then the unit tests again built with AddressSanitizer and UndefinedBehaviorSanitizer (clang), and
+# the fuzz targets of that build for a minute each.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 jobs=$(nproc)
@@ -21,6 +22,15 @@ timeout 900 python3 "$root/conformance/run.py" --platform surfaceless_egl --lib-
 # The Debian package, made from the build above, tried in a clean Debian 12 root (as root).
 "$root/scripts/package-test.sh" "$root/build"
 
-"$root/scripts/build.sh" "$root/build-asan" -DPINEDA_SANITIZE=ON
+# One clang build with ASan+UBSan serves the unit tests and the libFuzzer targets (tests/fuzz);
+# a build-asan of another compiler (GCC made it before) is started afresh.
+if [ -f "$root/build-asan/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$' "$root/build-asan/CMakeCache.txt"; then
+  rm -rf "$root/build-asan"
+fi
+"$root/scripts/build.sh" "$root/build-asan" -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+  -DPINEDA_SANITIZE=ON -DPINEDA_FUZZ=ON
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$root/build-asan" -j"$jobs" --output-on-failure
+# Each fuzz target for 60 s from its seeds (the inputs of earlier findings among them), with a
+# fixed random seed so that a failure reproduces.
+PINEDA_FUZZ_SEED=1 PINEDA_FUZZ_BUILD="$root/build-asan" "$root/tests/fuzz/run.sh" 60

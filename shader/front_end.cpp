@@ -4,6 +4,8 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 
+#include "shader/tree_depth.h"
+
 namespace pineda::shader::front_end {
 
 namespace {
@@ -73,6 +75,13 @@ std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::strin
   if (!supported) {
     log += "ERROR: 0:1: '#version' : version " + std::to_string(version) + (tree_es ? " es" : "") +
            " is not supported here (" + (es ? "GLSL ES 1.00 only" : "GLSL 1.10 and 1.20 only") + ")\n"
+           "ERROR: 1 compilation errors.  No code generated.\n\n\n";
+    return nullptr;
+  }
+  const int depth = tree_depth(tree->getTreeRoot());
+  if (depth > kMaxTreeDepth) {
+    log += "ERROR: 0:0: '' : expressions and statements nested too deeply (" + std::to_string(depth) +
+           " levels, at most " + std::to_string(kMaxTreeDepth) + ")\n"
            "ERROR: 1 compilation errors.  No code generated.\n\n\n";
     return nullptr;
   }

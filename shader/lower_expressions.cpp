@@ -23,6 +23,14 @@ Val Lowerer::constant(const glslang::TConstUnionArray& a, int n) {
 
 Val Lowerer::rv(TIntermTyped* node) {
   check_size();
+  if (expression_depth_ >= kMaxExpressionDepth)
+    fail("error: expressions nested too deeply (more than " + std::to_string(kMaxExpressionDepth) +
+         " levels, through inlined calls)\n");
+  struct Nested {
+    int& depth;
+    explicit Nested(int& d) : depth(++d) {}
+    ~Nested() { --depth; }
+  } nested(expression_depth_);
   if (TIntermConstantUnion* c = node->getAsConstantUnion())
     return constant(c->getConstArray(), var_type(node->getType()).size());
   if (TIntermSymbol* s = node->getAsSymbolNode()) return load(symbol_place(s));

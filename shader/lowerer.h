@@ -45,6 +45,9 @@ inline constexpr int kMaxInlineDepth = 64;
 // calls end in a link error rather than exhausting memory.
 inline constexpr int kMaxInstructions = 1 << 18;
 inline constexpr int kMaxRegisters = 1 << 18;
+// Expressions nested in expressions, through inlined calls too: rv() recurses once per level
+// (several kB of stack each under AddressSanitizer).
+inline constexpr int kMaxExpressionDepth = 512;
 
 inline bool starts_with_gl(const std::string& name) { return name.compare(0, 3, "gl_") == 0; }
 
@@ -192,6 +195,7 @@ class Lowerer {
   std::unordered_map<long long, int> globals_;
   std::vector<std::unordered_map<long long, int>> scopes_;
   std::vector<Call> calls_;
+  int expression_depth_ = 0;
   std::vector<OutputVar> outputs_;
   std::map<std::string, std::pair<VarType, int>> interface_vars_;  // inputs / outputs by name
   std::map<std::string, VarType> declared_outputs_;

@@ -10,6 +10,9 @@
 namespace pineda::shader {
 
 struct VarType {
+  // Declared, so that clang does not ask whether the incomplete VarType of `members` is
+  // default-constructible (libstdc++'s std::pair does).
+  VarType() = default;
   BaseType base = BaseType::Float;
   int cols = 1;   // > 1 for matrices
   int rows = 1;   // vector size

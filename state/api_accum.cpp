@@ -13,7 +13,8 @@ namespace {
 
 constexpr float kAccumScale = 32767.f;
 
-int16_t to_accum(float v) { return static_cast<int16_t>(std::clamp(v, -32768.f, 32767.f)); }
+// NaN (an infinite value times a zero channel) is 0.
+int16_t to_accum(float v) { return std::isnan(v) ? 0 : static_cast<int16_t>(std::clamp(v, -32768.f, 32767.f)); }
 
 // Byte offsets of R, G, B, A in a pixel of `format`.
 void channel_offsets(raster::ColorFormat format, int out[4]) {

@@ -1,6 +1,7 @@
 // Client vertex arrays: the pointers, glDrawArrays, glDrawElements, glArrayElement,
 // glInterleavedArrays.
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "glapi/gl_entry_points.h"
@@ -189,17 +190,22 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
     if (l.format == format) layout = &l;
   if (!layout) return ctx.record_error(GL_INVALID_ENUM);
   const GLsizei s = stride ? stride : layout->s * f;
-  const auto* base = static_cast<const uint8_t*>(pointer);
+  // Integer arithmetic: `pointer` is an offset into the array buffer when one is bound (often 0,
+  // a null pointer, which C++ forbids offsetting).
+  const auto at = [pointer](int offset) {
+    return reinterpret_cast<const uint8_t*>(reinterpret_cast<uintptr_t>(pointer) + uintptr_t(offset));
+  };
+  const auto* base = at(0);
   ClientArray& tex = ctx.texture_units[ctx.client_active_texture].texcoord_array;
   tex.enabled = layout->tex;
   if (layout->tex) tex = {true, layout->st, GL_FLOAT, s, base};
   ctx.color_array.enabled = layout->color;
-  if (layout->color) ctx.color_array = {true, layout->sc, layout->tc, s, base + layout->pc * f};
+  if (layout->color) ctx.color_array = {true, layout->sc, layout->tc, s, at(layout->pc * f)};
   ctx.normal_array.enabled = layout->normal;
-  if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, base + layout->pn * f};
+  if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, at(layout->pn * f)};
   ctx.index_array.enabled = false;
   ctx.edge_flag_array.enabled = false;
-  ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, base + layout->pv * f};
+  ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, at(layout->pv * f)};
   for (ClientArray* a : {&tex, &ctx.color_array, &ctx.normal_array, &ctx.vertex_array}) a->buffer = ctx.buffers.array;
 }
 

@@ -1,6 +1,7 @@
 // glDrawBuffers (GL 2.0, ARB_draw_buffers, ATI_draw_buffers) on the window-system framebuffer:
 // its colour buffers are the front left one and, when double-buffered, the back left one.
 #include <algorithm>
+#include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
@@ -77,5 +78,19 @@ void DrawBuffers(Context& ctx, GLsizei n, const GLenum* bufs) {
 
 void DrawBuffersARB(Context& ctx, GLsizei n, const GLenum* bufs) { DrawBuffers(ctx, n, bufs); }
 void DrawBuffersATI(Context& ctx, GLsizei n, const GLenum* bufs) { DrawBuffers(ctx, n, bufs); }
+
+// In a display list: the names are copied only for an `n` that DrawBuffers accepts (found by the
+// API fuzzer: n = 2^31 - 1 copied 8 GB from a 5-name array); DrawBuffers names the error when
+// the list runs.
+void compile_DrawBuffers(Context& ctx, GLsizei n, const GLenum* bufs) {
+  std::vector<GLenum> copy;
+  if (n >= 0 && n <= kMaxDrawBuffers && bufs) copy.assign(bufs, bufs + n);
+  ctx.record_list_command([n, copy = std::move(copy), null = !bufs](Context& c) {
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    DrawBuffers(c, n, null ? nullptr : copy.data());
+  });
+}
+void compile_DrawBuffersARB(Context& ctx, GLsizei n, const GLenum* bufs) { compile_DrawBuffers(ctx, n, bufs); }
+void compile_DrawBuffersATI(Context& ctx, GLsizei n, const GLenum* bufs) { compile_DrawBuffers(ctx, n, bufs); }
 
 }  // namespace pineda::gl

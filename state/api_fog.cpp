@@ -3,6 +3,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/enum_translate.h"
 
 namespace pineda::gl {
 namespace {
@@ -14,7 +15,7 @@ void set_fog(Context& ctx, GLenum pname, double value, const float* color) {
   VertexExtrasState& x = ctx.extras;
   switch (pname) {
     case GL_FOG_MODE: {
-      const GLenum mode = static_cast<GLenum>(value);
+      const GLenum mode = enum_from_float(value);
       if (static_cast<double>(mode) != value) return ctx.record_error(GL_INVALID_ENUM);
       switch (mode) {
         case GL_LINEAR: fog.mode = raster::FogMode::Linear; break;
@@ -26,7 +27,7 @@ void set_fog(Context& ctx, GLenum pname, double value, const float* color) {
       return;
     }
     case GL_FOG_COORD_SRC: {
-      const GLenum source = static_cast<GLenum>(value);
+      const GLenum source = enum_from_float(value);
       if (static_cast<double>(source) != value || (source != GL_FOG_COORD && source != GL_FRAGMENT_DEPTH))
         return ctx.record_error(GL_INVALID_ENUM);
       x.fog_coord_source = source;

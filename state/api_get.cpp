@@ -258,7 +258,9 @@ bool query(Context& ctx, GLenum pname, Values& out) {
 }
 
 // GL 1.1 spec 6.1.2: colours become integers by a linear map of [-1, 1] onto the int range.
+// NaN (state that GL stores as given, e.g. glPolygonOffset(NaN, 0)) reads as 0.
 GLint to_int(Kind kind, double v) {
+  if (std::isnan(v)) return 0;
   if (kind == Kind::Color) return static_cast<GLint>(std::clamp(v, -1.0, 1.0) * 2147483647.0);
   if (kind == Kind::Float) return static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
   return static_cast<GLint>(static_cast<int64_t>(v));

@@ -4,6 +4,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/es1/es1_enums.h"
+#include "state/pixel_state.h"
 #include "state/unaligned.h"
 
 namespace pineda::gl {
@@ -33,7 +34,7 @@ bool decode_names(GLsizei n, GLenum type, const void* lists, std::vector<GLuint>
       case GL_UNSIGNED_SHORT: out[i] = load_unaligned<GLushort>(b + 2 * i); break;
       case GL_INT: out[i] = GLuint(load_unaligned<GLint>(b + 4 * i)); break;
       case GL_UNSIGNED_INT: out[i] = load_unaligned<GLuint>(b + 4 * i); break;
-      case GL_FLOAT: out[i] = GLuint(GLint(load_unaligned<GLfloat>(b + 4 * i))); break;
+      case GL_FLOAT: out[i] = GLuint(truncate_int_param(load_unaligned<GLfloat>(b + 4 * i))); break;
       case GL_2_BYTES: out[i] = b[2 * i] * 256u + b[2 * i + 1]; break;
       case GL_3_BYTES: out[i] = (b[3 * i] * 256u + b[3 * i + 1]) * 256u + b[3 * i + 2]; break;
       case GL_4_BYTES:

@@ -4,6 +4,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/enum_translate.h"
 #include "state/point_sprite.h"
 
 namespace pineda::gl {
@@ -74,7 +75,7 @@ void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) env.color[i] = std::clamp(v[i], 0.f, 1.f);
   } else if (GLenum* e = enum_param(env, pname)) {
-    const GLenum value = static_cast<GLenum>(v[0]);
+    const GLenum value = enum_from_float(v[0]);
     if (!valid_enum_value(pname, value)) return ctx.record_error(GL_INVALID_ENUM);
     *e = value;
   } else if (float* scale = scale_param(env, pname)) {

@@ -7,6 +7,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/enum_translate.h"
 
 namespace pineda::gl {
 namespace {
@@ -35,7 +36,7 @@ bool valid_mode(GLenum coord, GLenum mode) {
 void set_mode(Context& ctx, GLenum coord, double value) {
   TexGenCoordState* c = coord_state(ctx, coord);
   if (!c) return;
-  const GLenum mode = static_cast<GLenum>(value);
+  const GLenum mode = enum_from_float(value);
   if (static_cast<double>(mode) != value || !valid_mode(coord, mode)) return ctx.record_error(GL_INVALID_ENUM);
   c->mode = mode;
 }

@@ -12,6 +12,7 @@
 #include "state/limits.h"
 #include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
+#include "state/pixel_state.h"
 #include "state/pixel_unpack.h"
 #include "state/tex_image_checks.h"
 #include "state/texture_format.h"
@@ -196,7 +197,7 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
 // Sets one parameter; returns the error the spec names for a bad one.
 GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   TexParams& p = tex.params;
-  const GLenum e = static_cast<GLenum>(v[0]);
+  const GLenum e = enum_from_float(v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
@@ -226,8 +227,8 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
     case GL_TEXTURE_LOD_BIAS: p.lod_bias = v[0]; break;
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
-      if (v[0] < 0.f) return GL_INVALID_VALUE;
-      const GLint level = GLint(std::min(v[0], 2147483647.f));
+      if (!(v[0] >= 0.f)) return GL_INVALID_VALUE;  // negative or NaN
+      const GLint level = v[0] >= 2147483648.f ? 2147483647 : GLint(v[0]);
       (pname == GL_TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = level;
       break;
     }
@@ -266,7 +267,7 @@ bool known_pname(const Context& ctx, GLenum pname) { return pname != GL_TEXTURE_
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
   if (!tex || !known_pname(ctx, pname)) return ctx.record_error(GL_INVALID_ENUM);
-  if (ctx.es2() && !es2_tex_parameter_allowed(pname, static_cast<GLenum>(v[0])))
+  if (ctx.es2() && !es2_tex_parameter_allowed(pname, enum_from_float(v[0])))
     return ctx.record_error(GL_INVALID_ENUM, "not a wrap mode of OpenGL ES 2.0");
   if (const GLenum error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
@@ -492,7 +493,7 @@ void GetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params)
   bool colour;
   if (!get_tex_parameter(ctx, target, pname, v, count, colour)) return ctx.record_error(GL_INVALID_ENUM);
   if (!params) return;
-  for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : GLint(v[i]);
+  for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : truncate_int_param(v[i]);
 }
 
 void GetTexLevelParameteriv(Context& ctx, GLenum target, GLint level, GLenum pname, GLint* params) {

@@ -7,6 +7,12 @@
 
 namespace pineda {
 
+// An enum given as a float parameter (glTexGenf, glTexEnvf, glTexParameterf, glFogf), truncated
+// as an integer one would be; a value no GLenum holds (negative, too large, NaN) is no enum.
+inline GLenum enum_from_float(double v) {
+  return v >= 0.0 && v < 4294967296.0 ? static_cast<GLenum>(v) : GLenum(0xFFFFFFFFu);
+}
+
 bool to_compare_func(GLenum e, raster::CompareFunc& out);
 bool to_stencil_op(GLenum e, raster::StencilOp& out);
 bool to_blend_factor(GLenum e, raster::BlendFactor& out);

@@ -18,6 +18,12 @@ inline GLint round_int_param(double v) {
   return std::isnan(v) ? 0 : static_cast<GLint>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
 }
 
+// The same truncated toward zero, as C converts (glCallLists' GL_FLOAT names, integer
+// queries of float state); a value beyond GLint is clamped instead of undefined.
+inline GLint truncate_int_param(double v) {
+  return std::isnan(v) ? 0 : static_cast<GLint>(std::clamp(v, -2147483648.0, 2147483647.0));
+}
+
 // GL_CURRENT_RASTER_*: saved with GL_CURRENT_BIT.
 struct RasterPosition {
   float window[4] = {0, 0, 0, 1};  // x, y, z in window coordinates; w is the clip w

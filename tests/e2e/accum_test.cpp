@@ -1,4 +1,6 @@
 // The accumulation buffer: glAccum's five operations, glClearAccum, scissor, colour mask.
+#include <cmath>
+
 #include "tests/e2e/support/gl_test.h"
 
 namespace pineda::test {
@@ -31,6 +33,20 @@ TEST_F(AccumTest, LoadAccumMultAddReturn) {
   EXPECT_EQ(pixel(3, 3), (Rgba{153, 178, 140, 191}));
   glAccum(GL_RETURN, 2.f);  // clamped to [0, 1]
   EXPECT_EQ(pixel(3, 3), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Found by the API fuzzer (UBSan: NaN converted to short): an infinite value times a zero
+// channel accumulates 0; times a non-zero channel the largest value.
+TEST_F(AccumTest, InfiniteValueTimesZeroChannelIsZero) {
+  clear_to(0.f, 1.f, 0.f, 0.f);
+  glAccum(GL_LOAD, INFINITY);
+  clear_to(0.2f, 0.2f, 0.2f, 0.2f);
+  glAccum(GL_RETURN, 1.f);
+  EXPECT_EQ(pixel(3, 3), (Rgba{0, 255, 0, 0}));
+  glAccum(GL_MULT, -INFINITY);  // 0 times -inf is 0, 32767 times -inf clamped to -32768
+  glAccum(GL_RETURN, 1.f);
+  EXPECT_EQ(pixel(3, 3), (Rgba{0, 0, 0, 0}));
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

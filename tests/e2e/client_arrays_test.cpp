@@ -280,5 +280,23 @@ TEST_F(ClientArraysTest, SparseIndicesEqualImmediateMode) {
   EXPECT_EQ(read_all(), reference);
 }
 
+// Found by the API fuzzer (UBSan: offset applied to a null pointer): with an array buffer bound,
+// glInterleavedArrays' pointer is an offset, 0 among them; each array starts at its place in it.
+TEST_F(ClientArraysTest, InterleavedArraysAtOffsetZeroOfABuffer) {
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glInterleavedArrays(GL_C3F_V3F, 0, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  void* color = reinterpret_cast<void*>(1);
+  void* vertex = nullptr;
+  glGetPointerv(GL_COLOR_ARRAY_POINTER, &color);
+  glGetPointerv(GL_VERTEX_ARRAY_POINTER, &vertex);
+  EXPECT_EQ(color, nullptr);
+  EXPECT_EQ(vertex, reinterpret_cast<void*>(12));
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glDeleteBuffers(1, &buffer);
+}
+
 }  // namespace
 }  // namespace pineda::test

@@ -10,13 +10,22 @@
 
 #include "tests/e2e/support/gl_test.h"
 
+// GCC says __SANITIZE_ADDRESS__, clang __has_feature(address_sanitizer).
+#if defined(__SANITIZE_ADDRESS__)
+#define PINEDA_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define PINEDA_UNDER_ASAN 1
+#endif
+#endif
+
 namespace pineda::test {
 namespace {
 
 class OutOfMemoryTest : public GlTest {
  protected:
   void SetUp() override {
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(PINEDA_UNDER_ASAN)
     GTEST_SKIP() << "AddressSanitizer aborts on an allocation it cannot satisfy";
 #endif
     GlTest::SetUp();

@@ -1,4 +1,7 @@
 // Display lists: names, compilation state, errors, and what is compiled or executed at once.
+#define GL_GLEXT_PROTOTYPES
+#include <cmath>
+
 #include "tests/e2e/support/gl_test.h"
 #include "tests/state/get_helpers.h"
 
@@ -148,6 +151,38 @@ TEST_F(DisplayListStateTest, CallListsUsesTheBaseAtCallTime) {
   glListBase(9);
   glCallLists(1, GL_UNSIGNED_BYTE, offsets);
   EXPECT_EQ(get_floats(GL_CURRENT_COLOR, 4), (std::vector<GLfloat>{1, 0, 0, 1}));
+}
+
+// Found by the API fuzzer (UBSan: float to int conversion out of range): GL_FLOAT offsets are
+// truncated; ones no GLint holds (2.7e35, -1e30, NaN) name no list and are skipped.
+TEST_F(DisplayListStateTest, CallListsFloatOffsetsBeyondGLintNameNoList) {
+  glNewList(3, GL_COMPILE);
+  glColor3f(0, 1, 0);
+  glEndList();
+  glListBase(0);
+  glColor3f(1, 1, 1);
+  const GLfloat offsets[4] = {2.76733e35f, -1e30f, std::nanf(""), 3.75f};
+  glCallLists(3, GL_FLOAT, offsets);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_floats(GL_CURRENT_COLOR, 4), (std::vector<GLfloat>{1, 1, 1, 1}));
+  glCallLists(4, GL_FLOAT, offsets);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(get_floats(GL_CURRENT_COLOR, 4), (std::vector<GLfloat>{0, 1, 0, 1}));
+}
+
+// Found by the API fuzzer (out of memory: 8 GB copied): a compiled glDrawBuffers copies its
+// names only for a count glDrawBuffers accepts; the list names the error when it runs.
+TEST_F(DisplayListStateTest, CompiledDrawBuffersWithHugeCountCopiesNothing) {
+  GLint before = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &before);
+  const GLenum bufs[1] = {GL_FRONT_LEFT};
+  glNewList(1, GL_COMPILE);
+  glDrawBuffers(2147483647, bufs);  // the immediate call reads nothing either
+  glEndList();
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glCallList(1);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(get_int(GL_DRAW_BUFFER), before);
 }
 
 TEST_F(DisplayListStateTest, RecursionStopsAtTheNestingLimit) {

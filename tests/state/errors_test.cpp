@@ -1,5 +1,7 @@
 // glGetError: the first error is kept until read; calls inside glBegin/glEnd; invalid
 // arguments leave the state unchanged.
+#include <cmath>
+
 #include "tests/e2e/support/gl_test.h"
 
 namespace pineda::test {
@@ -217,6 +219,57 @@ TEST_F(ErrorTest, EnableOfClientArraySwitchesIt) {
   EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_TRUE);
   glDisable(GL_VERTEX_ARRAY);
   EXPECT_EQ(glIsEnabled(GL_VERTEX_ARRAY), GL_FALSE);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Found by the API fuzzer (UBSan: float to unsigned conversion out of range): an enum given as
+// a float that no GLenum holds is GL_INVALID_ENUM and changes nothing.
+TEST_F(ErrorTest, EnumAsHugeOrNanFloatIsInvalidEnum) {
+  glTexGenf(GL_S, GL_TEXTURE_GEN_MODE, -2.12635e33f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  GLint mode = 0;
+  glGetTexGeniv(GL_S, GL_TEXTURE_GEN_MODE, &mode);
+  EXPECT_EQ(mode, GL_EYE_LINEAR);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, 1e30f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, -1.0f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glTexEnvf(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, std::nanf(""));
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glFogf(GL_FOG_MODE, -1e30f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glFogf(GL_FOG_COORDINATE_SOURCE, 1e30f);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  GLint fog_mode = 0, tex_env_mode = 0;
+  glGetIntegerv(GL_FOG_MODE, &fog_mode);
+  glGetTexEnviv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &tex_env_mode);
+  EXPECT_EQ(fog_mode, GL_EXP);
+  EXPECT_EQ(tex_env_mode, GL_MODULATE);
+}
+
+// Found by the API fuzzer (UBSan: 2^31 converted to int): a texture level given as a float is
+// clamped to GLint; NaN is GL_INVALID_VALUE like a negative level.
+TEST_F(ErrorTest, TextureLevelAsHugeOrNanFloat) {
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 3e9f);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLint level = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, &level);
+  EXPECT_EQ(level, 2147483647);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, std::nanf(""));
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, &level);
+  EXPECT_EQ(level, 0);
+}
+
+// Found by the API fuzzer (UBSan: NaN converted to int): float state that holds NaN reads as 0
+// through glGetIntegerv.
+TEST_F(ErrorTest, NanStateReadsAsZeroInteger) {
+  glPolygonOffset(std::nanf(""), 2.f);
+  GLint v[2] = {-1, -1};
+  glGetIntegerv(GL_POLYGON_OFFSET_FACTOR, &v[0]);
+  glGetIntegerv(GL_POLYGON_OFFSET_UNITS, &v[1]);
+  EXPECT_EQ(v[0], 0);
+  EXPECT_EQ(v[1], 2);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

@@ -1,0 +1,11 @@
+/* [config]
+ * expect_result: fail
+ * glsl_version: 1.10
+ * [end config]
+ */
+#version 110 es
+
+void main()
+{
+    gl_Position = vec4(0.);
+}

@@ -1,0 +1,8 @@
+// [config]
+// expect_result: fail
+// glsl_version: 1.10
+// [end config]
+
+#version 0
+
+void main() { gl_Position = vec4(0); }

@@ -1,0 +1,15 @@
+/*[config]
+ *   expect_result: fail
+ *   glsl_version: 1.10
+ * [end config]
+ */
+
+#version 110
+
+void f(void)
+{}
+
+void main()
+{
+    ++f();
+}
