@@ -39,5 +39,9 @@ std::unique_ptr<BenchScene> createWireframe(int width, int height);
 std::unique_ptr<BenchScene> createStencilReflection(int width, int height);
 std::unique_ptr<BenchScene> createGlslLit(int width, int height);
 std::unique_ptr<BenchScene> createGlslSkinned(int width, int height);
+std::unique_ptr<BenchScene> createGlslProcedural(int width, int height);
+std::unique_ptr<BenchScene> createGlslSprites(int width, int height);
+std::unique_ptr<BenchScene> createGlslRenderToTexture(int width, int height);
+std::unique_ptr<BenchScene> createGlslManyDraws(int width, int height);
 
 }  // namespace pineda::bench

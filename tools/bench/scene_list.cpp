@@ -19,6 +19,12 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
        createGlslLit},
       {"glsl_skinned", "GLSL: 204800 triangles skinned by 4 of 8 bone matrices in the vertex shader; first = link+frame",
        createGlslSkinned},
+      {"glsl_procedural", "GLSL: 2 full-screen layers of a long procedural shader (6 octaves of value noise)",
+       createGlslProcedural},
+      {"glsl_sprites", "GLSL: 6000 alpha-blended textured sprites with discard, one draw", createGlslSprites},
+      {"glsl_rtt", "GLSL: 16 lit quads into a 512x512 texture FBO, composited twice with a 5-tap blur",
+       createGlslRenderToTexture},
+      {"glsl_many_draws", "GLSL: 12288 one-quad draws, two glUniform calls before each", createGlslManyDraws},
   };
   return scenes;
 }
