@@ -252,7 +252,7 @@ bool choose_fbconfigs(const DisplayState& d, int screen, const int* attribs,
 const Config* choose_visual_config(const DisplayState& d, int screen, const int* attribs) {
   bool rgba = false, double_buffered = false, stereo = false;
   int level = 0, buffer_size = 0, aux = 0, red = 0, green = 0, blue = 0, alpha = 0;
-  int depth = 0, stencil = 0, accum = 0;
+  int depth = 0, stencil = 0, accum = 0, sample_buffers = 0, samples = 0;
   for (const int* a = attribs; a && a[0] != None; ++a) {
     switch (a[0]) {
       case GLX_USE_GL: break;
@@ -271,9 +271,8 @@ const Config* choose_visual_config(const DisplayState& d, int screen, const int*
       case GLX_ACCUM_RED_SIZE: case GLX_ACCUM_GREEN_SIZE: case GLX_ACCUM_BLUE_SIZE:
       case GLX_ACCUM_ALPHA_SIZE: accum = std::max(accum, *++a); break;
       // GLX 1.3 attributes that take a value are accepted and matched where meaningful.
-      case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES:
-        if (*++a > 0) return nullptr;
-        break;
+      case GLX_SAMPLE_BUFFERS: sample_buffers = *++a; break;
+      case GLX_SAMPLES: samples = *++a; break;
       case GLX_X_VISUAL_TYPE:
         if (*++a != GLX_TRUE_COLOR && *a != kDontCare) return nullptr;
         break;
@@ -290,14 +289,16 @@ const Config* choose_visual_config(const DisplayState& d, int screen, const int*
     // Without GLX_DOUBLEBUFFER only single-buffered visuals are considered.
     if (c->double_buffered != double_buffered) continue;
     if (c->buffer_size() < buffer_size || c->red < red || c->green < green || c->blue < blue ||
-        c->alpha < alpha || c->depth < depth || c->stencil < stencil)
+        c->alpha < alpha || c->depth < depth || c->stencil < stencil ||
+        (c->samples > 0 ? 1 : 0) < sample_buffers || c->samples < samples)
       continue;
     candidates.push_back(c.get());
   }
-  // A size of zero prefers the smallest buffer; a positive size the largest (colour, depth);
-  // stencil always prefers the smallest.
+  // Fewer samples first (GLX_SAMPLES is a minimum). A size of zero prefers the smallest buffer;
+  // a positive size the largest (colour, depth); stencil always prefers the smallest.
   auto before = [&](const Config* a, const Config* b) {
     auto prefer = [](int wanted, int x, int y) { return wanted > 0 ? x > y : x < y; };
+    if (a->samples != b->samples) return a->samples < b->samples;
     if (a->alpha != b->alpha) return prefer(alpha, a->alpha, b->alpha);
     if (a->depth != b->depth) return prefer(depth, a->depth, b->depth);
     if (a->stencil != b->stencil) return a->stencil < b->stencil;

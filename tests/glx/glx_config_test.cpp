@@ -157,6 +157,30 @@ TEST_F(GlxConfigTest, ChooseVisual) {
   EXPECT_EQ(value, 0);
   XFree(vi);
 
+  // GLX_SAMPLE_BUFFERS and GLX_SAMPLES are minimums: the 4x double-buffered visuals; none above 4
+  // samples, and none single-buffered. Without them the single-sampled visual comes first.
+  int multisampled[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_SAMPLE_BUFFERS, 1, GLX_SAMPLES, 2, GLX_DEPTH_SIZE, 1, None};
+  vi = glXChooseVisual(dpy, screen, multisampled);
+  ASSERT_NE(vi, nullptr);
+  EXPECT_EQ(glXGetConfig(dpy, vi, GLX_SAMPLE_BUFFERS, &value), 0);
+  EXPECT_EQ(value, 1);
+  EXPECT_EQ(glXGetConfig(dpy, vi, GLX_SAMPLES, &value), 0);
+  EXPECT_EQ(value, 4);
+  EXPECT_EQ(glXGetConfig(dpy, vi, GLX_DOUBLEBUFFER, &value), 0);
+  EXPECT_EQ(value, True);
+  EXPECT_EQ(glXGetConfig(dpy, vi, GLX_DEPTH_SIZE, &value), 0);
+  EXPECT_EQ(value, 24);
+  XFree(vi);
+  int too_many_samples[] = {GLX_RGBA, GLX_DOUBLEBUFFER, GLX_SAMPLES, 8, None};
+  EXPECT_EQ(glXChooseVisual(dpy, screen, too_many_samples), nullptr);
+  int single_buffered_multisampled[] = {GLX_RGBA, GLX_SAMPLE_BUFFERS, 1, None};
+  EXPECT_EQ(glXChooseVisual(dpy, screen, single_buffered_multisampled), nullptr);
+  vi = glXChooseVisual(dpy, screen, double_depth);
+  ASSERT_NE(vi, nullptr);
+  EXPECT_EQ(glXGetConfig(dpy, vi, GLX_SAMPLES, &value), 0);
+  EXPECT_EQ(value, 0);
+  XFree(vi);
+
   int index[] = {GLX_BUFFER_SIZE, 8, None};  // colour index: none
   EXPECT_EQ(glXChooseVisual(dpy, screen, index), nullptr);
   int stereo[] = {GLX_RGBA, GLX_STEREO, None};
