@@ -13,22 +13,27 @@ namespace {
 
 struct Variant {
   bool double_buffered;
-  bool depth_stencil;
+  int depth, stencil;
   int alpha;
   int samples;
 };
 
-// The single-sampled configs, then the 4x multisampled ones (double-buffered only), so that
-// the first ids stay what they were.
+// The single-sampled configs with 24-bit depth and 8-bit stencil or neither, the 4x
+// multisampled ones (double-buffered only), then single-sampled depth without stencil (which
+// programs that score configs, like glmark2, ask for), so that the first ids stay what they were.
 std::vector<Variant> variants_for_depth(int depth) {
   std::vector<Variant> out;
+  const auto add = [&](bool db, int depth_bits, int stencil_bits, int samples) {
+    if (depth == 24) out.push_back({db, depth_bits, stencil_bits, 0, samples});
+    out.push_back({db, depth_bits, stencil_bits, 8, samples});
+  };
   for (int samples : {0, raster::kMaxSamples})
     for (bool db : {true, false})
       for (bool ds : {true, false}) {
         if (samples && !db) continue;
-        if (depth == 24) out.push_back({db, ds, 0, samples});
-        out.push_back({db, ds, 8, samples});
+        add(db, ds ? 24 : 0, ds ? 8 : 0, samples);
       }
+  for (bool db : {true, false}) add(db, 24, 0, 0);
   return out;
 }
 
@@ -79,8 +84,8 @@ std::vector<std::unique_ptr<Config>> build_configs(Display* dpy) {
         c->visual_id = v.visualid;
         c->visual_depth = depth;
         c->alpha = variants[i].alpha;
-        c->depth = variants[i].depth_stencil ? 24 : 0;
-        c->stencil = variants[i].depth_stencil ? 8 : 0;
+        c->depth = variants[i].depth;
+        c->stencil = variants[i].stencil;
         c->double_buffered = variants[i].double_buffered;
         c->samples = variants[i].samples;
         c->visual_canonical = seen.insert(v.visualid).second;
