@@ -150,24 +150,22 @@ struct TileMask {
   PixelRect area;
   uint64_t rows[kTileSize] = {};
   void set(int x, int y) { rows[y - area.y0] |= uint64_t{1} << (x - area.x0); }
-  bool get(int x, int y) const {
-    return x >= area.x0 && x < area.x1 && y >= area.y0 && y < area.y1 && ((rows[y - area.y0] >> (x - area.x0)) & 1);
-  }
 };
 
+// Each quad row's quads from its first to its last covered one, their masks from two bit rows.
 void emit_mask(const TileMask& mask, const QuadSink& sink) {
   const PixelRect& area = mask.area;
   const int x0 = area.x0 & ~1;
-  const int count = (area.x1 - x0 + 1) / 2;
+  const int shift = area.x0 - x0;  // bit i of a shifted row is pixel x0 + i (an odd x0 leaves bit 63 free)
+  auto bits = [&](int y) { return y >= area.y0 && y < area.y1 ? mask.rows[y - area.y0] << shift : 0; };
   uint8_t masks[kMaxQuadsPerRow];
   for (int y = area.y0 & ~1; y < area.y1; y += 2) {
-    for (int q = 0; q < count; ++q) {
-      unsigned m = 0;
-      for (int i = 0; i < 4; ++i)
-        if (mask.get(x0 + 2 * q + (i & 1), y + (i >> 1))) m |= 1u << i;
-      masks[q] = static_cast<uint8_t>(m);
-    }
-    sink.row(x0, y, count, masks);
+    const uint64_t r0 = bits(y), r1 = bits(y + 1);
+    if (!(r0 | r1)) continue;
+    const int q0 = __builtin_ctzll(r0 | r1) / 2, q1 = (63 - __builtin_clzll(r0 | r1)) / 2;
+    for (int q = q0; q <= q1; ++q)
+      masks[q - q0] = static_cast<uint8_t>(((r0 >> (2 * q)) & 3u) | (((r1 >> (2 * q)) & 3u) << 2));
+    sink.row(x0 + 2 * q0, y, q1 - q0 + 1, masks);
   }
 }
 
