@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 
 #include "raster/raster_limits.h"
 #include "raster/setup.h"
@@ -85,6 +86,22 @@ void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& si
   }
 }
 
+// The pixels of the quad whose first pixel has the edge values v (then v advanced by a quad).
+inline unsigned quad_edge_mask(int64_t v[3], const int64_t step_x[3], const int64_t step_y[3]) {
+  unsigned m = 0xf;
+  for (int e = 0; e < 3; ++e) {
+    m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
+         (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
+    v[e] += 2 * step_x[e];
+  }
+  return m;
+}
+
+// rect_mask, without per-pixel tests for the quads wholly inside r.
+inline unsigned clip_mask(int x, int y, const PixelRect& r) {
+  return x >= r.x0 && x + 1 < r.x1 && y >= r.y0 && y + 1 < r.y1 ? 0xfu : rect_mask(x, y, r);
+}
+
 void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
@@ -98,18 +115,57 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
   for (int y = block.y0 & ~1; y < block.y1; y += 2) {
     int64_t v[3] = {row[0], row[1], row[2]};  // the edges at the quad's first pixel
     for (int q = 0; q < count; ++q) {
-      unsigned m = 0xf;
-      for (int e = 0; e < 3; ++e) {
-        m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
-             (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
-        v[e] += 2 * step_x[e];
-      }
-      masks[q] = static_cast<uint8_t>(m ? m & rect_mask(x0 + 2 * q, y, clip) : 0);
+      const unsigned m = quad_edge_mask(v, step_x, step_y);
+      masks[q] = static_cast<uint8_t>(m ? m & clip_mask(x0 + 2 * q, y, clip) : 0);
     }
     sink.row(x0, y, count, masks);
     for (int e = 0; e < 3; ++e) row[e] += 2 * step_y[e];
   }
 }
+
+// The quad masks of up to 16 pixel rows of a tile, before clipping to the area.
+struct QuadBand {
+  int x0 = 0, y0 = 0;  // the first quad's first pixel (even coordinates)
+  int count = 0, rows = 0;
+  uint8_t masks[8][kMaxQuadsPerRow];
+
+  // Every quad of r (which lies in the band).
+  void fill(const PixelRect& r) {
+    const int q0 = ((r.x0 & ~1) - x0) / 2, q_end = (((r.x1 + 1) & ~1) - x0) / 2;
+    for (int y = r.y0 & ~1; y < r.y1; y += 2) std::memset(&masks[(y - y0) / 2][q0], 0xf, static_cast<size_t>(q_end - q0));
+  }
+  // The quads of r, edge-tested.
+  void test(const PrimSetup& p, const PixelRect& r) {
+    const int qx0 = r.x0 & ~1;
+    int64_t step_x[3], step_y[3], row[3];
+    for (int e = 0; e < 3; ++e) {
+      step_x[e] = p.edges[e].a * kSubpixelOne;
+      step_y[e] = p.edges[e].b * kSubpixelOne;
+      row[e] = edge_at(p.edges[e], qx0, r.y0 & ~1);
+    }
+    for (int y = r.y0 & ~1; y < r.y1; y += 2) {
+      int64_t v[3] = {row[0], row[1], row[2]};
+      uint8_t* out = &masks[(y - y0) / 2][(qx0 - x0) / 2];
+      for (int x = qx0; x < r.x1; x += 2) *out++ = static_cast<uint8_t>(quad_edge_mask(v, step_x, step_y));
+      for (int e = 0; e < 3; ++e) row[e] += 2 * step_y[e];
+    }
+  }
+  // Each quad row, clipped to `clip`, the area the band spans: only its edge quads can cross it.
+  void emit(const PixelRect& clip, const QuadSink& sink) {
+    const int last = x0 + 2 * (count - 1);
+    for (int r = 0; r < rows; ++r) {
+      const int y = y0 + 2 * r;
+      uint8_t* m = masks[r];
+      if (y < clip.y0 || y + 1 >= clip.y1) {
+        for (int q = 0; q < count; ++q) m[q] = static_cast<uint8_t>(m[q] & rect_mask(x0 + 2 * q, y, clip));
+      } else {
+        if (x0 < clip.x0) m[0] = static_cast<uint8_t>(m[0] & rect_mask(x0, y, clip));
+        if (last + 1 >= clip.x1) m[count - 1] = static_cast<uint8_t>(m[count - 1] & rect_mask(last, y, clip));
+      }
+      sink.row(x0, y, count, m);
+    }
+  }
+};
 
 void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
   constexpr int kBlock = 16, kSub = 4, kSmall = 16;
@@ -124,25 +180,31 @@ void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSin
     emit_full(area, area, sink);
     return;
   }
-  for (int by = area.y0 & ~(kBlock - 1); by < area.y1; by += kBlock)
+  // Per band of 16 pixel rows, the quad masks of every block the triangle touches (covered
+  // blocks and 4x4 sub-blocks whole, the others edge-tested quad by quad), then each quad row
+  // of the band in one call: the fragment routine gets rows as long as the triangle in the tile.
+  for (int by = area.y0 & ~(kBlock - 1); by < area.y1; by += kBlock) {
+    QuadBand band;
+    band.x0 = area.x0 & ~1;
+    band.y0 = std::max(by, area.y0) & ~1;
+    band.count = (area.x1 - band.x0 + 1) / 2;
+    band.rows = (std::min(by + kBlock, area.y1) - band.y0 + 1) / 2;
+    for (int r = 0; r < band.rows; ++r) std::memset(band.masks[r], 0, static_cast<size_t>(band.count));
     for (int bx = area.x0 & ~(kBlock - 1); bx < area.x1; bx += kBlock) {
       const PixelRect block = intersect({bx, by, bx + kBlock, by + kBlock}, area);
-      if (block.empty()) continue;
       const BlockCover c = classify(p, block);
-      if (c == BlockCover::None) continue;
-      if (c == BlockCover::Full) {
-        emit_full(block, area, sink);
-        continue;
-      }
+      if (c == BlockCover::Full) band.fill(block);
+      if (c != BlockCover::Partial) continue;
       for (int sy = block.y0 & ~(kSub - 1); sy < block.y1; sy += kSub)
         for (int sx = block.x0 & ~(kSub - 1); sx < block.x1; sx += kSub) {
           const PixelRect sub = intersect({sx, sy, sx + kSub, sy + kSub}, area);
-          if (sub.empty()) continue;
           const BlockCover sc = classify(p, sub);
-          if (sc == BlockCover::Full) emit_full(sub, area, sink);
-          else if (sc == BlockCover::Partial) emit_tested(p, sub, area, sink);
+          if (sc == BlockCover::Full) band.fill(sub);
+          else if (sc == BlockCover::Partial) band.test(p, sub);
         }
     }
+    band.emit(area, sink);
+  }
 }
 
 // Lines and points: a bit mask per row of the tile, then quads.
