@@ -86,16 +86,31 @@ void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& si
   }
 }
 
-// The pixels of the quad whose first pixel has the edge values v (then v advanced by a quad).
-inline unsigned quad_edge_mask(int64_t v[3], const int64_t step_x[3], const int64_t step_y[3]) {
-  unsigned m = 0xf;
-  for (int e = 0; e < 3; ++e) {
-    m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
-         (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
-    v[e] += 2 * step_x[e];
+// The three edges stepped quad by quad along quad rows, from the quad at (x, y) (even).
+struct EdgeWalk {
+  int64_t step_x[3], step_y[3], row[3], v[3];
+  EdgeWalk(const PrimSetup& p, int x, int y) {
+    for (int e = 0; e < 3; ++e) {
+      step_x[e] = p.edges[e].a * kSubpixelOne;
+      step_y[e] = p.edges[e].b * kSubpixelOne;
+      v[e] = row[e] = edge_at(p.edges[e], x, y);
+    }
   }
-  return m;
-}
+  // The pixels of the current quad inside all edges; then on to the next quad.
+  unsigned quad() {
+    unsigned m = 0xf;
+    for (int e = 0; e < 3; ++e) {
+      m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
+           (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
+      v[e] += 2 * step_x[e];
+    }
+    return m;
+  }
+  // The first quad of the next quad row.
+  void next_row() {
+    for (int e = 0; e < 3; ++e) v[e] = row[e] += 2 * step_y[e];
+  }
+};
 
 // rect_mask, without per-pixel tests for the quads wholly inside r.
 inline unsigned clip_mask(int x, int y, const PixelRect& r) {
@@ -106,20 +121,14 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
   uint8_t masks[kMaxQuadsPerRow];
-  int64_t step_x[3], step_y[3], row[3];
-  for (int e = 0; e < 3; ++e) {
-    step_x[e] = p.edges[e].a * kSubpixelOne;
-    step_y[e] = p.edges[e].b * kSubpixelOne;
-    row[e] = edge_at(p.edges[e], x0, block.y0 & ~1);
-  }
+  EdgeWalk walk(p, x0, block.y0 & ~1);
   for (int y = block.y0 & ~1; y < block.y1; y += 2) {
-    int64_t v[3] = {row[0], row[1], row[2]};  // the edges at the quad's first pixel
     for (int q = 0; q < count; ++q) {
-      const unsigned m = quad_edge_mask(v, step_x, step_y);
+      const unsigned m = walk.quad();
       masks[q] = static_cast<uint8_t>(m ? m & clip_mask(x0 + 2 * q, y, clip) : 0);
     }
     sink.row(x0, y, count, masks);
-    for (int e = 0; e < 3; ++e) row[e] += 2 * step_y[e];
+    walk.next_row();
   }
 }
 
@@ -137,17 +146,11 @@ struct QuadBand {
   // The quads of r, edge-tested.
   void test(const PrimSetup& p, const PixelRect& r) {
     const int qx0 = r.x0 & ~1;
-    int64_t step_x[3], step_y[3], row[3];
-    for (int e = 0; e < 3; ++e) {
-      step_x[e] = p.edges[e].a * kSubpixelOne;
-      step_y[e] = p.edges[e].b * kSubpixelOne;
-      row[e] = edge_at(p.edges[e], qx0, r.y0 & ~1);
-    }
+    EdgeWalk walk(p, qx0, r.y0 & ~1);
     for (int y = r.y0 & ~1; y < r.y1; y += 2) {
-      int64_t v[3] = {row[0], row[1], row[2]};
       uint8_t* out = &masks[(y - y0) / 2][(qx0 - x0) / 2];
-      for (int x = qx0; x < r.x1; x += 2) *out++ = static_cast<uint8_t>(quad_edge_mask(v, step_x, step_y));
-      for (int e = 0; e < 3; ++e) row[e] += 2 * step_y[e];
+      for (int x = qx0; x < r.x1; x += 2) *out++ = static_cast<uint8_t>(walk.quad());
+      walk.next_row();
     }
   }
   // Each quad row, clipped to `clip`, the area the band spans: only its edge quads can cross it.
