@@ -234,20 +234,41 @@ void emit_mask(const TileMask& mask, const QuadSink& sink) {
   }
 }
 
-// First pixel of the span across the line at major coordinate `m` (a column for x-major lines).
-int64_t span_start(const LineCoverage& l, int m) {
-  const int64_t c = int64_t{m} * kSubpixelOne + kSubpixelHalf;
-  const int64_t a0 = l.x_major ? l.x0 : l.y0, a1 = l.x_major ? l.x1 : l.y1;
-  const int64_t b0 = l.x_major ? l.y0 : l.x0, b1 = l.x_major ? l.y1 : l.x1;
-  int64_t num = b0 * (a1 - a0) + (c - a0) * (b1 - b0), den = a1 - a0;
-  if (den < 0) {
-    num = -num;
-    den = -den;
+// The first pixel of the span across the line at major coordinate m (a column for x-major
+// lines), for m = m0, m0 + 1, ...: the line's minor coordinate there, the ceiling of num / den,
+// is stepped exactly in integers (quotient and remainder), one division for the first m only.
+class SpanWalk {
+ public:
+  SpanWalk(const LineCoverage& l, int m0) : width_(l.width) {
+    const int64_t c = int64_t{m0} * kSubpixelOne + kSubpixelHalf;
+    const int64_t a0 = l.x_major ? l.x0 : l.y0, a1 = l.x_major ? l.x1 : l.y1;
+    const int64_t b0 = l.x_major ? l.y0 : l.x0, b1 = l.x_major ? l.y1 : l.x1;
+    int64_t num = b0 * (a1 - a0) + (c - a0) * (b1 - b0), den = a1 - a0, step = kSubpixelOne * (b1 - b0);
+    if (den < 0) {
+      num = -num;
+      den = -den;
+      step = -step;
+    }
+    den_ = den;
+    minor_ = ceil_div(num, den);  // num = minor * den - rest, rest in [0, den)
+    rest_ = minor_ * den - num;
+    step_q_ = floor_div(step, den);  // step = step_q * den + step_r, step_r in [0, den)
+    step_r_ = step - step_q_ * den;
   }
-  const int64_t minor = ceil_div(num, den);  // ceiling of the line's minor coordinate there
   // Pixels whose centre lies in [minor - width/2, minor + width/2), as llvmpipe's line quads.
-  return ceil_div(minor - kSubpixelHalf * l.width - kSubpixelHalf, kSubpixelOne);
-}
+  int64_t start() const { return ceil_div(minor_ - kSubpixelHalf * width_ - kSubpixelHalf, kSubpixelOne); }
+  void next() {
+    minor_ += step_q_;
+    rest_ -= step_r_;
+    if (rest_ < 0) {
+      ++minor_;
+      rest_ += den_;
+    }
+  }
+
+ private:
+  int64_t width_, den_, minor_, rest_, step_q_, step_r_;
+};
 
 void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
   const LineCoverage& l = p.line;
@@ -255,8 +276,10 @@ void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& s
   const int m_lo = std::max(l.major_min, l.x_major ? area.x0 : area.y0);
   const int m_hi = std::min(l.major_max, (l.x_major ? area.x1 : area.y1) - 1);
   const int n_lo = l.x_major ? area.y0 : area.x0, n_hi = (l.x_major ? area.y1 : area.x1) - 1;
-  for (int m = m_lo; m <= m_hi; ++m) {
-    const int64_t start = span_start(l, m);
+  if (m_lo > m_hi) return;
+  SpanWalk span(l, m_lo);
+  for (int m = m_lo; m <= m_hi; ++m, span.next()) {
+    const int64_t start = span.start();
     const int64_t lo = std::max<int64_t>(start, n_lo), hi = std::min<int64_t>(start + l.width - 1, n_hi);
     for (int64_t n = lo; n <= hi; ++n) {
       if (l.x_major) mask.set(m, static_cast<int>(n));
