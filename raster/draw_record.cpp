@@ -54,6 +54,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
     const TexBaseFormat format = unit.image->base_format;
     d.modulate_in_lanes = d.fast_sampler[0] && unit.env_mode == TexEnvMode::Modulate &&
                           (format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB);
+    d.sample_rows = d.modulate_in_lanes && unit.sampler.min_filter == TexFilter::Linear;
   }
   if (state.color_sum) {
     d.secondary_plane = d.planes;
@@ -89,7 +90,7 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
   if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
     d.planes = 0;
     d.secondary_plane = d.fog_plane = -1;
-    d.modulate_in_lanes = false;
+    d.modulate_in_lanes = d.sample_rows = false;
     d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth || state.line_smooth;
     d.routine = shade_program_quads;
   }

@@ -45,6 +45,9 @@ struct DrawRecord {
   std::array<QuadSampler, kMaxTextureUnits> fast_sampler{};  // of each enabled unit, in order; null: sample_quad
   // One unit, its fast sampler, MODULATE of an RGB or RGBA texture: the quad is textured in lanes.
   bool modulate_in_lanes = false;
+  // modulate_in_lanes without mipmaps (LINEAR minification): no level of detail, so the fill
+  // routines sample whole rows of 8 pixels (bilinear8_lanes.inc) instead of quads.
+  bool sample_rows = false;
   int planes = kColorPlanes;                      // interpolated planes
   int secondary_plane = -1;                       // first secondary colour plane, -1 when unused
   int fog_plane = -1;                             // the fog coordinate's plane, -1 when unused

@@ -1,76 +1,19 @@
 #include "raster/sampler_bilinear8.h"
 
+#include <immintrin.h>
+
 #include "raster/mip_selection.h"
 #include "raster/sampler.h"
 
 namespace pineda::raster {
 namespace {
 
-inline F4 floor4(F4 v) {
-  const F4 t = __builtin_convertvector(__builtin_convertvector(v, I4), F4);
-  return t > v ? t - 1.f : t;
-}
-
-// sane() per lane: coordinates where float-to-int conversions are defined; NaN becomes 0.
-inline F4 sane4(F4 v) {
-  const F4 hi = splat(1e6f), lo = splat(-1e6f);
-  return v > lo ? (v < hi ? v : hi) : (v <= lo ? lo : splat(0.f));
-}
-
-// One axis: the two texel indices and the second one's weight in 1/256, for each lane. The
-// coordinate u is the float one of linear_indices (texel_addressing.h), so the indices are too.
-template <TexWrap kWrap>
-[[gnu::always_inline]] inline void axis8(F4 s, int size, I4& i0, I4& i1, I4& weight) {
-  const float n = static_cast<float>(size);
-  F4 u;
-  if constexpr (kWrap == TexWrap::Repeat) {
-    u = (s - floor4(s)) * n - 0.5f;
-  } else {
-    const F4 x = s * n, lo = splat(0.5f), hi = splat(n - 0.5f);
-    u = (x < lo ? lo : (hi < x ? hi : x)) - 0.5f;  // std::clamp's order
-  }
-  const I4 fixed = __builtin_convertvector(floor4(u * 256.f), I4);
-  i0 = fixed >> 8;
-  weight = fixed & 0xff;
-  i1 = i0 + 1;
-  if constexpr (kWrap == TexWrap::Repeat) {
-    // u lies in [-0.5, size - 0.5], so one step wraps each index.
-    i0 = i0 < 0 ? i0 + size : i0;
-    i1 = i1 >= size ? i1 - size : i1;
-  } else {
-    i1 = i1 > size - 1 ? size - 1 : i1;
-  }
-}
-
-inline I4 channel(U4 texels, int c) { return reinterpret_cast<I4>((texels >> (8 * c)) & 0xffu); }
-
-// Bilinear samples of one level, channel c in out[c] scaled by 65536 (at most 255 * 65536).
-template <TexWrap kWrapS, TexWrap kWrapT>
-[[gnu::always_inline]] inline void bilinear_level(const TextureLevel& level, F4 s, F4 t, I4 out[4]) {
-  I4 i0, i1, a, j0, j1, b;
-  axis8<kWrapS>(s, level.width, i0, i1, a);
-  axis8<kWrapT>(t, level.height, j0, j1, b);
-  const I4 row0 = j0 * level.width, row1 = j1 * level.width;
-  const uint32_t* texels = level.texels.data();
-  U4 t00, t10, t01, t11;
-  for (int i = 0; i < 4; ++i) {
-    t00[i] = texels[row0[i] + i0[i]];
-    t10[i] = texels[row0[i] + i1[i]];
-    t01[i] = texels[row1[i] + i0[i]];
-    t11[i] = texels[row1[i] + i1[i]];
-  }
-  for (int c = 0; c < 4; ++c) {
-    const I4 c00 = channel(t00, c), c01 = channel(t01, c);
-    const I4 top = (c00 << 8) + (channel(t10, c) - c00) * a;
-    const I4 bottom = (c01 << 8) + (channel(t11, c) - c01) * a;
-    out[c] = (top << 8) + (bottom - top) * b;
-  }
-}
+#include "raster/bilinear8_lanes.inc"
 
 template <TexWrap kWrapS, TexWrap kWrapT>
 [[gnu::always_inline]] inline void sample_body(const TextureImage& image, const Sampler& sampler, F4 s_in, F4 t_in,
                                                F4 out[4]) {
-  const F4 s = sane4(s_in), t = sane4(t_in);
+  const F4 s = sane_lanes(s_in), t = sane_lanes(t_in);
   float sa[4], ta[4];
   store4(sa, s);
   store4(ta, t);
@@ -81,15 +24,14 @@ template <TexWrap kWrapS, TexWrap kWrapT>
                                  ? LevelChoice{}
                                  : choose_levels(sampler, quad_lambda(image.levels[0], sa, ta), max_level);
   I4 v[4];
-  bilinear_level<kWrapS, kWrapT>(image.levels[choice.first], s, t, v);
+  bilinear_lanes<kWrapS, kWrapT>(image.levels[choice.first], s, t, v);
   if (choice.two) {
     I4 w[4];
-    bilinear_level<kWrapS, kWrapT>(image.levels[choice.first + 1], s, t, w);
+    bilinear_lanes<kWrapS, kWrapT>(image.levels[choice.first + 1], s, t, w);
     const int f = static_cast<int>(choice.blend * 256.f);  // blend < 1: f <= 255
     for (int c = 0; c < 4; ++c) v[c] = ((v[c] + 128) >> 8) * (256 - f) + ((w[c] + 128) >> 8) * f;
   }
-  // As from_unorm8 when every weight is 0 or 1: the texel's own float value.
-  for (int c = 0; c < 4; ++c) out[c] = __builtin_convertvector(v[c], F4) * (1.f / 65536.f) * (1.f / 255.f);
+  for (int c = 0; c < 4; ++c) out[c] = unorm_lanes<F4>(v[c]);
 }
 
 // The baseline copy and an AVX2 one (native 32-bit multiplies and lane inserts); integers only,

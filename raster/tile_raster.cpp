@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 
 #include "raster/raster_limits.h"
 #include "raster/setup.h"
@@ -85,31 +86,89 @@ void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& si
   }
 }
 
+// The three edges stepped quad by quad along quad rows, from the quad at (x, y) (even).
+struct EdgeWalk {
+  int64_t step_x[3], step_y[3], row[3], v[3];
+  EdgeWalk(const PrimSetup& p, int x, int y) {
+    for (int e = 0; e < 3; ++e) {
+      step_x[e] = p.edges[e].a * kSubpixelOne;
+      step_y[e] = p.edges[e].b * kSubpixelOne;
+      v[e] = row[e] = edge_at(p.edges[e], x, y);
+    }
+  }
+  // The pixels of the current quad inside all edges; then on to the next quad.
+  unsigned quad() {
+    unsigned m = 0xf;
+    for (int e = 0; e < 3; ++e) {
+      m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
+           (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
+      v[e] += 2 * step_x[e];
+    }
+    return m;
+  }
+  // The first quad of the next quad row.
+  void next_row() {
+    for (int e = 0; e < 3; ++e) v[e] = row[e] += 2 * step_y[e];
+  }
+};
+
+// rect_mask, without per-pixel tests for the quads wholly inside r.
+inline unsigned clip_mask(int x, int y, const PixelRect& r) {
+  return x >= r.x0 && x + 1 < r.x1 && y >= r.y0 && y + 1 < r.y1 ? 0xfu : rect_mask(x, y, r);
+}
+
 void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
   uint8_t masks[kMaxQuadsPerRow];
-  int64_t step_x[3], step_y[3], row[3];
-  for (int e = 0; e < 3; ++e) {
-    step_x[e] = p.edges[e].a * kSubpixelOne;
-    step_y[e] = p.edges[e].b * kSubpixelOne;
-    row[e] = edge_at(p.edges[e], x0, block.y0 & ~1);
-  }
+  EdgeWalk walk(p, x0, block.y0 & ~1);
   for (int y = block.y0 & ~1; y < block.y1; y += 2) {
-    int64_t v[3] = {row[0], row[1], row[2]};  // the edges at the quad's first pixel
     for (int q = 0; q < count; ++q) {
-      unsigned m = 0xf;
-      for (int e = 0; e < 3; ++e) {
-        m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
-             (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
-        v[e] += 2 * step_x[e];
-      }
-      masks[q] = static_cast<uint8_t>(m ? m & rect_mask(x0 + 2 * q, y, clip) : 0);
+      const unsigned m = walk.quad();
+      masks[q] = static_cast<uint8_t>(m ? m & clip_mask(x0 + 2 * q, y, clip) : 0);
     }
     sink.row(x0, y, count, masks);
-    for (int e = 0; e < 3; ++e) row[e] += 2 * step_y[e];
+    walk.next_row();
   }
 }
+
+// The quad masks of up to 16 pixel rows of a tile, before clipping to the area.
+struct QuadBand {
+  int x0 = 0, y0 = 0;  // the first quad's first pixel (even coordinates)
+  int count = 0, rows = 0;
+  uint8_t masks[8][kMaxQuadsPerRow];
+
+  // Every quad of r (which lies in the band).
+  void fill(const PixelRect& r) {
+    const int q0 = ((r.x0 & ~1) - x0) / 2, q_end = (((r.x1 + 1) & ~1) - x0) / 2;
+    for (int y = r.y0 & ~1; y < r.y1; y += 2) std::memset(&masks[(y - y0) / 2][q0], 0xf, static_cast<size_t>(q_end - q0));
+  }
+  // The quads of r, edge-tested.
+  void test(const PrimSetup& p, const PixelRect& r) {
+    const int qx0 = r.x0 & ~1;
+    EdgeWalk walk(p, qx0, r.y0 & ~1);
+    for (int y = r.y0 & ~1; y < r.y1; y += 2) {
+      uint8_t* out = &masks[(y - y0) / 2][(qx0 - x0) / 2];
+      for (int x = qx0; x < r.x1; x += 2) *out++ = static_cast<uint8_t>(walk.quad());
+      walk.next_row();
+    }
+  }
+  // Each quad row, clipped to `clip`, the area the band spans: only its edge quads can cross it.
+  void emit(const PixelRect& clip, const QuadSink& sink) {
+    const int last = x0 + 2 * (count - 1);
+    for (int r = 0; r < rows; ++r) {
+      const int y = y0 + 2 * r;
+      uint8_t* m = masks[r];
+      if (y < clip.y0 || y + 1 >= clip.y1) {
+        for (int q = 0; q < count; ++q) m[q] = static_cast<uint8_t>(m[q] & rect_mask(x0 + 2 * q, y, clip));
+      } else {
+        if (x0 < clip.x0) m[0] = static_cast<uint8_t>(m[0] & rect_mask(x0, y, clip));
+        if (last + 1 >= clip.x1) m[count - 1] = static_cast<uint8_t>(m[count - 1] & rect_mask(last, y, clip));
+      }
+      sink.row(x0, y, count, m);
+    }
+  }
+};
 
 void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
   constexpr int kBlock = 16, kSub = 4, kSmall = 16;
@@ -124,25 +183,31 @@ void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSin
     emit_full(area, area, sink);
     return;
   }
-  for (int by = area.y0 & ~(kBlock - 1); by < area.y1; by += kBlock)
+  // Per band of 16 pixel rows, the quad masks of every block the triangle touches (covered
+  // blocks and 4x4 sub-blocks whole, the others edge-tested quad by quad), then each quad row
+  // of the band in one call: the fragment routine gets rows as long as the triangle in the tile.
+  for (int by = area.y0 & ~(kBlock - 1); by < area.y1; by += kBlock) {
+    QuadBand band;
+    band.x0 = area.x0 & ~1;
+    band.y0 = std::max(by, area.y0) & ~1;
+    band.count = (area.x1 - band.x0 + 1) / 2;
+    band.rows = (std::min(by + kBlock, area.y1) - band.y0 + 1) / 2;
+    for (int r = 0; r < band.rows; ++r) std::memset(band.masks[r], 0, static_cast<size_t>(band.count));
     for (int bx = area.x0 & ~(kBlock - 1); bx < area.x1; bx += kBlock) {
       const PixelRect block = intersect({bx, by, bx + kBlock, by + kBlock}, area);
-      if (block.empty()) continue;
       const BlockCover c = classify(p, block);
-      if (c == BlockCover::None) continue;
-      if (c == BlockCover::Full) {
-        emit_full(block, area, sink);
-        continue;
-      }
+      if (c == BlockCover::Full) band.fill(block);
+      if (c != BlockCover::Partial) continue;
       for (int sy = block.y0 & ~(kSub - 1); sy < block.y1; sy += kSub)
         for (int sx = block.x0 & ~(kSub - 1); sx < block.x1; sx += kSub) {
           const PixelRect sub = intersect({sx, sy, sx + kSub, sy + kSub}, area);
-          if (sub.empty()) continue;
           const BlockCover sc = classify(p, sub);
-          if (sc == BlockCover::Full) emit_full(sub, area, sink);
-          else if (sc == BlockCover::Partial) emit_tested(p, sub, area, sink);
+          if (sc == BlockCover::Full) band.fill(sub);
+          else if (sc == BlockCover::Partial) band.test(p, sub);
         }
     }
+    band.emit(area, sink);
+  }
 }
 
 // Lines and points: a bit mask per row of the tile, then quads.
@@ -150,41 +215,60 @@ struct TileMask {
   PixelRect area;
   uint64_t rows[kTileSize] = {};
   void set(int x, int y) { rows[y - area.y0] |= uint64_t{1} << (x - area.x0); }
-  bool get(int x, int y) const {
-    return x >= area.x0 && x < area.x1 && y >= area.y0 && y < area.y1 && ((rows[y - area.y0] >> (x - area.x0)) & 1);
-  }
 };
 
+// Each quad row's quads from its first to its last covered one, their masks from two bit rows.
 void emit_mask(const TileMask& mask, const QuadSink& sink) {
   const PixelRect& area = mask.area;
   const int x0 = area.x0 & ~1;
-  const int count = (area.x1 - x0 + 1) / 2;
+  const int shift = area.x0 - x0;  // bit i of a shifted row is pixel x0 + i (an odd x0 leaves bit 63 free)
+  auto bits = [&](int y) { return y >= area.y0 && y < area.y1 ? mask.rows[y - area.y0] << shift : 0; };
   uint8_t masks[kMaxQuadsPerRow];
   for (int y = area.y0 & ~1; y < area.y1; y += 2) {
-    for (int q = 0; q < count; ++q) {
-      unsigned m = 0;
-      for (int i = 0; i < 4; ++i)
-        if (mask.get(x0 + 2 * q + (i & 1), y + (i >> 1))) m |= 1u << i;
-      masks[q] = static_cast<uint8_t>(m);
-    }
-    sink.row(x0, y, count, masks);
+    const uint64_t r0 = bits(y), r1 = bits(y + 1);
+    if (!(r0 | r1)) continue;
+    const int q0 = __builtin_ctzll(r0 | r1) / 2, q1 = (63 - __builtin_clzll(r0 | r1)) / 2;
+    for (int q = q0; q <= q1; ++q)
+      masks[q - q0] = static_cast<uint8_t>(((r0 >> (2 * q)) & 3u) | (((r1 >> (2 * q)) & 3u) << 2));
+    sink.row(x0 + 2 * q0, y, q1 - q0 + 1, masks);
   }
 }
 
-// First pixel of the span across the line at major coordinate `m` (a column for x-major lines).
-int64_t span_start(const LineCoverage& l, int m) {
-  const int64_t c = int64_t{m} * kSubpixelOne + kSubpixelHalf;
-  const int64_t a0 = l.x_major ? l.x0 : l.y0, a1 = l.x_major ? l.x1 : l.y1;
-  const int64_t b0 = l.x_major ? l.y0 : l.x0, b1 = l.x_major ? l.y1 : l.x1;
-  int64_t num = b0 * (a1 - a0) + (c - a0) * (b1 - b0), den = a1 - a0;
-  if (den < 0) {
-    num = -num;
-    den = -den;
+// The first pixel of the span across the line at major coordinate m (a column for x-major
+// lines), for m = m0, m0 + 1, ...: the line's minor coordinate there, the ceiling of num / den,
+// is stepped exactly in integers (quotient and remainder), one division for the first m only.
+class SpanWalk {
+ public:
+  SpanWalk(const LineCoverage& l, int m0) : width_(l.width) {
+    const int64_t c = int64_t{m0} * kSubpixelOne + kSubpixelHalf;
+    const int64_t a0 = l.x_major ? l.x0 : l.y0, a1 = l.x_major ? l.x1 : l.y1;
+    const int64_t b0 = l.x_major ? l.y0 : l.x0, b1 = l.x_major ? l.y1 : l.x1;
+    int64_t num = b0 * (a1 - a0) + (c - a0) * (b1 - b0), den = a1 - a0, step = kSubpixelOne * (b1 - b0);
+    if (den < 0) {
+      num = -num;
+      den = -den;
+      step = -step;
+    }
+    den_ = den;
+    minor_ = ceil_div(num, den);  // num = minor * den - rest, rest in [0, den)
+    rest_ = minor_ * den - num;
+    step_q_ = floor_div(step, den);  // step = step_q * den + step_r, step_r in [0, den)
+    step_r_ = step - step_q_ * den;
   }
-  const int64_t minor = ceil_div(num, den);  // ceiling of the line's minor coordinate there
   // Pixels whose centre lies in [minor - width/2, minor + width/2), as llvmpipe's line quads.
-  return ceil_div(minor - kSubpixelHalf * l.width - kSubpixelHalf, kSubpixelOne);
-}
+  int64_t start() const { return ceil_div(minor_ - kSubpixelHalf * width_ - kSubpixelHalf, kSubpixelOne); }
+  void next() {
+    minor_ += step_q_;
+    rest_ -= step_r_;
+    if (rest_ < 0) {
+      ++minor_;
+      rest_ += den_;
+    }
+  }
+
+ private:
+  int64_t width_, den_, minor_, rest_, step_q_, step_r_;
+};
 
 void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
   const LineCoverage& l = p.line;
@@ -192,8 +276,10 @@ void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& s
   const int m_lo = std::max(l.major_min, l.x_major ? area.x0 : area.y0);
   const int m_hi = std::min(l.major_max, (l.x_major ? area.x1 : area.y1) - 1);
   const int n_lo = l.x_major ? area.y0 : area.x0, n_hi = (l.x_major ? area.y1 : area.x1) - 1;
-  for (int m = m_lo; m <= m_hi; ++m) {
-    const int64_t start = span_start(l, m);
+  if (m_lo > m_hi) return;
+  SpanWalk span(l, m_lo);
+  for (int m = m_lo; m <= m_hi; ++m, span.next()) {
+    const int64_t start = span.start();
     const int64_t lo = std::max<int64_t>(start, n_lo), hi = std::min<int64_t>(start + l.width - 1, n_hi);
     for (int64_t n = lo; n <= hi; ++n) {
       if (l.x_major) mask.set(m, static_cast<int>(n));

@@ -1,6 +1,7 @@
 // glCopyTexImage1D/2D and glCopyTexSubImage1D/2D/3D: texture images from the read buffer.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
@@ -15,8 +16,6 @@
 namespace pineda::gl {
 namespace {
 
-// The read drawable's pixels in [x, x + width) x [y, y + height) as tight RGBA8 rows, bottom
-// row first; pixels outside the drawable read as zero (GL leaves them undefined).
 // Calls visit(fx, fy, index) for each pixel of [x, x + width) x [y, y + height) inside the
 // framebuffer; index counts the rectangle's pixels row by row, bottom row first.
 template <typename Visit>
@@ -31,17 +30,38 @@ void for_each_read_pixel(const raster::Framebuffer& fb, GLint x, GLint y, GLsize
   }
 }
 
+// The read drawable's pixels in [x, x + width) x [y, y + height) as tight RGBA8 rows, bottom
+// row first; pixels outside the drawable read as zero (GL leaves them undefined).
 std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
   std::vector<uint8_t> out(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 4, 0);
   const Drawable* d = ctx.read_drawable();
   if (!d || width <= 0 || height <= 0) return out;
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
-  for_each_read_pixel(fb, x, y, width, height, [&](int64_t fx, int64_t fy, size_t i) {
-    uint8_t* o = &out[i * 4];
-    raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * fy + 4 * fx, o);
-    if (!d->alpha_bits) o[3] = 255;
-  });
+  // Row by row: the columns inside the framebuffer; RGBA8 and BGRA8 rows in whole words.
+  const int64_t col0 = std::max<int64_t>(0, -int64_t(x)), col1 = std::min<int64_t>(width, int64_t(fb.width) - x);
+  const bool plain = !fb.color.reduction.active, bgra = fb.color.format == raster::ColorFormat::BGRA8;
+  for (GLsizei row = 0; row < height && col0 < col1; ++row) {
+    const int64_t fy = int64_t(y) + row;
+    if (fy < 0 || fy >= fb.height) continue;
+    const uint8_t* src = fb.color.base + fb.color.stride * fy + 4 * (x + col0);
+    uint8_t* dst = &out[(size_t(row) * width + col0) * 4];
+    const size_t n = size_t(col1 - col0);
+    if (plain && !bgra) {
+      std::memcpy(dst, src, n * 4);
+    } else if (plain) {
+      for (size_t i = 0; i < n; ++i) {
+        uint32_t v;
+        std::memcpy(&v, src + 4 * i, 4);
+        v = (v & 0xff00ff00u) | ((v >> 16) & 0xffu) | ((v & 0xffu) << 16);
+        std::memcpy(dst + 4 * i, &v, 4);
+      }
+    } else {
+      for (size_t i = 0; i < n; ++i) raster::read_rgba8(fb.color, src + 4 * i, dst + 4 * i);
+    }
+    if (!d->alpha_bits)
+      for (size_t i = 0; i < n; ++i) dst[4 * i + 3] = 255;
+  }
   return out;
 }
 

@@ -82,6 +82,27 @@ TEST_F(CopyTexImageTest, SubImageReplacesARegion) {
       }
 }
 
+// Rows that start left of the drawable and end right of it: the pixels inside are copied exactly
+// (RGBA with alpha), the ones outside read as zero.
+TEST_F(CopyTexImageTest, RowsCrossingTheDrawableEdgesCopyThePixelsInside) {
+  const int w = width() + 4, h = 3;
+  glColor4ub(10, 20, 30, 40);
+  glRecti(0, 14, width(), 17);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, -2, 14, w, h, 0);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  const auto tex = texture_image(w, h);
+  const auto src = read(0, 14, width(), h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const int fx = x - 2;
+        const int expected = fx >= 0 && fx < width() ? src[(y * width() + fx) * 4 + c] : 0;
+        ASSERT_EQ(tex[(y * w + x) * 4 + c], expected) << x << "," << y << "," << c;
+      }
+  EXPECT_EQ(src[0], 10);
+  EXPECT_EQ(src[2], 30);
+}
+
 TEST_F(CopyTexImageTest, OneDimensional) {
   glBindTexture(GL_TEXTURE_1D, 2);
   glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 12, 3, 8, 0);

@@ -32,7 +32,8 @@ struct Config {
   ColorFormat format = ColorFormat::RGBA8;
   bool stencil = false;
   StencilFace front, back;  // back: every other triangle faces back
-  bool textured = false;  // unit 0: MODULATE, bilinear, REPEAT on s and CLAMP_TO_EDGE on t
+  bool textured = false;  // unit 0: MODULATE, bilinear
+  TexWrap wrap_s = TexWrap::Repeat, wrap_t = TexWrap::ClampToEdge;
   bool mipmapped = false;
   TexBaseFormat texture_format = TexBaseFormat::RGBA;
 };
@@ -113,10 +114,11 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
     unit.image = random_texture(c);
     unit.sampler.min_filter = c.mipmapped ? TexFilter::LinearMipmapLinear : TexFilter::Linear;
     unit.sampler.mag_filter = TexFilter::Linear;
-    unit.sampler.wrap_s = TexWrap::Repeat;
-    unit.sampler.wrap_t = TexWrap::ClampToEdge;
+    unit.sampler.wrap_s = c.wrap_s;
+    unit.sampler.wrap_t = c.wrap_t;
   }
   DrawRecord d = make_draw_record(s, target.fb, path);
+  EXPECT_EQ(d.sample_rows, c.textured && !c.mipmapped);
   const QuadRoutine fill_routine = select_fill_routine(d, target.fb, path);
   EXPECT_NE(fill_routine, nullptr);
   EXPECT_EQ(d.routine, fill_routine) << "make_draw_record takes the fill routine";
@@ -242,6 +244,16 @@ TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
   Config c;
   c.textured = true;
   expect_same_as_generic(c, "textured");
+  // Without mipmaps the routines sample rows of 8 (DrawRecord::sample_rows): every wrap pair.
+  for (const TexWrap s : {TexWrap::Repeat, TexWrap::ClampToEdge})
+    for (const TexWrap t : {TexWrap::Repeat, TexWrap::ClampToEdge}) {
+      Config w = c;
+      w.wrap_s = s;
+      w.wrap_t = t;
+      w.perspective = true;
+      expect_same_as_generic(w, "textured rows, wrap " + std::to_string(static_cast<int>(s)) + "/" +
+                                    std::to_string(static_cast<int>(t)));
+    }
   c.mipmapped = true;
   c.perspective = true;
   expect_same_as_generic(c, "textured, mipmapped, perspective");
