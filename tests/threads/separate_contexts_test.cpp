@@ -16,6 +16,7 @@ class SeparateContexts : public ::testing::TestWithParam<std::tuple<Api, const c
 
 TEST_P(SeparateContexts, EveryThreadRendersTheImagesOfOneThreadAlone) {
   const auto [api, workers] = GetParam();
+  if (!api_available(api)) GTEST_SKIP() << "no X display (DISPLAY)";
   WorkerThreadsSetting setting(workers);
   const int frames = frames_per_thread();
   const std::vector<ThreadRun> alone = run_threads(api, 1, frames);
@@ -43,7 +44,7 @@ TEST_P(SeparateContexts, EveryThreadRendersTheImagesOfOneThreadAlone) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ApisAndWorkers, SeparateContexts,
-                         ::testing::Combine(::testing::Values(Api::EglPbuffer, Api::EglSurfaceless, Api::OSMesa),
+                         ::testing::Combine(::testing::Values(Api::EglPbuffer, Api::EglSurfaceless, Api::OSMesa, Api::GlxPbuffer),
                                             ::testing::Values("1", "2", "3")),
                          [](const auto& info) {
                            return api_name(std::get<0>(info.param)) + "_Workers" + std::get<1>(info.param);

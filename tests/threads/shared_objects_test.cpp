@@ -12,6 +12,7 @@ class SharedObjects : public ::testing::TestWithParam<Api> {};
 
 TEST_P(SharedObjects, ThreadsDrawingSharedObjectsAtOnceRenderTheImagesOfOneAlone) {
   const Api api = GetParam();
+  if (!api_available(api)) GTEST_SKIP() << "no X display (DISPLAY)";
   TestContext owner(api, kWidth, kHeight);
   ASSERT_TRUE(owner.ok() && owner.make_current());
   const SceneObjects shared = create_scene_objects();
@@ -39,7 +40,7 @@ TEST_P(SharedObjects, ThreadsDrawingSharedObjectsAtOnceRenderTheImagesOfOneAlone
   owner.release();
 }
 
-INSTANTIATE_TEST_SUITE_P(Apis, SharedObjects, ::testing::Values(Api::EglPbuffer, Api::EglSurfaceless, Api::OSMesa),
+INSTANTIATE_TEST_SUITE_P(Apis, SharedObjects, ::testing::Values(Api::EglPbuffer, Api::EglSurfaceless, Api::OSMesa, Api::GlxPbuffer),
                          [](const auto& info) { return api_name(info.param); });
 
 }  // namespace

@@ -1,11 +1,14 @@
 #define GL_GLEXT_PROTOTYPES  // before test_context.h: GL/osmesa.h includes GL/gl.h
 #include "tests/threads/test_context.h"
 
-#include "tests/e2e/support/gl_surface.h"
+#include "tests/e2e/support/egl_display.h"
 
 #include <EGL/eglext.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/glx.h>
+
+#include <cstdlib>
 
 namespace pineda::threads_test {
 
@@ -16,11 +19,31 @@ std::string api_name(Api api) {
     case Api::EglPbuffer: return "EglPbuffer";
     case Api::EglSurfaceless: return "EglSurfaceless";
     case Api::OSMesa: return "OSMesa";
+    case Api::GlxPbuffer: return "GlxPbuffer";
   }
   return "?";
 }
 
 namespace {
+
+// One connection, shared by the threads (GLX share lists need one display).
+Display* x_display() {
+  static Display* const display = [] {
+    XInitThreads();
+    return std::getenv("DISPLAY") ? XOpenDisplay(nullptr) : nullptr;
+  }();
+  return display;
+}
+
+GLXFBConfig glx_rgba8_depth24_config() {
+  const int attribs[] = {GLX_DRAWABLE_TYPE, GLX_PBUFFER_BIT, GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_RED_SIZE, 8,
+                         GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8, GLX_DEPTH_SIZE, 24, None};
+  int count = 0;
+  GLXFBConfig* configs = glXChooseFBConfig(x_display(), DefaultScreen(x_display()), attribs, &count);
+  GLXFBConfig config = count > 0 ? configs[0] : nullptr;
+  if (configs) XFree(configs);
+  return config;
+}
 
 EGLConfig rgba8_depth24_config() {
   const EGLint attribs[] = {EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
@@ -34,8 +57,20 @@ EGLConfig rgba8_depth24_config() {
 
 }  // namespace
 
+bool api_available(Api api) { return api != Api::GlxPbuffer || x_display() != nullptr; }
+
 TestContext::TestContext(Api api, int width, int height, const TestContext* share)
     : api_(api), width_(width), height_(height) {
+  if (api == Api::GlxPbuffer) {
+    GLXFBConfig config = x_display() ? glx_rgba8_depth24_config() : nullptr;
+    if (!config) return;
+    glx_context_ = glXCreateNewContext(x_display(), config, GLX_RGBA_TYPE,
+                                       share ? static_cast<GLXContext>(share->glx_context_) : nullptr, True);
+    const int attribs[] = {GLX_PBUFFER_WIDTH, width, GLX_PBUFFER_HEIGHT, height, None};
+    glx_pbuffer_ = glx_context_ ? glXCreatePbuffer(x_display(), config, attribs) : 0;
+    ok_ = glx_pbuffer_ != 0;
+    return;
+  }
   if (api == Api::OSMesa) {
     osmesa_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, share ? share->osmesa_ : nullptr);
     osmesa_buffer_.assign(size_t(width) * height * 4, 0);
@@ -56,6 +91,11 @@ TestContext::TestContext(Api api, int width, int height, const TestContext* shar
 }
 
 TestContext::~TestContext() {
+  if (api_ == Api::GlxPbuffer) {
+    if (glx_pbuffer_) glXDestroyPbuffer(x_display(), glx_pbuffer_);
+    if (glx_context_) glXDestroyContext(x_display(), static_cast<GLXContext>(glx_context_));
+    return;
+  }
   if (osmesa_) {
     OSMesaDestroyContext(osmesa_);
     return;
@@ -73,6 +113,8 @@ TestContext::~TestContext() {
 bool TestContext::make_current() {
   if (!ok_) return false;
   if (osmesa_) return OSMesaMakeCurrent(osmesa_, osmesa_buffer_.data(), GL_UNSIGNED_BYTE, width_, height_);
+  if (api_ == Api::GlxPbuffer)
+    return glXMakeContextCurrent(x_display(), glx_pbuffer_, glx_pbuffer_, static_cast<GLXContext>(glx_context_));
   eglBindAPI(EGL_OPENGL_API);
   if (!eglMakeCurrent(egl_display(), egl_surface_, egl_surface_, egl_context_)) return false;
   if (api_ != Api::EglSurfaceless || framebuffer_) return true;
@@ -91,6 +133,10 @@ bool TestContext::make_current() {
 void TestContext::release() {
   if (osmesa_) {
     OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    return;
+  }
+  if (api_ == Api::GlxPbuffer) {
+    glXMakeContextCurrent(x_display(), None, None, nullptr);
     return;
   }
   eglMakeCurrent(egl_display(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

@@ -1,6 +1,7 @@
 // A GL context of one of the window-system APIs, with its own drawing surface, made and
 // used by one thread: an EGL pbuffer, an EGL surfaceless context drawing into a framebuffer
-// object, or an OSMesa context drawing into client memory.
+// object, an OSMesa context drawing into client memory, or a GLX pbuffer (on the X display
+// that DISPLAY names, one connection for the process).
 #pragma once
 #include <EGL/egl.h>
 #include <GL/osmesa.h>
@@ -10,7 +11,10 @@
 
 namespace pineda::threads_test {
 
-enum class Api { EglPbuffer, EglSurfaceless, OSMesa };
+enum class Api { EglPbuffer, EglSurfaceless, OSMesa, GlxPbuffer };
+
+// Whether contexts of `api` can be made here (GLX needs an X server).
+bool api_available(Api api);
 
 std::string api_name(Api api);
 
@@ -38,6 +42,9 @@ class TestContext {
   EGLContext egl_context_ = EGL_NO_CONTEXT;
   EGLSurface egl_surface_ = EGL_NO_SURFACE;
   OSMesaContext osmesa_ = nullptr;
+  // GLX objects, typed without the X11 header and its macros.
+  void* glx_context_ = nullptr;
+  unsigned long glx_pbuffer_ = 0;
   std::vector<unsigned char> osmesa_buffer_;
   unsigned framebuffer_ = 0, renderbuffers_[2] = {0, 0};
 };

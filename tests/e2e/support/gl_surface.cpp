@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 
+#include "tests/e2e/support/egl_display.h"
+
 namespace pineda::test {
 namespace {
 

@@ -10,10 +10,6 @@
 
 namespace pineda::test {
 
-// The surfaceless EGL display, initialized once per process (EGL_NO_DISPLAY if it cannot be);
-// an EGLDisplay, without the EGL header and the X11 names it brings.
-void* egl_display();
-
 class GlSurface;
 
 struct SurfaceSpec {
