@@ -97,6 +97,10 @@ void CompressedTexSubImage3DARB(Context& ctx, GLenum target, GLint level, GLint 
 void GetCompressedTexImageARB(Context& ctx, GLenum target, GLint level, void* img) {
   GetCompressedTexImage(ctx, target, level, img);
 }
+// No level is compressed: nothing is ever written, whatever bufSize.
+void GetnCompressedTexImageARB(Context& ctx, GLenum target, GLint lod, GLsizei, void* img) {
+  GetCompressedTexImage(ctx, target, lod, img);
+}
 
 // In a display list the calls keep their arguments but not the data, which no execution reads
 // (GL 1.5 5.4: a proxy target executes at once, as for glTexImage).

@@ -30,10 +30,10 @@ bool is_depth_level(const TextureLevelData& l) {
   return texture_format(l.internal_format).value_or(TextureFormat{}).depth > 0;
 }
 
-}  // namespace
-
-// A 1D, 2D or 3D texture or one cube map face; no proxies.
-void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+// A 1D, 2D or 3D texture or one cube map face; no proxies. `client_bytes`: how much client
+// memory `pixels` holds (glGetnTexImageARB), when no pack buffer is bound.
+void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels,
+                   size_t client_bytes) {
   ImageTarget t;
   if (!image_target(target, t) || t.proxy) return ctx.record_error(GL_INVALID_ENUM);
   GLenum error = GL_NO_ERROR;
@@ -51,8 +51,8 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
   const TextureLevelData& l = levels[level];
   const bool volume = t.kind == TexTarget::T3D;
   auto writes = [&] {
-    return pack_pixels(ctx, pixels, client_image_extent(ctx.pack, l.width, l.height, l.depth, volume, format, type)) &&
-           pixels;
+    const size_t bytes = client_image_extent(ctx.pack, l.width, l.height, l.depth, volume, format, type);
+    return pack_pixels(ctx, pixels, bytes, client_bytes) && pixels;
   };
   if (packed_ds) {  // a DEPTH_STENCIL level only
     if (l.stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION);
@@ -91,6 +91,17 @@ void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum
         }
         if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, depth_texture ? GL_RED : format, type);
       }
+}
+
+}  // namespace
+
+void GetTexImage(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+  get_tex_image(ctx, target, level, format, type, pixels, SIZE_MAX);
+}
+
+void GetnTexImageARB(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, GLsizei buf_size,
+                     void* img) {
+  get_tex_image(ctx, target, level, format, type, img, client_buffer_bytes(buf_size));
 }
 
 }  // namespace pineda::gl

@@ -90,12 +90,13 @@ void compile_map(Context& ctx, GLenum map, GLsizei size, const T* values, double
   });
 }
 
+// `client_bytes`: how much client memory `values` holds, when no pack buffer is bound.
 template <typename T>
-void get_map(Context& ctx, GLenum map, T* values, double normalize_max) {
+void get_map(Context& ctx, GLenum map, T* values, double normalize_max, size_t client_bytes = SIZE_MAX) {
   if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM);
   const std::vector<float>& table = ctx.pixel_maps[map];
   void* data = values;
-  if (!pack_pixels(ctx, data, table.size() * sizeof(T)) || !data) return;
+  if (!pack_pixels(ctx, data, table.size() * sizeof(T), client_bytes) || !data) return;
   for (size_t i = 0; i < table.size(); ++i) {
     const double v = table[i];
     T out;
@@ -139,5 +140,15 @@ void compile_PixelMapusv(Context& ctx, GLenum map, GLsizei mapsize, const GLusho
 void GetPixelMapfv(Context& ctx, GLenum map, GLfloat* values) { get_map(ctx, map, values, 1.0); }
 void GetPixelMapuiv(Context& ctx, GLenum map, GLuint* values) { get_map(ctx, map, values, 4294967295.0); }
 void GetPixelMapusv(Context& ctx, GLenum map, GLushort* values) { get_map(ctx, map, values, 65535.0); }
+
+void GetnPixelMapfvARB(Context& ctx, GLenum map, GLsizei buf_size, GLfloat* values) {
+  get_map(ctx, map, values, 1.0, client_buffer_bytes(buf_size));
+}
+void GetnPixelMapuivARB(Context& ctx, GLenum map, GLsizei buf_size, GLuint* values) {
+  get_map(ctx, map, values, 4294967295.0, client_buffer_bytes(buf_size));
+}
+void GetnPixelMapusvARB(Context& ctx, GLenum map, GLsizei buf_size, GLushort* values) {
+  get_map(ctx, map, values, 65535.0, client_buffer_bytes(buf_size));
+}
 
 }  // namespace pineda::gl

@@ -76,13 +76,9 @@ void transfer_read_color(const Context& ctx, double rgba[4]) {
   for (int c = 0; c < 4; ++c) rgba[c] = f[c];
 }
 
-}  // namespace
-
-void PixelStorei(Context& ctx, GLenum pname, GLint param) { set_store(ctx, pname, param); }
-void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pname, param); }
-
-void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
-                void* pixels) {
+// `client_bytes`: how much client memory `pixels` holds (glReadnPixelsARB), when no pack buffer is bound.
+void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                 void* pixels, size_t client_bytes) {
   if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
   if (ctx.es2()) {
     if (const GLenum error = es2_read_pixels_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
@@ -91,7 +87,8 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
   if (!d || width == 0 || height == 0) return;
-  if (!pack_pixels(ctx, pixels, client_image_extent(ctx.pack, width, height, 1, false, format, type)) || !pixels)
+  if (!pack_pixels(ctx, pixels, client_image_extent(ctx.pack, width, height, 1, false, format, type), client_bytes) ||
+      !pixels)
     return;
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
@@ -145,6 +142,21 @@ void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
       if (ctx.pack.swap_bytes) swap_pixel_bytes(dst, format, type);
     }
   }
+}
+
+}  // namespace
+
+void PixelStorei(Context& ctx, GLenum pname, GLint param) { set_store(ctx, pname, param); }
+void PixelStoref(Context& ctx, GLenum pname, GLfloat param) { set_store(ctx, pname, param); }
+
+void ReadPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                void* pixels) {
+  read_pixels(ctx, x, y, width, height, format, type, pixels, SIZE_MAX);
+}
+
+void ReadnPixelsARB(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                    GLsizei buf_size, void* data) {
+  read_pixels(ctx, x, y, width, height, format, type, data, client_buffer_bytes(buf_size));
 }
 
 }  // namespace pineda::gl

@@ -20,6 +20,13 @@ size_t stipple_extent(const PixelStore& store) {
   return client_image_extent(store, 32, 32, 1, false, GL_COLOR_INDEX, GL_BITMAP);
 }
 
+// `client_bytes`: how much client memory `mask` holds, when no pack buffer is bound.
+void get_stipple(Context& ctx, GLubyte* mask, size_t client_bytes) {
+  void* data = mask;
+  if (!pack_pixels(ctx, data, stipple_extent(ctx.pack), client_bytes) || !data) return;
+  pack_stipple(ctx.pack, ctx.draw_state.polygon_stipple.rows, static_cast<GLubyte*>(data));
+}
+
 }  // namespace
 
 void PolygonStipple(Context& ctx, const GLubyte* mask) {
@@ -28,10 +35,10 @@ void PolygonStipple(Context& ctx, const GLubyte* mask) {
   ctx.draw_state.polygon_stipple.rows = unpack_stipple(ctx.unpack, static_cast<const GLubyte*>(data));
 }
 
-void GetPolygonStipple(Context& ctx, GLubyte* mask) {
-  void* data = mask;
-  if (!pack_pixels(ctx, data, stipple_extent(ctx.pack)) || !data) return;
-  pack_stipple(ctx.pack, ctx.draw_state.polygon_stipple.rows, static_cast<GLubyte*>(data));
+void GetPolygonStipple(Context& ctx, GLubyte* mask) { get_stipple(ctx, mask, SIZE_MAX); }
+
+void GetnPolygonStippleARB(Context& ctx, GLsizei buf_size, GLubyte* pattern) {
+  get_stipple(ctx, pattern, client_buffer_bytes(buf_size));
 }
 
 // The image is read at compile time, under the unpack state of that time (GL 1.5 section 5.4),

@@ -14,8 +14,19 @@ bool print_errors_from_environment() {
 
 }  // namespace
 
+namespace {
+
+// The group, once the new context is one of its members: before the context touches it.
+// (Its calls wait, under the group's lock, for a call of the first member in flight.)
+std::shared_ptr<ShareGroup> joined(std::shared_ptr<ShareGroup> group) {
+  group->join();
+  return group;
+}
+
+}  // namespace
+
 Context::Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> share)
-    : share_group_(share ? std::move(share) : std::make_shared<ShareGroup>()),
+    : share_group_(joined(share ? std::move(share) : std::make_shared<ShareGroup>())),
       debug(attribs.debug, print_errors_from_environment()),
       textures(share_group_->textures),
       lists(share_group_->lists),
@@ -30,10 +41,9 @@ Context::Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> shar
     programs.point_size_from_shader = true;
     draw_state.point_params.sprite.enabled = true;
   }
-  share_group_->members.fetch_add(1, std::memory_order_acq_rel);
 }
 
-Context::~Context() { share_group_->members.fetch_sub(1, std::memory_order_acq_rel); }
+Context::~Context() { share_group_->leave(); }
 
 void Context::make_current(Drawable* draw, Drawable* read) {
   draw_ = draw;

@@ -6,6 +6,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/evaluator.h"
+#include "state/pixel_buffer.h"
 
 namespace pineda {
 
@@ -53,10 +54,13 @@ bool map_values(const Context& ctx, GLenum target, GLenum query, std::vector<dou
   return false;
 }
 
+// `client_bytes`: how much memory `v` holds (glGetnMap*vARB).
 template <typename T, typename Convert>
-void get_map(Context& ctx, GLenum target, GLenum query, T* v, Convert convert) {
+void get_map(Context& ctx, GLenum target, GLenum query, T* v, Convert convert, size_t client_bytes = SIZE_MAX) {
   std::vector<double> values;
   if (!map_values(ctx, target, query, values)) return ctx.record_error(GL_INVALID_ENUM);
+  if (values.size() * sizeof(T) > client_bytes)
+    return ctx.record_error(GL_INVALID_OPERATION, "the values do not fit in bufSize bytes");
   if (!v) return;
   for (size_t i = 0; i < values.size(); ++i) v[i] = convert(values[i]);
 }
@@ -76,5 +80,15 @@ void GetMapfv(Context& ctx, GLenum target, GLenum query, GLfloat* v) {
   get_map(ctx, target, query, v, [](double x) { return static_cast<GLfloat>(x); });
 }
 void GetMapiv(Context& ctx, GLenum target, GLenum query, GLint* v) { get_map(ctx, target, query, v, round_to_int); }
+
+void GetnMapdvARB(Context& ctx, GLenum target, GLenum query, GLsizei buf_size, GLdouble* v) {
+  get_map(ctx, target, query, v, [](double x) { return x; }, client_buffer_bytes(buf_size));
+}
+void GetnMapfvARB(Context& ctx, GLenum target, GLenum query, GLsizei buf_size, GLfloat* v) {
+  get_map(ctx, target, query, v, [](double x) { return static_cast<GLfloat>(x); }, client_buffer_bytes(buf_size));
+}
+void GetnMapivARB(Context& ctx, GLenum target, GLenum query, GLsizei buf_size, GLint* v) {
+  get_map(ctx, target, query, v, round_to_int, client_buffer_bytes(buf_size));
+}
 
 }  // namespace pineda::gl

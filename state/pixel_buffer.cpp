@@ -53,8 +53,12 @@ bool unpack_pixels(Context& ctx, const void*& pixels, size_t bytes) {
   return true;
 }
 
-bool pack_pixels(Context& ctx, void*& pixels, size_t bytes) {
-  if (!ctx.pack.buffer) return true;
+bool pack_pixels(Context& ctx, void*& pixels, size_t bytes, size_t client_bytes) {
+  if (!ctx.pack.buffer) {
+    if (bytes <= client_bytes) return true;
+    ctx.record_error(GL_INVALID_OPERATION, "the data does not fit in bufSize bytes");
+    return false;
+  }
   uint8_t* data = nullptr;
   if (!buffer_pixels(ctx, *ctx.pack.buffer, pixels, bytes, data)) return false;
   pixels = data;

@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 
 #include <cstddef>
+#include <cstdint>
 
 #include "state/context.h"
 
@@ -22,7 +23,12 @@ size_t client_image_extent(const PixelStore& store, int width, int height, int d
 // recorded, nothing to be read) when the buffer is mapped or the bytes are not all inside its
 // store. With a buffer bound and `bytes` 0, `pixels` becomes null: nothing is read.
 bool unpack_pixels(Context& ctx, const void*& pixels, size_t bytes);
-// The same for a call that writes `bytes` of client pixels, through PIXEL_PACK_BUFFER.
-bool pack_pixels(Context& ctx, void*& pixels, size_t bytes);
+// The same for a call that writes `bytes` of client pixels, through PIXEL_PACK_BUFFER. With no
+// buffer bound, `bytes` past `client_bytes` (the bufSize of a GL_ARB_robustness glGetn*/glReadn*
+// call) record GL_INVALID_OPERATION: nothing is written.
+bool pack_pixels(Context& ctx, void*& pixels, size_t bytes, size_t client_bytes = SIZE_MAX);
+
+// The bufSize argument of a GL_ARB_robustness call as a byte count (a negative one holds nothing).
+inline size_t client_buffer_bytes(GLsizei buf_size) { return buf_size > 0 ? size_t(buf_size) : 0; }
 
 }  // namespace pineda

@@ -6,6 +6,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/pixel_buffer.h"
 #include "state/programs/program_lookup.h"
 
 namespace pineda::gl {
@@ -111,14 +112,19 @@ const shader::Uniform* query_target(Context& ctx, GLuint program, GLint location
   return &exec->uniforms.active[static_cast<size_t>(l.uniform)];
 }
 
+// `client_bytes`: how much memory `params` holds (glGetnUniform*vARB).
 template <typename T, typename Convert>
-void get_uniform(Context& ctx, GLuint program, GLint location, T* params, Convert convert) {
+void get_uniform(Context& ctx, GLuint program, GLint location, T* params, Convert convert,
+                 size_t client_bytes = SIZE_MAX) {
   const LinkedProgram* exec;
   int element;
   const shader::Uniform* u = query_target(ctx, program, location, exec, element);
-  if (!u || !params) return;
-  const size_t at = static_cast<size_t>(u->offset + element * u->stride);
+  if (!u) return;
   const int n = u->type.components();
+  if (size_t(n) * sizeof(T) > client_bytes)
+    return ctx.record_error(GL_INVALID_OPERATION, "the value does not fit in bufSize bytes");
+  if (!params) return;
+  const size_t at = static_cast<size_t>(u->offset + element * u->stride);
   for (int i = 0; i < n; ++i) params[i] = at + i < exec->values.size() ? convert(exec->values[at + i]) : T(0);
 }
 
@@ -131,6 +137,11 @@ void compile_vector(Context& ctx, GLsizei count, int components, const T* v, Cal
     if (list_ctx.inside_begin_end()) return list_ctx.record_error(GL_INVALID_OPERATION);
     call(list_ctx, copy.empty() ? nullptr : copy.data());
   });
+}
+
+GLint uniform_as_int(float v) {
+  if (!(v == v)) return GLint(0);
+  return static_cast<GLint>(std::clamp<double>(std::nearbyint(v), -2147483648.0, 2147483647.0));
 }
 
 }  // namespace
@@ -213,10 +224,15 @@ void GetUniformfv(Context& ctx, GLuint program, GLint location, GLfloat* params)
 }
 
 void GetUniformiv(Context& ctx, GLuint program, GLint location, GLint* params) {
-  get_uniform(ctx, program, location, params, [](float v) {
-    if (!(v == v)) return GLint(0);
-    return static_cast<GLint>(std::clamp<double>(std::nearbyint(v), -2147483648.0, 2147483647.0));
-  });
+  get_uniform(ctx, program, location, params, uniform_as_int);
+}
+
+void GetnUniformfvARB(Context& ctx, GLuint program, GLint location, GLsizei buf_size, GLfloat* params) {
+  get_uniform(ctx, program, location, params, [](float v) { return v; }, client_buffer_bytes(buf_size));
+}
+
+void GetnUniformivARB(Context& ctx, GLuint program, GLint location, GLsizei buf_size, GLint* params) {
+  get_uniform(ctx, program, location, params, uniform_as_int, client_buffer_bytes(buf_size));
 }
 
 }  // namespace pineda::gl

@@ -7,6 +7,8 @@
 
 #include <cstdlib>
 
+#include "tests/e2e/support/egl_display.h"
+
 namespace pineda::test {
 namespace {
 
@@ -29,6 +31,8 @@ const OSMesaApi& osmesa() {
   return api;
 }
 
+}  // namespace
+
 EGLDisplay egl_display() {
   static const EGLDisplay display = [] {
     EGLDisplay d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -37,8 +41,6 @@ EGLDisplay egl_display() {
   }();
   return display;
 }
-
-}  // namespace
 
 GlSurface::GlSurface(const SurfaceSpec& spec) : spec_(spec) {
   // PINEDA_TEST_SURFACE=egl runs every test on EGL pbuffers.
