@@ -129,6 +129,8 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   // A colour buffer the program does not write reads as zeros.
   if (sd.color_output >= program.draw_buffers_written())
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
+  if (sd.color_output != 0 && s.alpha_test)  // colour 0's alpha is tested even if never written
+    std::fill(&block.color[0][3][0], &block.color[0][3][0] + kLanes, 0.f);
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
@@ -144,9 +146,17 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     QuadColor col;
     for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * k]);
     if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
-    if (s.alpha_test)
+    if (s.alpha_test) {
+      // The alpha of colour 0 decides for every draw buffer (as in Mesa; GL 3.0 4.1.4).
+      F4 alpha = col.c[3];
+      if (sd.color_output != 0) {
+        alpha = load4(&block.color[0][3][4 * k]);
+        if (d.key.extras) apply_coverage(p, q.x, y, alpha);
+      }
       for (int i = 0; i < 4; ++i)
-        if (!compare(s.alpha_func, clamp01(col.c[3][i]), d.alpha_ref)) mask &= ~(1u << i);
+        if (!compare(s.alpha_func, clamp01(alpha[i]), d.alpha_ref)) mask &= ~(1u << i);
+    }
+    if (d.alpha_to_one) col.c[3] = splat(1.f);  // after alpha to coverage (the alpha test above)
     if (!early && tests) {
       uint32_t z[4];
       if (program.writes_depth()) {

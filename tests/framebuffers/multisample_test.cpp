@@ -240,6 +240,48 @@ TEST_F(MultisampleTest, AlphaToCoverage) {
   for (int band = 0; band < 4; ++band) EXPECT_EQ(resolved(8, 4 * band + 2)[0], expected[band]) << band;
 }
 
+// GL 1.5 4.1.3: SAMPLE_ALPHA_TO_ONE sets alpha to 1 after alpha to coverage, before blending.
+TEST_F(MultisampleTest, AlphaToOne) {
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  glColor4f(1, 1, 1, 0.5f);  // 2 of 4 samples, with alpha 1
+  rect(0, 0, 16, 8);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  EXPECT_EQ(resolved(8, 4), (Rgba{128, 128, 128, 128}));  // alpha 0.5 kept: 64
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glColor4f(1, 0, 0, 0.25f);
+  rect(0, 8, 16, 12);  // alpha 1: the source replaces the destination
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  rect(0, 12, 16, 16);  // alpha 0.25
+  glDisable(GL_BLEND);
+  EXPECT_EQ(resolved(8, 10), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 14), (Rgba{64, 0, 0, 16}));
+}
+
+// GL_MULTISAMPLE off: alpha to one is off with the other multisample operations.
+TEST_F(MultisampleTest, AlphaToOneNeedsMultisample) {
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  glDisable(GL_MULTISAMPLE);
+  glColor4f(1, 1, 1, 0.5f);
+  rect(0, 0, 16, 16);
+  glEnable(GL_MULTISAMPLE);
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  EXPECT_EQ(resolved(8, 8), (Rgba{255, 255, 255, 128}));
+}
+
+// The fragment shader's alpha too.
+TEST_F(MultisampleTest, AlphaToOneWithAFragmentShader) {
+  const GLuint p = fragment_program("void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 0.25); }");
+  glUseProgram(p);
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  rect(0, 0, 16, 16);
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  glUseProgram(0);
+  glDeleteProgram(p);
+  EXPECT_EQ(resolved(8, 8), (Rgba{0, 255, 0, 255}));
+}
+
 // With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
 // SAMPLE_COVERAGE no longer applies.
 TEST_F(MultisampleTest, MultisampleDisabledUsesPixelCentres) {
