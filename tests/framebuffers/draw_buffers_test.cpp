@@ -217,6 +217,21 @@ TEST_F(DrawBuffersFboTest, BlendingReadsEachBuffersOwnColour) {
   EXPECT_EQ(attachment_pixel(3, 1, 1), (Rgba{0xff, 153, 102 ^ 0x0f, 255}));
 }
 
+// A target without alpha reads alpha 1 as the destination, even where its texture level was
+// made without data and never cleared (piglit's fbo-blending-format-quirks "alpha expand").
+TEST_F(DrawBuffersFboTest, DestinationAlphaOfAnRgbTargetIsOne) {
+  const GLuint tex = make_texture(GL_RGB, kSize, kSize, GL_RGBA, GL_FLOAT);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, tex, 0);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_DST_ALPHA, GL_ZERO);
+  glColor4f(1, 1, 1, 1);
+  draw_rect(0, 0, 4, 4);
+  glDisable(GL_BLEND);
+  EXPECT_EQ(attachment_pixel(0, 1, 1), (Rgba{0, 0, 0, 0}));  // RGBA8 cleared to alpha 0
+  EXPECT_EQ(attachment_pixel(1, 1, 1), (Rgba{255, 255, 255, 255}));
+  glDeleteTextures(1, &tex);
+}
+
 // GL 3.0 4.1.4: with several draw buffers the alpha test takes colour 0's alpha.
 TEST_F(DrawBuffersFboTest, AlphaTestUsesColourZero) {
   const GLuint p = fragment_program(
@@ -329,6 +344,30 @@ TEST_F(DrawBuffersFboTest, Errors) {
   glDrawBuffers(1, empty);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+}
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// EXT_framebuffer_object: a draw buffer naming an empty attachment point makes the framebuffer
+// INCOMPLETE_DRAW_BUFFER_EXT, whichever draw buffer it is (piglit's error-handling sequence).
+TEST_F(FboTest, ExtStatusChecksEveryDrawBuffer) {
+  const GLuint depth = make_renderbuffer(GL_DEPTH_COMPONENT24, 8, 8);
+  const GLuint fb = make_fbo();
+  glDrawBuffer(GL_COLOR_ATTACHMENT7);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT));
+  const GLenum second[] = {GL_NONE, GL_COLOR_ATTACHMENT2};
+  glDrawBuffers(2, second);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER_EXT));
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE);
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glDeleteFramebuffers(1, &fb);
+  glDeleteRenderbuffers(1, &depth);
 }
 
 }  // namespace
