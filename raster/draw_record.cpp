@@ -97,7 +97,10 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
     d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth || state.line_smooth;
     d.routine = shade_program_quads;
   }
-  if (fb.color_targets > 1) prepare_target_draws(d, fb, path);
+  if (fb.color_targets > 1) {
+    if (state.shader) d.routine = shade_program_target_quads;
+    else prepare_target_draws(d, fb, path);
+  }
   return d;
 }
 

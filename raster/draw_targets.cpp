@@ -4,7 +4,6 @@
 #include <cstring>
 
 #include "raster/raster_limits.h"
-#include "raster/shader_draw.h"
 
 namespace pineda::raster {
 namespace {
@@ -78,15 +77,7 @@ uint32_t target_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer
 
 void prepare_target_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path) {
   auto records = std::make_shared<std::vector<DrawRecord>>();
-  for (int i = 0; i < fb.color_targets; ++i) {
-    DrawState state = draw.state;
-    if (state.shader) {  // gl_FragData[i] goes to draw buffer i
-      auto shader = std::make_shared<ShaderDraw>(*state.shader);
-      shader->color_output = i;
-      state.shader = std::move(shader);
-    }
-    records->push_back(make_draw_record(state, fb.target(i), path));
-  }
+  for (int i = 0; i < fb.color_targets; ++i) records->push_back(make_draw_record(draw.state, fb.target(i), path));
   draw.target_draws = std::move(records);
   draw.routine = target_quads;
 }

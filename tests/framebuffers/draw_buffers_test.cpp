@@ -145,7 +145,7 @@ TEST_F(DrawBuffersFboTest, FragColorGoesToEveryDrawBuffer) {
 
 // Each fragment is depth- and stencil-tested once: with GL_LESS a second buffer would fail
 // against the depth the first one wrote, and INCR would count twice.
-TEST_F(DrawBuffersFboTest, DepthAndStencilAreUpdatedOnce) {
+void draw_depth_stencil_scene() {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glEnable(GL_STENCIL_TEST);
@@ -157,24 +157,38 @@ TEST_F(DrawBuffersFboTest, DepthAndStencilAreUpdatedOnce) {
   draw_rect(4, 4, 12, 12, 0.0f);  // 0.5, nearer: wins where it overlaps
   glColor3f(0, 0, 1);
   draw_rect(0, 0, 12, 12, -0.9f);  // 0.95, farther: fails everywhere but the empty corners
-  for (int i = 0; i < 4; ++i) {
-    EXPECT_EQ(attachment_pixel(i, 1, 1)[0], 255) << i;
-    EXPECT_EQ(attachment_pixel(i, 6, 6)[1], 255) << i;
-    EXPECT_EQ(attachment_pixel(i, 10, 10)[1], 255) << i;
-    EXPECT_EQ(attachment_pixel(i, 10, 1)[2], 255) << i;
-  }
-  GLubyte stencil[3] = {};
-  glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil[0]);
-  glReadPixels(6, 6, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil[1]);
-  glReadPixels(10, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil[2]);
-  EXPECT_EQ(stencil[0], 2);  // red passed, blue failed depth: each INCR once
-  EXPECT_EQ(stencil[1], 3);
-  EXPECT_EQ(stencil[2], 1);
-  GLfloat depth = -1;
-  glReadPixels(6, 6, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
-  EXPECT_NEAR(depth, 0.5, 1e-6);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_STENCIL_TEST);
+}
+
+TEST_F(DrawBuffersFboTest, DepthAndStencilAreUpdatedOnce) {
+  for (const bool shader : {false, true}) {
+    SCOPED_TRACE(shader ? "fragment shader" : "fixed function");
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    const GLuint p = shader ? fragment_program("void main() { gl_FragData[0] = gl_Color; gl_FragData[1] = gl_Color;"
+                                               " gl_FragData[2] = gl_Color; gl_FragData[3] = gl_Color; }")
+                            : 0;
+    glUseProgram(p);
+    draw_depth_stencil_scene();
+    glUseProgram(0);
+    glDeleteProgram(p);
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(attachment_pixel(i, 1, 1)[0], 255) << i;
+      EXPECT_EQ(attachment_pixel(i, 6, 6)[1], 255) << i;
+      EXPECT_EQ(attachment_pixel(i, 10, 10)[1], 255) << i;
+      EXPECT_EQ(attachment_pixel(i, 10, 1)[2], 255) << i;
+    }
+    GLubyte stencil[3] = {};
+    glReadPixels(1, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil[0]);
+    glReadPixels(6, 6, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil[1]);
+    glReadPixels(10, 1, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil[2]);
+    EXPECT_EQ(stencil[0], 2);  // red passed, blue failed depth: each INCR once
+    EXPECT_EQ(stencil[1], 3);
+    EXPECT_EQ(stencil[2], 1);
+    GLfloat depth = -1;
+    glReadPixels(6, 6, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    EXPECT_NEAR(depth, 0.5, 1e-6);
+  }
 }
 
 TEST_F(DrawBuffersFboTest, OcclusionQueryCountsEachFragmentOnce) {

@@ -69,9 +69,9 @@ class FboTest : public GlTest {
     glDisable(GL_TEXTURE_2D);
   }
 
-  // A linked program of `fs` and a vertex shader of ftransform().
+  // A linked program of `fs` and a vertex shader of ftransform() passing gl_Color on.
   GLuint fragment_program(const char* fs) {
-    const char* vs = "void main() { gl_Position = ftransform(); }";
+    const char* vs = "void main() { gl_FrontColor = gl_Color; gl_Position = ftransform(); }";
     const GLuint p = glCreateProgram();
     for (auto [type, src] : {std::pair{GL_VERTEX_SHADER, vs}, std::pair{GL_FRAGMENT_SHADER, fs}}) {
       const GLuint s = glCreateShader(type);
