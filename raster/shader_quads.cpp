@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 #include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
@@ -63,7 +64,8 @@ void plane_depths(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy, uint32_
   }
 }
 
-void write_colors(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
+[[gnu::always_inline]] inline void write_colors(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask,
+                                              const QuadColor& col) {
   if (!d.key.blend) write_quad<false, false>(d, fb, x, y, mask, col);
   else if (d.key.blend_over) write_quad<true, true>(d, fb, x, y, mask, col);
   else write_quad<true, false>(d, fb, x, y, mask, col);
@@ -74,6 +76,14 @@ struct Quad {
   unsigned mask = 0;
   F4 ox, oy;  // pixel centres relative to the primitive's reference point
 };
+
+// The draw buffers with a colour buffer, each as a single-target view, and its gl_FragData index.
+struct TargetViews {
+  std::array<Framebuffer, kMaxColorTargets> view;
+  std::array<int, kMaxColorTargets> output{};
+  int count = 0;
+};
+struct NoTargets {};
 
 // Shades up to four quads of row y as one block; returns the samples that passed depth.
 // kTargets: the framebuffer has several draw buffers, gl_FragData[i] (or gl_FragColor) goes to
@@ -135,16 +145,14 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
   if (sd.color_output != 0 && s.alpha_test)  // colour 0's alpha is tested even if never written
     std::fill(&block.color[0][3][0], &block.color[0][3][0] + kLanes, 0.f);
-  std::array<Framebuffer, kMaxColorTargets> targets;  // the draw buffers with a colour buffer
-  std::array<int, kMaxColorTargets> target_output{};
-  int target_count = 0;
+  std::conditional_t<kTargets, TargetViews, NoTargets> targets;
   if constexpr (kTargets) {
     for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
       std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
     for (int i = 0; i < fb.color_targets; ++i) {
       if (!fb.target_color(i).base) continue;
-      targets[size_t(target_count)] = fb.target(i);
-      target_output[size_t(target_count++)] = i;
+      targets.view[size_t(targets.count)] = fb.target(i);
+      targets.output[size_t(targets.count++)] = i;
     }
   }
   block.varyings = &varyings[0][0];
@@ -154,7 +162,8 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   const UnitTextureAccess textures(s.texture_units);
   program.run_fragments(sd.uniforms.data(), &textures, block);
 
-  const bool write_color = (kTargets ? target_count > 0 : fb.color.base != nullptr) && d.color_write_any;
+  bool write_color = fb.color.base && d.color_write_any;
+  if constexpr (kTargets) write_color = targets.count > 0 && d.color_write_any;
   for (int k = 0; k < n; ++k) {
     unsigned mask = (block.live >> (4 * k)) & 0xfu;
     if (!mask) continue;
@@ -190,12 +199,12 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     if constexpr (!kTargets) {
       write_colors(d, fb, q.x, y, mask, col);
     } else {
-      for (int t = 0; t < target_count; ++t) {
+      for (int t = 0; t < targets.count; ++t) {
         QuadColor out;
-        for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[target_output[size_t(t)]][c][4 * k]);
+        for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[targets.output[size_t(t)]][c][4 * k]);
         if (d.key.extras) apply_coverage(p, q.x, y, out.c[3]);
         if (d.alpha_to_one) out.c[3] = splat(1.f);
-        write_colors(d, targets[size_t(t)], q.x, y, mask, out);
+        write_colors(d, targets.view[size_t(t)], q.x, y, mask, out);
       }
     }
   }

@@ -173,6 +173,31 @@ TEST_F(MultisampleTest, CoverageOfAnEdgeAcrossAPixel) {
   }
 }
 
+// Several draw buffers of a multisampled framebuffer: every buffer gets the coverage per sample,
+// in its own format (RGB565: 255 for the missing alpha of each sample).
+TEST_F(MultisampleTest, CoverageInEveryDrawBuffer) {
+  const GLuint second = make_ms_renderbuffer(GL_RGB565, 4);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, second);
+  const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, both);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(1, 1, 1);
+  rect(0, 0, 2.5f, 4);  // pixel 2: 2 of 4 samples
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fb_);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fb_);
+  glBlitFramebuffer(0, 0, kSize, kSize, 0, 0, kSize, kSize, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+  uint8_t p[4] = {0, 0, 0, 0};
+  glReadPixels(2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  EXPECT_EQ((Rgba{p[0], p[1], p[2], p[3]}), (Rgba{128, 128, 128, 255}));
+  glBindFramebuffer(GL_FRAMEBUFFER, ms_fb_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  EXPECT_EQ(resolved(2, 1), (Rgba{128, 128, 128, 128}));
+  EXPECT_EQ(resolved(1, 1), (Rgba{255, 255, 255, 255}));
+  glDeleteRenderbuffers(1, &second);
+}
+
 // Top edges at y = 2 + t: samples at y 0.125, 0.375, 0.625, 0.875. An edge through a sample:
 // the top edge does not own it (the fill rule at samples as at pixel centres).
 TEST_F(MultisampleTest, CoverageOfATopEdgeAndTheFillRule) {
