@@ -80,8 +80,9 @@ bool same_buffers(const raster::Framebuffer& a, const raster::Framebuffer& b) {
   if (a.color_targets != b.color_targets) return false;
   for (int i = 0; i < a.color_targets; ++i)
     if (!same_color(a.target_color(i), b.target_color(i))) return false;
-  return a.width == b.width && a.height == b.height && a.depth.base == b.depth.base && a.depth.stride == b.depth.stride && a.depth.bits == b.depth.bits &&
-         a.stencil.base == b.stencil.base && a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits;
+  return a.width == b.width && a.height == b.height && a.depth.base == b.depth.base &&
+         a.depth.stride == b.depth.stride && a.depth.bits == b.depth.bits && a.stencil.base == b.stencil.base &&
+         a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits;
 }
 
 }  // namespace
