@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "raster/blend_over.h"
+#include "raster/draw_targets.h"
 #include "raster/fill_rows.h"
 #include "raster/fragment_pipeline.h"
 #include "raster/shader_quads.h"
@@ -85,6 +86,9 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
   d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled ||
                  state.point_smooth || state.line_smooth;
   d.key.count_samples = state.sample_counter != nullptr;
+  // GL 1.5 4.1.3: with multisampling on for the draw, alpha becomes 1 after alpha to coverage.
+  d.alpha_to_one = fb.samples > 1 && state.multisample.multisample && state.multisample.alpha_to_one;
+  d.key.extras |= d.alpha_to_one;
   d.routine = select_quad_routine(d.key, path);
   if (const QuadRoutine fill = select_fill_routine(d, fb, path)) d.routine = fill;
   if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
@@ -93,6 +97,10 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
     d.modulate_in_lanes = d.sample_rows = false;
     d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth || state.line_smooth;
     d.routine = shade_program_quads;
+  }
+  if (fb.color_targets > 1) {
+    if (state.shader) d.routine = shade_program_target_quads;
+    else prepare_target_draws(d, fb, path);
   }
   return d;
 }

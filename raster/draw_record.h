@@ -62,6 +62,11 @@ struct DrawRecord {
   // one record per sample when they differ (alpha to coverage), else null.
   uint32_t sample_mask = ~0u;
   std::shared_ptr<const std::vector<DrawRecord>> sample_draws;
+  // GL_SAMPLE_ALPHA_TO_ONE on a multisampled draw: alpha is 1 after the alpha test (key.extras).
+  bool alpha_to_one = false;
+  // Several draw buffers (Framebuffer::color_targets > 1): one record per draw buffer, each
+  // specialized for its colour buffer; `routine` then runs them all (draw_targets.h).
+  std::shared_ptr<const std::vector<DrawRecord>> target_draws;
 };
 
 // `path`: which copy of the fragment routine and samplers runs.

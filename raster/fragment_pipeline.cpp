@@ -103,6 +103,9 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     auto colors = [&] {
       QuadColor col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
       if constexpr (kExtras) apply_coverage(p, qx, y, col.c[3]);
+      if constexpr (kExtras) {  // no alpha test here: alpha to one comes after it, and after coverage
+        if (early_tests && d.alpha_to_one) col.c[3] = splat(1.f);
+      }
       return col;
     };
     auto depth_and_stencil = [&] {
@@ -115,9 +118,12 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
       if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, colors());
       continue;
     }
-    const QuadColor col = colors();
+    QuadColor col = colors();
     for (int i = 0; i < 4; ++i)
       if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
+    if constexpr (kExtras) {
+      if (d.alpha_to_one) col.c[3] = splat(1.f);
+    }
     depth_and_stencil();
     if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
     if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, col);

@@ -1,5 +1,6 @@
 // The memory a draw renders into: plain pointers and strides, owned by a surface.
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -47,8 +48,16 @@ struct StencilBuffer {
   ptrdiff_t sample_stride = 0;  // elements from one sample's plane to the next
 };
 
+// The colour buffers one draw writes at most (GL_MAX_DRAW_BUFFERS).
+constexpr int kMaxColorTargets = 4;
+
 // A multisampled framebuffer (samples > 1) keeps each sample as a whole plane of every
 // buffer: sample s of a pixel is where the pixel is in plane s (raster/multisample.h).
+//
+// A framebuffer object with several draw buffers (glDrawBuffers) has `color_targets` > 1:
+// `color` is draw buffer 0 and more_color[i - 1] draw buffer i, a null base where the draw
+// buffer is GL_NONE. Every draw buffer takes the fragment's colour (draw_targets.h); depth and
+// stencil are tested and written once.
 struct Framebuffer {
   int width = 0;
   int height = 0;
@@ -56,6 +65,18 @@ struct Framebuffer {
   ColorBuffer color;
   DepthBuffer depth;
   StencilBuffer stencil;
+  int color_targets = 1;
+  std::array<ColorBuffer, kMaxColorTargets - 1> more_color{};
+
+  const ColorBuffer& target_color(int i) const { return i == 0 ? color : more_color[static_cast<size_t>(i - 1)]; }
+  // The same framebuffer with draw buffer i as its only colour buffer.
+  Framebuffer target(int i) const {
+    Framebuffer one = *this;
+    one.color = target_color(i);
+    one.color_targets = 1;
+    one.more_color = {};
+    return one;
+  }
 };
 
 }  // namespace pineda::raster

@@ -12,6 +12,10 @@ Framebuffer sample_plane(const Framebuffer& fb, int sample) {
   Framebuffer plane = fb;
   plane.samples = 1;
   if (plane.color.base) plane.color.base += fb.color.sample_stride * sample;
+  for (int i = 1; i < fb.color_targets; ++i) {
+    ColorBuffer& more = plane.more_color[static_cast<size_t>(i - 1)];
+    if (more.base) more.base += more.sample_stride * sample;
+  }
   if (plane.depth.base) plane.depth.base += fb.depth.sample_stride * sample;
   if (plane.stencil.base) plane.stencil.base += fb.stencil.sample_stride * sample;
   return plane;

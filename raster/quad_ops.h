@@ -90,6 +90,15 @@ inline U4 load_pixels(uint8_t* const px[4], unsigned mask) {
   return U4{v[0], v[1], v[2], v[3]};
 }
 
+// The destination pixels blending and logic op read, as the target's format holds them: a
+// texture level made without data keeps bytes its format has not (an RGB level's alpha reads 1).
+inline U4 load_destination(const Framebuffer& fb, uint8_t* const px[4], unsigned mask) {
+  U4 old = load_pixels(px, mask);
+  if (fb.color.reduction.active)
+    for (int i = 0; i < 4; ++i) old[i] = reduce_pixel(fb.color.reduction, old[i]);
+  return old;
+}
+
 template <bool kBlend, bool kOver>
 [[gnu::always_inline]] inline void write_quad(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
   const DrawState& s = d.state;
@@ -101,9 +110,9 @@ template <bool kBlend, bool kOver>
   U4 packed = {0, 0, 0, 0};
   if constexpr (kBlend && kOver) {
     for (int c = 0; c < 4; ++c) packed |= to_unorm8(col.c[c]) << shift.at[c];
-    packed = blend_over8(packed, load_pixels(px, mask));
+    packed = blend_over8(packed, load_destination(fb, px, mask));
   } else if constexpr (kBlend) {
-    const U4 old = load_pixels(px, mask);
+    const U4 old = load_destination(fb, px, mask);
     if (s.logic_op_enabled) {
       for (int c = 0; c < 4; ++c) {
         const U4 src = to_unorm8(col.c[c]), dst = (old >> shift.at[c]) & 0xffu;

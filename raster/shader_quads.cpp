@@ -1,6 +1,8 @@
 #include "raster/shader_quads.h"
 
 #include <algorithm>
+#include <array>
+#include <type_traits>
 
 #include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
@@ -62,7 +64,8 @@ void plane_depths(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy, uint32_
   }
 }
 
-void write_colors(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask, const QuadColor& col) {
+[[gnu::always_inline]] inline void write_colors(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask,
+                                              const QuadColor& col) {
   if (!d.key.blend) write_quad<false, false>(d, fb, x, y, mask, col);
   else if (d.key.blend_over) write_quad<true, true>(d, fb, x, y, mask, col);
   else write_quad<true, false>(d, fb, x, y, mask, col);
@@ -74,7 +77,18 @@ struct Quad {
   F4 ox, oy;  // pixel centres relative to the primitive's reference point
 };
 
+// The draw buffers with a colour buffer, each as a single-target view, and its gl_FragData index.
+struct TargetViews {
+  std::array<Framebuffer, kMaxColorTargets> view;
+  std::array<int, kMaxColorTargets> output{};
+  int count = 0;
+};
+struct NoTargets {};
+
 // Shades up to four quads of row y as one block; returns the samples that passed depth.
+// kTargets: the framebuffer has several draw buffers, gl_FragData[i] (or gl_FragColor) goes to
+// draw buffer i, all from one run of the shader.
+template <bool kTargets>
 uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, Quad* quads, int n,
                      const float* uniform_values) {
   const ShaderDraw& sd = *d.state.shader;
@@ -129,6 +143,18 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   // A colour buffer the program does not write reads as zeros.
   if (sd.color_output >= program.draw_buffers_written())
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
+  if (sd.color_output != 0 && s.alpha_test)  // colour 0's alpha is tested even if never written
+    std::fill(&block.color[0][3][0], &block.color[0][3][0] + kLanes, 0.f);
+  std::conditional_t<kTargets, TargetViews, NoTargets> targets;
+  if constexpr (kTargets) {
+    for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
+      std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
+    for (int i = 0; i < fb.color_targets; ++i) {
+      if (!fb.target_color(i).base) continue;
+      targets.view[size_t(targets.count)] = fb.target(i);
+      targets.output[size_t(targets.count++)] = i;
+    }
+  }
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
@@ -136,7 +162,8 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   const UnitTextureAccess textures(s.texture_units);
   program.run_fragments(sd.uniforms.data(), &textures, block);
 
-  const bool write_color = fb.color.base && d.color_write_any;
+  bool write_color = fb.color.base && d.color_write_any;
+  if constexpr (kTargets) write_color = targets.count > 0 && d.color_write_any;
   for (int k = 0; k < n; ++k) {
     unsigned mask = (block.live >> (4 * k)) & 0xfu;
     if (!mask) continue;
@@ -144,9 +171,17 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     QuadColor col;
     for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * k]);
     if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
-    if (s.alpha_test)
+    if (s.alpha_test) {
+      // The alpha of colour 0 decides for every draw buffer (as in Mesa; GL 3.0 4.1.4).
+      F4 alpha = col.c[3];
+      if (sd.color_output != 0) {
+        alpha = load4(&block.color[0][3][4 * k]);
+        if (d.key.extras) apply_coverage(p, q.x, y, alpha);
+      }
       for (int i = 0; i < 4; ++i)
-        if (!compare(s.alpha_func, clamp01(col.c[3][i]), d.alpha_ref)) mask &= ~(1u << i);
+        if (!compare(s.alpha_func, clamp01(alpha[i]), d.alpha_ref)) mask &= ~(1u << i);
+    }
+    if (d.alpha_to_one) col.c[3] = splat(1.f);  // after alpha to coverage (the alpha test above)
     if (!early && tests) {
       uint32_t z[4];
       if (program.writes_depth()) {
@@ -160,15 +195,25 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, z);
     }
     if (count && !early) passed += static_cast<uint32_t>(__builtin_popcount(mask));
-    if (mask && write_color) write_colors(d, fb, q.x, y, mask, col);
+    if (!mask || !write_color) continue;
+    if constexpr (!kTargets) {
+      write_colors(d, fb, q.x, y, mask, col);
+    } else {
+      for (int t = 0; t < targets.count; ++t) {
+        QuadColor out;
+        for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[targets.output[size_t(t)]][c][4 * k]);
+        if (d.key.extras) apply_coverage(p, q.x, y, out.c[3]);
+        if (d.alpha_to_one) out.c[3] = splat(1.f);
+        write_colors(d, targets.view[size_t(t)], q.x, y, mask, out);
+      }
+    }
   }
   return passed;
 }
 
-}  // namespace
-
-uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
-                             const uint8_t* masks) {
+template <bool kTargets>
+uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                     const uint8_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return 0;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
   const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
@@ -185,12 +230,24 @@ uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Fram
     quads[n].ox = ox0 + splat(static_cast<float>(2 * q));
     quads[n].oy = oy;
     if (++n == 4) {
-      passed += shade_block(d, p, fb, y, quads, n, uniform_values);
+      passed += shade_block<kTargets>(d, p, fb, y, quads, n, uniform_values);
       n = 0;
     }
   }
-  if (n) passed += shade_block(d, p, fb, y, quads, n, uniform_values);
+  if (n) passed += shade_block<kTargets>(d, p, fb, y, quads, n, uniform_values);
   return passed;
+}
+
+}  // namespace
+
+uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                             const uint8_t* masks) {
+  return shade_quads<false>(d, p, fb, x, y, count, masks);
+}
+
+uint32_t shade_program_target_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y,
+                                    int count, const uint8_t* masks) {
+  return shade_quads<true>(d, p, fb, x, y, count, masks);
 }
 
 }  // namespace pineda::raster

@@ -11,5 +11,9 @@ namespace pineda::raster {
 // A QuadRoutine (draw_record.h) for draws whose DrawState::shader is set.
 uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                              const uint8_t* masks);
+// The same for a framebuffer with several draw buffers (Framebuffer::color_targets > 1): one run
+// of the shader, gl_FragData[i] into draw buffer i, depth and stencil once.
+uint32_t shade_program_target_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y,
+                                    int count, const uint8_t* masks);
 
 }  // namespace pineda::raster

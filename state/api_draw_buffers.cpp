@@ -1,16 +1,19 @@
-// glDrawBuffers (GL 2.0, ARB_draw_buffers, ATI_draw_buffers) on the window-system framebuffer:
-// its colour buffers are the front left one and, when double-buffered, the back left one.
+// glDrawBuffers (GL 2.0, ARB_draw_buffers, ATI_draw_buffers): on the window-system framebuffer
+// its colour buffers are the front left one and, when double-buffered, the back left one; on a
+// framebuffer object, its colour attachments.
 #include <algorithm>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/draw_buffer_list.h"
+#include "state/framebuffers/framebuffer_object.h"
 #include "shader/program.h"
 
 namespace pineda {
 
 static_assert(kMaxDrawBuffers == shader::kMaxDrawBuffers, "the fragment outputs a shader writes");
+static_assert(kMaxDrawBuffers == raster::kMaxColorTargets, "the colour buffers a draw writes");
 
 namespace {
 
@@ -22,7 +25,27 @@ struct Named {
   GLenum error = GL_NO_ERROR;
 };
 
+// With a framebuffer object bound (GL 3.0 4.2.1): NONE or a colour attachment, each once.
+Named name_object_buffer(GLenum buffer) {
+  if (buffer == GL_NONE) return {};
+  if (buffer >= GL_COLOR_ATTACHMENT0 && buffer <= GL_COLOR_ATTACHMENT15) {
+    const int point = attachment_point(buffer);
+    if (point < 0) return {0, GL_INVALID_OPERATION};  // past MAX_COLOR_ATTACHMENTS
+    return {1u << point};
+  }
+  switch (buffer) {
+    // Names of several buffers: INVALID_ENUM, as on the window-system framebuffer (GL 4.5).
+    case GL_FRONT: case GL_LEFT: case GL_RIGHT: case GL_FRONT_AND_BACK: return {0, GL_INVALID_ENUM};
+    // The window-system framebuffer's buffers, which an object has not.
+    case GL_BACK: case GL_FRONT_LEFT: case GL_FRONT_RIGHT: case GL_BACK_LEFT: case GL_BACK_RIGHT: case GL_AUX0:
+    case GL_AUX1: case GL_AUX2: case GL_AUX3:
+      return {0, GL_INVALID_OPERATION};
+    default: return {0, GL_INVALID_ENUM};
+  }
+}
+
 Named name_buffer(const Context& ctx, GLenum buffer) {
+  if (ctx.framebuffers.draw_binding) return name_object_buffer(buffer);
   const Drawable* d = ctx.draw_drawable();
   switch (buffer) {
     case GL_NONE: return {};
@@ -71,9 +94,13 @@ void DrawBuffers(Context& ctx, GLsizei n, const GLenum* bufs) {
     if (named.bits & used) return ctx.record_error(GL_INVALID_OPERATION);  // named twice
     used |= named.bits;
   }
+  const bool object = ctx.framebuffers.draw_binding != 0;
+  if (object) resolve_rendered_textures(ctx);
   ctx.draw_buffer = n > 0 ? bufs[0] : GL_NONE;
   for (int i = 1; i < kMaxDrawBuffers; ++i) ctx.extra_draw_buffers[i - 1] = i < n ? bufs[i] : GL_NONE;
-  ctx.drawable_changed();  // the renderer targets the selected colour buffers from now on
+  // The renderer targets the selected colour buffers from now on.
+  if (object) refresh_framebuffer_views(ctx);
+  else ctx.drawable_changed();
 }
 
 void DrawBuffersARB(Context& ctx, GLsizei n, const GLenum* bufs) { DrawBuffers(ctx, n, bufs); }

@@ -70,13 +70,19 @@ struct DepthStencilCopy {
   }
 };
 
+bool same_color(const raster::ColorBuffer& a, const raster::ColorBuffer& b) {
+  const raster::ColorReduction &ra = a.reduction, &rb = b.reduction;
+  return a.base == b.base && a.stride == b.stride && a.format == b.format && ra.active == rb.active &&
+         std::memcmp(ra.bits, rb.bits, 4) == 0 && std::memcmp(ra.source, rb.source, 4) == 0;
+}
+
 bool same_buffers(const raster::Framebuffer& a, const raster::Framebuffer& b) {
-  const raster::ColorReduction &ra = a.color.reduction, &rb = b.color.reduction;
-  return a.width == b.width && a.height == b.height && a.color.base == b.color.base &&
-         a.color.stride == b.color.stride && a.color.format == b.color.format && ra.active == rb.active &&
-         std::memcmp(ra.bits, rb.bits, 4) == 0 && std::memcmp(ra.source, rb.source, 4) == 0 &&
-         a.depth.base == b.depth.base && a.depth.stride == b.depth.stride && a.depth.bits == b.depth.bits &&
-         a.stencil.base == b.stencil.base && a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits;
+  if (a.color_targets != b.color_targets) return false;
+  for (int i = 0; i < a.color_targets; ++i)
+    if (!same_color(a.target_color(i), b.target_color(i))) return false;
+  return a.width == b.width && a.height == b.height && a.depth.base == b.depth.base &&
+         a.depth.stride == b.depth.stride && a.depth.bits == b.depth.bits && a.stencil.base == b.stencil.base &&
+         a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits;
 }
 
 }  // namespace
@@ -111,12 +117,14 @@ void Context::use_color_buffer(const raster::ColorBuffer& color) {
 }
 
 void Context::render_to_draw_buffers(const std::function<void()>& render) {
+  draw_pass_output_ = 0;
   if (framebuffers.draw_binding) {
+    // The view holds every draw buffer: one pass writes them all (raster/draw_targets.h).
     refresh_framebuffer_views(*this);
     note_draw_framebuffer_rendered(*this);
+    return render();
   }
   Drawable* const draw_ = draw_drawable();
-  draw_pass_output_ = 0;
   if (!draw_) return render();
   switch (draw_targets(draw_buffer, extra_draw_buffers, *draw_)) {
     case Target::None: use_color_buffer({}); return render();

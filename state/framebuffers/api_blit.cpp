@@ -58,7 +58,8 @@ struct Axis {
   double source(int d) const { return s0 + (d + 0.5 - d0) * scale; }
 };
 
-void write_color(const raster::ColorBuffer& cb, int x, int y, uint8_t rgba[4]) {
+void write_color(const raster::ColorBuffer& cb, int x, int y, const uint8_t source[4]) {
+  uint8_t rgba[4] = {source[0], source[1], source[2], source[3]};
   if (cb.reduction.active) raster::reduce_bytes(cb.reduction, rgba);
   uint8_t* p = cb.base + cb.stride * y + 4 * x;
   const bool bgra = cb.format == raster::ColorFormat::BGRA8;
@@ -133,7 +134,7 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
         if (!inside(u, v)) continue;
         const int si = int(std::floor(u)) - img.x0, sj = int(std::floor(v)) - img.y0;
         const size_t k = size_t(sj) * img.width + si;
-        if (color && fb.color.base) {
+        if (color) {
           uint8_t rgba[4];
           if (!linear) {
             std::copy_n(&img.color[4 * k], 4, rgba);
@@ -152,7 +153,8 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
               rgba[c] = uint8_t(std::clamp(std::nearbyint(bottom * (1 - wv) + top * wv), 0.0, 255.0));
             }
           }
-          write_color(fb.color, x, y, rgba);
+          for (int t = 0; t < fb.color_targets; ++t)  // every draw buffer (GL 3.0 4.3.3)
+            if (fb.target_color(t).base) write_color(fb.target_color(t), x, y, rgba);
         }
         if (depth) fb.depth.base[fb.depth.stride * y + x] = img.depth[k];
         if (stencil) fb.stencil.base[fb.stencil.stride * y + x] = img.stencil[k];

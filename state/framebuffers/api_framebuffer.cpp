@@ -19,11 +19,17 @@ void bind(Context& ctx, bool draw, bool read, GLuint name) {
   FramebufferState& fs = ctx.framebuffers;
   resolve_rendered_textures(ctx);
   if (draw) {
-    if (FramebufferObject* old = fs.draw_object()) old->draw_buffer = ctx.draw_buffer;
-    else fs.window_draw_buffer = ctx.draw_buffer;
+    if (FramebufferObject* old = fs.draw_object()) {
+      old->draw_buffer = ctx.draw_buffer;
+      old->extra_draw_buffers = ctx.extra_draw_buffers;
+    } else {
+      fs.window_draw_buffer = ctx.draw_buffer;
+      fs.window_extra_draw_buffers = ctx.extra_draw_buffers;
+    }
     fs.draw_binding = name;
     const FramebufferObject* now = fs.draw_object();
     ctx.draw_buffer = now ? now->draw_buffer : fs.window_draw_buffer;
+    ctx.extra_draw_buffers = now ? now->extra_draw_buffers : fs.window_extra_draw_buffers;
   }
   if (read) {
     if (FramebufferObject* old = fs.read_object()) old->read_buffer = ctx.read_buffer;
@@ -74,6 +80,7 @@ void set_object_color_buffer(Context& ctx, GLenum buffer, bool read) {
     fb->read_buffer = ctx.read_buffer = buffer;
   } else {
     fb->draw_buffer = ctx.draw_buffer = buffer;
+    fb->extra_draw_buffers = ctx.extra_draw_buffers = {};  // GL 2.0 4.2.1: the other outputs' become NONE
   }
   refresh_framebuffer_views(ctx);
 }

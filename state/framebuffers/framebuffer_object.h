@@ -19,6 +19,7 @@
 #include <set>
 #include <vector>
 
+#include "state/draw_buffer_list.h"
 #include "state/drawable.h"
 #include "state/framebuffers/renderable_format.h"
 
@@ -66,6 +67,7 @@ constexpr int kAttachmentPoints = kMaxColorAttachments + 2;
 struct FramebufferObject {
   std::array<Attachment, kAttachmentPoints> attachments;
   GLenum draw_buffer = GL_COLOR_ATTACHMENT0, read_buffer = GL_COLOR_ATTACHMENT0;
+  ExtraDrawBuffers extra_draw_buffers{};  // DRAW_BUFFER1.. (glDrawBuffers), GL_NONE by default
   // What the context renders into and reads from, rebuilt by refresh_framebuffer_views.
   Drawable draw_view, read_view;
 };
@@ -78,6 +80,7 @@ struct FramebufferState {
   // The window-system framebuffer's draw and read buffers while an object is bound (the
   // context's draw_buffer/read_buffer are those of the bound draw/read framebuffer).
   GLenum window_draw_buffer = GL_BACK, window_read_buffer = GL_BACK;
+  ExtraDrawBuffers window_extra_draw_buffers{};
   // Set when queued rendering may write a texture attached to the draw framebuffer.
   bool textures_rendered = false;
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <span>
 
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
@@ -72,9 +73,10 @@ raster::ColorBuffer color_buffer(Context& ctx, const Attachment& a, const Render
   return cb;
 }
 
-// The view of `fb` whose colour buffer is `buffer`'s attachment; an incomplete framebuffer
-// has an empty view (nothing is drawn into it).
-void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& view) {
+// The view of `fb` whose colour buffers are the attachments of `buffers` (draw buffer i's at
+// i; GL_NONE ends the list when nothing follows); an incomplete framebuffer has an empty view
+// (nothing is drawn into it).
+void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buffers, Drawable& view) {
   view = Drawable{};
   view.accum = false;
   if (framebuffer_status(ctx, fb, false) != GL_FRAMEBUFFER_COMPLETE) {
@@ -91,11 +93,18 @@ void build_view(Context& ctx, FramebufferObject& fb, GLenum buffer, Drawable& vi
     out.samples = std::max(attachment_samples(a), 1);  // the same for all: the framebuffer is complete
   }
   view.red_bits = view.green_bits = view.blue_bits = view.alpha_bits = 0;
-  const int point = buffer == GL_NONE ? -1 : attachment_point(buffer);
-  if (point >= 0 && point < kMaxColorAttachments && fb.attachments[point].type != GL_NONE) {
+  bool bits_set = false;  // RED_BITS...: the first draw buffer with an image
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    const GLenum buffer = buffers[i];
+    const int point = buffer == GL_NONE ? -1 : attachment_point(buffer);
+    if (point < 0 || point >= kMaxColorAttachments || fb.attachments[point].type == GL_NONE) continue;
     const Attachment& a = fb.attachments[point];
     const RenderableFormat format = *attachment_format(ctx, a);
-    out.color = color_buffer(ctx, a, format);
+    if (i == 0) out.color = color_buffer(ctx, a, format);
+    else out.more_color[i - 1] = color_buffer(ctx, a, format);
+    out.color_targets = std::max(out.color_targets, int(i) + 1);
+    if (bits_set) continue;
+    bits_set = true;
     view.red_bits = format.color.red;
     view.green_bits = format.color.green;
     view.blue_bits = format.color.blue;
@@ -211,6 +220,8 @@ GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_ru
   // (piglit's depth-stencil-blit, framebuffer-blit-levels, fbo-clear-formats rely on it).
   // EXT_framebuffer_object's own entry point keeps them.
   if (ext_rules && missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
+  if (ext_rules && std::any_of(fb.extra_draw_buffers.begin(), fb.extra_draw_buffers.end(), missing))
+    return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
   if (ext_rules && missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
   return GL_FRAMEBUFFER_COMPLETE;
 }
@@ -220,10 +231,17 @@ void refresh_framebuffer_views(Context& ctx) {
   FramebufferObject* draw = fs.draw_object();
   FramebufferObject* read = fs.read_object();
   // The context's draw and read buffers are the bound objects' (glPopAttrib may set them).
-  if (draw) draw->draw_buffer = ctx.draw_buffer;
+  if (draw) {
+    draw->draw_buffer = ctx.draw_buffer;
+    draw->extra_draw_buffers = ctx.extra_draw_buffers;
+  }
   if (read) read->read_buffer = ctx.read_buffer;
-  if (draw) build_view(ctx, *draw, draw->draw_buffer, draw->draw_view);
-  if (read) build_view(ctx, *read, read->read_buffer, read->read_view);
+  if (draw) {
+    std::array<GLenum, kMaxDrawBuffers> buffers{draw->draw_buffer};
+    std::copy(draw->extra_draw_buffers.begin(), draw->extra_draw_buffers.end(), buffers.begin() + 1);
+    build_view(ctx, *draw, buffers, draw->draw_view);
+  }
+  if (read) build_view(ctx, *read, std::span<const GLenum>(&read->read_buffer, 1), read->read_view);
   ctx.set_framebuffer_views(draw ? &draw->draw_view : nullptr, read ? &read->read_view : nullptr);
 }
 

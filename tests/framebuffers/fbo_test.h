@@ -5,6 +5,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <utility>
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
@@ -66,6 +67,24 @@ class FboTest : public GlTest {
     glTexCoord2f(0, 1); glVertex2f(0, h);
     glEnd();
     glDisable(GL_TEXTURE_2D);
+  }
+
+  // A linked program of `fs` and a vertex shader of ftransform() passing gl_Color on.
+  GLuint fragment_program(const char* fs) {
+    const char* vs = "void main() { gl_FrontColor = gl_Color; gl_Position = ftransform(); }";
+    const GLuint p = glCreateProgram();
+    for (auto [type, src] : {std::pair{GL_VERTEX_SHADER, vs}, std::pair{GL_FRAGMENT_SHADER, fs}}) {
+      const GLuint s = glCreateShader(type);
+      glShaderSource(s, 1, &src, nullptr);
+      glCompileShader(s);
+      glAttachShader(p, s);
+      glDeleteShader(s);
+    }
+    glLinkProgram(p);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    EXPECT_EQ(ok, GL_TRUE);
+    return p;
   }
 
   int get_int(GLenum pname) {

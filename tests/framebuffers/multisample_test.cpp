@@ -173,6 +173,31 @@ TEST_F(MultisampleTest, CoverageOfAnEdgeAcrossAPixel) {
   }
 }
 
+// Several draw buffers of a multisampled framebuffer: every buffer gets the coverage per sample,
+// in its own format (RGB565: 255 for the missing alpha of each sample).
+TEST_F(MultisampleTest, CoverageInEveryDrawBuffer) {
+  const GLuint second = make_ms_renderbuffer(GL_RGB565, 4);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, second);
+  const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, both);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(1, 1, 1);
+  rect(0, 0, 2.5f, 4);  // pixel 2: 2 of 4 samples
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fb_);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fb_);
+  glBlitFramebuffer(0, 0, kSize, kSize, 0, 0, kSize, kSize, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+  uint8_t p[4] = {0, 0, 0, 0};
+  glReadPixels(2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  EXPECT_EQ((Rgba{p[0], p[1], p[2], p[3]}), (Rgba{128, 128, 128, 255}));
+  glBindFramebuffer(GL_FRAMEBUFFER, ms_fb_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  EXPECT_EQ(resolved(2, 1), (Rgba{128, 128, 128, 128}));
+  EXPECT_EQ(resolved(1, 1), (Rgba{255, 255, 255, 255}));
+  glDeleteRenderbuffers(1, &second);
+}
+
 // Top edges at y = 2 + t: samples at y 0.125, 0.375, 0.625, 0.875. An edge through a sample:
 // the top edge does not own it (the fill rule at samples as at pixel centres).
 TEST_F(MultisampleTest, CoverageOfATopEdgeAndTheFillRule) {
@@ -238,6 +263,48 @@ TEST_F(MultisampleTest, AlphaToCoverage) {
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   const int expected[4] = {0, 64, 128, 191};
   for (int band = 0; band < 4; ++band) EXPECT_EQ(resolved(8, 4 * band + 2)[0], expected[band]) << band;
+}
+
+// GL 1.5 4.1.3: SAMPLE_ALPHA_TO_ONE sets alpha to 1 after alpha to coverage, before blending.
+TEST_F(MultisampleTest, AlphaToOne) {
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  glColor4f(1, 1, 1, 0.5f);  // 2 of 4 samples, with alpha 1
+  rect(0, 0, 16, 8);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  EXPECT_EQ(resolved(8, 4), (Rgba{128, 128, 128, 128}));  // alpha 0.5 kept: 64
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glColor4f(1, 0, 0, 0.25f);
+  rect(0, 8, 16, 12);  // alpha 1: the source replaces the destination
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  rect(0, 12, 16, 16);  // alpha 0.25
+  glDisable(GL_BLEND);
+  EXPECT_EQ(resolved(8, 10), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 14), (Rgba{64, 0, 0, 16}));
+}
+
+// GL_MULTISAMPLE off: alpha to one is off with the other multisample operations.
+TEST_F(MultisampleTest, AlphaToOneNeedsMultisample) {
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  glDisable(GL_MULTISAMPLE);
+  glColor4f(1, 1, 1, 0.5f);
+  rect(0, 0, 16, 16);
+  glEnable(GL_MULTISAMPLE);
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  EXPECT_EQ(resolved(8, 8), (Rgba{255, 255, 255, 128}));
+}
+
+// The fragment shader's alpha too.
+TEST_F(MultisampleTest, AlphaToOneWithAFragmentShader) {
+  const GLuint p = fragment_program("void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 0.25); }");
+  glUseProgram(p);
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  rect(0, 0, 16, 16);
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  glUseProgram(0);
+  glDeleteProgram(p);
+  EXPECT_EQ(resolved(8, 8), (Rgba{0, 255, 0, 255}));
 }
 
 // With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
