@@ -69,7 +69,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   const int stencil_bits = d ? d->framebuffer.stencil.bits : 0;
   const TextureUnitState& unit = ctx.texture_units[ctx.active_texture];
   if (missing_texture_unit_state(ctx, pname)) return false;
-  if (ctx.es2() && query_es2(ctx, pname, out)) return true;
+  if (!ctx.es1() && query_es2(ctx, pname, out)) return true;
   if (ArrayField field; const ClientArray* a = client_array(ctx, pname, field)) {
     out = field == ArrayField::Type ? enums({double(a->type)})
                                     : ints({double(field == ArrayField::Size ? a->size : a->stride)});
@@ -318,7 +318,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_EXT_packed_depth_stencil "
       "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 "
       "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object "
-      "GL_EXT_texture_sRGB GL_ARB_robustness ";  // a trailing space, as Mesa (programs split on it)
+      "GL_EXT_texture_sRGB GL_ARB_robustness GL_ARB_ES2_compatibility ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

@@ -1,5 +1,6 @@
-// The glGet values only OpenGL ES 2.0 defines (ES 2.0 table 6.18-6.20: limits counted in
-// vec4s, the shader compiler and binary formats, the preferred glReadPixels pair).
+// The glGet values OpenGL ES 2.0 defines and desktop GL has through GL_ARB_ES2_compatibility
+// (ES 2.0 table 6.18-6.20: limits counted in vec4s, the shader compiler and binary formats,
+// the preferred glReadPixels pair).
 #include "shader/program.h"
 #include "state/context.h"
 #include "state/get_values.h"
@@ -21,7 +22,10 @@ bool query_es2(Context& ctx, unsigned pname, GetValues& out) {
     // EXT_clip_cull_distance's MAX_CLIP_DISTANCES_EXT (the same value): no clip distances in
     // ES 2.0. Every piglit shader_runner_gles2 test asks for it (Mesa's ES 2.0 request gives ES
     // 3.2, where it exists), so it is answered rather than INVALID_ENUM (glapi/gen_entry_points.py).
-    case GL_MAX_CLIP_PLANES: out = get_ints({0}); return true;
+    case GL_MAX_CLIP_PLANES:
+      if (!ctx.es2()) return false;  // desktop GL's own value
+      out = get_ints({0});
+      return true;
     default: return false;
   }
 }

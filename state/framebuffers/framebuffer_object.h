@@ -97,8 +97,8 @@ struct FramebufferState {
 int attachment_point(GLenum attachment);
 
 // GL 4.1 4.4.4.2 framebuffer completeness of a framebuffer object (what draws and reads
-// require, as Mesa); `ext_rules` adds EXT_framebuffer_object's INCOMPLETE_DIMENSIONS_EXT,
-// INCOMPLETE_FORMATS_EXT, INCOMPLETE_DRAW_BUFFER and INCOMPLETE_READ_BUFFER.
+// require, as Mesa); `ext_rules` adds EXT_framebuffer_object's INCOMPLETE_DIMENSIONS_EXT and
+// INCOMPLETE_FORMATS_EXT.
 GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_rules);
 
 // Rebuilds the views of the bound framebuffer objects (after attachments, storage or the

@@ -210,19 +210,10 @@ GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_ru
   if (images == 0) return GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT;
   if (ext_rules && sizes_differ) return GL_FRAMEBUFFER_INCOMPLETE_DIMENSIONS_EXT;
   if (ext_rules && formats_differ) return GL_FRAMEBUFFER_INCOMPLETE_FORMATS_EXT;
-  auto missing = [&](GLenum buffer) {
-    if (buffer == GL_NONE) return false;
-    const int p = attachment_point(buffer);
-    return p < 0 || fb.attachments[p].type == GL_NONE;
-  };
-  // GL 4.1 (ARB_ES2_compatibility) dropped these two rules, and Mesa's llvmpipe does not
-  // apply them: a depth-only framebuffer whose draw buffer is still COLOR_ATTACHMENT0 renders
-  // (piglit's depth-stencil-blit, framebuffer-blit-levels, fbo-clear-formats rely on it).
-  // EXT_framebuffer_object's own entry point keeps them.
-  if (ext_rules && missing(fb.draw_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
-  if (ext_rules && std::any_of(fb.extra_draw_buffers.begin(), fb.extra_draw_buffers.end(), missing))
-    return GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER;
-  if (ext_rules && missing(fb.read_buffer)) return GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER;
+  // No draw and read buffer rules (INCOMPLETE_DRAW_BUFFER, INCOMPLETE_READ_BUFFER): GL 4.1 and
+  // GL_ARB_ES2_compatibility, which Pineda offers, dropped them, as Mesa's llvmpipe does. A
+  // depth-only framebuffer whose draw buffer is still COLOR_ATTACHMENT0 renders (piglit's
+  // depth-stencil-blit, fbo-clear-formats, glmark2's shadow scene through the EXT entry point).
   return GL_FRAMEBUFFER_COMPLETE;
 }
 

@@ -74,9 +74,7 @@ void VertexAttribPointer(Context& ctx, GLuint index, GLint size, GLenum type, GL
     case GL_INT: case GL_UNSIGNED_INT: case GL_DOUBLE:
       if (ctx.es2()) return ctx.record_error(GL_INVALID_ENUM);
       break;
-    case GL_FIXED:  // OpenGL ES 2.0 2.8
-      if (!ctx.es2()) return ctx.record_error(GL_INVALID_ENUM);
-      break;
+    case GL_FIXED: break;  // OpenGL ES 2.0 2.8; desktop GL through GL_ARB_ES2_compatibility
     default: return ctx.record_error(GL_INVALID_ENUM);
   }
   GenericArray& a = ctx.programs.arrays[index];

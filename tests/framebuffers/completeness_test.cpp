@@ -65,15 +65,15 @@ TEST_F(CompletenessTest, IncompleteAttachment) {
   glDeleteTextures(2, texs);
 }
 
-// EXT_framebuffer_object's entry point applies the draw and read buffer rules; GL 4.1 (and
-// Mesa) dropped them: reading a missing image is then INVALID_OPERATION, drawing into one
-// draws nothing.
+// No draw and read buffer rules, through either entry point (GL 4.1 and
+// GL_ARB_ES2_compatibility dropped them, as Mesa): reading a missing image is
+// INVALID_OPERATION, drawing into one draws nothing.
 TEST_F(CompletenessTest, DrawAndReadBufferWithoutImage) {
   const GLuint color = make_renderbuffer(GL_RGBA8, 4, 4);
   const GLuint fb = make_fbo();
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, color);
   glReadBuffer(GL_COLOR_ATTACHMENT1);
-  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER));
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
   glClearColor(1, 1, 1, 1);
   glClear(GL_COLOR_BUFFER_BIT);  // into COLOR_ATTACHMENT0: nothing
@@ -82,7 +82,7 @@ TEST_F(CompletenessTest, DrawAndReadBufferWithoutImage) {
   glDrawBuffer(GL_COLOR_ATTACHMENT1);
   EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER));
+  EXPECT_EQ(glCheckFramebufferStatusEXT(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   EXPECT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
   uint8_t p[4] = {7, 7, 7, 7};
   glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
