@@ -54,6 +54,7 @@ void StageCode::prepare() {
     in.c = offset(in.c);
     if (in.op == Op::Gather || in.op == Op::Scatter) in.i0 = offset(in.i0);
   }
+  exec.push_back(ir::Inst{Op::Count});  // the executor's end: its handler leaves the run
   int depth = 0;
   max_depth = 0;
   for (const ir::Inst& in : code.insts) {

@@ -12,7 +12,7 @@ namespace pineda::shader {
 struct StageCode {
   ir::Code code;
   std::vector<float> constant_lanes;  // [constant][kLanes]
-  std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as buffer offsets
+  std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as buffer offsets, then Op::Count
   std::vector<ir::TextureLookup> exec_textures;  // exec's lookups (IR operands, slots included)
   std::vector<ir::Inst> uniform_ops;  // run once per draw or per run; d and register operands: slots
   int slots = 0;                      // slot s is register code.registers + s
