@@ -17,6 +17,7 @@ struct StageCode {
   std::vector<ir::Inst> uniform_ops;  // run once per draw or per run; d and register operands: slots
   int slots = 0;                      // slot s is register code.registers + s
   int max_depth = 0;                  // deepest nesting of if/loop/function frames
+  bool straight_line = false;         // no structure, every register written before it is read
   void prepare();
   // The slots' values for these uniforms, each splatted over its kLanes floats.
   void compute_uniform_ops(const float* uniforms, float* slot_lanes) const;
