@@ -38,12 +38,39 @@ inline int clamp_index(float x, int limit) {
   return static_cast<int>(x);
 }
 
+// Whether straight-line code (no structure, no dynamic indexing) writes every register before
+// reading it: run with every lane, it then needs no zeroed register file. Slots (registers
+// from `registers` up) are always filled.
+bool writes_before_reads(const std::vector<ir::Inst>& insts, const std::vector<ir::TextureLookup>& textures,
+                         int registers) {
+  std::vector<char> written(static_cast<size_t>(registers), 0);
+  auto read_ok = [&](Operand o) { return o == ir::kNone || ir::is_const(o) || o >= registers || written[static_cast<size_t>(o)]; };
+  auto write = [&](Operand o) {
+    if (o != ir::kNone && o >= 0 && o < registers) written[static_cast<size_t>(o)] = 1;
+  };
+  for (const ir::Inst& in : insts) {
+    if (in.op <= Op::Discard || in.op == Op::Gather || in.op == Op::Scatter) return false;
+    if (in.op == Op::Texture) {
+      const ir::TextureLookup& t = textures[static_cast<size_t>(in.i0)];
+      if (!read_ok(t.sampler) || !read_ok(t.lod)) return false;
+      for (Operand c : t.coord)
+        if (!read_ok(c)) return false;
+      for (Operand d : t.dst) write(d);
+      continue;
+    }
+    if (!read_ok(in.a) || !read_ok(in.b) || !read_ok(in.c)) return false;
+    write(in.d);
+  }
+  return true;
+}
+
 }  // namespace
 
 void StageCode::prepare() {
   HoistedCode hoisted = hoist_uniform_operations(code);
   exec = std::move(hoisted.insts);
   exec_textures = std::move(hoisted.textures);
+  straight_line = writes_before_reads(exec, exec_textures, code.registers);
   uniform_ops = std::move(hoisted.uniform_ops);
   slots = hoisted.slots;
   for (ir::Inst& in : exec) {
@@ -54,6 +81,7 @@ void StageCode::prepare() {
     in.c = offset(in.c);
     if (in.op == Op::Gather || in.op == Op::Scatter) in.i0 = offset(in.i0);
   }
+  exec.push_back(ir::Inst{Op::Count});  // the executor's end: its handler leaves the run
   int depth = 0;
   max_depth = 0;
   for (const ir::Inst& in : code.insts) {

@@ -12,11 +12,12 @@ namespace pineda::shader {
 struct StageCode {
   ir::Code code;
   std::vector<float> constant_lanes;  // [constant][kLanes]
-  std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as buffer offsets
+  std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as buffer offsets, then Op::Count
   std::vector<ir::TextureLookup> exec_textures;  // exec's lookups (IR operands, slots included)
   std::vector<ir::Inst> uniform_ops;  // run once per draw or per run; d and register operands: slots
   int slots = 0;                      // slot s is register code.registers + s
   int max_depth = 0;                  // deepest nesting of if/loop/function frames
+  bool straight_line = false;         // no structure, every register written before it is read
   void prepare();
   // The slots' values for these uniforms, each splatted over its kLanes floats.
   void compute_uniform_ops(const float* uniforms, float* slot_lanes) const;

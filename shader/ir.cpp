@@ -8,9 +8,20 @@
 #define PINEDA_HAS_MXCSR 1
 #endif
 
+// lane_pow.inc works on 32-byte double vectors in helpers that are always inlined.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace pineda::shader::ir {
 
 namespace {
+#include "shader/lane_pow.inc"
+
+// The executor's pow over vectors, for one value.
+float pow_value(float x, float y) {
+  const PowLanes<4>::F r = lane_pow<4>(PowLanes<4>::F{x, x, x, x}, PowLanes<4>::F{y, y, y, y});  // not 0 + x: -0 stays -0
+  return r[0];
+}
+
 const char* const kOpNames[] = {
     "if", "else", "endif", "loop", "continue_point", "endloop", "break", "break_if_not",
     "continue", "func", "endfunc", "return", "discard",
@@ -94,7 +105,7 @@ float eval_binary(Op op, float a, float b) {
     // GLSL min/max of a NaN is undefined; fmin/fmax pick the number.
     case Op::Min: return lane_min(a, b);
     case Op::Max: return lane_max(a, b);
-    case Op::Pow: return std::pow(a, b);
+    case Op::Pow: return pow_value(a, b);
     case Op::Atan2: return std::atan2(a, b);
     case Op::Step: return b < a ? 0.0f : 1.0f;
     case Op::Lt: return a < b ? 1.0f : 0.0f;

@@ -280,6 +280,50 @@ bool pass(ir::Code& code) {
   return changed;
 }
 
+// t = mul a b; ...; d = add t c (or add c t), t read only there: d = mad a b c. Mad is
+// a * b + c with two roundings (no FMA), so the values do not change; one dispatch instead of
+// two. Not when a and b are both uniform-only: the mul is then computed once per draw
+// (shader/hoist.h) and only the add runs per block.
+bool fuse_multiply_add(ir::Code& code) {
+  Analysis an = analyze(code);
+  std::vector<char> uniform(code.registers, 0);
+  auto uniform_only = [&](Operand o) { return o == kNone || ir::is_const(o) || (o >= 0 && uniform[o]); };
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    const Inst& in = code.insts[pc];
+    if (in.d < 0 || !an.promotable(in.d)) continue;
+    if (in.op == Op::LoadUniform ||
+        (ir::op_is_pure_arith(in.op) && uniform_only(in.a) && uniform_only(in.b) && uniform_only(in.c)))
+      uniform[in.d] = 1;
+  }
+  auto stable = [&](Operand o) { return ir::is_const(o) || (o >= 0 && an.promotable(o)); };
+  std::vector<bool> dead(code.insts.size(), false);
+  bool changed = false;
+  for (size_t pc = 0; pc < code.insts.size(); ++pc) {
+    Inst& add = code.insts[pc];
+    if (add.op != Op::Add) continue;
+    for (Operand* t : {&add.a, &add.b}) {
+      if (*t < 0 || !an.promotable(*t)) continue;
+      const RegInfo& info = an.regs[*t];
+      if (info.use_pcs.size() != 1 || an.region[info.def_pc] != an.region[pc]) continue;
+      Inst& mul = code.insts[info.def_pc];
+      if (mul.op != Op::Mul || dead[info.def_pc] || !stable(mul.a) || !stable(mul.b)) continue;
+      if (uniform_only(mul.a) && uniform_only(mul.b)) continue;
+      const Operand c = t == &add.a ? add.b : add.a;
+      add = Inst{Op::Mad, add.d, mul.a, mul.b, c};
+      dead[info.def_pc] = true;
+      changed = true;
+      break;
+    }
+  }
+  if (changed) {
+    std::vector<Inst> kept;
+    for (size_t pc = 0; pc < code.insts.size(); ++pc)
+      if (!dead[pc]) kept.push_back(code.insts[pc]);
+    code.insts.swap(kept);
+  }
+  return changed;
+}
+
 // Linear-scan register allocation over live intervals in instruction order. A value that
 // crosses a loop's back edge (defined before the loop and read in it, or a variable assigned
 // in several places) lives through the whole loop. Registers read or written through a
@@ -394,6 +438,9 @@ void optimize(ir::Code& code) {
   const ir::FlushDenormals flush;
   for (int round = 0; round < 32 && pass(code); ++round) {
   }
+  if (fuse_multiply_add(code))
+    for (int round = 0; round < 32 && pass(code); ++round) {
+    }
   allocate_registers(code);
   fix_jumps(code);
 }

@@ -1,6 +1,7 @@
 #include "state/programs/generic_attribs.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "state/context.h"
 #include "state/vertex_fetch.h"
@@ -27,6 +28,36 @@ const uint8_t* generic_element(const GenericArray& a, size_t index) {
   if (!a.buffer) return static_cast<const uint8_t*>(a.pointer) + stride * index;
   if (stride && index > (SIZE_MAX - reinterpret_cast<uintptr_t>(a.pointer)) / stride) return nullptr;
   return buffer_range(*a.buffer, reinterpret_cast<uintptr_t>(a.pointer) + stride * index, bytes);
+}
+
+bool float_array_view(const Context& ctx, AttribSource source, int index, FloatArrayView& out) {
+  if (source != AttribSource::Arrays || index <= 0 || index >= kMaxVertexAttribs) return false;
+  const GenericArray& a = ctx.programs.arrays[index];
+  if (!a.active() || a.type != GL_FLOAT) return false;
+  const size_t bytes = sizeof(float) * size_t(a.size);
+  out.stride = a.stride ? size_t(a.stride) : bytes;
+  out.size = a.size;
+  out.current = ctx.programs.current_attrib[index].data();
+  if (!a.buffer) {
+    out.base = static_cast<const uint8_t*>(a.pointer);
+    out.count = SIZE_MAX;
+    return true;
+  }
+  // Element i lies inside the buffer when offset + i * stride + bytes <= its size.
+  const size_t total = a.buffer->data.size(), offset = reinterpret_cast<uintptr_t>(a.pointer);
+  out.base = a.buffer->data.data() + std::min(offset, total);
+  out.count = offset > total || bytes > total - offset ? 0 : (total - offset - bytes) / out.stride + 1;
+  return true;
+}
+
+void FloatArrayView::read(size_t index, float out[4]) const {
+  if (index >= count) {
+    std::copy(current, current + 4, out);
+    return;
+  }
+  out[0] = out[1] = out[2] = 0.f;
+  out[3] = 1.f;
+  std::memcpy(out, base + stride * index, sizeof(float) * size_t(size));
 }
 
 bool read_generic_position(const Context& ctx, size_t index, float out[4]) {

@@ -23,6 +23,21 @@ void capture_immediate_generics(Context& ctx, raster::VertexInput& v, const size
 // Generic attribute `index` of `v` (index 0 is the position).
 void fetch_generic(const Context& ctx, AttribSource source, const raster::VertexInput& v, int index, float out[4]);
 
+// An enabled GL_FLOAT generic array, resolved once per draw so that each element is read
+// straight from memory: the same values fetch_generic gives.
+struct FloatArrayView {
+  const uint8_t* base = nullptr;
+  size_t stride = 0;
+  size_t count = 0;               // elements inside the buffer object (SIZE_MAX in client memory)
+  int size = 4;
+  const float* current = nullptr;  // the attribute's current value, for elements outside the buffer
+  void read(size_t index, float out[4]) const;
+};
+
+// Whether generic attribute `index` (> 0) of a draw from `source` is read from a GL_FLOAT array;
+// if so, `out` is its view.
+bool float_array_view(const Context& ctx, AttribSource source, int index, FloatArrayView& out);
+
 // The bytes of element `index` of a generic array, null outside its buffer object.
 const uint8_t* generic_element(const GenericArray& a, size_t index);
 

@@ -80,6 +80,37 @@ uint32_t enabled_clip_planes(const Context& ctx) {
   return planes;
 }
 
+// Where one vec4 input slot of the vertex shader comes from, found once per draw.
+struct InputFetch {
+  int slot = 0;
+  shader::BuiltinAttribute builtin = shader::BuiltinAttribute::None;
+  int location = 0;        // generic attribute, when not built-in
+  bool from_view = false;  // a GL_FLOAT array: `view`
+  FloatArrayView view;
+};
+
+std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program& program, AttribSource source,
+                                      int slots) {
+  std::vector<InputFetch> fetches;
+  for (const shader::Attribute& a : program.attributes()) {
+    const int per_element = std::max<int>(a.type.columns, 1);
+    const int slot_count = per_element * std::max(a.array_size, 1);
+    for (int s = 0; s < slot_count; ++s) {
+      InputFetch f;
+      f.slot = a.input_slot + s;
+      if (f.slot < 0 || f.slot >= slots) continue;
+      f.builtin = a.builtin;
+      f.location = a.location + s;
+      if (f.builtin == shader::BuiltinAttribute::None) {
+        if (f.location < 0 || f.location >= kMaxVertexAttribs) continue;
+        f.from_view = float_array_view(ctx, source, f.location, f.view);
+      }
+      fetches.push_back(f);
+    }
+  }
+  return fetches;
+}
+
 // Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
 // varyings into `varyings` (program.varying_floats() per vertex).
 void run_vertex_shader(const Context& ctx, const shader::Program& program, const float* uniforms,
@@ -92,25 +123,19 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
   std::vector<float> in(static_cast<size_t>(slots) * 4 * kLanes), result(static_cast<size_t>(outputs) * kLanes);
   out.resize(vertices.size());
   varyings.resize(vertices.size() * static_cast<size_t>(nv));
-  const auto& attributes = program.attributes();
+  const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
   for (size_t first = 0; first < vertices.size(); first += kLanes) {
     const int count = static_cast<int>(std::min<size_t>(kLanes, vertices.size() - first));
-    std::fill(in.begin(), in.end(), 0.f);
+    if (count < kLanes) std::fill(in.begin(), in.end(), 0.f);
     for (int lane = 0; lane < count; ++lane) {
       const raster::VertexInput& v = vertices[first + lane];
-      for (const shader::Attribute& a : attributes) {
-        const int per_element = std::max<int>(a.type.columns, 1);
-        const int slot_count = per_element * std::max(a.array_size, 1);
-        for (int s = 0; s < slot_count; ++s) {
-          const int slot = a.input_slot + s;
-          if (slot < 0 || slot >= slots) continue;
-          float value[4];
-          if (a.builtin != shader::BuiltinAttribute::None) builtin_input(v, a.builtin, value);
-          else if (a.location + s >= 0 && a.location + s < kMaxVertexAttribs) fetch_generic(ctx, source, v, a.location + s, value);
-          else continue;
-          for (int c = 0; c < 4; ++c) in[(static_cast<size_t>(slot) * 4 + c) * kLanes + lane] = value[c];
-        }
+      for (const InputFetch& f : fetches) {
+        float value[4];
+        if (f.builtin != shader::BuiltinAttribute::None) builtin_input(v, f.builtin, value);
+        else if (f.from_view) f.view.read(v.source, value);
+        else fetch_generic(ctx, source, v, f.location, value);
+        for (int c = 0; c < 4; ++c) in[(static_cast<size_t>(f.slot) * 4 + c) * kLanes + lane] = value[c];
       }
     }
     std::fill(result.begin(), result.end(), 0.f);
@@ -131,8 +156,6 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
         const int p = __builtin_ctz(left);
         c.clip_distance[p] = static_cast<float>(glm::dot(ctx.extras.clip_planes[p], clip_vertex));
       }
-      for (auto* color : {c.color, c.back_color}) std::fill(color, color + 4, 0.f);
-      for (auto& tc : c.texcoord) std::fill(tc, tc + 4, 0.f);
       c.edge_flag = vertices[first + lane].edge_flag;
       const float size = point_size_from_shader ? result[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
                                                 : fixed_point_size;
