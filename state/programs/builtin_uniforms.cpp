@@ -136,16 +136,24 @@ bool state_value(const Context& ctx, const BuiltinName& n, const Writer& w) {
   if (n.base == "gl_LightModel" && n.member == "ambient") return w.vec(lt.model_ambient), true;
   if ((n.base == "gl_FrontLightModelProduct" || n.base == "gl_BackLightModelProduct") && n.member == "sceneColor") {
     const raster::Material& m = n.base == "gl_FrontLightModelProduct" ? lt.front : lt.back;
-    w.vec(m.emission + m.ambient * lt.model_ambient);
+    // Alpha is the material's diffuse alpha, the alpha lighting produces (GL 2.0 2.14.1), as
+    // Mesa (piglit glsl-1.10-built-in-uniform-state checks it).
+    glm::vec4 scene = m.emission + m.ambient * lt.model_ambient;
+    scene.a = m.diffuse.a;
+    w.vec(scene);
     return true;
   }
   if (n.base == "gl_FrontLightProduct" || n.base == "gl_BackLightProduct") {
     if (n.index < 0 || n.index >= raster::kMaxLights) return false;
     const raster::Material& m = n.base == "gl_FrontLightProduct" ? lt.front : lt.back;
     const raster::Light& l = lt.lights[n.index];
-    if (n.member == "ambient") return w.vec(l.ambient * m.ambient), true;
-    if (n.member == "diffuse") return w.vec(l.diffuse * m.diffuse), true;
-    if (n.member == "specular") return w.vec(l.specular * m.specular), true;
+    // Colour products with the material's alpha, as Mesa and NVIDIA do.
+    auto product = [](const glm::vec4& light, const glm::vec4& material) {
+      return glm::vec4(glm::vec3(light) * glm::vec3(material), material.a);
+    };
+    if (n.member == "ambient") return w.vec(product(l.ambient, m.ambient)), true;
+    if (n.member == "diffuse") return w.vec(product(l.diffuse, m.diffuse)), true;
+    if (n.member == "specular") return w.vec(product(l.specular, m.specular)), true;
     return false;
   }
   if (n.base == "gl_Fog") {

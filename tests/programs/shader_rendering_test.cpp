@@ -314,3 +314,32 @@ TEST_F(ShaderRenderingTest, UseProgramZeroReturnsToFixedFunction) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// The derived lighting built-ins take their alpha from the material: sceneColor the diffuse
+// alpha, each light product its own material colour's alpha (as Mesa; piglit
+// glsl-1.10-built-in-uniform-state).
+TEST_F(ShaderRenderingTest, LightProductsTakeTheMaterialsAlpha) {
+  const GLfloat material_ambient[] = {0.5f, 0.5f, 0.5f, 0.2f}, material_diffuse[] = {1.0f, 0.5f, 0.25f, 0.6f};
+  const GLfloat material_emission[] = {0.25f, 0.0f, 0.0f, 0.4f}, model_ambient[] = {0.5f, 1.0f, 0.0f, 1.0f};
+  const GLfloat light_diffuse[] = {0.5f, 1.0f, 1.0f, 1.0f};
+  glMaterialfv(GL_FRONT, GL_AMBIENT, material_ambient);
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, material_diffuse);
+  glMaterialfv(GL_FRONT, GL_EMISSION, material_emission);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, model_ambient);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, light_diffuse);
+  const GLuint scene = use(kPassVs, "void main() { gl_FragColor = gl_FrontLightModelProduct.sceneColor; }\n");
+  full_screen();
+  // (0.25 + 0.25, 0.5, 0), alpha 0.6.
+  EXPECT_EQ(pixel(2, 2), (Rgba{128, 128, 0, 153}));
+  glDeleteProgram(scene);
+  const GLuint product = use(kPassVs, "void main() { gl_FragColor = gl_FrontLightProduct[0].diffuse; }\n");
+  full_screen();
+  EXPECT_EQ(pixel(2, 2), (Rgba{128, 128, 64, 153}));
+  glDeleteProgram(product);
+}
+
+}  // namespace
+}  // namespace pineda::test
