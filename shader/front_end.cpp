@@ -70,11 +70,11 @@ std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::strin
   const glslang::TIntermediate* tree = sh->getIntermediate();
   const int version = tree->getVersion();
   const bool tree_es = tree->getProfile() == EEsProfile;
-  const bool supported = es ? (tree_es && version == 100)
-                            : (!tree_es && (version == 110 || version == 120));
+  // Desktop GL takes GLSL ES 1.00 too (GL_ARB_ES2_compatibility, as Mesa).
+  const bool supported = (tree_es && version == 100) || (!es && !tree_es && (version == 110 || version == 120));
   if (!supported) {
     log += "ERROR: 0:1: '#version' : version " + std::to_string(version) + (tree_es ? " es" : "") +
-           " is not supported here (" + (es ? "GLSL ES 1.00 only" : "GLSL 1.10 and 1.20 only") + ")\n"
+           " is not supported here (" + (es ? "GLSL ES 1.00 only" : "GLSL 1.10, 1.20 and ES 1.00 only") + ")\n"
            "ERROR: 1 compilation errors.  No code generated.\n\n\n";
     return nullptr;
   }

@@ -103,6 +103,7 @@ std::optional<TextureFormat> texture_format(GLint internal_format) {
     case GL_R3_G3_B2: return rgba(TexBaseFormat::RGB, 3, 3, 2, 0);
     case GL_RGB4: return rgba(TexBaseFormat::RGB, 4, 4, 4, 0);
     case GL_RGB5: return rgba(TexBaseFormat::RGB, 5, 5, 5, 0);
+    case GL_RGB565: return rgba(TexBaseFormat::RGB, 5, 6, 5, 0);  // ARB_ES2_compatibility
     case 3: case GL_RGB: case GL_RGB8: case GL_RGB10: case GL_RGB12: case GL_RGB16:
       return rgba(TexBaseFormat::RGB, 8, 8, 8, 0);
     case GL_RGBA2: case GL_RGBA4: return rgba(TexBaseFormat::RGBA, 4, 4, 4, 4);

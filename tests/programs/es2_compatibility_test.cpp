@@ -142,3 +142,52 @@ TEST_F(Es2CompatibilityTest, DepthOnlyFramebufferIsComplete) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// GLSL ES 1.00 shaders compile and link in a desktop context.
+TEST_F(Es2CompatibilityTest, GlslEs100Shaders) {
+  const GLuint program = link("#version 100\nattribute vec4 position; void main() { gl_Position = position; }\n",
+                              "#version 100\nprecision mediump float;\n"
+                              "void main() { gl_FragColor = vec4(1.0, 0.0, 1.0, 1.0); }\n");
+  glBindAttribLocation(program, 0, "position");
+  glLinkProgram(program);
+  ASSERT_EQ(program_int(program, GL_LINK_STATUS), GL_TRUE) << program_log(program);
+  glUseProgram(program);
+  const GLfloat corners[] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, corners);
+  glEnableVertexAttribArray(0);
+  glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
+  EXPECT_EQ(pixel(1, 1), (Rgba{255, 0, 255, 255}));
+  glDisableVertexAttribArray(0);
+  glUseProgram(0);
+  glDeleteProgram(program);
+  const GLuint es300 = compile(GL_FRAGMENT_SHADER, "#version 300 es\nvoid main() {}\n");
+  EXPECT_EQ(shader_int(es300, GL_COMPILE_STATUS), GL_FALSE);
+  glDeleteShader(es300);
+}
+
+// GL_RGB565 as a texture's internal format: 5, 6 and 5 bits.
+TEST_F(Es2CompatibilityTest, Rgb565Textures) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  const GLubyte texel[4] = {255, 128, 0, 255};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB565, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLint bits[3] = {};
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_RED_SIZE, &bits[0]);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_GREEN_SIZE, &bits[1]);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_BLUE_SIZE, &bits[2]);
+  EXPECT_EQ(bits[0], 5);
+  EXPECT_EQ(bits[1], 6);
+  EXPECT_EQ(bits[2], 5);
+  GLint format = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  EXPECT_EQ(format, GL_RGB565);
+  glDeleteTextures(1, &texture);
+}
+
+}  // namespace
+}  // namespace pineda::test

@@ -45,7 +45,9 @@ TEST(Compile, VersionsAcceptedPerLanguage) {
   EXPECT_EQ(v130.shader, nullptr);
   EXPECT_NE(v130.info_log.find("version 130"), std::string::npos) << v130.info_log;
   EXPECT_EQ(compile(Stage::Vertex, Language::Es100, {std::string("#version 120\n") + body}).shader, nullptr);
-  EXPECT_EQ(compile(Stage::Vertex, Language::Desktop, {std::string("#version 100\n") + body}).shader, nullptr);
+  // Desktop GL takes GLSL ES 1.00 too (GL_ARB_ES2_compatibility), but no later ES version.
+  EXPECT_NE(compile(Stage::Vertex, Language::Desktop, {std::string("#version 100\n") + body}).shader, nullptr);
+  EXPECT_EQ(compile(Stage::Vertex, Language::Desktop, {std::string("#version 300 es\n") + body}).shader, nullptr);
 }
 
 TEST(Compile, DesktopBuiltinsAbsentInEs) {
