@@ -141,11 +141,20 @@ bool parse_link_lower(const std::vector<const CompiledShader*>& vertex,
       if ((unit->getStage() == EShLangVertex) == (stage == &vertex)) trees.push_back(unit->getIntermediate());
     if (trees.size() > 1 && !global_initializers_unique(trees, info_log)) return false;
   }
+  // A desktop context takes GLSL ES 1.00 shaders too, but not mixed with desktop GLSL (as Mesa).
+  const auto is_es = [](const std::unique_ptr<glslang::TShader>& unit) {
+    return unit->getIntermediate()->getProfile() == EEsProfile;
+  };
+  const bool es = !units.empty() && is_es(units.front());
+  for (const auto& unit : units)
+    if (is_es(unit) != es) {
+      info_log = "error: GLSL ES 1.00 and desktop GLSL shaders cannot be linked together\n";
+      return false;
+    }
   const bool linked = program.link(EShMsgDefault);
   info_log = program.getInfoLog();
   if (!linked) return false;
   const bool vs = !vertex.empty(), fs = !fragment.empty();
-  const bool es = (vs ? vertex[0] : fragment[0])->language == Language::Es100;
   if (es && !es_invariance_ok(vs ? program.getIntermediate(EShLangVertex) : nullptr,
                               fs ? program.getIntermediate(EShLangFragment) : nullptr, info_log))
     return false;

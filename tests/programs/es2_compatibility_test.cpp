@@ -163,6 +163,12 @@ TEST_F(Es2CompatibilityTest, GlslEs100Shaders) {
   glDisableVertexAttribArray(0);
   glUseProgram(0);
   glDeleteProgram(program);
+  // Not mixed with desktop GLSL in one program.
+  const GLuint mixed = link("#version 100\nattribute vec4 position; void main() { gl_Position = position; }\n",
+                            "#version 110\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+  EXPECT_EQ(program_int(mixed, GL_LINK_STATUS), GL_FALSE);
+  EXPECT_NE(program_log(mixed).find("cannot be linked together"), std::string::npos) << program_log(mixed);
+  glDeleteProgram(mixed);
   const GLuint es300 = compile(GL_FRAGMENT_SHADER, "#version 300 es\nvoid main() {}\n");
   EXPECT_EQ(shader_int(es300, GL_COMPILE_STATUS), GL_FALSE);
   glDeleteShader(es300);
