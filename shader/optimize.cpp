@@ -170,6 +170,14 @@ bool fold(ir::Code& code, Inst& in) {
   return false;
 }
 
+// Removes the instructions marked dead.
+void erase_dead(ir::Code& code, const std::vector<bool>& dead) {
+  std::vector<Inst> kept;
+  for (size_t pc = 0; pc < code.insts.size(); ++pc)
+    if (!dead[pc]) kept.push_back(code.insts[pc]);
+  code.insts.swap(kept);
+}
+
 bool pass(ir::Code& code) {
   bool changed = false;
   for (Inst& in : code.insts) changed |= fold(code, in);
@@ -271,12 +279,7 @@ bool pass(ir::Code& code) {
     dead[pc] = true;
     changed = true;
   }
-  if (changed) {
-    std::vector<Inst> kept;
-    for (size_t pc = 0; pc < code.insts.size(); ++pc)
-      if (!dead[pc]) kept.push_back(code.insts[pc]);
-    code.insts.swap(kept);
-  }
+  if (changed) erase_dead(code, dead);
   return changed;
 }
 
@@ -315,12 +318,7 @@ bool fuse_multiply_add(ir::Code& code) {
       break;
     }
   }
-  if (changed) {
-    std::vector<Inst> kept;
-    for (size_t pc = 0; pc < code.insts.size(); ++pc)
-      if (!dead[pc]) kept.push_back(code.insts[pc]);
-    code.insts.swap(kept);
-  }
+  if (changed) erase_dead(code, dead);
   return changed;
 }
 

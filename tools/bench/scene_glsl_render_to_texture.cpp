@@ -10,6 +10,7 @@
 
 #include "bench_scene.h"
 #include "demo/shader_program.h"
+#include "demo/texture_target.h"
 
 namespace pineda::bench {
 namespace {
@@ -63,21 +64,8 @@ void main() {
 class GlslRenderToTexture final : public BenchScene {
  public:
   GlslRenderToTexture(int width, int height) : width_(width), height_(height) {
-    glGenTextures(1, &texture_);
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kTargetSize, kTargetSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glGenRenderbuffers(1, &depth_);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kTargetSize, kTargetSize);
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    // Bound to unit 0 from here on: the composite passes sample it.
+    target_ = demo::makeTextureTarget("glsl_rtt", kTargetSize, GL_DEPTH_COMPONENT24);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   }
 
@@ -86,7 +74,7 @@ class GlslRenderToTexture final : public BenchScene {
     static const GLfloat quad[] = {-1, -1, 1, -1, 1, 1, -1, 1};
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, quad);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer);
     glViewport(0, 0, kTargetSize, kTargetSize);
     glClearColor(0.1f, 0.15f, 0.2f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -131,7 +119,8 @@ class GlslRenderToTexture final : public BenchScene {
   }
 
   int width_, height_;
-  GLuint texture_ = 0, depth_ = 0, framebuffer_ = 0, scene_program_ = 0, composite_program_ = 0;
+  demo::TextureTarget target_;
+  GLuint scene_program_ = 0, composite_program_ = 0;
   GLint placement_ = -1, tint_ = -1, shift_ = -1;
 };
 

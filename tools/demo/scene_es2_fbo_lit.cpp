@@ -5,7 +5,6 @@
 #include <GLES2/gl2.h>
 
 #include <cstdint>
-#include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
@@ -14,6 +13,7 @@
 
 #include "scene.h"
 #include "shader_program.h"
+#include "texture_target.h"
 
 namespace pineda::demo {
 namespace {
@@ -125,23 +125,10 @@ class Es2FboLit final : public Scene {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 
     // The render target: a colour texture and a depth renderbuffer.
-    glGenTextures(1, &target_);
-    glBindTexture(GL_TEXTURE_2D, target_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, kTargetSize, kTargetSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glGenRenderbuffers(1, &depth_);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, kTargetSize, kTargetSize);
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target_, 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      std::fprintf(stderr, "es2_fbo_lit: the framebuffer object is not complete\n");
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    const TextureTarget target = makeTextureTarget("es2_fbo_lit", kTargetSize, GL_DEPTH_COMPONENT16);
+    target_ = target.texture;
+    depth_ = target.depth;
+    framebuffer_ = target.framebuffer;
   }
 
   void draw(int frame) override {
