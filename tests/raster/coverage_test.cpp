@@ -57,7 +57,7 @@ std::vector<uint8_t> render_coverage(const int64_t x[3], const int64_t y[3], int
 
 TEST(Coverage, RandomTrianglesMatchReferenceExactly) {
   std::mt19937 rng(1234);
-  for (int iter = 0; iter < 300; ++iter) {
+  for (int iter = 0; iter < 1000; ++iter) {
     // A mix of large, small, thin and off-grid triangles, some reaching past the edges.
     const int span = iter % 3 == 0 ? 300 * 256 : (iter % 3 == 1 ? 40 * 256 : 6 * 256);
     std::uniform_int_distribution<int64_t> base(-20 * 256, 276 * 256), off(-span, span);
