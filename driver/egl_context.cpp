@@ -1,4 +1,5 @@
-// eglBindAPI, eglQueryAPI, eglCreateContext (with EGL_KHR_create_context attributes),
+// eglBindAPI, eglQueryAPI, eglCreateContext (with EGL_KHR_create_context and
+// EGL_EXT_create_context_robustness attributes),
 // eglDestroyContext, eglQueryContext.
 #include "driver/egl_config.h"
 #include "driver/egl_registry.h"
@@ -18,7 +19,10 @@ struct Request {
 };
 
 // Returns EGL_SUCCESS or the error for the attribute list. The OpenGL-only attributes are
-// errors for OpenGL ES (EGL 1.5, 3.7.1.1).
+// errors for OpenGL ES (EGL 1.5, 3.7.1.1), and so are, as in Mesa, the forward-compatible and
+// robust access bits of EGL_CONTEXT_FLAGS_KHR (EGL_KHR_create_context, issue 10: ES asks for
+// robust access through EGL_EXT_create_context_robustness); that extension's reset strategy
+// is an error for OpenGL.
 EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
   constexpr EGLint kKnownFlags = EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR |
                                  EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE_BIT_KHR |
@@ -30,6 +34,8 @@ EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
       case EGL_CONTEXT_MINOR_VERSION: r->minor = value; break;
       case EGL_CONTEXT_FLAGS_KHR:
         if (value & ~kKnownFlags) return EGL_BAD_ATTRIBUTE;
+        if (gles && (value & (EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE_BIT_KHR | EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR)))
+          return EGL_BAD_ATTRIBUTE;
         r->flags = value;
         if (value & EGL_CONTEXT_OPENGL_ROBUST_ACCESS_BIT_KHR) r->robust = true;
         if (value & EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR) r->debug = true;
@@ -48,10 +54,15 @@ EGLint parse_attributes(const EGLint* attribs, bool gles, Request* r) {
         if (a[0] == EGL_CONTEXT_OPENGL_DEBUG) r->debug = value == EGL_TRUE;
         break;
       case EGL_CONTEXT_OPENGL_ROBUST_ACCESS:
+      case EGL_CONTEXT_OPENGL_ROBUST_ACCESS_EXT:
         if (value != EGL_TRUE && value != EGL_FALSE) return EGL_BAD_ATTRIBUTE;
         r->robust = value == EGL_TRUE;
         break;
+      case EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY_EXT:
+        if (!gles) return EGL_BAD_ATTRIBUTE;
+        [[fallthrough]];
       case EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY:
+        // The two names share their values (EGL_NO_RESET_NOTIFICATION_EXT = EGL_NO_RESET_NOTIFICATION).
         if (value != EGL_NO_RESET_NOTIFICATION && value != EGL_LOSE_CONTEXT_ON_RESET)
           return EGL_BAD_ATTRIBUTE;
         r->reset_strategy = value;
@@ -84,11 +95,13 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   const Config* c = find_config(*display, config);
   if (!c) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
   std::shared_ptr<pineda::ShareGroup> share_group;
+  bool shared_lose_context_on_reset = false;
   if (share_context != EGL_NO_CONTEXT) {
     const std::shared_ptr<ContextObject> shared = display->find_context(share_context);
     // Objects are shared within one client API only (Mesa: EGL_BAD_CONTEXT otherwise).
     if (!shared || shared->api != api) return fail(EGL_BAD_CONTEXT, EGL_NO_CONTEXT);
     share_group = shared->gl->share_group();
+    shared_lose_context_on_reset = shared->gl->attribs().lose_context_on_reset;
   }
   Request request;
   if (EGLint error = parse_attributes(attrib_list, gles, &request); error != EGL_SUCCESS)
@@ -99,8 +112,12 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   // A config that cannot render the API: EGL 1.5, 3.7.1.
   const EGLint needed = !gles ? EGL_OPENGL_BIT : request.major == 1 ? EGL_OPENGL_ES_BIT : EGL_OPENGL_ES2_BIT;
   if (!(c->renderable_type & needed)) return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
-  // No robust buffer access, no reset notification.
-  if (request.robust || request.reset_strategy != EGL_NO_RESET_NOTIFICATION)
+  // Robustness is GL_ARB_robustness / GL_EXT_robustness, which OpenGL ES 1.1 lacks
+  // (EGL_EXT_create_context_robustness: EGL_BAD_CONFIG).
+  const bool lose_context_on_reset = request.reset_strategy == EGL_LOSE_CONTEXT_ON_RESET;
+  if (gles && request.major == 1 && (request.robust || lose_context_on_reset))
+    return fail(EGL_BAD_CONFIG, EGL_NO_CONTEXT);
+  if (share_group && shared_lose_context_on_reset != lose_context_on_reset)
     return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
 
   auto object = std::make_shared<ContextObject>();
@@ -116,7 +133,8 @@ EGLContext CreateContext(EGLDisplay dpy, EGLConfig config, EGLContext share_cont
   }
   try {
     object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles, .debug = request.debug},
+        ContextAttribs{.major = object->major, .minor = object->minor, .gles = gles, .debug = request.debug,
+                       .robust_access = request.robust, .lose_context_on_reset = lose_context_on_reset},
         std::move(share_group));
   } catch (const std::bad_alloc&) {
     return fail(EGL_BAD_ALLOC, EGL_NO_CONTEXT);
@@ -151,6 +169,9 @@ EGLBoolean QueryContext(EGLDisplay dpy, EGLContext ctx, EGLint attribute, EGLint
     case EGL_CONFIG_ID: result = object->config->id; break;
     case EGL_CONTEXT_CLIENT_TYPE: result = static_cast<EGLint>(object->api); break;
     case EGL_CONTEXT_CLIENT_VERSION: result = object->major; break;
+    case EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY_EXT:  // the extension's revision 4
+      result = object->gl->attribs().lose_context_on_reset ? EGL_LOSE_CONTEXT_ON_RESET : EGL_NO_RESET_NOTIFICATION;
+      break;
     case EGL_RENDER_BUFFER:
       // Pbuffers render to their back buffer; an unbound context reports EGL_NONE.
       result = object->bound_to_surface ? EGL_BACK_BUFFER : EGL_NONE;

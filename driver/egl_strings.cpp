@@ -11,7 +11,8 @@ constexpr const char* kClientExtensions =
     "EGL_EXT_client_extensions EGL_EXT_platform_base EGL_EXT_platform_x11 "
     "EGL_KHR_client_get_all_proc_addresses EGL_KHR_platform_x11 EGL_MESA_platform_surfaceless";
 constexpr const char* kDisplayExtensions =
-    "EGL_KHR_create_context EGL_KHR_get_all_proc_addresses EGL_KHR_surfaceless_context";
+    "EGL_EXT_create_context_robustness EGL_KHR_create_context EGL_KHR_get_all_proc_addresses "
+    "EGL_KHR_surfaceless_context";
 
 }  // namespace
 

@@ -35,9 +35,10 @@ struct Request {
   int flags = 0;
   int profile = GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
   int render_type = GLX_RGBA_TYPE;
+  int reset_strategy = GLX_NO_RESET_NOTIFICATION_ARB;
 };
 
-// GLX_ARB_create_context(_profile)'s attribute rules.
+// GLX_ARB_create_context(_profile, _robustness)'s attribute rules.
 std::optional<Failure> parse(const int* attribs, Request* r) {
   bool profile_given = false;
   for (const int* a = attribs; a && a[0] != None; a += 2) {
@@ -47,11 +48,16 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
       case GLX_CONTEXT_FLAGS_ARB: r->flags = a[1]; break;
       case GLX_CONTEXT_PROFILE_MASK_ARB: r->profile = a[1]; profile_given = true; break;
       case GLX_RENDER_TYPE: r->render_type = a[1]; break;
+      case GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB: r->reset_strategy = a[1]; break;
       default: return x_failure(BadValue);
     }
   }
-  if (r->flags & ~(GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB))
+  if (r->flags & ~(GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB |
+                   GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB))
     return x_failure(BadValue);
+  // A strategy GLX does not define (piglit's glx-create-context-invalid-reset-strategy).
+  if (r->reset_strategy != GLX_NO_RESET_NOTIFICATION_ARB && r->reset_strategy != GLX_LOSE_CONTEXT_ON_RESET_ARB)
+    return x_failure(BadMatch);
   if (r->render_type != GLX_RGBA_TYPE) return x_failure(BadValue);
   if (!driver::is_gl_version(r->major, r->minor)) return x_failure(BadMatch);
   // Profiles exist from GL 3.2; before it the mask is ignored, but must still be valid.
@@ -65,14 +71,28 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
   return std::nullopt;
 }
 
+// The pineda::Context of a request; the version is always the highest (GL may return a later
+// version compatible with the one asked for).
+ContextAttribs context_attribs(const Request& r) {
+  return ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor,
+                        .debug = (r.flags & GLX_CONTEXT_DEBUG_BIT_ARB) != 0,
+                        .robust_access = (r.flags & GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB) != 0,
+                        .lose_context_on_reset = r.reset_strategy == GLX_LOSE_CONTEXT_ON_RESET_ARB};
+}
+
 // Caller holds the registry lock.
 GLXContext create(DisplayState& d, const Config* config, GLXContext share, bool direct,
-                  std::optional<Failure>* failure, bool debug = false) {
+                  std::optional<Failure>* failure, const ContextAttribs& attribs = context_attribs({})) {
   std::shared_ptr<pineda::ShareGroup> share_group;
   if (share) {
     const std::shared_ptr<ContextObject> shared = d.find_context(share);
     if (!shared) {
       *failure = glx_failure(GlxError::GlxContext);
+      return nullptr;
+    }
+    // GLX_ARB_create_context_robustness: shared contexts have the same reset strategy.
+    if (shared->gl->attribs().lose_context_on_reset != attribs.lose_context_on_reset) {
+      *failure = x_failure(BadMatch);
       return nullptr;
     }
     share_group = shared->gl->share_group();
@@ -82,10 +102,7 @@ GLXContext create(DisplayState& d, const Config* config, GLXContext share, bool 
   object->config = config;
   object->direct = direct;
   try {
-    // GL may return a later version compatible with the one asked for: the highest one.
-    object->gl = std::make_unique<pineda::Context>(
-        ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor, .debug = debug},
-        std::move(share_group));
+    object->gl = std::make_unique<pineda::Context>(attribs, std::move(share_group));
   } catch (const std::bad_alloc&) {
     *failure = x_failure(BadAlloc);
     return nullptr;
@@ -154,7 +171,7 @@ PINEDA_GLX_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfi
     }
     Request request;
     if ((*f = parse(attribs, &request))) return nullptr;
-    return create(d, config, share, direct, f, (request.flags & GLX_CONTEXT_DEBUG_BIT_ARB) != 0);
+    return create(d, config, share, direct, f, context_attribs(request));
   });
 }
 

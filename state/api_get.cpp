@@ -94,7 +94,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_SCISSOR_BOX: out = ints({double(s.scissor.x), double(s.scissor.y), double(s.scissor.width), double(s.scissor.height)}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
-    case GL_RESET_NOTIFICATION_STRATEGY_ARB: out = ints({GL_NO_RESET_NOTIFICATION_ARB}); return true;
+    case GL_RESET_NOTIFICATION_STRATEGY_ARB:
+      out = ints({double(ctx.attribs().lose_context_on_reset ? GL_LOSE_CONTEXT_ON_RESET_ARB : GL_NO_RESET_NOTIFICATION_ARB)});
+      return true;
+    case GL_CONTEXT_ROBUST_ACCESS: out = bools({double(ctx.attribs().robust_access)}); return true;
     case GL_MAX_3D_TEXTURE_SIZE: out = ints({kMax3DTextureSize}); return true;
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out = ints({kMaxCubeMapTextureSize}); return true;
     case GL_MAX_MODELVIEW_STACK_DEPTH: out = ints({kMaxModelviewStackDepth}); return true;
@@ -318,7 +321,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_EXT_packed_depth_stencil "
       "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 "
       "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object "
-      "GL_EXT_texture_sRGB GL_ARB_robustness GL_ARB_ES2_compatibility ";  // a trailing space, as Mesa (programs split on it)
+      "GL_EXT_texture_sRGB GL_ARB_robustness GL_KHR_robustness GL_ARB_ES2_compatibility ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());
@@ -343,7 +346,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
 
 GLenum GetError(Context& ctx) { return ctx.take_error(); }
 
-// GL_ARB_robustness: a software context is never lost.
+// GL_ARB_robustness / GL_KHR_robustness / GL_EXT_robustness: a software context is never lost.
 GLenum GetGraphicsResetStatusARB(Context&) { return GL_NO_ERROR; }
 
 void Flush(Context& ctx) { ctx.finish(); }

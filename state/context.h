@@ -45,6 +45,10 @@ struct ContextAttribs {
   int major = 1, minor = 1;
   bool gles = false;
   bool debug = false;  // a debug context (GLX_CONTEXT_DEBUG_BIT_ARB, EGL_CONTEXT_OPENGL_DEBUG)
+  // What EGL/GLX asked for: robust buffer access (which every Pineda context has: no access
+  // leaves its object) and the reset notification strategy (no context is ever reset).
+  bool robust_access = false;
+  bool lose_context_on_reset = false;
   int threads = 0;  // 0: PINEDA_THREADS or one per core
 };
 

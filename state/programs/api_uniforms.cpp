@@ -235,4 +235,11 @@ void GetnUniformivARB(Context& ctx, GLuint program, GLint location, GLsizei buf_
   get_uniform(ctx, program, location, params, uniform_as_int, client_buffer_bytes(buf_size));
 }
 
+// GL_KHR_robustness's: Pineda has no unsigned uniforms; the others convert as to int, then
+// keep their bits (as Mesa).
+void GetnUniformuiv(Context& ctx, GLuint program, GLint location, GLsizei buf_size, GLuint* params) {
+  get_uniform(ctx, program, location, params, [](float v) { return static_cast<GLuint>(uniform_as_int(v)); },
+              client_buffer_bytes(buf_size));
+}
+
 }  // namespace pineda::gl

@@ -96,12 +96,6 @@ TEST_F(EglContext, HigherOrInvalidVersionsAreBadMatch) {
   }
 }
 
-TEST_F(EglContext, RobustAccessIsBadMatch) {
-  const EGLint attribs[] = {EGL_CONTEXT_OPENGL_ROBUST_ACCESS, EGL_TRUE, EGL_NONE};
-  EXPECT_EQ(context(config(), attribs), EGL_NO_CONTEXT);
-  EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
-}
-
 TEST_F(EglContext, BadAttributes) {
   EGLConfig cfg = config();
   const EGLint unknown[] = {0x7777, 1, EGL_NONE};

@@ -1,7 +1,8 @@
-// GL_ARB_robustness: the context is never reset, and every glGetn*/glReadn* getter writes
+// GL_ARB_robustness (and GL_KHR_robustness's desktop names): the context is never reset, and every glGetn*/glReadn* getter writes
 // exactly what its plain form writes when bufSize holds it, and nothing (GL_INVALID_OPERATION)
 // when it does not; with a pixel pack buffer bound, bufSize does not limit the pixels.
 #define GL_GLEXT_PROTOTYPES
+#include <EGL/egl.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -9,25 +10,30 @@
 #include <string>
 #include <vector>
 
+#include "tests/e2e/support/bounded_write.h"
 #include "tests/e2e/support/gl_test.h"
 
 namespace pineda::test {
 namespace {
 
-constexpr uint8_t kGuard = 0xCD;
-
 class ArbRobustnessTest : public GlTest {
  protected:
   SurfaceSpec spec() const override { return {.width = 8, .height = 4}; }
 
-  // Runs `call` with a buffer of `size` bytes plus guard bytes; the bytes it wrote.
-  template <typename Call>
-  std::vector<uint8_t> written(size_t size, Call call) {
-    std::vector<uint8_t> buffer(size + 16, kGuard);
-    call(buffer.data());
-    for (size_t i = size; i < buffer.size(); ++i) EXPECT_EQ(buffer[i], kGuard) << "byte " << i << " past bufSize";
-    buffer.resize(size);
-    return buffer;
+  // A linked program of one vertex shader, in use.
+  GLuint vertex_program(const char* source) {
+    GLuint shader = glCreateShader(GL_VERTEX_SHADER);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLuint program = glCreateProgram();
+    glAttachShader(program, shader);
+    glLinkProgram(program);
+    glDeleteShader(shader);
+    GLint linked = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    EXPECT_TRUE(linked);
+    glUseProgram(program);
+    return program;
   }
 
   // A getter given exactly the size it needs writes what the plain call writes; one byte less
@@ -131,17 +137,7 @@ TEST_F(ArbRobustnessTest, GetnMaps) {
 }
 
 TEST_F(ArbRobustnessTest, GetnUniforms) {
-  const char* vs = "uniform vec3 v; void main() { gl_Position = vec4(v, 1.0); }";
-  GLuint shader = glCreateShader(GL_VERTEX_SHADER);
-  glShaderSource(shader, 1, &vs, nullptr);
-  glCompileShader(shader);
-  GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glLinkProgram(program);
-  GLint linked = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  ASSERT_TRUE(linked);
-  glUseProgram(program);
+  const GLuint program = vertex_program("uniform vec3 v; void main() { gl_Position = vec4(v, 1.0); }");
   const GLint location = glGetUniformLocation(program, "v");
   glUniform3f(location, 1.5f, -2.0f, 7.0f);
   expect_bounded(3 * sizeof(GLfloat), [&](void* p) { glGetUniformfv(program, location, static_cast<GLfloat*>(p)); },
@@ -150,7 +146,51 @@ TEST_F(ArbRobustnessTest, GetnUniforms) {
                  [&](GLsizei n, void* p) { glGetnUniformivARB(program, location, n, static_cast<GLint*>(p)); });
   glUseProgram(0);
   glDeleteProgram(program);
-  glDeleteShader(shader);
+}
+
+// GL_KHR_robustness on desktop GL: GL 4.5's unsuffixed names run the same getters.
+TEST_F(ArbRobustnessTest, KhrRobustnessNames) {
+  const std::string extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  EXPECT_NE(extensions.find("GL_KHR_robustness "), std::string::npos);
+  EXPECT_EQ(glGetGraphicsResetStatus(), GLenum(GL_NO_ERROR));
+  GLboolean robust = GL_TRUE;
+  glGetBooleanv(GL_CONTEXT_ROBUST_ACCESS, &robust);  // the fixture asks for no robust access
+  EXPECT_EQ(robust, GL_FALSE);
+  GLint strategy = 0;
+  glGetIntegerv(GL_RESET_NOTIFICATION_STRATEGY, &strategy);
+  EXPECT_EQ(strategy, GL_NO_RESET_NOTIFICATION);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+  clear_to(0, 1, 0, 1);
+  expect_bounded(2 * 2 * 4, [](void* p) { glReadPixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, p); },
+                 [](GLsizei n, void* p) { glReadnPixels(0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, n, p); });
+
+  const GLuint program = vertex_program("uniform vec2 v; void main() { gl_Position = vec4(v, 0.0, 1.0); }");
+  const GLint location = glGetUniformLocation(program, "v");
+  glUniform2f(location, -1.0f, 3.25f);
+  expect_bounded(2 * sizeof(GLfloat), [&](void* p) { glGetUniformfv(program, location, static_cast<GLfloat*>(p)); },
+                 [&](GLsizei n, void* p) { glGetnUniformfv(program, location, n, static_cast<GLfloat*>(p)); });
+  expect_bounded(2 * sizeof(GLint), [&](void* p) { glGetUniformiv(program, location, static_cast<GLint*>(p)); },
+                 [&](GLsizei n, void* p) { glGetnUniformiv(program, location, n, static_cast<GLint*>(p)); });
+  // No unsigned uniforms in GL 2.1: a float converts as to int, and keeps its bits.
+  GLuint u[2] = {};
+  glGetnUniformuiv(program, location, sizeof(u), u);
+  EXPECT_EQ(u[0], GLuint(-1));
+  EXPECT_EQ(u[1], 3u);
+  expect_bounded(2 * sizeof(GLuint), [&](void* p) { glGetnUniformuiv(program, location, sizeof(u), static_cast<GLuint*>(p)); },
+                 [&](GLsizei n, void* p) { glGetnUniformuiv(program, location, n, static_cast<GLuint*>(p)); });
+  glUseProgram(0);
+  glDeleteProgram(program);
+}
+
+// The OpenGL ES names (_KHR, _EXT) are not desktop GL commands.
+TEST_F(ArbRobustnessTest, EsNamesAreRefused) {
+  uint8_t pixel[4] = {kGuard, kGuard, kGuard, kGuard};
+  auto read = reinterpret_cast<PFNGLREADNPIXELSPROC>(eglGetProcAddress("glReadnPixelsKHR"));
+  ASSERT_NE(read, nullptr);
+  read(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, 4, pixel);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(pixel[0], kGuard);
 }
 
 TEST_F(ArbRobustnessTest, GetnCompressedTexImageOfAnUncompressedLevel) {

@@ -2,6 +2,7 @@
 // and make-current errors (bad context, context current in another thread, bad drawables).
 #include "glx_fixture.h"
 
+#include <string>
 #include <thread>
 #include <tuple>
 
@@ -62,6 +63,54 @@ TEST_F(GlxContextTest, CreateContextAttribsVersions) {
   errors = take_errors();
   ASSERT_EQ(errors.size(), 1u);
   EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadFBConfig);
+}
+
+// GLX_ARB_create_context_robustness: the context reports what was asked (Pineda's contexts
+// are robust and never reset anyway); shared contexts have one reset strategy.
+TEST_F(GlxContextTest, CreateContextRobustness) {
+  const std::string extensions = glXQueryExtensionsString(dpy, screen);
+  EXPECT_NE((extensions + " ").find("GLX_ARB_create_context_robustness "), std::string::npos);
+  GLXFBConfig config = rgba8(true, false);
+  Window w = window(config, 8, 8);
+  const std::vector<int> lose = {GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB, GLX_LOSE_CONTEXT_ON_RESET_ARB};
+  for (auto [attribs, robust, strategy] :
+       {std::tuple{std::vector<int>{}, GL_FALSE, GL_NO_RESET_NOTIFICATION_ARB},
+        {std::vector<int>{GLX_CONTEXT_FLAGS_ARB, GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB}, GL_TRUE, GL_NO_RESET_NOTIFICATION_ARB},
+        {lose, GL_FALSE, GL_LOSE_CONTEXT_ON_RESET_ARB},
+        {std::vector<int>{GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB, GLX_NO_RESET_NOTIFICATION_ARB}, GL_FALSE,
+         GL_NO_RESET_NOTIFICATION_ARB}}) {
+    GLXContext ctx = create_attribs(dpy, config, attribs);
+    ASSERT_NE(ctx, nullptr);
+    ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+    GLint robust_access = -1, reset_strategy = -1;
+    glGetIntegerv(GL_CONTEXT_ROBUST_ACCESS, &robust_access);
+    glGetIntegerv(GL_RESET_NOTIFICATION_STRATEGY_ARB, &reset_strategy);
+    EXPECT_EQ(robust_access, robust);
+    EXPECT_EQ(reset_strategy, strategy);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+    glXDestroyContext(dpy, ctx);
+  }
+  EXPECT_TRUE(take_errors().empty());
+
+  EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_RESET_NOTIFICATION_STRATEGY_ARB, 0x1234}), nullptr);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadMatch);
+
+  std::vector<int> with_none = lose;
+  with_none.push_back(None);
+  GLXContext first = glXCreateContextAttribsARB(dpy, config, nullptr, True, with_none.data());
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(glXCreateContextAttribsARB(dpy, config, first, True, std::vector<int>{None}.data()), nullptr);
+  errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, BadMatch);
+  GLXContext second = glXCreateContextAttribsARB(dpy, config, first, True, with_none.data());
+  EXPECT_NE(second, nullptr);
+  EXPECT_TRUE(take_errors().empty());
+  if (second) glXDestroyContext(dpy, second);
+  glXDestroyContext(dpy, first);
 }
 
 TEST_F(GlxContextTest, QueryContext) {
