@@ -1,5 +1,7 @@
 // The IR and its optimizer, seen through dump_ir().
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <thread>
 
@@ -143,6 +145,24 @@ TEST(Ir, CommonSubexpressionsComputedOnce) {
   for (int l = 0; l < kLanes; ++l) {
     EXPECT_EQ(run.block.color[0][0][l], 3.0f * (l / 8.0f)) << l;
     EXPECT_EQ(run.block.color[0][2][l], l / 8.0f > 0.5f ? 3.0f * (l / 8.0f) : 3.0f) << l;
+  }
+}
+
+// A uniform's value reaches every lane bit for bit, whether it is read once for the block (at
+// the top level) or in every lane (in a branch): -0.0 stays negative (1 / u is -inf).
+TEST(Ir, UniformNegativeZeroKeepsItsSign) {
+  auto p = link_ok("", "uniform float u;\nuniform float w;\nvarying float v;\n"
+                       "void main() { gl_FragColor = vec4(1.0 / u, u, 0.0, 0.0);\n"
+                       "  if (v < 2.0) { gl_FragColor.z = 1.0 / w; gl_FragColor.w = w; } }\n");
+  ASSERT_TRUE(p);
+  FragmentRun run(*p);
+  run.set_uniform(*p, "u", {-0.0f});
+  run.set_uniform(*p, "w", {-0.0f});
+  run.set_varying(*p, "v", 0, [](int l) { return l / 8.0f; });
+  run.run(*p);
+  for (int l = 0; l < kLanes; ++l) {
+    for (int c : {0, 2}) EXPECT_EQ(run.block.color[0][c][l], -std::numeric_limits<float>::infinity()) << c << " " << l;
+    for (int c : {1, 3}) EXPECT_TRUE(std::signbit(run.block.color[0][c][l])) << c << " " << l;
   }
 }
 
