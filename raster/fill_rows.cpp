@@ -6,8 +6,10 @@
 #include <cstring>
 #include <utility>
 
+#include "raster/mip_selection.h"
 #include "raster/quad_ops.h"
 #include "raster/raster_limits.h"
+#include "raster/sampler.h"
 
 // The helpers pass 32-byte vectors but are always inlined into the routines of one copy.
 #pragma GCC diagnostic ignored "-Wpsabi"

@@ -35,6 +35,7 @@ struct Config {
   bool textured = false;  // unit 0: MODULATE, bilinear
   TexWrap wrap_s = TexWrap::Repeat, wrap_t = TexWrap::ClampToEdge;
   bool mipmapped = false;
+  TexFilter mip_filter = TexFilter::LinearMipmapLinear;  // the minification filter when mipmapped
   TexBaseFormat texture_format = TexBaseFormat::RGBA;
 };
 
@@ -112,7 +113,7 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
   if (c.textured) {
     TextureUnit& unit = s.texture_units[0];
     unit.image = random_texture(c);
-    unit.sampler.min_filter = c.mipmapped ? TexFilter::LinearMipmapLinear : TexFilter::Linear;
+    unit.sampler.min_filter = c.mipmapped ? c.mip_filter : TexFilter::Linear;
     unit.sampler.mag_filter = TexFilter::Linear;
     unit.sampler.wrap_s = c.wrap_s;
     unit.sampler.wrap_t = c.wrap_t;
@@ -240,23 +241,32 @@ TEST(FillRows, StencilMatchesTheGenericRoutine) {
   }
 }
 
-TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
-  Config c;
-  c.textured = true;
-  expect_same_as_generic(c, "textured");
-  // Without mipmaps the routines sample rows of 8 (DrawRecord::sample_rows): every wrap pair.
+// expect_same_as_generic for each pair of the wrap modes the fill routines sample in lanes.
+void expect_same_as_generic_each_wrap(const Config& c, const std::string& name) {
   for (const TexWrap s : {TexWrap::Repeat, TexWrap::ClampToEdge})
     for (const TexWrap t : {TexWrap::Repeat, TexWrap::ClampToEdge}) {
       Config w = c;
       w.wrap_s = s;
       w.wrap_t = t;
-      w.perspective = true;
-      expect_same_as_generic(w, "textured rows, wrap " + std::to_string(static_cast<int>(s)) + "/" +
-                                    std::to_string(static_cast<int>(t)));
+      expect_same_as_generic(w, name + ", wrap " + std::to_string(static_cast<int>(s)) + "/" + std::to_string(static_cast<int>(t)));
     }
-  c.mipmapped = true;
+}
+
+TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
+  Config c;
+  c.textured = true;
+  expect_same_as_generic(c, "textured");
   c.perspective = true;
+  // Without mipmaps the routines sample rows of 8 (DrawRecord::sample_rows).
+  expect_same_as_generic_each_wrap(c, "textured rows");
+  // Mipmapped: rows of 8 where a group's quads read the same levels, quads elsewhere.
+  c.mipmapped = true;
   expect_same_as_generic(c, "textured, mipmapped, perspective");
+  for (const TexFilter min : {TexFilter::LinearMipmapLinear, TexFilter::LinearMipmapNearest}) {
+    Config m = c;
+    m.mip_filter = min;
+    expect_same_as_generic_each_wrap(m, "mipmapped, filter " + std::to_string(static_cast<int>(min)));
+  }
   c.texture_format = TexBaseFormat::RGB;
   c.blend = true;
   c.depth = false;
