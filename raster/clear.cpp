@@ -21,15 +21,17 @@ bool make_clear_record(const ClearState& clear, const Framebuffer& fb, ClearReco
     out.rect = intersect(out.rect, sc);
   }
   if (out.rect.empty()) return false;
-  const bool any_color_write = clear.color_write[0] || clear.color_write[1] || clear.color_write[2] || clear.color_write[3];
-  bool any_color_buffer = false;
-  for (int i = 0; i < fb.color_targets; ++i) any_color_buffer |= fb.target_color(i).base != nullptr;
-  out.color = clear.color && any_color_buffer && any_color_write;
+  bool any_color_write = false;
+  for (int i = 0; i < fb.color_targets; ++i) {
+    const std::array<bool, 4>& write = clear.color_write_of(fb.color_index + i);
+    out.color_write[static_cast<size_t>(i)] = write;
+    if (fb.target_color(i).base) any_color_write |= write[0] || write[1] || write[2] || write[3];
+  }
+  out.color = clear.color && any_color_write;
   out.depth = clear.depth && clear.depth_write && fb.depth.base && fb.depth.bits > 0;
   out.stencil = clear.stencil && fb.stencil.base && fb.stencil.bits > 0 && clear.stencil_write_mask != 0;
   for (int c = 0; c < 4; ++c) {
     out.rgba[c] = to_unorm8(clear.color_value[c]);
-    out.color_write[c] = clear.color_write[c];
   }
   if (out.depth) {
     const double max = fb.depth.bits >= 32 ? 4294967295.0 : static_cast<double>((uint64_t{1} << fb.depth.bits) - 1);
@@ -73,10 +75,10 @@ void fill_rows32_masked(uint8_t* base, ptrdiff_t stride_bytes, const PixelRect& 
 }
 
 // The clear colour into one colour buffer, in its byte order and format.
-void clear_color(const ClearRecord& clear, const ColorBuffer& cb, const PixelRect& r) {
+void clear_color(const ClearRecord& clear, const std::array<bool, 4>& mask, const ColorBuffer& cb, const PixelRect& r) {
   const bool bgra = cb.format == ColorFormat::BGRA8;
   uint8_t bytes[4] = {clear.rgba[0], clear.rgba[1], clear.rgba[2], clear.rgba[3]};
-  bool write[4] = {clear.color_write[0], clear.color_write[1], clear.color_write[2], clear.color_write[3]};
+  bool write[4] = {mask[0], mask[1], mask[2], mask[3]};
   if (cb.reduction.active) reduce_bytes(cb.reduction, bytes);
   if (bgra) {
     std::swap(bytes[0], bytes[2]);
@@ -87,6 +89,7 @@ void clear_color(const ClearRecord& clear, const ColorBuffer& cb, const PixelRec
     value |= uint32_t{bytes[c]} << (8 * c);
     if (write[c]) write_bits |= 0xffu << (8 * c);
   }
+  if (write_bits == 0) return;
   if (write_bits == 0xffffffffu) fill_rows32(cb.base, cb.stride, r, value);
   else fill_rows32_masked(cb.base, cb.stride, r, value, write_bits);
 }
@@ -98,7 +101,7 @@ void apply_clear(const ClearRecord& clear, const Framebuffer& fb, const PixelRec
   if (r.empty()) return;
   if (clear.color)
     for (int i = 0; i < fb.color_targets; ++i)  // every draw buffer
-      if (fb.target_color(i).base) clear_color(clear, fb.target_color(i), r);
+      if (fb.target_color(i).base) clear_color(clear, clear.color_write[static_cast<size_t>(i)], fb.target_color(i), r);
   if (clear.depth) {
     const ptrdiff_t stride_bytes = fb.depth.stride * static_cast<ptrdiff_t>(sizeof(uint32_t));
     fill_rows32(reinterpret_cast<uint8_t*>(fb.depth.base), stride_bytes, r, clear.depth_value);

@@ -1,5 +1,6 @@
 // A recorded glClear, applied tile by tile when the scene executes.
 #pragma once
+#include <array>
 #include <cstdint>
 
 #include "raster/draw_state.h"
@@ -12,7 +13,8 @@ struct ClearRecord {
   PixelRect rect;  // framebuffer ∩ scissor
   bool color = false, depth = false, stencil = false;
   uint8_t rgba[4] = {0, 0, 0, 0};
-  bool color_write[4] = {true, true, true, true};
+  // Per colour buffer of the framebuffer (Framebuffer::target_color(i)): its draw buffer's mask.
+  std::array<std::array<bool, 4>, kMaxColorTargets> color_write{};
   uint32_t depth_value = 0;
   uint8_t stencil_value = 0;
   uint8_t stencil_write_mask = 0xff;

@@ -29,9 +29,11 @@ uint8_t stencil_ref(int ref) { return static_cast<uint8_t>(std::clamp(ref, 0, 25
 
 }  // namespace
 
-DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path) {
+DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, SimdPath path) {
   DrawRecord d;
-  d.state = state;
+  d.state = draw_state;
+  d.state.use_target_write(fb.color_index);
+  const DrawState& state = d.state;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     TextureUnit& unit = d.state.texture_units[u];
     if (!texture_usable(unit.image.get())) {
@@ -99,8 +101,8 @@ DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdP
     d.routine = shade_program_quads;
   }
   if (fb.color_targets > 1) {
+    prepare_target_draws(d, fb, path);
     if (state.shader) d.routine = shade_program_target_quads;
-    else prepare_target_draws(d, fb, path);
   }
   return d;
 }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "raster/framebuffer.h"
 #include "raster/point_size.h"
 #include "raster/sample_counter.h"
 #include "raster/texture.h"
@@ -124,6 +125,13 @@ struct DrawState {
   LogicOp logic_op = LogicOp::Copy;
   bool dither = true;  // accepted; Pineda never dithers (exact output)
   std::array<bool, 4> color_write = {true, true, true, true};
+  // EXT_draw_buffers2: the blend enable and colour write mask of draw buffers 1.. (`blend` and
+  // `color_write` above are draw buffer 0's).
+  struct TargetWrite {
+    bool blend = false;
+    std::array<bool, 4> color_write = {true, true, true, true};
+  };
+  std::array<TargetWrite, kMaxColorTargets - 1> more_targets{};
   MultisampleState multisample;
 
   // Texturing; a unit is enabled when its image is non-null. Fixed function reads the first
@@ -140,6 +148,14 @@ struct DrawState {
   // A draw with a fragment and vertex program (null: fixed function). The vertex stage ran in
   // state/; raster/ interpolates its varyings and runs the fragment shader.
   std::shared_ptr<const ShaderDraw> shader;
+
+  // Draw buffer i's blend enable and colour write mask become `blend` and `color_write`, the
+  // ones a draw's write stage reads.
+  void use_target_write(int i) {
+    if (i <= 0 || i >= kMaxColorTargets) return;
+    blend = more_targets[static_cast<size_t>(i - 1)].blend;
+    color_write = more_targets[static_cast<size_t>(i - 1)].color_write;
+  }
 };
 
 // What glClear needs.
@@ -148,11 +164,21 @@ struct ClearState {
   float color_value[4] = {0, 0, 0, 0};
   double depth_value = 1.0;
   int stencil_value = 0;
-  std::array<bool, 4> color_write = {true, true, true, true};
+  std::array<bool, 4> color_write = {true, true, true, true};  // draw buffer 0's
+  std::array<std::array<bool, 4>, kMaxColorTargets - 1> more_color_write = [] {  // draw buffers 1..
+    std::array<std::array<bool, 4>, kMaxColorTargets - 1> all;
+    all.fill({true, true, true, true});
+    return all;
+  }();
   uint8_t stencil_write_mask = 0xff;
   bool depth_write = true;
   bool scissor_test = false;
   Rect scissor;
+
+  const std::array<bool, 4>& color_write_of(int draw_buffer) const {
+    if (draw_buffer <= 0 || draw_buffer >= kMaxColorTargets) return color_write;
+    return more_color_write[static_cast<size_t>(draw_buffer - 1)];
+  }
 };
 
 }  // namespace pineda::raster

@@ -10,8 +10,9 @@
 
 namespace pineda::raster {
 
-// Gives `draw` a record per draw buffer of `fb` (fb.color_targets > 1) and the routine that
-// runs them.
+// Gives `draw` a record per draw buffer of `fb` (fb.color_targets > 1), each with its draw
+// buffer's blend enable and colour mask (EXT_draw_buffers2), and the fixed-function routine
+// that runs them (shader draws write the records' buffers from one run instead).
 void prepare_target_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path);
 
 }  // namespace pineda::raster

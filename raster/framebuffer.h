@@ -67,6 +67,9 @@ struct Framebuffer {
   StencilBuffer stencil;
   int color_targets = 1;
   std::array<ColorBuffer, kMaxColorTargets - 1> more_color{};
+  // The draw buffer `color` is: a window's glDrawBuffers passes write one draw buffer at a
+  // time, and each takes its own blend enable and colour mask (DrawState::use_target_write).
+  int color_index = 0;
 
   const ColorBuffer& target_color(int i) const { return i == 0 ? color : more_color[static_cast<size_t>(i - 1)]; }
   // The same framebuffer with draw buffer i as its only colour buffer.
@@ -75,6 +78,7 @@ struct Framebuffer {
     one.color = target_color(i);
     one.color_targets = 1;
     one.more_color = {};
+    one.color_index = color_index + i;
     return one;
   }
 };

@@ -77,10 +77,12 @@ struct Quad {
   F4 ox, oy;  // pixel centres relative to the primitive's reference point
 };
 
-// The draw buffers with a colour buffer, each as a single-target view, and its gl_FragData index.
+// The draw buffers with a colour buffer and a colour to write, each as a single-target view,
+// its gl_FragData index and its record (its blend enable and colour mask).
 struct TargetViews {
   std::array<Framebuffer, kMaxColorTargets> view;
   std::array<int, kMaxColorTargets> output{};
+  std::array<const DrawRecord*, kMaxColorTargets> record{};
   int count = 0;
 };
 struct NoTargets {};
@@ -150,8 +152,10 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
       std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
     for (int i = 0; i < fb.color_targets; ++i) {
-      if (!fb.target_color(i).base) continue;
+      const DrawRecord& record = (*d.target_draws)[size_t(i)];
+      if (!fb.target_color(i).base || !record.color_write_any) continue;
       targets.view[size_t(targets.count)] = fb.target(i);
+      targets.record[size_t(targets.count)] = &record;
       targets.output[size_t(targets.count++)] = i;
     }
   }
@@ -163,7 +167,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   program.run_fragments(sd.uniforms.data(), &textures, block);
 
   bool write_color = fb.color.base && d.color_write_any;
-  if constexpr (kTargets) write_color = targets.count > 0 && d.color_write_any;
+  if constexpr (kTargets) write_color = targets.count > 0;
   for (int k = 0; k < n; ++k) {
     unsigned mask = (block.live >> (4 * k)) & 0xfu;
     if (!mask) continue;
@@ -204,7 +208,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
         for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[targets.output[size_t(t)]][c][4 * k]);
         if (d.key.extras) apply_coverage(p, q.x, y, out.c[3]);
         if (d.alpha_to_one) out.c[3] = splat(1.f);
-        write_colors(d, targets.view[size_t(t)], q.x, y, mask, out);
+        write_colors(*targets.record[size_t(t)], targets.view[size_t(t)], q.x, y, mask, out);
       }
     }
   }

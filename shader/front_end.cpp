@@ -4,6 +4,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 
+#include "shader/es_draw_buffers.h"
 #include "shader/tree_depth.h"
 
 namespace pineda::shader::front_end {
@@ -50,8 +51,15 @@ EShLanguage stage_of(Stage stage) { return stage == Stage::Vertex ? EShLangVerte
 std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::string& log) {
   Process& p = process();
   auto sh = std::make_unique<glslang::TShader>(stage_of(shader.stage));
+  const bool es = shader.language == Language::Es100;
+  TBuiltInResource resources = p.resources;
+  std::vector<std::string> sources = shader.sources;
+  if (es) {  // an OpenGL ES 2.0 context, which has GL_EXT_draw_buffers
+    resources.maxDrawBuffers = take_draw_buffers_directives(sources) ? kMaxDrawBuffers : 1;
+    sh->setPreamble("#define GL_EXT_draw_buffers 1\n");
+  }
   std::vector<const char*> strings;
-  for (const std::string& s : shader.sources) strings.push_back(s.c_str());
+  for (const std::string& s : sources) strings.push_back(s.c_str());
   const char* empty = "";
   if (strings.empty()) strings.push_back(empty);
   sh->setStrings(strings.data(), static_cast<int>(strings.size()));
@@ -62,8 +70,7 @@ std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::strin
   sh->setEnvInput(glslang::EShSourceGlsl, stage_of(shader.stage), glslang::EShClientNone, 100);
   sh->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
   sh->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
-  const bool es = shader.language == Language::Es100;
-  bool ok = sh->parse(&p.resources, es ? 100 : 110, es ? EEsProfile : ENoProfile, false, false,
+  bool ok = sh->parse(&resources, es ? 100 : 110, es ? EEsProfile : ENoProfile, false, false,
                       EShMsgDefault);
   log = sh->getInfoLog();
   if (!ok) return nullptr;

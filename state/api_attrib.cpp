@@ -138,6 +138,7 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
   const raster::DrawState& o = f.draw_state;
   s.alpha_test = o.alpha_test;
   s.blend = o.blend;
+  for (size_t i = 0; i < s.more_targets.size(); ++i) s.more_targets[i].blend = o.more_targets[i].blend;
   s.logic_op_enabled = o.logic_op_enabled;
   s.depth_test = o.depth_test;
   s.dither = o.dither;
@@ -273,6 +274,7 @@ void restore(Context& ctx, const AttribFrame& f) {
     ctx.draw_buffer = f.draw_buffer;
     ctx.extra_draw_buffers = f.extra_draw_buffers;
     s.color_write = o.color_write;
+    s.more_targets = o.more_targets;  // their blend enables and colour masks
     std::copy(f.clear_color, f.clear_color + 4, ctx.clear_color);
     ctx.color_index.clear_index = f.color_index.clear_index;
     ctx.color_index.write_mask = f.color_index.write_mask;

@@ -25,6 +25,8 @@ void Clear(Context& ctx, GLbitfield mask) {
   clear.depth_value = ctx.clear_depth;
   clear.stencil_value = ctx.clear_stencil;
   clear.color_write = ctx.draw_state.color_write;
+  for (size_t i = 0; i < clear.more_color_write.size(); ++i)
+    clear.more_color_write[i] = ctx.draw_state.more_targets[i].color_write;
   clear.stencil_write_mask = static_cast<uint8_t>(ctx.stencil_write_mask);
   clear.depth_write = ctx.draw_state.depth_write;
   clear.scissor_test = ctx.draw_state.scissor_test;

@@ -76,8 +76,21 @@ bool query_draw_buffers(Context& ctx, unsigned pname, GetValues& out) {
   }
   if (pname < GL_DRAW_BUFFER0 || pname >= GL_DRAW_BUFFER0 + unsigned(kMaxDrawBuffers)) return false;
   const unsigned i = pname - GL_DRAW_BUFFER0;
-  out = get_enums({double(i == 0 ? ctx.draw_buffer : ctx.extra_draw_buffers[i - 1])});
+  GLenum buffer = i == 0 ? ctx.draw_buffer : ctx.extra_draw_buffers[i - 1];
+  // OpenGL ES names the window's colour buffer BACK, single-buffered or not (EXT_draw_buffers).
+  if (ctx.es2() && !ctx.framebuffers.draw_binding && buffer == GL_FRONT) buffer = GL_BACK;
+  out = get_enums({double(buffer)});
   return true;
+}
+
+void set_draw_buffers(Context& ctx, int n, const GLenum* bufs) {
+  const bool object = ctx.framebuffers.draw_binding != 0;
+  if (object) resolve_rendered_textures(ctx);
+  ctx.draw_buffer = n > 0 ? bufs[0] : GL_NONE;
+  for (int i = 1; i < kMaxDrawBuffers; ++i) ctx.extra_draw_buffers[i - 1] = i < n ? bufs[i] : GL_NONE;
+  // The renderer targets the selected colour buffers from now on.
+  if (object) refresh_framebuffer_views(ctx);
+  else ctx.drawable_changed();
 }
 
 }  // namespace pineda
@@ -94,13 +107,7 @@ void DrawBuffers(Context& ctx, GLsizei n, const GLenum* bufs) {
     if (named.bits & used) return ctx.record_error(GL_INVALID_OPERATION);  // named twice
     used |= named.bits;
   }
-  const bool object = ctx.framebuffers.draw_binding != 0;
-  if (object) resolve_rendered_textures(ctx);
-  ctx.draw_buffer = n > 0 ? bufs[0] : GL_NONE;
-  for (int i = 1; i < kMaxDrawBuffers; ++i) ctx.extra_draw_buffers[i - 1] = i < n ? bufs[i] : GL_NONE;
-  // The renderer targets the selected colour buffers from now on.
-  if (object) refresh_framebuffer_views(ctx);
-  else ctx.drawable_changed();
+  set_draw_buffers(ctx, n, bufs);
 }
 
 void DrawBuffersARB(Context& ctx, GLsizei n, const GLenum* bufs) { DrawBuffers(ctx, n, bufs); }

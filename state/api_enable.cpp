@@ -102,6 +102,8 @@ void set_capability(Context& ctx, GLenum cap, bool value) {
   if (!flag) return ctx.record_error(GL_INVALID_ENUM, "cap " + hex_enum(cap) + " is not a capability");
   *flag = value;
   if (cap == GL_COLOR_MATERIAL) track_color_material(ctx);
+  if (cap == GL_BLEND)  // every draw buffer's (GL 3.0 4.1.8; EXT_draw_buffers2 sets them one at a time)
+    for (raster::DrawState::TargetWrite& t : ctx.draw_state.more_targets) t.blend = value;
 }
 
 void set_client_capability(Context& ctx, GLenum array, bool value) {

@@ -74,8 +74,10 @@ void LogicOp(Context& ctx, GLenum opcode) {
   ctx.draw_state.logic_op = op;
 }
 
+// Every draw buffer's mask (GL 3.0 4.2.2; EXT_draw_buffers2 sets them one at a time).
 void ColorMask(Context& ctx, GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
   ctx.draw_state.color_write = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
+  for (raster::DrawState::TargetWrite& t : ctx.draw_state.more_targets) t.color_write = ctx.draw_state.color_write;
 }
 
 void Scissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {

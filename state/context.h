@@ -284,7 +284,8 @@ class Context {
  private:
   // Points the renderer at the draw buffers; unless `always`, only when they changed.
   void bind_framebuffer(bool always = true);
-  void use_color_buffer(const raster::ColorBuffer& color);
+  // Points the renderer at one colour buffer of the window, written as draw buffer `draw_buffer`.
+  void use_color_buffer(const raster::ColorBuffer& color, int draw_buffer = 0);
 
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;

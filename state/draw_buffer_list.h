@@ -18,4 +18,7 @@ using ExtraDrawBuffers = std::array<GLenum, kMaxDrawBuffers - 1>;  // DRAW_BUFFE
 // MAX_DRAW_BUFFERS and DRAW_BUFFERi.
 bool query_draw_buffers(Context& ctx, unsigned pname, GetValues& out);
 
+// Selects n (validated) draw buffers, the others NONE, and points the renderer at them.
+void set_draw_buffers(Context& ctx, int n, const GLenum* bufs);
+
 }  // namespace pineda

@@ -77,7 +77,7 @@ bool same_color(const raster::ColorBuffer& a, const raster::ColorBuffer& b) {
 }
 
 bool same_buffers(const raster::Framebuffer& a, const raster::Framebuffer& b) {
-  if (a.color_targets != b.color_targets) return false;
+  if (a.color_targets != b.color_targets || a.color_index != b.color_index) return false;
   for (int i = 0; i < a.color_targets; ++i)
     if (!same_color(a.target_color(i), b.target_color(i))) return false;
   return a.width == b.width && a.height == b.height && a.depth.base == b.depth.base &&
@@ -108,11 +108,12 @@ void Context::bind_framebuffer(bool always) {
   if (always || !same_buffers(fb, renderer_->framebuffer())) renderer_->set_framebuffer(fb);
 }
 
-void Context::use_color_buffer(const raster::ColorBuffer& color) {
-  const raster::ColorBuffer& bound = renderer_->framebuffer().color;
-  if (bound.base == color.base && bound.stride == color.stride) return;
+void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer) {
+  const raster::Framebuffer& bound = renderer_->framebuffer();
+  if (bound.color.base == color.base && bound.color.stride == color.stride && bound.color_index == draw_buffer) return;
   raster::Framebuffer fb = draw_drawable()->framebuffer;
   fb.color = color;
+  fb.color_index = draw_buffer;
   renderer_->set_framebuffer(fb);
 }
 
@@ -131,11 +132,11 @@ void Context::render_to_draw_buffers(const std::function<void()>& render) {
     case Target::Front:
       draw_->front_drawn = true;
       draw_pass_output_ = first_output_for(Target::Front, draw_buffer, extra_draw_buffers, *draw_);
-      use_color_buffer(draw_->front_color());
+      use_color_buffer(draw_->front_color(), draw_pass_output_);
       return render();
     case Target::Back:
       draw_pass_output_ = first_output_for(Target::Back, draw_buffer, extra_draw_buffers, *draw_);
-      use_color_buffer(draw_->framebuffer.color);
+      use_color_buffer(draw_->framebuffer.color, draw_pass_output_);
       return render();
     case Target::Both: draw_->front_drawn = true; break;
   }
@@ -143,15 +144,15 @@ void Context::render_to_draw_buffers(const std::function<void()>& render) {
   // the second pass starts from the depth and stencil values the first one started from,
   // and so ends with the same ones.
   const raster::Framebuffer& fb = draw_->framebuffer;
-  use_color_buffer(fb.color);
+  draw_pass_output_ = first_output_for(Target::Back, draw_buffer, extra_draw_buffers, *draw_);
+  use_color_buffer(fb.color, draw_pass_output_);
   renderer_->flush();
   const DepthStencilCopy before(fb);
-  draw_pass_output_ = first_output_for(Target::Back, draw_buffer, extra_draw_buffers, *draw_);
   render();
   renderer_->flush();
   before.restore(fb);
-  use_color_buffer(draw_->front);
   draw_pass_output_ = first_output_for(Target::Front, draw_buffer, extra_draw_buffers, *draw_);
+  use_color_buffer(draw_->front, draw_pass_output_);
   render();
   draw_pass_output_ = 0;
 }
