@@ -179,7 +179,7 @@ class Context {
   bool in_begin_end = false;
   GLenum begin_mode = GL_POINTS;
   std::vector<raster::VertexInput> immediate;
-  std::vector<raster::VertexInput> fetched;   // client-array vertices of the current draw
+  std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
   // (empty when the material did not change inside the primitive); the first is the one in
