@@ -17,23 +17,36 @@ struct Renderer::Impl {
   explicit Impl(int threads, bool reference_mode, SimdPath simd_path)
       : reference(reference_mode), simd(simd_path), pool(reference ? 1 : resolve_thread_count(threads)) {
     scene.reset(fb);
+    running.reset(fb);
   }
   const bool reference;  // PINEDA_REFERENCE at creation: primitives drawn at once, per pixel
   const SimdPath simd;   // PINEDA_SIMD at creation
+  // Waits for the running scene, if one runs, and empties it.
+  void finish_running() {
+    if (!running_started) return;
+    running.finish(pool);
+    running_started = false;
+  }
+
   Framebuffer fb;
-  Scene scene;
-  WorkerPool pool;
+  Scene scene;    // binning
+  Scene running;  // executed by the pool's threads while `scene` bins the next commands
+  bool running_started = false;
+  WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
 Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads, reference_mode_from_environment(), simd_path_from_environment())) {}
 
 // Work still queued is dropped: the framebuffer's owner may already have released its memory.
-Renderer::~Renderer() = default;
+// (A scene already started is finished: its owner flushes before releasing the memory, as
+// Context does, so only a draw that filled a scene since can have started one.)
+Renderer::~Renderer() { impl_->finish_running(); }
 
 void Renderer::set_framebuffer(const Framebuffer& fb) {
   flush();
   impl_->fb = fb;
   impl_->scene.reset(fb);
+  impl_->running.reset(fb);
 }
 
 const Framebuffer& Renderer::framebuffer() const { return impl_->fb; }
@@ -42,7 +55,7 @@ void Renderer::clear(const ClearState& clear) {
   ClearRecord record;
   if (!make_clear_record(clear, impl_->fb, record)) return;
   impl_->scene.add_clear(record);
-  if (impl_->scene.full()) flush();
+  if (impl_->scene.full()) submit();
 }
 
 void Renderer::draw(const DrawState& state, Primitive mode, std::span<const ClipVertex> vertices,
@@ -56,13 +69,32 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     record.routine = reference_plane_quads;
   }
   scene.begin_draw(std::move(record));
-  GeometryStage geometry(scene, [this] { flush(); }, impl_->reference);
+  GeometryStage geometry(scene, [this] { submit(); }, impl_->reference);
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
-  if (scene.full()) flush();
+  if (scene.full()) submit();
 }
 
-void Renderer::flush() { impl_->scene.execute(impl_->pool); }
+void Renderer::flush() {
+  impl_->finish_running();
+  impl_->scene.execute(impl_->pool);
+}
+
+// A full scene runs on the pool's threads while this one bins the next (the two never run at
+// once: a tile's commands keep their order); with no threads of its own, or a small scene, it
+// runs now as flush runs it.
+void Renderer::submit() {
+  Impl& r = *impl_;
+  r.finish_running();
+  if (!r.scene.worth_starting(r.pool)) {
+    r.scene.execute(r.pool);
+    return;
+  }
+  std::swap(r.scene, r.running);  // the emptied scene bins on, with the current draw
+  r.scene.continue_draw(r.running);
+  r.running.start(r.pool);
+  r.running_started = true;
+}
 
 }  // namespace pineda::raster

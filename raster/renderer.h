@@ -42,6 +42,9 @@ class Renderer {
   void flush();
 
  private:
+  void submit();  // a full scene: executed, on the pool's threads while binning goes on
+
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

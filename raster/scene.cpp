@@ -43,8 +43,8 @@ void Scene::reset(const Framebuffer& fb) {
 }
 
 void Scene::begin_draw(DrawRecord&& draw) {
-  draws_.push_back(std::move(draw));
-  retain_textures(draws_.back());
+  draws_.push_back(std::make_shared<const DrawRecord>(std::move(draw)));
+  retain_textures(*draws_.back());
 }
 
 void Scene::retain_textures(const DrawRecord& draw) {
@@ -126,7 +126,7 @@ void Scene::run_tile(int tile) const {
       else apply_clear(clears_[cmd & ~kClearBit], fb_, rect);
     } else {
       const PrimSetup& prim = prims_[cmd];
-      const DrawRecord& draw = draws_[prim.draw];
+      const DrawRecord& draw = *draws_[prim.draw];
       const uint64_t passed =
           multisampled ? rasterize_samples_in_tile(prim, draw, fb_, rect) : rasterize_in_tile(prim, draw, fb_, rect);
       if (passed) draw.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);
@@ -142,17 +142,39 @@ void Scene::execute(WorkerPool& pool) {
       pool.run(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
     }
   }
+  drop_commands();
+  if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
+  if (!draws_.empty()) retain_textures(*draws_.back());
+}
+
+bool Scene::worth_starting(const WorkerPool& pool) const { return commands_ >= kSmallScene && pool.threads() > 1; }
+
+void Scene::start(WorkerPool& pool) {
+  pool.start(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
+}
+
+void Scene::finish(WorkerPool& pool) {
+  pool.wait();
+  drop_commands();
+  draws_.clear();
+}
+
+void Scene::continue_draw(const Scene& from) {
+  if (from.draws_.empty()) return;
+  draws_.push_back(from.draws_.back());
+  retain_textures(*draws_.back());
+}
+
+void Scene::drop_commands() {
   for (const int t : touched_tiles_) bins_[t].clear();
   touched_tiles_.clear();
   prims_.clear();
   clears_.clear();
   commands_ = 0;
-  if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
   retained_images_.clear();
   retained_texture_bytes_ = 0;
   if (plane_chunks_.size() > 1) plane_chunks_.erase(plane_chunks_.begin(), plane_chunks_.end() - 1);
   planes_used_ = 0;
-  if (!draws_.empty()) retain_textures(draws_.back());
 }
 
 }  // namespace pineda::raster

@@ -25,7 +25,7 @@ class Scene {
 
   // Primitives added afterwards belong to this draw.
   void begin_draw(DrawRecord&& draw);
-  const DrawRecord& current_draw() const { return draws_.back(); }
+  const DrawRecord& current_draw() const { return *draws_.back(); }
   void add_prim(const PrimSetup& prim);
   // A primitive of a programmable draw with its varying planes (copied into the scene).
   void add_prim(PrimSetup prim, const Plane* varying_planes, int count);
@@ -39,18 +39,31 @@ class Scene {
   // draw interrupted by a full scene can go on adding primitives.
   void execute(WorkerPool& pool);
 
+  // Running while the calling thread goes on binning into another scene: start hands the
+  // commands to the pool's threads (worth it only for a scene that is not small, with a pool that
+  // has threads of its own); finish waits for them and empties the scene wholly (the other
+  // scene goes on with the current draw: continue_draw). The scene must not move in between.
+  bool worth_starting(const WorkerPool& pool) const;
+  void start(WorkerPool& pool);
+  void finish(WorkerPool& pool);
+  // The current draw of `from`, shared, so that a draw interrupted by a full scene goes on here.
+  void continue_draw(const Scene& from);
+
  private:
   static constexpr uint32_t kClearBit = 0x80000000u;
 
   void run_tile(int tile) const;
   void retain_textures(const DrawRecord& draw);
+  // Drops the executed commands and what they kept alive; the draws stay.
+  void drop_commands();
 
   Framebuffer fb_;
   int render_w_ = 0, render_h_ = 0;
   int tiles_x_ = 0, tiles_y_ = 0;
-  // A deque: dropping executed draws from the front keeps references to the current one valid
-  // while a draw that filled the scene is still adding primitives.
-  std::deque<DrawRecord> draws_;
+  // Shared, and never changed once begun: the current draw's record stays where it is while a
+  // draw that filled the scene goes on adding primitives, here or in the next scene, and the
+  // pool's threads may read it while this goes on.
+  std::deque<std::shared_ptr<const DrawRecord>> draws_;
   std::vector<PrimSetup> prims_;
   std::vector<ClearRecord> clears_;
   std::vector<std::vector<uint32_t>> bins_;

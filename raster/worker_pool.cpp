@@ -31,9 +31,8 @@ WorkerPool::~WorkerPool() {
 void WorkerPool::drain(std::unique_lock<std::mutex>& lock) {
   while (next_ < count_) {
     const int i = next_++;
-    const std::function<void(int)>* job = job_;
     lock.unlock();
-    (*job)(i);
+    job_(i);  // not reassigned before every item is finished (wait)
     lock.lock();
     if (++finished_ == count_) done_.notify_all();
   }
@@ -50,23 +49,34 @@ void WorkerPool::worker_loop() {
   }
 }
 
-void WorkerPool::run(int count, const std::function<void(int)>& fn) {
+void WorkerPool::run(int count, std::function<void(int)> fn) {
   if (count <= 0) return;
   if (workers_.empty() || count == 1) {
     for (int i = 0; i < count; ++i) fn(i);
     return;
   }
+  start(count, std::move(fn));
+  wait();
+}
+
+void WorkerPool::start(int count, std::function<void(int)> fn) {
   std::unique_lock lock(mutex_);
-  job_ = &fn;
-  count_ = count;
+  job_ = std::move(fn);
+  count_ = std::max(count, 0);
   next_ = 0;
   finished_ = 0;
   ++generation_;
   wake_.notify_all();
+}
+
+void WorkerPool::wait() {
+  std::unique_lock lock(mutex_);
   drain(lock);
   done_.wait(lock, [&] { return finished_ == count_; });
   job_ = nullptr;
   count_ = 0;
+  next_ = 0;
+  finished_ = 0;
 }
 
 }  // namespace pineda::raster

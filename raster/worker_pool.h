@@ -20,7 +20,13 @@ class WorkerPool {
   int threads() const { return static_cast<int>(workers_.size()) + 1; }
 
   // Calls fn(i) once for each i in [0, count), on any of the threads; returns when all are done.
-  void run(int count, const std::function<void(int)>& fn);
+  void run(int count, std::function<void(int)> fn);
+
+  // As run, but returns at once: only the pool's own threads take items until wait(), where the
+  // calling thread joins them and returns when all are done. Needs threads() > 1; one job at a
+  // time (start after the previous job's wait).
+  void start(int count, std::function<void(int)> fn);
+  void wait();
 
  private:
   void worker_loop();
@@ -30,7 +36,7 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::condition_variable done_;
-  const std::function<void(int)>* job_ = nullptr;
+  std::function<void(int)> job_;
   int count_ = 0;
   int next_ = 0;
   int finished_ = 0;

@@ -72,20 +72,62 @@ void render_scene(Renderer& r, OwnedFramebuffer& fb) {
   r.flush();
 }
 
-TEST(Scene, ThreadCountsGiveIdenticalImages) {
-  OwnedFramebuffer one(kW, kH), two(kW, kH), four(kW, kH);
-  Renderer r1(1), r2(2), r4(4);
-  render_scene(r1, one);
-  render_scene(r2, two);
-  render_scene(r4, four);
+// `render` with 1, 2 and `most` threads: the same colour, depth and stencil values.
+void expect_same_for_thread_counts(void (*render)(Renderer&, OwnedFramebuffer&), int most) {
+  OwnedFramebuffer one(kW, kH), two(kW, kH), many(kW, kH);
+  Renderer r1(1), r2(2), rn(most);
+  render(r1, one);
+  render(r2, two);
+  render(rn, many);
   EXPECT_GT(one.count_nonzero_red(), kW * kH / 2);
   EXPECT_EQ(one.color, two.color);
-  EXPECT_EQ(one.color, four.color);
+  EXPECT_EQ(one.color, many.color);
   EXPECT_EQ(one.depth, two.depth);
-  EXPECT_EQ(one.depth, four.depth);
+  EXPECT_EQ(one.depth, many.depth);
   EXPECT_EQ(one.stencil_buf, two.stencil_buf);
-  EXPECT_EQ(one.stencil_buf, four.stencil_buf);
+  EXPECT_EQ(one.stencil_buf, many.stencil_buf);
 }
+
+TEST(Scene, ThreadCountsGiveIdenticalImages) { expect_same_for_thread_counts(render_scene, 4); }
+
+// Enough primitives to fill several scenes, so that with threads each full scene runs while
+// the next one bins (Renderer's running scene): draws that span scenes, state changes between
+// draws, a clear among them; order-dependent results (stencil counts, blending).
+void render_many_scenes(Renderer& r, OwnedFramebuffer& fb) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> pos(-1.1f, 1.1f), unit(0.f, 1.f), small(-0.08f, 0.08f);
+  r.set_framebuffer(fb.fb);
+  clear_all(r, 0.2f, 1.0, 0);
+  for (int d = 0; d < 7; ++d) {
+    DrawState s = state_for(kW, kH);
+    s.depth_test = d % 2 == 0;
+    s.depth_func = CompareFunc::LessEqual;
+    s.blend = d % 3 == 1;
+    s.blend_state.src_rgb = BlendFactor::SrcAlpha;
+    s.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+    s.stencil_test = true;
+    s.stencil_front.depth_pass = StencilOp::IncrWrap;
+    s.stencil_back.depth_pass = StencilOp::IncrWrap;
+    std::vector<ClipVertex> v;
+    const int triangles = 700 + 400 * d;  // 700 to 3100: some draws span two or more scenes
+    for (int i = 0; i < triangles; ++i) {
+      const float cx = pos(rng), cy = pos(rng), z = unit(rng) * 2 - 1;
+      for (int k = 0; k < 3; ++k)
+        v.push_back(vertex(cx + small(rng) * 3, cy + small(rng) * 3, z, 1.f, unit(rng), unit(rng), unit(rng), unit(rng)));
+    }
+    r.draw(s, Primitive::Triangles, v);
+    if (d == 3) {
+      ClearState c;
+      c.color = true;
+      c.scissor_test = true;
+      c.scissor = {40, 30, 120, 90};
+      r.clear(c);
+    }
+  }
+  r.flush();
+}
+
+TEST(Scene, ScenesRunningWhileTheNextBinsGiveIdenticalImages) { expect_same_for_thread_counts(render_many_scenes, 3); }
 
 TEST(Scene, DrawStateAndVerticesAreCopied) {
   OwnedFramebuffer fb(16, 16);
