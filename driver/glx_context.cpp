@@ -38,6 +38,21 @@ struct Request {
   int reset_strategy = GLX_NO_RESET_NOTIFICATION_ARB;
 };
 
+bool es_profile(const Request& r) { return r.profile == GLX_CONTEXT_ES_PROFILE_BIT_EXT; }
+
+// GLX_EXT_create_context_es_profile (and its older es2 form): ES 1.0 and 1.1 (a 1.1 context),
+// 2.0. A version ES never had is GLXBadProfileARB (piglit's glx-create-context-invalid-es-version);
+// ES 3.0-3.2, which Pineda does not have, GLXBadFBConfig, as for desktop versions.
+std::optional<Failure> check_es(const Request& r) {
+  if (!driver::gles_version_supported(r.major, r.minor))
+    return glx_failure(r.major == 3 && r.minor >= 0 && r.minor <= 2 ? GlxError::GlxFBConfig : GlxError::GlxProfileARB);
+  if (r.flags & GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB) return x_failure(BadMatch);
+  // ES 1.1 has no robustness extension (EGL refuses the same request with EGL_BAD_CONFIG).
+  if (r.major == 1 && ((r.flags & GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB) || r.reset_strategy != GLX_NO_RESET_NOTIFICATION_ARB))
+    return x_failure(BadMatch);
+  return std::nullopt;
+}
+
 // GLX_ARB_create_context(_profile, _robustness)'s attribute rules.
 std::optional<Failure> parse(const int* attribs, Request* r) {
   bool profile_given = false;
@@ -59,6 +74,7 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
   if (r->reset_strategy != GLX_NO_RESET_NOTIFICATION_ARB && r->reset_strategy != GLX_LOSE_CONTEXT_ON_RESET_ARB)
     return x_failure(BadMatch);
   if (r->render_type != GLX_RGBA_TYPE) return x_failure(BadValue);
+  if (profile_given && es_profile(*r)) return check_es(*r);
   if (!driver::is_gl_version(r->major, r->minor)) return x_failure(BadMatch);
   // Profiles exist from GL 3.2; before it the mask is ignored, but must still be valid.
   const int known = GLX_CONTEXT_CORE_PROFILE_BIT_ARB | GLX_CONTEXT_COMPATIBILITY_PROFILE_BIT_ARB;
@@ -72,12 +88,18 @@ std::optional<Failure> parse(const int* attribs, Request* r) {
 }
 
 // The pineda::Context of a request; the version is always the highest (GL may return a later
-// version compatible with the one asked for).
+// version compatible with the one asked for), or for an ES profile the ES version asked for.
 ContextAttribs context_attribs(const Request& r) {
-  return ContextAttribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor,
-                        .debug = (r.flags & GLX_CONTEXT_DEBUG_BIT_ARB) != 0,
-                        .robust_access = (r.flags & GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB) != 0,
-                        .lose_context_on_reset = r.reset_strategy == GLX_LOSE_CONTEXT_ON_RESET_ARB};
+  ContextAttribs attribs{.major = driver::kMaxGLMajor, .minor = driver::kMaxGLMinor,
+                         .debug = (r.flags & GLX_CONTEXT_DEBUG_BIT_ARB) != 0,
+                         .robust_access = (r.flags & GLX_CONTEXT_ROBUST_ACCESS_BIT_ARB) != 0,
+                         .lose_context_on_reset = r.reset_strategy == GLX_LOSE_CONTEXT_ON_RESET_ARB};
+  if (es_profile(r)) {  // the version asked for: ES 1.0 gets 1.1
+    attribs.major = r.major;
+    attribs.minor = r.major == 1 ? 1 : r.minor;
+    attribs.gles = true;
+  }
+  return attribs;
 }
 
 // Caller holds the registry lock.

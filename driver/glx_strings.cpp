@@ -14,7 +14,7 @@ constexpr const char* kVendor = "Pineda";
 constexpr const char* kVersion = "1.4";
 constexpr const char* kExtensions =
     "GLX_ARB_create_context GLX_ARB_create_context_profile GLX_ARB_create_context_robustness "
-    "GLX_ARB_get_proc_address "
+    "GLX_ARB_get_proc_address GLX_EXT_create_context_es2_profile GLX_EXT_create_context_es_profile "
     "GLX_EXT_swap_control GLX_MESA_swap_control GLX_SGI_swap_control";
 
 const char* string_of(int name) {

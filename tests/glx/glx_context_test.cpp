@@ -113,6 +113,55 @@ TEST_F(GlxContextTest, CreateContextRobustness) {
   glXDestroyContext(dpy, first);
 }
 
+// GLX_EXT_create_context_es_profile / es2_profile: ES 1.1 and 2.0 contexts that draw into GLX
+// drawables; versions ES never had are GLXBadProfileARB, ES 3.0 (which Pineda does not have)
+// GLXBadFBConfig.
+TEST_F(GlxContextTest, CreateContextEsProfiles) {
+  const std::string extensions = std::string(glXQueryExtensionsString(dpy, screen)) + " ";
+  EXPECT_NE(extensions.find("GLX_EXT_create_context_es2_profile "), std::string::npos);
+  EXPECT_NE(extensions.find("GLX_EXT_create_context_es_profile "), std::string::npos);
+  GLXFBConfig config = rgba8(true, false);
+  Window w = window(config, 8, 8);
+  for (auto [major, minor, version] : {std::tuple{2, 0, "OpenGL ES 2.0"}, {1, 1, "OpenGL ES-CM 1.1"},
+                                       {1, 0, "OpenGL ES-CM 1.1"}}) {
+    GLXContext ctx = create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major, GLX_CONTEXT_MINOR_VERSION_ARB,
+                                                  minor, GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_ES_PROFILE_BIT_EXT});
+    ASSERT_NE(ctx, nullptr) << major << "." << minor;
+    ASSERT_TRUE(glXMakeCurrent(dpy, w, ctx));
+    const std::string got = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    EXPECT_EQ(got.rfind(version, 0), 0u) << got;
+    glClearColor(0.f, 1.f, 0.f, 1.f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    GLubyte pixel[4] = {};
+    glReadPixels(3, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    EXPECT_EQ(pixel[0], 0);
+    EXPECT_EQ(pixel[1], 255);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    glBegin(GL_POINTS);  // not an ES command
+    EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+    ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+    glXDestroyContext(dpy, ctx);
+  }
+  EXPECT_TRUE(take_errors().empty());
+  const int bad_profile = glx_error_base() + GLXBadProfileARB;
+  for (auto [major, minor, error] : {std::tuple{2, 1, bad_profile}, {1, 2, bad_profile}, {0, 9, bad_profile},
+                                     {3, 3, bad_profile}, {3, 0, glx_error_base() + GLXBadFBConfig}}) {
+    EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, major, GLX_CONTEXT_MINOR_VERSION_ARB, minor,
+                                           GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_ES_PROFILE_BIT_EXT}),
+              nullptr);
+    auto errors = take_errors();
+    ASSERT_EQ(errors.size(), 1u) << major << "." << minor;
+    EXPECT_EQ(errors[0].error_code, error) << major << "." << minor;
+  }
+  // The ES bit with a desktop profile bit is no profile at all.
+  EXPECT_EQ(create_attribs(dpy, config, {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_PROFILE_MASK_ARB,
+                                         GLX_CONTEXT_ES_PROFILE_BIT_EXT | GLX_CONTEXT_CORE_PROFILE_BIT_ARB}),
+            nullptr);
+  auto errors = take_errors();
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].error_code, glx_error_base() + GLXBadProfileARB);
+}
+
 TEST_F(GlxContextTest, QueryContext) {
   GLXFBConfig config = rgba8(true, true);
   GLXContext ctx = context(config);
