@@ -20,10 +20,12 @@ float lookup_index(const std::vector<float>& table, int64_t index) {
   return table[static_cast<size_t>(index) & (table.size() - 1)];
 }
 
+// In 64-bit two's complement arithmetic: an index shifted far left wraps (GL leaves what
+// overflow gives unspecified) instead of overflowing a signed integer.
 int64_t shift_and_offset(const PixelMode& mode, int64_t index) {
   const int shift = std::clamp(mode.index_shift, -62, 62);
-  index = shift >= 0 ? index << shift : index >> -shift;
-  return index + mode.index_offset;
+  const uint64_t shifted = shift >= 0 ? uint64_t(index) << shift : uint64_t(index >> -shift);
+  return int64_t(shifted + uint64_t(int64_t{mode.index_offset}));
 }
 
 }  // namespace

@@ -25,9 +25,13 @@ ClientMemory::ClientMemory() : feedback(4096), selection(4096) {
 
 size_t image_footprint(bool pack, int64_t width, int64_t height, int64_t depth) {
   if (width <= 0 || height <= 0 || depth <= 0) return 0;
-  auto get = [](GLenum pname) {
-    GLint v = 0;
+  // Between glBegin and glEnd (a list compiled and executed, or a call that is an error there)
+  // the queries fail and write nothing: then the footprint is unknown, so as large as can be.
+  bool known = true;
+  auto get = [&known](GLenum pname) {
+    GLint v = -1;
     glGetIntegerv(pname, &v);
+    known &= v >= 0;
     return __int128(std::max(v, 0));
   };
   const __int128 alignment = get(pack ? GL_PACK_ALIGNMENT : GL_UNPACK_ALIGNMENT);
@@ -36,6 +40,7 @@ size_t image_footprint(bool pack, int64_t width, int64_t height, int64_t depth) 
   const __int128 skip_pixels = get(pack ? GL_PACK_SKIP_PIXELS : GL_UNPACK_SKIP_PIXELS);
   const __int128 image_height = get(pack ? GL_PACK_IMAGE_HEIGHT : GL_UNPACK_IMAGE_HEIGHT);
   const __int128 skip_images = get(pack ? GL_PACK_SKIP_IMAGES : GL_UNPACK_SKIP_IMAGES);
+  if (!known) return SIZE_MAX;
   const __int128 stride = (row_length > 0 ? row_length : width) * 16 + alignment;
   const __int128 rows = image_height > 0 ? image_height : height;
   const __int128 total = ((skip_images + depth) * rows + skip_rows + height + 1) * stride + (skip_pixels + width) * 16;
