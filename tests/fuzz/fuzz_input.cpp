@@ -35,7 +35,8 @@ GLsizei FuzzInput::bounded_size(GLsizei limit) {
 CheckedSize FuzzInput::checked_size(GLsizei limit) {
   const uint8_t pick = byte();
   if (pick % 8 != 7) return {in_.ConsumeIntegralInRange<GLsizei>(0, limit), false};
-  constexpr GLsizei kBeyondLimits[] = {-1, INT_MIN, 8193, 1 << 20, 1185050933, INT_MAX};
+  // 8195: beyond the largest texture width with borders (8192 + 2), which 8193 was not.
+  constexpr GLsizei kBeyondLimits[] = {-1, INT_MIN, 8195, 1 << 20, 1185050933, INT_MAX};
   return {kBeyondLimits[(pick / 8) % std::size(kBeyondLimits)], true};
 }
 
