@@ -24,11 +24,11 @@ std::array<bool, 4>& color_mask(Context& ctx, GLuint index) {
 // queries, COLOR_WRITEMASK); the index is below MAX_DRAW_BUFFERS.
 bool indexed_state(Context& ctx, GLenum target, GLuint index, bool color_mask_too) {
   if (target != GL_BLEND && !(color_mask_too && target == GL_COLOR_WRITEMASK)) {
-    ctx.record_error(GL_INVALID_ENUM, "no indexed state " + hex_enum(target));
+    ctx.record_error(GL_INVALID_ENUM, [target] { return "no indexed state " + hex_enum(target); });
     return false;
   }
   if (index >= GLuint(kMaxDrawBuffers)) {
-    ctx.record_error(GL_INVALID_VALUE, "draw buffer " + std::to_string(index) + " is not below MAX_DRAW_BUFFERS");
+    ctx.record_error(GL_INVALID_VALUE, [index] { return "draw buffer " + std::to_string(index) + " is not below MAX_DRAW_BUFFERS"; });
     return false;
   }
   return true;

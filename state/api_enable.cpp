@@ -99,7 +99,7 @@ void set_capability(Context& ctx, GLenum cap, bool value) {
   if (missing_texture_unit_state(ctx, cap)) return ctx.record_error(GL_INVALID_OPERATION);
   bool* flag = server_capability(ctx, cap);
   if (!flag) flag = client_capability(ctx, cap);
-  if (!flag) return ctx.record_error(GL_INVALID_ENUM, "cap " + hex_enum(cap) + " is not a capability");
+  if (!flag) return ctx.record_error(GL_INVALID_ENUM, [cap] { return "cap " + hex_enum(cap) + " is not a capability"; });
   *flag = value;
   if (cap == GL_COLOR_MATERIAL) track_color_material(ctx);
   if (cap == GL_BLEND)  // every draw buffer's (GL 3.0 4.1.8; EXT_draw_buffers2 sets them one at a time)

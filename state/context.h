@@ -4,6 +4,7 @@
 #include <GL/glext.h>
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -148,6 +149,14 @@ class Context {
     ++errors_recorded_;
     if (error_ == GL_NO_ERROR) error_ = error;
     if (debug.reports_errors()) debug.report_error(current_call, error, why);
+  }
+  // The same, with a message made only when something reports it (a lambda returning a string).
+  template <class MakeWhy>
+    requires std::invocable<MakeWhy>
+  void record_error(GLenum error, MakeWhy&& make_why) {
+    ++errors_recorded_;
+    if (error_ == GL_NO_ERROR) error_ = error;
+    if (debug.reports_errors()) debug.report_error(current_call, error, make_why());
   }
   // Counts every recorded error, kept or not: a wrapper compares it around a call to learn
   // whether the call failed (state/es1/).

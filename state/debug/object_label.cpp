@@ -34,7 +34,7 @@ bool check_object(Context& ctx, GLenum identifier, GLuint name) {
   switch (find_object(ctx, identifier, name)) {
     case Lookup::Exists: return true;
     case Lookup::NoSuchObject:
-      ctx.record_error(GL_INVALID_VALUE, "name " + std::to_string(name) + " is not an object of that identifier");
+      ctx.record_error(GL_INVALID_VALUE, [name] { return "name " + std::to_string(name) + " is not an object of that identifier"; });
       return false;
     case Lookup::UnknownIdentifier:
       ctx.record_error(GL_INVALID_ENUM, "identifier is not an object kind this context has");

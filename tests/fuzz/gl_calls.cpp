@@ -178,11 +178,16 @@ std::vector<uint8_t> index_bytes(FuzzInput& in, GLenum type, GLsizei count) {
 }
 
 // glCallList(s) may be compiled into a list only once: a list calling lists twice can
-// call 2^64 lists through 64 levels of nesting, a legitimate hang.
-bool may_call_lists(ClientMemory& memory) {
-  GLint compiling = 0;
+// call 2^64 lists through 64 levels of nesting, a legitimate hang. Between glBegin and
+// glEnd (GL_COMPILE_AND_EXECUTE) the query fails and leaves -1: a list may be compiling.
+bool compiling_list() {
+  GLint compiling = -1;
   glGetIntegerv(GL_LIST_INDEX, &compiling);
-  if (!compiling) return true;
+  return compiling != 0;
+}
+
+bool may_call_lists(ClientMemory& memory) {
+  if (!compiling_list()) return true;
   return memory.calls_to_lists_in_list++ == 0;
 }
 
@@ -515,8 +520,7 @@ const GlCall kCalls[] = {
      }},
     {"glCallLists",
      [](FuzzInput& in, ClientMemory& memory) {
-       GLint compiling = 0;
-       glGetIntegerv(GL_LIST_INDEX, &compiling);
+       const bool compiling = compiling_list();
        if (!may_call_lists(memory)) return;
        const GLsizei n = compiling ? std::min(in.bounded_size(1), 1) : in.bounded_size(8);
        glCallLists(n, in.enumeration({GL_UNSIGNED_BYTE, GL_INT, GL_FLOAT, GL_2_BYTES, GL_4_BYTES}), memory.arrays.data());
