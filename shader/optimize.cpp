@@ -6,40 +6,21 @@
 #include <map>
 #include <tuple>
 
+#include "shader/ir_operands.h"
+#include "shader/rename_values.h"
+#include "shader/unroll_loops.h"
+
 namespace pineda::shader {
 
 using ir::Inst;
 using ir::kNone;
 using ir::Op;
 using ir::Operand;
+using ir::for_each_def;
+using ir::for_each_use;
+using ir::is_structure;
 
 namespace {
-
-bool is_structure(Op op) { return op <= Op::Discard; }
-
-// Calls f(Operand&) for every value an instruction reads.
-template <class F>
-void for_each_use(ir::Code& code, Inst& in, F f) {
-  if (in.op == Op::Texture) {
-    ir::TextureLookup& t = code.textures[in.i0];
-    f(t.sampler);
-    for (Operand& c : t.coord) f(c);
-    if (t.lod != kNone) f(t.lod);
-    return;
-  }
-  if (in.a != kNone) f(in.a);
-  if (in.b != kNone) f(in.b);
-  if (in.c != kNone) f(in.c);
-}
-
-template <class F>
-void for_each_def(ir::Code& code, Inst& in, F f) {
-  if (in.op == Op::Texture) {
-    for (Operand& d : code.textures[in.i0].dst) f(d);
-    return;
-  }
-  if (in.d != kNone) f(in.d);
-}
 
 struct RegInfo {
   int defs = 0;
@@ -436,6 +417,11 @@ void optimize(ir::Code& code) {
   const ir::FlushDenormals flush;
   for (int round = 0; round < 32 && pass(code); ++round) {
   }
+  // Unrolling first: it makes the longest stretches for renaming.
+  const bool unrolled = unroll_constant_loops(code);
+  if (rename_local_values(code) || unrolled)
+    for (int round = 0; round < 32 && pass(code); ++round) {
+    }
   if (fuse_multiply_add(code))
     for (int round = 0; round < 32 && pass(code); ++round) {
     }

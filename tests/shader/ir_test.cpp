@@ -10,19 +10,6 @@
 namespace pineda::shader::test {
 namespace {
 
-int count_ops(const std::string& dump, const std::string& op) {
-  std::istringstream in(dump);
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    auto eq = line.find(" = ");
-    std::string rest = eq == std::string::npos ? line.substr(line.find(':') + 1) : line.substr(eq + 3);
-    rest.erase(0, rest.find_first_not_of(' '));
-    if (rest.compare(0, op.size() + 1, op + " ") == 0 || rest == op) ++n;
-  }
-  return n;
-}
-
 TEST(Ir, ConstantFoldingRemovesArithmetic) {
   // Everything but the varying read folds to constants: no add/mul/sin survives.
   auto p = link_ok("", "varying float v;\nconst float k = 3.0;\n"

@@ -3,6 +3,7 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,20 @@ namespace pineda::shader::test {
 
 // Runs a desktop fragment shader over 16 lanes with varyings `a` and `b` (vec4 each, lane
 // values from the given functions) and returns gl_FragColor[component][lane].
+// How many instructions of IR dump `dump` are the operation `op`.
+inline int count_ops(const std::string& dump, const std::string& op) {
+  std::istringstream in(dump);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    auto eq = line.find(" = ");
+    std::string rest = eq == std::string::npos ? line.substr(line.find(':') + 1) : line.substr(eq + 3);
+    rest.erase(0, rest.find_first_not_of(' '));
+    if (rest.compare(0, op.size() + 1, op + " ") == 0 || rest == op) ++n;
+  }
+  return n;
+}
+
 struct ExprResult {
   float c[4][kLanes];
   LaneMask live;
