@@ -4,6 +4,7 @@
 // pair; selected once per draw for the keys it covers, the float sampler (sampler.h) for the rest.
 #pragma once
 
+#include "raster/mip_selection.h"
 #include "raster/quad_vector.h"
 #include "raster/simd_path.h"
 #include "raster/texture.h"
@@ -19,5 +20,8 @@ using QuadSampler = void (*)(const TextureImage& image, const Sampler& sampler, 
 // CLAMP_TO_EDGE on s and t qualify.
 QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler,
                                      SimdPath path = SimdPath::Best);
+
+// The level or pair of levels that sampler reads for the quad at (s, t).
+LevelChoice bilinear8_quad_levels(const TextureImage& image, const Sampler& sampler, F4 s, F4 t);
 
 }  // namespace pineda::raster

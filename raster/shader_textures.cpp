@@ -5,6 +5,7 @@
 
 #include "raster/sampler.h"
 #include "raster/sampler_bilinear8.h"
+#include "raster/sampler_bilinear_block.h"
 
 namespace pineda::raster {
 namespace {
@@ -47,6 +48,40 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
   }
 }
 
+// The fast sampler's lookups of a whole block at once when its live quads read the same level
+// or levels (the same per-quad choice, bias included, as the quad sampler's); false otherwise.
+bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler, const float (*coords)[kLanes],
+                               shader::LodMode mode, const float* lod, shader::LaneMask live, float (*out)[kLanes]) {
+  static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
+  const BlockSampler block = select_bilinear8_block_sampler(image, sampler, path);
+  if (!block) return false;
+  LevelChoice choice;
+  bool any = false;
+  for (int first = 0; first < kLanes; first += 4) {
+    if (!((live >> first) & 0xf)) continue;
+    Sampler quad = sampler;
+    if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) quad.lod_bias += lod[first];
+    const LevelChoice c = bilinear8_quad_levels(image, quad, load4(&coords[0][first]), load4(&coords[1][first]));
+    if (any && (c.first != choice.first || c.two != choice.two || c.blend != choice.blend)) return false;
+    choice = c;
+    any = true;
+  }
+  if (!any) return false;
+  block(image, choice, coords[0], coords[1], out);
+  for (int first = 0; first < kLanes; first += 4) {
+    F4 lanes[4];
+    if (!((live >> first) & 0xf)) {
+      lanes[0] = lanes[1] = lanes[2] = splat(0.f);
+      lanes[3] = splat(1.f);
+    } else {
+      for (int c = 0; c < 4; ++c) lanes[c] = load4(&out[c][first]);
+      apply_base_format4(image.base_format, lanes);
+    }
+    for (int c = 0; c < 4; ++c) store4(&out[c][first], lanes[c]);
+  }
+  return true;
+}
+
 }  // namespace
 
 void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)[kLanes], shader::LodMode mode,
@@ -61,6 +96,7 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   const QuadSampler fast = image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit
                                ? select_bilinear8_sampler(*image, tu->sampler)
                                : nullptr;
+  if (fast && sample_block_at_one_level(*image, tu->sampler, coords, mode, lod, live, out)) return;
   for (int q = 0; q < kLanes / 4; ++q) {
     const int first = 4 * q;
     if (!((live >> first) & 0xf) || !image) {

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <limits>
+#include <random>
 
 #include "raster/sampler_bilinear8.h"
+#include "raster/sampler_bilinear_block.h"
 
 namespace pineda::raster {
 namespace {
@@ -78,4 +81,56 @@ TEST(Bilinear8Sampler, MipmapBlendUsesLambdaInOne256th) {
 }
 
 }  // namespace
+
+TEST(Bilinear8BlockSampler, SixteenLanesGiveTheQuadSamplersTexelsOnEveryPath) {
+  // A 16x8 image with three more levels; coordinates from a few texels to many per pixel, and
+  // ones the sampler must make sane (NaN, huge).
+  TextureImage image;
+  std::mt19937 random(7);
+  for (int w = 16, h = 8; w >= 2; w /= 2, h /= 2) {
+    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
+    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+    image.levels.push_back({w, h, std::move(texels)});
+  }
+  image.levels.push_back({1, 1, {0x80402010u}});
+  // Steps and corners in 1/256ths: s0 + ds - s0 is exactly ds in every quad.
+  std::uniform_int_distribution<int> coord(-768, 768), step(0, 100);
+  int blocks = 0, quads_compared = 0;
+  for (TexWrap ws : {TexWrap::Repeat, TexWrap::ClampToEdge})
+    for (TexWrap wt : {TexWrap::Repeat, TexWrap::ClampToEdge})
+      for (TexFilter min : {TexFilter::Linear, TexFilter::LinearMipmapNearest, TexFilter::LinearMipmapLinear})
+        for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+          for (int trial = 0; trial < 200; ++trial) {
+            Sampler sampler = linear(ws, min);
+            sampler.wrap_t = wt;
+            // Every quad spans the same steps, so that every quad reads the same levels.
+            const float ds = static_cast<float>(step(random)) / 256.f, dt = static_cast<float>(step(random)) / 256.f;
+            alignas(64) float s[kBlockLanes], t[kBlockLanes];
+            for (int q = 0; q < 4; ++q) {
+              const float s0 = static_cast<float>(coord(random)) / 256.f, t0 = static_cast<float>(coord(random)) / 256.f;
+              for (int i = 0; i < 4; ++i) {
+                s[4 * q + i] = s0 + ((i & 1) ? ds : 0.f);
+                t[4 * q + i] = t0 + ((i & 2) ? dt : 0.f);
+              }
+            }
+            if (trial == 0) s[5] = std::numeric_limits<float>::quiet_NaN(), t[9] = 1e30f;
+            const LevelChoice choice = bilinear8_quad_levels(image, sampler, load4(s), load4(t));
+            alignas(64) float block[4][kBlockLanes];
+            select_bilinear8_block_sampler(image, sampler, path)(image, choice, s, t, block);
+            for (int q = 0; q < 4; ++q) {
+              F4 quad[4];
+              select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
+              const LevelChoice own = bilinear8_quad_levels(image, sampler, load4(s + 4 * q), load4(t + 4 * q));
+              if (own.first != choice.first || own.two != choice.two || own.blend != choice.blend) continue;
+              for (int i = 0; i < 4; ++i)
+                for (int c = 0; c < 4; ++c) ASSERT_EQ(block[c][4 * q + i], quad[c][i]) << q << " " << i << " " << c;
+              ++quads_compared;
+            }
+            ++blocks;
+          }
+  EXPECT_EQ(blocks, 2 * 2 * 3 * 3 * 200);
+  // Only a quad with a NaN or huge coordinate (trial 0) may read other levels than quad 0.
+  EXPECT_GE(quads_compared, 4 * blocks - 2 * 2 * 3 * 3 * 2);
+}
+
 }  // namespace pineda::raster
