@@ -3,7 +3,7 @@
 # Usage: cmake -DROOT=<source dir> -P check_error_messages.cmake
 set(found "")
 foreach(dir state shader driver raster glapi)
-  file(GLOB_RECURSE sources "${ROOT}/${dir}/*.cpp" "${ROOT}/${dir}/*.h")
+  file(GLOB_RECURSE sources "${ROOT}/${dir}/*.cpp" "${ROOT}/${dir}/*.h" "${ROOT}/${dir}/*.py")
   foreach(source IN LISTS sources)
     file(STRINGS "${source}" lines REGEX "record_error\\(GL_[A-Z_]*\\)")
     foreach(line IN LISTS lines)
