@@ -180,7 +180,7 @@ PINEDA_EXPORT void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value) {
   if (!ctx) return;
   switch (pname) {
     case OSMESA_ROW_LENGTH:
-      if (value < 0) return ctx->gl->record_error(GL_INVALID_VALUE);
+      if (value < 0) return ctx->gl->record_error(GL_INVALID_VALUE, "value is negative");
       ctx->update_user_image();
       ctx->row_length = value;
       break;
@@ -188,7 +188,7 @@ PINEDA_EXPORT void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value) {
       ctx->update_user_image();
       ctx->user.y_up = value != 0;
       break;
-    default: return ctx->gl->record_error(GL_INVALID_ENUM);
+    default: return ctx->gl->record_error(GL_INVALID_ENUM, "pname is not an OSMesa pixel store parameter");
   }
   ctx->relayout();
   ctx->gl->drawable_changed();
@@ -210,7 +210,7 @@ PINEDA_EXPORT void GLAPIENTRY OSMesaGetIntegerv(GLint pname, GLint* value) {
     case OSMESA_TYPE: *value = GL_UNSIGNED_BYTE; break;
     case OSMESA_ROW_LENGTH: *value = ctx->row_length; break;
     case OSMESA_Y_UP: *value = ctx->user.y_up ? 1 : 0; break;
-    default: ctx->gl->record_error(GL_INVALID_ENUM); break;
+    default: ctx->gl->record_error(GL_INVALID_ENUM, "pname is not an OSMesa integer"); break;
   }
 }
 

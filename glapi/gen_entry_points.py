@@ -170,7 +170,8 @@ def list_recording(cmd, flags):
     # The replayed context's name must not be a GL parameter's (glIndexd has one called `c`).
     body = f"pineda::gl::{cmd.name[2:]}({', '.join(['list_ctx'] + call_args)});"
     if "inside_begin_end" not in flags:
-        body = ("if (list_ctx.inside_begin_end()) { list_ctx.record_error(GL_INVALID_OPERATION); return; } " + body)
+        body = ("if (list_ctx.inside_begin_end()) { "
+                "list_ctx.record_error(GL_INVALID_OPERATION, \"called between glBegin and glEnd\"); return; } " + body)
     lines.append(f"    ctx->record_list_command([{captures}](pineda::Context& list_ctx) {{ {body} }});")
     lines.append("    if (!ctx->executing_while_compiling()) return;")
     lines.append("  }")

@@ -79,10 +79,11 @@ void ClearAccum(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
 
 void Accum(Context& ctx, GLenum op, GLfloat value) {
   if (op != GL_ACCUM && op != GL_LOAD && op != GL_RETURN && op != GL_MULT && op != GL_ADD)
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "op is not an accumulation operation");
   if (!check_draw_framebuffer(ctx) || !check_read_framebuffer(ctx)) return;
   Drawable* draw = ctx.draw_drawable();
-  if (!draw || !draw->accum) return ctx.record_error(GL_INVALID_OPERATION);  // no accumulation buffer
+  if (!draw || !draw->accum)
+    return ctx.record_error(GL_INVALID_OPERATION, "the draw framebuffer has no accumulation buffer");
   if (std::isnan(value)) value = 0.f;
   ctx.finish();  // the colour buffers hold every queued draw
   const AccumRect r = prepare_accum(ctx, draw->framebuffer.width, draw->framebuffer.height);

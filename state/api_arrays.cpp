@@ -21,9 +21,11 @@ namespace {
 
 void set_pointer(Context& ctx, ClientArray& array, GLint size, GLenum type, GLsizei stride, const void* ptr,
                  std::initializer_list<GLint> sizes, std::initializer_list<GLenum> types) {
-  if (std::find(sizes.begin(), sizes.end(), size) == sizes.end() || stride < 0)
-    return ctx.record_error(GL_INVALID_VALUE);
-  if (std::find(types.begin(), types.end(), type) == types.end()) return ctx.record_error(GL_INVALID_ENUM);
+  if (std::find(sizes.begin(), sizes.end(), size) == sizes.end())
+    return ctx.record_error(GL_INVALID_VALUE, "size is not a size of this array");
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE, "stride is negative");
+  if (std::find(types.begin(), types.end(), type) == types.end())
+    return ctx.record_error(GL_INVALID_ENUM, "type is not a type of this array");
   array.size = size;
   array.type = type;
   array.stride = stride;
@@ -34,7 +36,7 @@ void set_pointer(Context& ctx, ClientArray& array, GLint size, GLenum type, GLsi
 bool valid_mode(Context& ctx, GLenum mode) {
   raster::Primitive p;
   if (to_primitive(mode, p)) return true;
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, "mode is not a primitive type");
   return false;
 }
 
@@ -111,7 +113,7 @@ void TexCoordPointer(Context& ctx, GLint size, GLenum type, GLsizei stride, cons
 }
 
 void EdgeFlagPointer(Context& ctx, GLsizei stride, const void* ptr) {
-  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE, "stride is negative");
   ctx.edge_flag_array.stride = stride;
   ctx.edge_flag_array.pointer = ptr;
   ctx.edge_flag_array.buffer = ctx.buffers.array;
@@ -119,7 +121,8 @@ void EdgeFlagPointer(Context& ctx, GLsizei stride, const void* ptr) {
 
 void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (!valid_mode(ctx, mode)) return;
-  if (count < 0 || first < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (count < 0) return ctx.record_error(GL_INVALID_VALUE, "count is negative");
+  if (first < 0) return ctx.record_error(GL_INVALID_VALUE, "first is negative");
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
   const std::span<raster::VertexInput> vertices = fetched_vertices(ctx, size_t(count));
@@ -130,9 +133,9 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
 
 void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
   if (!valid_mode(ctx, mode)) return;
-  if (count < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (count < 0) return ctx.record_error(GL_INVALID_VALUE, "count is negative");
   if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "type is not GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or GL_UNSIGNED_INT");
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx)) return;
   indices = element_indices(ctx, indices, size_t(count) * gl_type_size(type));
@@ -146,7 +149,7 @@ void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const v
 
 // Behaves as the Color/Normal/TexCoord/Vertex calls it stands for: the current values change.
 void ArrayElement(Context& ctx, GLint i) {
-  if (i < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (i < 0) return ctx.record_error(GL_INVALID_VALUE, "i is negative");
   raster::VertexInput v;
   fetch_vertex(ctx, size_t(i), v);
   if (ctx.color_array.active()) {
@@ -194,11 +197,11 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
       {GL_T2F_C4F_N3F_V3F, true, true, true, 2, 4, 3, GL_FLOAT, 2, 6, 9, 12},
       {GL_T4F_C4F_N3F_V4F, true, true, true, 4, 4, 4, GL_FLOAT, 4, 8, 11, 15},
   };
-  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE, "stride is negative");
   const Layout* layout = nullptr;
   for (const Layout& l : layouts)
     if (l.format == format) layout = &l;
-  if (!layout) return ctx.record_error(GL_INVALID_ENUM);
+  if (!layout) return ctx.record_error(GL_INVALID_ENUM, "format is not an interleaved array format");
   const GLsizei s = stride ? stride : layout->s * f;
   // Integer arithmetic: `pointer` is an offset into the array buffer when one is bound (often 0,
   // a null pointer, which C++ forbids offsetting).
@@ -234,18 +237,18 @@ void GetPointerv(Context& ctx, GLenum pname, void** params) {
       *params = const_cast<void*>(ctx.texture_units[ctx.client_active_texture].texcoord_array.pointer);
       break;
     case GL_DEBUG_CALLBACK_FUNCTION:
-      if (ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
+      if (ctx.es1()) return ctx.record_error(GL_INVALID_ENUM, "pname is not a pointer of OpenGL ES 1");
       *params = reinterpret_cast<void*>(ctx.debug.callback);
       break;
     case GL_DEBUG_CALLBACK_USER_PARAM:
-      if (ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
+      if (ctx.es1()) return ctx.record_error(GL_INVALID_ENUM, "pname is not a pointer of OpenGL ES 1");
       *params = const_cast<void*>(ctx.debug.user_param);
       break;
     case GL_POINT_SIZE_ARRAY_POINTER_OES:
-      if (!ctx.es1()) return ctx.record_error(GL_INVALID_ENUM);
+      if (!ctx.es1()) return ctx.record_error(GL_INVALID_ENUM, "pname is an OpenGL ES 1 pointer");
       *params = const_cast<void*>(ctx.point_size_array.pointer);
       break;
-    default: ctx.record_error(GL_INVALID_ENUM);
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a pointer name");
   }
 }
 

@@ -324,19 +324,21 @@ void restore(Context& ctx, const AttribFrame& f) {
 }  // namespace
 
 void PushAttrib(Context& ctx, GLbitfield mask) {
-  if (ctx.attrib_stack.size() >= kMaxAttribStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
+  if (ctx.attrib_stack.size() >= kMaxAttribStackDepth)
+    return ctx.record_error(GL_STACK_OVERFLOW, "the attribute stack is full (GL_MAX_ATTRIB_STACK_DEPTH)");
   ctx.attrib_stack.push_back(save(ctx, mask));
 }
 
 void PopAttrib(Context& ctx) {
-  if (ctx.attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
+  if (ctx.attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW, "the attribute stack is empty");
   const AttribFrame frame = std::move(ctx.attrib_stack.back());
   ctx.attrib_stack.pop_back();
   restore(ctx, frame);
 }
 
 void PushClientAttrib(Context& ctx, GLbitfield mask) {
-  if (ctx.client_attrib_stack.size() >= kMaxClientAttribStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
+  if (ctx.client_attrib_stack.size() >= kMaxClientAttribStackDepth)
+    return ctx.record_error(GL_STACK_OVERFLOW, "the client attribute stack is full (GL_MAX_CLIENT_ATTRIB_STACK_DEPTH)");
   ClientAttribFrame f;
   f.mask = mask;
   f.pack = ctx.pack;
@@ -357,7 +359,8 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
 }
 
 void PopClientAttrib(Context& ctx) {
-  if (ctx.client_attrib_stack.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
+  if (ctx.client_attrib_stack.empty())
+    return ctx.record_error(GL_STACK_UNDERFLOW, "the client attribute stack is empty");
   const ClientAttribFrame f = ctx.client_attrib_stack.back();
   ctx.client_attrib_stack.pop_back();
   if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {

@@ -40,7 +40,7 @@ void draw_bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLf
 
 void Bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove, GLfloat ymove,
             const GLubyte* bitmap) {
-  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE, "width or height is negative");
   if (!check_draw_framebuffer(ctx)) return;
   RasterPosition& rp = ctx.raster_pos;
   if (!rp.valid) return;

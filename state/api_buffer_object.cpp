@@ -17,7 +17,7 @@ std::shared_ptr<BufferObject>* binding(Context& ctx, GLenum target) {
     case GL_PIXEL_UNPACK_BUFFER: if (!ctx.es1()) return &ctx.unpack.buffer; break;
     default: break;
   }
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, "target is not a buffer target");
   return nullptr;
 }
 
@@ -26,7 +26,7 @@ std::shared_ptr<BufferObject>* binding(Context& ctx, GLenum target) {
 BufferObject* bound_buffer(Context& ctx, GLenum target) {
   std::shared_ptr<BufferObject>* b = binding(ctx, target);
   if (!b) return nullptr;
-  if (!*b) ctx.record_error(GL_INVALID_OPERATION);
+  if (!*b) ctx.record_error(GL_INVALID_OPERATION, "no buffer is bound to target");
   return b->get();
 }
 
@@ -45,11 +45,11 @@ BufferObject* sub_data_buffer(Context& ctx, GLenum target, GLintptr offset, GLsi
   BufferObject* b = bound_buffer(ctx, target);
   if (!b) return nullptr;
   if (offset < 0 || size < 0 || size_t(offset) > b->data.size() || size_t(size) > b->data.size() - size_t(offset)) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "offset or size is negative or reaches past the buffer's end");
     return nullptr;
   }
   if (b->mapped) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the buffer is mapped");
     return nullptr;
   }
   return b;
@@ -72,7 +72,7 @@ void unbind_everywhere(Context& ctx, GLuint name) {
 }  // namespace
 
 void GenBuffers(Context& ctx, GLsizei n, GLuint* buffers) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (buffers) ctx.buffers.names.generate(n, buffers);
 }
 
@@ -100,8 +100,8 @@ void BindBuffer(Context& ctx, GLenum target, GLuint buffer) {
 void BufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data, GLenum usage) {
   std::shared_ptr<BufferObject>* slot = binding(ctx, target);
   if (!slot) return;
-  if (size < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (!valid_usage(usage)) return ctx.record_error(GL_INVALID_ENUM);
+  if (size < 0) return ctx.record_error(GL_INVALID_VALUE, "size is negative");
+  if (!valid_usage(usage)) return ctx.record_error(GL_INVALID_ENUM, "usage is not a buffer usage");
   BufferObject* b = bound_buffer(ctx, target);
   if (!b) return;
   std::vector<uint8_t> store(static_cast<size_t>(size));  // allocated first: running out of memory leaves the buffer as it was
@@ -125,13 +125,13 @@ void GetBufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr s
 void* MapBuffer(Context& ctx, GLenum target, GLenum access) {
   if (!binding(ctx, target)) return nullptr;
   if (access != GL_READ_ONLY && access != GL_WRITE_ONLY && access != GL_READ_WRITE) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "access is not GL_READ_ONLY, GL_WRITE_ONLY or GL_READ_WRITE");
     return nullptr;
   }
   BufferObject* b = bound_buffer(ctx, target);
   if (!b) return nullptr;
   if (b->mapped) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the buffer is already mapped");
     return nullptr;
   }
   b->mapped = true;
@@ -143,7 +143,7 @@ GLboolean UnmapBuffer(Context& ctx, GLenum target) {
   BufferObject* b = bound_buffer(ctx, target);
   if (!b) return GL_FALSE;
   if (!b->mapped) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the buffer is not mapped");
     return GL_FALSE;
   }
   b->mapped = false;
@@ -153,7 +153,7 @@ GLboolean UnmapBuffer(Context& ctx, GLenum target) {
 void GetBufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
   if (!binding(ctx, target)) return;
   if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE && pname != GL_BUFFER_ACCESS && pname != GL_BUFFER_MAPPED)
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "pname is not a buffer parameter");
   const BufferObject* b = bound_buffer(ctx, target);
   if (!b || !params) return;
   switch (pname) {
@@ -166,7 +166,7 @@ void GetBufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* para
 
 void GetBufferPointerv(Context& ctx, GLenum target, GLenum pname, void** params) {
   if (!binding(ctx, target)) return;
-  if (pname != GL_BUFFER_MAP_POINTER) return ctx.record_error(GL_INVALID_ENUM);
+  if (pname != GL_BUFFER_MAP_POINTER) return ctx.record_error(GL_INVALID_ENUM, "pname is not GL_BUFFER_MAP_POINTER");
   BufferObject* b = bound_buffer(ctx, target);
   if (!b || !params) return;
   *params = b->mapped ? b->data.data() : nullptr;

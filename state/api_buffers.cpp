@@ -30,8 +30,9 @@ bool is_buffer_enum(GLenum b) {
 
 void DrawBuffer(Context& ctx, GLenum buffer) {
   if (ctx.framebuffers.draw_binding) return set_object_color_buffer(ctx, buffer, false);
-  if (!is_buffer_enum(buffer)) return ctx.record_error(GL_INVALID_ENUM);
-  if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!is_buffer_enum(buffer)) return ctx.record_error(GL_INVALID_ENUM, "mode is not a colour buffer name");
+  if (!buffer_exists(ctx, buffer))
+    return ctx.record_error(GL_INVALID_OPERATION, "the drawable has no such colour buffer");
   ctx.draw_buffer = buffer;
   ctx.extra_draw_buffers.fill(GL_NONE);  // GL 2.0 4.2.1: DrawBuffer sets the other outputs' to NONE
   ctx.drawable_changed();  // the renderer targets the selected colour buffer from now on
@@ -39,8 +40,10 @@ void DrawBuffer(Context& ctx, GLenum buffer) {
 
 void ReadBuffer(Context& ctx, GLenum buffer) {
   if (ctx.framebuffers.read_binding) return set_object_color_buffer(ctx, buffer, true);
-  if (!is_buffer_enum(buffer) || buffer == GL_FRONT_AND_BACK || buffer == GL_NONE) return ctx.record_error(GL_INVALID_ENUM);
-  if (!buffer_exists(ctx, buffer)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!is_buffer_enum(buffer) || buffer == GL_FRONT_AND_BACK || buffer == GL_NONE)
+    return ctx.record_error(GL_INVALID_ENUM, "mode is not a colour buffer name that selects one buffer");
+  if (!buffer_exists(ctx, buffer))
+    return ctx.record_error(GL_INVALID_OPERATION, "the drawable has no such colour buffer");
   ctx.read_buffer = buffer;
 }
 

@@ -12,7 +12,7 @@ float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }  // NaN -
 
 void Clear(Context& ctx, GLbitfield mask) {
   if (mask & ~(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT)) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "mask has bits other than the four buffer bits");
     return;
   }
   if (!check_draw_framebuffer(ctx) || !ctx.draw_drawable()) return;

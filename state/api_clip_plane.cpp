@@ -9,7 +9,7 @@ namespace {
 
 bool plane_index(Context& ctx, GLenum plane, int& index) {
   if (plane < GL_CLIP_PLANE0 || plane >= GL_CLIP_PLANE0 + raster::kMaxClipPlanes) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "plane is not GL_CLIP_PLANEi");
     return false;
   }
   index = static_cast<int>(plane - GL_CLIP_PLANE0);

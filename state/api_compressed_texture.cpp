@@ -33,8 +33,9 @@ bool image_target_of(GLenum target, int dims, bool proxy_ok) {
 
 // glCompressedTexImage*D and glCompressedTexSubImage*D: every format is unsupported.
 void compressed_image(Context& ctx, GLenum target, int dims, bool proxy_ok) {
-  if (!image_target_of(target, dims, proxy_ok)) return ctx.record_error(GL_INVALID_ENUM);
-  ctx.record_error(GL_INVALID_ENUM);  // internalformat/format: not a supported compressed format
+  if (!image_target_of(target, dims, proxy_ok))
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a texture image target of the call");
+  ctx.record_error(GL_INVALID_ENUM, "internalformat or format is not a supported compressed format (none is)");
 }
 
 }  // namespace
@@ -63,9 +64,11 @@ void CompressedTexSubImage3D(Context& ctx, GLenum target, GLint, GLint, GLint, G
 
 void GetCompressedTexImage(Context& ctx, GLenum target, GLint level, void*) {
   ImageTarget t;
-  if (!image_target(target, t) || t.proxy) return ctx.record_error(GL_INVALID_ENUM);
-  if (level < 0 || level > max_texture_level(t.kind)) return ctx.record_error(GL_INVALID_VALUE);
-  ctx.record_error(GL_INVALID_OPERATION);  // the level is missing or uncompressed
+  if (!image_target(target, t) || t.proxy)
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a texture image target");
+  if (level < 0 || level > max_texture_level(t.kind))
+    return ctx.record_error(GL_INVALID_VALUE, "level is negative or above log2 of the maximum texture size");
+  ctx.record_error(GL_INVALID_OPERATION, "the level is missing or not compressed");
 }
 
 void CompressedTexImage1DARB(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLsizei width,
@@ -110,7 +113,7 @@ void record(Context& ctx, GLenum target, std::function<void(Context&)> call) {
   ImageTarget t;
   if (image_target(target, t) && t.proxy) return call(ctx);
   ctx.record_list_command([call = std::move(call)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     call(c);
   });
 }

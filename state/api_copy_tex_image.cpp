@@ -70,7 +70,7 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
 bool valid_copy_target(Context& ctx, GLenum target, int dims) {
   ImageTarget t;
   if (image_target(target, t) && !t.proxy && image_dimensions(t.kind) == dims) return true;
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, "target is not a texture image target of the call's dimensions");
   return false;
 }
 
@@ -92,7 +92,7 @@ std::vector<float> read_depth(Context& ctx, GLint x, GLint y, GLsizei width, GLs
 bool read_depth_stencil(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, std::vector<uint32_t>& out) {
   const Drawable* d = ctx.read_drawable();
   if (!d || !d->framebuffer.depth.bits || !d->framebuffer.stencil.bits) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the read framebuffer has no depth or no stencil buffer");
     return false;
   }
   out.assign(size_t(std::max(width, 0)) * size_t(std::max(height, 0)), 0u);
@@ -126,7 +126,7 @@ bool depth_level(Context& ctx, GLenum target, GLint level, bool with_stencil = f
 bool has_read_depth(Context& ctx) {
   const Drawable* d = ctx.read_drawable();
   if (d && d->framebuffer.depth.bits > 0) return true;
-  ctx.record_error(GL_INVALID_OPERATION);
+  ctx.record_error(GL_INVALID_OPERATION, "the read framebuffer has no depth buffer");
   return false;
 }
 
@@ -134,7 +134,7 @@ bool has_read_depth(Context& ctx) {
 // NONE or name an attachment without an image (INVALID_OPERATION, as glReadPixels).
 bool has_read_color(Context& ctx) {
   if (ctx.read_framebuffer().color.base) return true;
-  ctx.record_error(GL_INVALID_OPERATION);
+  ctx.record_error(GL_INVALID_OPERATION, "the read framebuffer has no colour buffer to read");
   return false;
 }
 
@@ -142,14 +142,14 @@ bool has_read_color(Context& ctx) {
 bool valid_copy_size(Context& ctx, GLsizei width, GLsizei height) {
   if (!check_read_single_sampled(ctx)) return false;
   if (width >= 0 && height >= 0 && width <= kMaxTextureSize + 2 && height <= kMaxTextureSize + 2) return true;
-  ctx.record_error(GL_INVALID_VALUE);
+  ctx.record_error(GL_INVALID_VALUE, "width or height is negative or above the maximum texture size");
   return false;
 }
 
 // GL 1.1 3.8.2: CopyTexImage takes the internal formats of TexImage but 1, 2, 3 and 4.
 bool valid_copy_internal_format(Context& ctx, GLenum internalformat) {
   if (internalformat < 1 || internalformat > 4) return true;
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, "internalformat is 1, 2, 3 or 4");
   return false;
 }
 

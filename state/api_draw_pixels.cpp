@@ -17,15 +17,17 @@ namespace {
 bool has_depth(const Drawable* d) { return d && d->framebuffer.depth.bits > 0; }
 bool has_stencil(const Drawable* d) { return d && d->framebuffer.stencil.bits > 0; }
 
-GLenum draw_pixels_error(const Context& ctx, GLenum format, GLenum type) {
-  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) {
+GlError draw_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  if (GlError error; packed_depth_stencil_pixels(format, type, error)) {
     if (error == GL_NO_ERROR && (!has_depth(ctx.draw_drawable()) || !has_stencil(ctx.draw_drawable())))
-      return GL_INVALID_OPERATION;
+      return {GL_INVALID_OPERATION, "the draw framebuffer has no depth or no stencil buffer"};
     return error;
   }
-  if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
-  if (format == GL_DEPTH_COMPONENT && !has_depth(ctx.draw_drawable())) return GL_INVALID_OPERATION;
-  if (format == GL_STENCIL_INDEX && !has_stencil(ctx.draw_drawable())) return GL_INVALID_OPERATION;
+  if (const GlError error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  if (format == GL_DEPTH_COMPONENT && !has_depth(ctx.draw_drawable()))
+    return {GL_INVALID_OPERATION, "the draw framebuffer has no depth buffer"};
+  if (format == GL_STENCIL_INDEX && !has_stencil(ctx.draw_drawable()))
+    return {GL_INVALID_OPERATION, "the draw framebuffer has no stencil buffer"};
   return GL_NO_ERROR;
 }
 
@@ -77,9 +79,9 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
 }  // namespace
 
 void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE, "width or height is negative");
   if (!check_draw_framebuffer(ctx)) return;
-  if (const GLenum error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
+  if (const GlError error = draw_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_DRAW_PIXEL_TOKEN)) return;
   if (width == 0 || height == 0 || !ctx.draw_drawable()) return;
   if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, 1, false, format, type)) || !pixels)
@@ -103,17 +105,20 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
 }
 
 void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
-  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE, "width or height is negative");
   // GL_DEPTH_STENCIL: EXT_packed_depth_stencil's copy of both, as Mesa takes it at any version.
   if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "type is not GL_COLOR, GL_DEPTH, GL_STENCIL or GL_DEPTH_STENCIL");
   if (!check_draw_framebuffer(ctx) || !check_read_single_sampled(ctx)) return;
   const Drawable* draw = ctx.draw_drawable();
   const Drawable* read = ctx.read_drawable();
   const bool depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL, stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
-  if (depth && (!has_depth(draw) || !has_depth(read))) return ctx.record_error(GL_INVALID_OPERATION);
-  if (type == GL_COLOR && read && !ctx.read_framebuffer().color.base) return ctx.record_error(GL_INVALID_OPERATION);
-  if (stencil && (!has_stencil(draw) || !has_stencil(read))) return ctx.record_error(GL_INVALID_OPERATION);
+  if (depth && (!has_depth(draw) || !has_depth(read)))
+    return ctx.record_error(GL_INVALID_OPERATION, "the draw or read framebuffer has no depth buffer");
+  if (type == GL_COLOR && read && !ctx.read_framebuffer().color.base)
+    return ctx.record_error(GL_INVALID_OPERATION, "the read framebuffer has no colour buffer to read");
+  if (stencil && (!has_stencil(draw) || !has_stencil(read)))
+    return ctx.record_error(GL_INVALID_OPERATION, "the draw or read framebuffer has no stencil buffer");
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_COPY_PIXEL_TOKEN)) return;
   if (width == 0 || height == 0 || !draw || !read) return;
   ctx.finish();

@@ -96,10 +96,13 @@ namespace {
 // Mesa's compatibility profile, the tie-breaker, also takes the client arrays here (as
 // glEnableClientState), and piglit relies on it; compiled into a list, they switch on replay.
 void set_capability(Context& ctx, GLenum cap, bool value) {
-  if (missing_texture_unit_state(ctx, cap)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (missing_texture_unit_state(ctx, cap))
+    return ctx.record_error(GL_INVALID_OPERATION,
+                            "cap is per texture unit and the active unit is above GL_MAX_TEXTURE_UNITS");
   bool* flag = server_capability(ctx, cap);
   if (!flag) flag = client_capability(ctx, cap);
-  if (!flag) return ctx.record_error(GL_INVALID_ENUM, [cap] { return "cap " + hex_enum(cap) + " is not a capability"; });
+  if (!flag)
+    return ctx.record_error(GL_INVALID_ENUM, [cap] { return "cap " + hex_enum(cap) + " is not a capability"; });
   *flag = value;
   if (cap == GL_COLOR_MATERIAL) track_color_material(ctx);
   if (cap == GL_BLEND)  // every draw buffer's (GL 3.0 4.1.8; EXT_draw_buffers2 sets them one at a time)
@@ -108,7 +111,7 @@ void set_capability(Context& ctx, GLenum cap, bool value) {
 
 void set_client_capability(Context& ctx, GLenum array, bool value) {
   bool* flag = client_capability(ctx, array);
-  if (!flag) return ctx.record_error(GL_INVALID_ENUM);
+  if (!flag) return ctx.record_error(GL_INVALID_ENUM, "array is not a client array capability");
   *flag = value;
 }
 
@@ -119,12 +122,12 @@ void Disable(Context& ctx, GLenum cap) { set_capability(ctx, cap, false); }
 
 GLboolean IsEnabled(Context& ctx, GLenum cap) {
   if (missing_texture_unit_state(ctx, cap)) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "cap is per texture unit and the active unit is above GL_MAX_TEXTURE_UNITS");
     return GL_FALSE;
   }
   if (bool* flag = server_capability(ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
   if (bool* flag = client_capability(ctx, cap)) return *flag ? GL_TRUE : GL_FALSE;
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, [cap] { return "cap " + hex_enum(cap) + " is not a capability"; });
   return GL_FALSE;
 }
 

@@ -18,22 +18,27 @@ constexpr int64_t kMaxMeshPrimitiveVertices = int64_t(1) << 20;
 constexpr int64_t kMaxMeshVertices = int64_t(1) << 24;
 
 // glMap's argument errors, in Mesa's order; the active texture unit is checked when it runs.
-GLenum map1_error(GLenum target, double u1, double u2, GLint stride, GLint order, const void* points) {
-  if (u1 == u2 || order < 1 || order > kMaxEvalOrder || !points) return GL_INVALID_VALUE;
+GlError map1_error(GLenum target, double u1, double u2, GLint stride, GLint order, const void* points) {
+  if (u1 == u2) return {GL_INVALID_VALUE, "u1 equals u2"};
+  if (order < 1 || order > kMaxEvalOrder) return {GL_INVALID_VALUE, "order is less than 1 or above GL_MAX_EVAL_ORDER"};
+  if (!points) return {GL_INVALID_VALUE, "points is null"};
   const int kind = map1_kind(target);
-  if (kind < 0) return GL_INVALID_ENUM;
-  return stride < map_components(kind) ? GL_INVALID_VALUE : GL_NO_ERROR;
+  if (kind < 0) return {GL_INVALID_ENUM, "target is not a one-dimensional map"};
+  if (stride < map_components(kind)) return {GL_INVALID_VALUE, "stride is less than the target's components"};
+  return GL_NO_ERROR;
 }
 
-GLenum map2_error(GLenum target, double u1, double u2, GLint ustride, GLint uorder, double v1, double v2,
-                  GLint vstride, GLint vorder, const void* points) {
-  if (u1 == u2 || v1 == v2 || uorder < 1 || uorder > kMaxEvalOrder || vorder < 1 || vorder > kMaxEvalOrder ||
-      !points)
-    return GL_INVALID_VALUE;
+GlError map2_error(GLenum target, double u1, double u2, GLint ustride, GLint uorder, double v1, double v2,
+                   GLint vstride, GLint vorder, const void* points) {
+  if (u1 == u2 || v1 == v2) return {GL_INVALID_VALUE, "u1 equals u2 or v1 equals v2"};
+  if (uorder < 1 || uorder > kMaxEvalOrder || vorder < 1 || vorder > kMaxEvalOrder)
+    return {GL_INVALID_VALUE, "uorder or vorder is less than 1 or above GL_MAX_EVAL_ORDER"};
+  if (!points) return {GL_INVALID_VALUE, "points is null"};
   const int kind = map2_kind(target);
-  if (kind < 0) return GL_INVALID_ENUM;
+  if (kind < 0) return {GL_INVALID_ENUM, "target is not a two-dimensional map"};
   const int k = map_components(kind);
-  return ustride < k || vstride < k ? GL_INVALID_VALUE : GL_NO_ERROR;
+  if (ustride < k || vstride < k) return {GL_INVALID_VALUE, "ustride or vstride is less than the target's components"};
+  return GL_NO_ERROR;
 }
 
 // Control point i, j of the application's array (j = 0 for glMap1), copied now.
@@ -52,13 +57,13 @@ std::vector<glm::dvec4> copy_points(const T* points, int components, GLint ustri
 // GL 1.3 (ARB_multitexture): maps are defined only while texture unit 0 is active.
 bool map_allowed(Context& ctx) {
   if (ctx.active_texture == 0) return true;
-  ctx.record_error(GL_INVALID_OPERATION);
+  ctx.record_error(GL_INVALID_OPERATION, "the active texture unit is not unit 0");
   return false;
 }
 
 template <typename T>
 void map1(Context& ctx, GLenum target, double u1, double u2, GLint stride, GLint order, const T* points) {
-  if (const GLenum error = map1_error(target, u1, u2, stride, order, points)) return ctx.record_error(error);
+  if (const GlError error = map1_error(target, u1, u2, stride, order, points)) return ctx.record_error(error);
   if (!map_allowed(ctx)) return;
   const int kind = map1_kind(target);
   ctx.eval.map1[kind] = {order, u1, u2, copy_points(points, map_components(kind), stride, order, 0, 1)};
@@ -66,11 +71,11 @@ void map1(Context& ctx, GLenum target, double u1, double u2, GLint stride, GLint
 
 template <typename T>
 void compile_map1(Context& ctx, GLenum target, double u1, double u2, GLint stride, GLint order, const T* points) {
-  const GLenum error = map1_error(target, u1, u2, stride, order, points);
+  const GlError error = map1_error(target, u1, u2, stride, order, points);
   EvalMap1 map;
   if (!error) map = {order, u1, u2, copy_points(points, map_components(map1_kind(target)), stride, order, 0, 1)};
   ctx.record_list_command([error, target, map = std::move(map)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     if (error) return c.record_error(error);
     if (map_allowed(c)) c.eval.map1[map1_kind(target)] = map;
   });
@@ -86,7 +91,7 @@ EvalMap2 make_map2(GLenum target, double u1, double u2, GLint ustride, GLint uor
 template <typename T>
 void map2(Context& ctx, GLenum target, double u1, double u2, GLint ustride, GLint uorder, double v1, double v2,
           GLint vstride, GLint vorder, const T* points) {
-  if (const GLenum error = map2_error(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
+  if (const GlError error = map2_error(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points))
     return ctx.record_error(error);
   if (!map_allowed(ctx)) return;
   ctx.eval.map2[map2_kind(target)] = make_map2(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points);
@@ -95,23 +100,23 @@ void map2(Context& ctx, GLenum target, double u1, double u2, GLint ustride, GLin
 template <typename T>
 void compile_map2(Context& ctx, GLenum target, double u1, double u2, GLint ustride, GLint uorder, double v1,
                   double v2, GLint vstride, GLint vorder, const T* points) {
-  const GLenum error = map2_error(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points);
+  const GlError error = map2_error(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points);
   EvalMap2 map;
   if (!error) map = make_map2(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, points);
   ctx.record_list_command([error, target, map = std::move(map)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     if (error) return c.record_error(error);
     if (map_allowed(c)) c.eval.map2[map2_kind(target)] = map;
   });
 }
 
 void map_grid1(Context& ctx, GLint un, double u1, double u2) {
-  if (un < 1) return ctx.record_error(GL_INVALID_VALUE);
+  if (un < 1) return ctx.record_error(GL_INVALID_VALUE, "un is less than 1");
   ctx.eval.attribs.grid1 = {un, u1, u2};
 }
 
 void map_grid2(Context& ctx, GLint un, double u1, double u2, GLint vn, double v1, double v2) {
-  if (un < 1 || vn < 1) return ctx.record_error(GL_INVALID_VALUE);
+  if (un < 1 || vn < 1) return ctx.record_error(GL_INVALID_VALUE, "un or vn is less than 1");
   ctx.eval.attribs.grid2 = {un, vn, u1, u2, v1, v2};
 }
 
@@ -131,7 +136,7 @@ bool vertex_map_enabled(const std::array<bool, kEvalMapKinds>& enabled) {
 
 bool mesh_fits(Context& ctx, int64_t longest_primitive, int64_t total) {
   if (longest_primitive <= kMaxMeshPrimitiveVertices && total <= kMaxMeshVertices) return true;
-  ctx.record_error(GL_OUT_OF_MEMORY);
+  ctx.record_error(GL_OUT_OF_MEMORY, "the mesh has too many vertices");
   return false;
 }
 
@@ -200,7 +205,7 @@ void EvalPoint2(Context& ctx, GLint i, GLint j) { eval_point2(ctx, i, j); }
 
 // GL 1.1 5.1: Begin(POINTS or LINE_STRIP), EvalPoint1 for i1..i2, End.
 void EvalMesh1(Context& ctx, GLenum mode, GLint i1, GLint i2) {
-  if (mode != GL_POINT && mode != GL_LINE) return ctx.record_error(GL_INVALID_ENUM);
+  if (mode != GL_POINT && mode != GL_LINE) return ctx.record_error(GL_INVALID_ENUM, "mode is not GL_POINT or GL_LINE");
   if (!vertex_map_enabled(ctx.eval.attribs.map1_enabled) || i2 < i1) return;
   const int64_t count = int64_t(i2) - i1 + 1;
   if (!mesh_fits(ctx, count, count)) return;
@@ -212,7 +217,8 @@ void EvalMesh1(Context& ctx, GLenum mode, GLint i1, GLint i2) {
 // GL 1.1 5.1: FILL is a QUAD_STRIP per row j (vertices (i, j), (i, j + 1)); LINE a LINE_STRIP
 // per row and per column; POINT one POINTS primitive, row by row.
 void EvalMesh2(Context& ctx, GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
-  if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL) return ctx.record_error(GL_INVALID_ENUM);
+  if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL)
+    return ctx.record_error(GL_INVALID_ENUM, "mode is not GL_POINT, GL_LINE or GL_FILL");
   if (!vertex_map_enabled(ctx.eval.attribs.map2_enabled) || i2 < i1 || j2 < j1) return;
   const int64_t columns = int64_t(i2) - i1 + 1, rows = int64_t(j2) - j1 + 1;
   if (!mesh_fits(ctx, std::max(columns, rows), std::max(columns, rows))) return;  // keeps the products below exact

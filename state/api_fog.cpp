@@ -16,12 +16,12 @@ void set_fog(Context& ctx, GLenum pname, double value, const float* color) {
   switch (pname) {
     case GL_FOG_MODE: {
       const GLenum mode = enum_from_float(value);
-      if (static_cast<double>(mode) != value) return ctx.record_error(GL_INVALID_ENUM);
+      if (static_cast<double>(mode) != value) return ctx.record_error(GL_INVALID_ENUM, "GL_FOG_MODE is not an enum");
       switch (mode) {
         case GL_LINEAR: fog.mode = raster::FogMode::Linear; break;
         case GL_EXP: fog.mode = raster::FogMode::Exp; break;
         case GL_EXP2: fog.mode = raster::FogMode::Exp2; break;
-        default: return ctx.record_error(GL_INVALID_ENUM);
+        default: return ctx.record_error(GL_INVALID_ENUM, "GL_FOG_MODE is not GL_LINEAR, GL_EXP or GL_EXP2");
       }
       x.fog_mode = mode;
       return;
@@ -29,22 +29,22 @@ void set_fog(Context& ctx, GLenum pname, double value, const float* color) {
     case GL_FOG_COORD_SRC: {
       const GLenum source = enum_from_float(value);
       if (static_cast<double>(source) != value || (source != GL_FOG_COORD && source != GL_FRAGMENT_DEPTH))
-        return ctx.record_error(GL_INVALID_ENUM);
+        return ctx.record_error(GL_INVALID_ENUM, "GL_FOG_COORD_SRC is not GL_FOG_COORD or GL_FRAGMENT_DEPTH");
       x.fog_coord_source = source;
       return;
     }
     case GL_FOG_DENSITY:
-      if (value < 0.0) return ctx.record_error(GL_INVALID_VALUE);
+      if (value < 0.0) return ctx.record_error(GL_INVALID_VALUE, "GL_FOG_DENSITY is negative");
       fog.density = static_cast<float>(value);
       return;
     case GL_FOG_START: fog.start = static_cast<float>(value); return;
     case GL_FOG_END: fog.end = static_cast<float>(value); return;
     case GL_FOG_INDEX: x.fog_index = static_cast<float>(value); return;
     case GL_FOG_COLOR:
-      if (!color) return ctx.record_error(GL_INVALID_ENUM);
+      if (!color) return ctx.record_error(GL_INVALID_ENUM, "GL_FOG_COLOR takes a vector: use glFogfv or glFogiv");
       for (int i = 0; i < 4; ++i) fog.color[i] = std::clamp(color[i], 0.f, 1.f);
       return;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not a fog parameter");
   }
 }
 

@@ -12,7 +12,7 @@ float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }  // NaN -
 
 void AlphaFunc(Context& ctx, GLenum func, GLfloat ref) {
   raster::CompareFunc f;
-  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM, "func is not a comparison function");
   ctx.alpha_func = func;
   ctx.draw_state.alpha_func = f;
   ctx.draw_state.alpha_ref = clamp01(ref);
@@ -20,7 +20,7 @@ void AlphaFunc(Context& ctx, GLenum func, GLfloat ref) {
 
 void DepthFunc(Context& ctx, GLenum func) {
   raster::CompareFunc f;
-  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM, "func is not a comparison function");
   ctx.depth_func = func;
   ctx.draw_state.depth_func = f;
 }
@@ -33,7 +33,7 @@ void BlendFuncSeparate(Context& ctx, GLenum src_rgb, GLenum dst_rgb, GLenum src_
   raster::BlendFactor sr, dr, sa, da;
   if (!to_blend_factor(src_rgb, sr) || !to_blend_factor(dst_rgb, dr) || !to_blend_factor(src_alpha, sa) ||
       !to_blend_factor(dst_alpha, da))
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "a factor is not a blend factor");
   ctx.blend_src_rgb = src_rgb;
   ctx.blend_dst_rgb = dst_rgb;
   ctx.blend_src_alpha = src_alpha;
@@ -50,7 +50,7 @@ void BlendFunc(Context& ctx, GLenum src, GLenum dst) { BlendFuncSeparate(ctx, sr
 void BlendEquationSeparate(Context& ctx, GLenum mode_rgb, GLenum mode_alpha) {
   raster::BlendEquation rgb, alpha;
   if (!to_blend_equation(mode_rgb, rgb) || !to_blend_equation(mode_alpha, alpha))
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "a mode is not a blend equation");
   ctx.blend_eq_rgb = mode_rgb;
   ctx.blend_eq_alpha = mode_alpha;
   ctx.draw_state.blend_state.eq_rgb = rgb;
@@ -69,7 +69,7 @@ void BlendColor(Context& ctx, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
 
 void LogicOp(Context& ctx, GLenum opcode) {
   raster::LogicOp op;
-  if (!to_logic_op(opcode, op)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!to_logic_op(opcode, op)) return ctx.record_error(GL_INVALID_ENUM, "opcode is not a logic operation");
   ctx.logic_op = opcode;
   ctx.draw_state.logic_op = op;
 }
@@ -81,7 +81,7 @@ void ColorMask(Context& ctx, GLboolean r, GLboolean g, GLboolean b, GLboolean a)
 }
 
 void Scissor(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
-  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE, "width or height is negative");
   ctx.draw_state.scissor = {x, y, width, height};
 }
 

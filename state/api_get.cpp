@@ -273,8 +273,10 @@ GLint to_int(Kind kind, double v) {
 template <typename T, typename Convert>
 void get(Context& ctx, GLenum pname, T* params, Convert convert) {
   Values values;
-  if (missing_texture_unit_state(ctx, pname)) return ctx.record_error(GL_INVALID_OPERATION);
-  if (!query(ctx, pname, values)) return ctx.record_error(GL_INVALID_ENUM);
+  if (missing_texture_unit_state(ctx, pname))
+    return ctx.record_error(GL_INVALID_OPERATION,
+                            "pname is per texture unit and the active unit is above GL_MAX_TEXTURE_UNITS");
+  if (!query(ctx, pname, values)) return ctx.record_error(GL_INVALID_ENUM, "pname is not a state variable");
   if (!params) return;
   for (size_t i = 0; i < values.v.size(); ++i) params[i] = convert(values.kind, values.v[i]);
 }
@@ -332,7 +334,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
     }
     case GL_SHADING_LANGUAGE_VERSION:
       if (ctx.es1()) {
-        ctx.record_error(GL_INVALID_ENUM);
+        ctx.record_error(GL_INVALID_ENUM, "OpenGL ES 1 has no shading language");
         return nullptr;
       }
       // OpenGL ES 2.0, 6.1.5: "OpenGL ES GLSL ES N.M", then vendor information.
@@ -340,7 +342,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
     case GL_EXTENSIONS:
       if (ctx.es2()) return reinterpret_cast<const GLubyte*>(glapi::kES2Extensions);
       return reinterpret_cast<const GLubyte*>(ctx.es1() ? glapi::kES1Extensions : kExtensions.c_str());
-    default: ctx.record_error(GL_INVALID_ENUM); return nullptr;
+    default: ctx.record_error(GL_INVALID_ENUM, "name is not a string name"); return nullptr;
   }
 }
 

@@ -35,13 +35,15 @@ bool is_depth_level(const TextureLevelData& l) {
 void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLenum type, void* pixels,
                    size_t client_bytes) {
   ImageTarget t;
-  if (!image_target(target, t) || t.proxy) return ctx.record_error(GL_INVALID_ENUM);
-  GLenum error = GL_NO_ERROR;
+  if (!image_target(target, t) || t.proxy)
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a texture image target");
+  GlError error;
   const bool packed_ds = packed_depth_stencil_pixels(format, type, error);
   if (!packed_ds)
     error = format == GL_DEPTH_COMPONENT ? pixel_rect_format_type_error(format, type) : color_format_type_error(format, type);
   if (error != GL_NO_ERROR) return ctx.record_error(error);
-  if (level < 0 || level > max_texture_level(t.kind)) return ctx.record_error(GL_INVALID_VALUE);
+  if (level < 0 || level > max_texture_level(t.kind))
+    return ctx.record_error(GL_INVALID_VALUE, "level is negative or above log2 of the maximum texture size");
   resolve_rendered_textures(ctx);
   const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
   const std::vector<TextureLevelData>& levels =
@@ -55,7 +57,7 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
     return pack_pixels(ctx, pixels, bytes, client_bytes) && pixels;
   };
   if (packed_ds) {  // a DEPTH_STENCIL level only
-    if (l.stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION);
+    if (l.stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION, "the level is not a depth-stencil image");
     if (!writes()) return;
     const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, l.width);
     auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
@@ -69,7 +71,9 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
       }
     return;
   }
-  if (depth_texture != (format == GL_DEPTH_COMPONENT)) return ctx.record_error(GL_INVALID_OPERATION);  // as Mesa
+  if (depth_texture != (format == GL_DEPTH_COMPONENT))  // as Mesa
+    return ctx.record_error(GL_INVALID_OPERATION,
+                            "format is GL_DEPTH_COMPONENT and the texture is not depth, or the reverse");
   if (!writes()) return;
   // The border texels of a bordered level are not kept: only the inner image is written.
   const ImageLayout layout = image_layout(ctx.pack, l.width, format, type);

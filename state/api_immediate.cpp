@@ -64,7 +64,7 @@ void set_texcoord(Context& ctx, GLuint unit, float s, float t, float r, float q)
 
 void Begin(Context& ctx, GLenum mode) {
   raster::Primitive p;
-  if (!to_primitive(mode, p)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!to_primitive(mode, p)) return ctx.record_error(GL_INVALID_ENUM, "mode is not a primitive type");
   if (!check_draw_framebuffer(ctx)) return;  // as Mesa: no primitive begins
   ctx.in_begin_end = true;
   ctx.begin_mode = mode;
@@ -74,7 +74,7 @@ void Begin(Context& ctx, GLenum mode) {
 }
 
 void End(Context& ctx) {
-  if (!ctx.in_begin_end) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!ctx.in_begin_end) return ctx.record_error(GL_INVALID_OPERATION, "called outside glBegin and glEnd");
   ctx.in_begin_end = false;
   draw_vertices(ctx, ctx.begin_mode, ctx.immediate, {}, ctx.immediate_materials, AttribSource::Immediate);
   ctx.immediate.clear();

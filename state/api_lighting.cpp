@@ -22,7 +22,8 @@ int param_count(GLenum pname) {
 }
 
 void light(Context& ctx, GLenum which, GLenum pname, const GLfloat* v) {
-  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights) return ctx.record_error(GL_INVALID_ENUM);
+  if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights)
+    return ctx.record_error(GL_INVALID_ENUM, "light is not GL_LIGHTi");
   raster::Light& l = ctx.lighting.lights[which - GL_LIGHT0];
   const glm::mat4 mv(ctx.modelview.top());
   switch (pname) {
@@ -32,19 +33,20 @@ void light(Context& ctx, GLenum which, GLenum pname, const GLfloat* v) {
     case GL_POSITION: l.position = mv * vec4_of(v); break;  // stored in eye coordinates
     case GL_SPOT_DIRECTION: l.spot_direction = glm::mat3(mv) * glm::vec3(v[0], v[1], v[2]); break;
     case GL_SPOT_EXPONENT:
-      if (v[0] < 0.f || v[0] > 128.f) return ctx.record_error(GL_INVALID_VALUE);
+      if (v[0] < 0.f || v[0] > 128.f) return ctx.record_error(GL_INVALID_VALUE, "GL_SPOT_EXPONENT is outside [0, 128]");
       l.spot_exponent = v[0];
       break;
     case GL_SPOT_CUTOFF:
-      if ((v[0] < 0.f || v[0] > 90.f) && v[0] != 180.f) return ctx.record_error(GL_INVALID_VALUE);
+      if ((v[0] < 0.f || v[0] > 90.f) && v[0] != 180.f)
+        return ctx.record_error(GL_INVALID_VALUE, "GL_SPOT_CUTOFF is outside [0, 90] and not 180");
       l.spot_cutoff = v[0];
       break;
     case GL_CONSTANT_ATTENUATION: case GL_LINEAR_ATTENUATION: case GL_QUADRATIC_ATTENUATION:
-      if (v[0] < 0.f) return ctx.record_error(GL_INVALID_VALUE);
+      if (v[0] < 0.f) return ctx.record_error(GL_INVALID_VALUE, "the attenuation is negative");
       (pname == GL_CONSTANT_ATTENUATION ? l.constant_attenuation
        : pname == GL_LINEAR_ATTENUATION ? l.linear_attenuation : l.quadratic_attenuation) = v[0];
       break;
-    default: ctx.record_error(GL_INVALID_ENUM);
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a light parameter");
   }
 }
 
@@ -56,9 +58,9 @@ void light_model(Context& ctx, GLenum pname, const GLfloat* v) {
     case GL_LIGHT_MODEL_COLOR_CONTROL:
       if (v[0] == static_cast<GLfloat>(GL_SEPARATE_SPECULAR_COLOR)) ctx.lighting.separate_specular = true;
       else if (v[0] == static_cast<GLfloat>(GL_SINGLE_COLOR)) ctx.lighting.separate_specular = false;
-      else ctx.record_error(GL_INVALID_ENUM);
+      else ctx.record_error(GL_INVALID_ENUM, "param is not GL_SEPARATE_SPECULAR_COLOR or GL_SINGLE_COLOR");
       break;
-    default: ctx.record_error(GL_INVALID_ENUM);
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a light model parameter");
   }
 }
 
@@ -79,11 +81,13 @@ void note_material_after_change(Context& ctx) {
 }
 
 void material(Context& ctx, GLenum face, GLenum pname, const GLfloat* v) {
-  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) return ctx.record_error(GL_INVALID_ENUM);
-  if (pname == GL_SHININESS && (v[0] < 0.f || v[0] > 128.f)) return ctx.record_error(GL_INVALID_VALUE);
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
+    return ctx.record_error(GL_INVALID_ENUM, "face is not GL_FRONT, GL_BACK or GL_FRONT_AND_BACK");
+  if (pname == GL_SHININESS && (v[0] < 0.f || v[0] > 128.f))
+    return ctx.record_error(GL_INVALID_VALUE, "GL_SHININESS is outside [0, 128]");
   if (pname != GL_AMBIENT && pname != GL_DIFFUSE && pname != GL_SPECULAR && pname != GL_EMISSION &&
       pname != GL_AMBIENT_AND_DIFFUSE && pname != GL_SHININESS && pname != GL_COLOR_INDEXES)
-    return ctx.record_error(GL_INVALID_ENUM);
+    return ctx.record_error(GL_INVALID_ENUM, "pname is not a material parameter");
   note_material_before_change(ctx);
   for (raster::Material* m : {&ctx.lighting.front, &ctx.lighting.back}) {
     if ((m == &ctx.lighting.front && face == GL_BACK) || (m == &ctx.lighting.back && face == GL_FRONT)) continue;
@@ -165,10 +169,11 @@ void Materialiv(Context& ctx, GLenum face, GLenum pname, const GLint* params) {
 }
 
 void ColorMaterial(Context& ctx, GLenum face, GLenum mode) {
-  if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
-      (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
-       mode != GL_AMBIENT_AND_DIFFUSE))
-    return ctx.record_error(GL_INVALID_ENUM);
+  if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
+    return ctx.record_error(GL_INVALID_ENUM, "face is not GL_FRONT, GL_BACK or GL_FRONT_AND_BACK");
+  if (mode != GL_EMISSION && mode != GL_AMBIENT && mode != GL_DIFFUSE && mode != GL_SPECULAR &&
+      mode != GL_AMBIENT_AND_DIFFUSE)
+    return ctx.record_error(GL_INVALID_ENUM, "mode is not a material colour");
   ctx.color_material_face = face;
   ctx.color_material_mode = mode;
   raster::ColorMaterial& cm = ctx.lighting.color_material;
@@ -186,7 +191,7 @@ namespace {
 // The value of a light parameter; false (with GL_INVALID_ENUM recorded) when there is none.
 bool light_value(Context& ctx, GLenum which, GLenum pname, glm::vec4& v) {
   if (which < GL_LIGHT0 || which >= GL_LIGHT0 + raster::kMaxLights) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "light is not GL_LIGHTi");
     return false;
   }
   const raster::Light& l = ctx.lighting.lights[which - GL_LIGHT0];
@@ -202,7 +207,7 @@ bool light_value(Context& ctx, GLenum which, GLenum pname, glm::vec4& v) {
     case GL_CONSTANT_ATTENUATION: v.x = l.constant_attenuation; break;
     case GL_LINEAR_ATTENUATION: v.x = l.linear_attenuation; break;
     case GL_QUADRATIC_ATTENUATION: v.x = l.quadratic_attenuation; break;
-    default: ctx.record_error(GL_INVALID_ENUM); return false;
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a light parameter"); return false;
   }
   return true;
 }
@@ -210,7 +215,7 @@ bool light_value(Context& ctx, GLenum which, GLenum pname, glm::vec4& v) {
 // The value of a material parameter; false (with GL_INVALID_ENUM recorded) when there is none.
 bool material_value(Context& ctx, GLenum face, GLenum pname, glm::vec4& v) {
   if (face != GL_FRONT && face != GL_BACK) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "face is not GL_FRONT or GL_BACK");
     return false;
   }
   const raster::Material& m = face == GL_FRONT ? ctx.lighting.front : ctx.lighting.back;
@@ -222,7 +227,7 @@ bool material_value(Context& ctx, GLenum face, GLenum pname, glm::vec4& v) {
     case GL_EMISSION: v = m.emission; break;
     case GL_SHININESS: v.x = m.shininess; break;
     case GL_COLOR_INDEXES: v = glm::vec4(m.color_indexes, 0.f); break;
-    default: ctx.record_error(GL_INVALID_ENUM); return false;
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a material parameter"); return false;
   }
   return true;
 }

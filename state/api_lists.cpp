@@ -57,14 +57,15 @@ void call_names(Context& ctx, const std::vector<GLuint>& names) {
 }  // namespace
 
 void NewList(Context& ctx, GLuint list, GLenum mode) {
-  if (list == 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) return ctx.record_error(GL_INVALID_ENUM);
-  if (ctx.compiling_list()) return ctx.record_error(GL_INVALID_OPERATION);
+  if (list == 0) return ctx.record_error(GL_INVALID_VALUE, "list is zero");
+  if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE)
+    return ctx.record_error(GL_INVALID_ENUM, "mode is not GL_COMPILE or GL_COMPILE_AND_EXECUTE");
+  if (ctx.compiling_list()) return ctx.record_error(GL_INVALID_OPERATION, "a display list is already being compiled");
   ctx.compilation = {list, mode, std::make_shared<DisplayList>()};
 }
 
 void EndList(Context& ctx) {
-  if (!ctx.compiling_list()) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!ctx.compiling_list()) return ctx.record_error(GL_INVALID_OPERATION, "no display list is being compiled");
   ctx.lists.define(ctx.compilation.name, std::move(ctx.compilation.list));
   ctx.compilation = {};
 }
@@ -72,8 +73,8 @@ void EndList(Context& ctx) {
 void CallList(Context& ctx, GLuint list) { call_list(ctx, list); }
 
 void CallLists(Context& ctx, GLsizei n, GLenum type, const void* lists) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (!valid_call_lists_type(type)) return ctx.record_error(GL_INVALID_ENUM);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
+  if (!valid_call_lists_type(type)) return ctx.record_error(GL_INVALID_ENUM, "type is not a list name type");
   std::vector<GLuint> names;
   if (lists && decode_names(n, type, lists, names)) call_names(ctx, names);
 }
@@ -84,14 +85,15 @@ void compile_CallLists(Context& ctx, GLsizei n, GLenum type, const void* lists) 
   const bool valid = n >= 0 && valid_call_lists_type(type);
   if (valid && lists) decode_names(n, type, lists, names);
   ctx.record_list_command([n, valid, names](Context& c) {  // allowed between glBegin and glEnd
-    if (!valid) return c.record_error(n < 0 ? GL_INVALID_VALUE : GL_INVALID_ENUM);
+    if (n < 0) return c.record_error(GL_INVALID_VALUE, "n is negative");
+    if (!valid) return c.record_error(GL_INVALID_ENUM, "type is not a list name type");
     call_names(c, names);
   });
 }
 
 GLuint GenLists(Context& ctx, GLsizei range) {
   if (range < 0) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "range is negative");
     return 0;
   }
   return ctx.lists.generate(range);

@@ -17,7 +17,7 @@ MatrixStack* current_stack(Context& ctx) {
     case GL_PROJECTION: return &ctx.projection;
     case GL_TEXTURE:
       if (ctx.active_texture >= raster::kMaxTextureUnits) {
-        ctx.record_error(GL_INVALID_OPERATION);
+        ctx.record_error(GL_INVALID_OPERATION, "the active texture unit is above GL_MAX_TEXTURE_UNITS");
         return nullptr;
       }
       return &ctx.texture_matrix[ctx.active_texture];
@@ -50,7 +50,8 @@ void rotate(Context& ctx, double angle, double x, double y, double z) {
 }  // namespace
 
 void MatrixMode(Context& ctx, GLenum mode) {
-  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) return ctx.record_error(GL_INVALID_ENUM);
+  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE)
+    return ctx.record_error(GL_INVALID_ENUM, "mode is not GL_MODELVIEW, GL_PROJECTION or GL_TEXTURE");
   ctx.matrix_mode = mode;
 }
 
@@ -89,14 +90,14 @@ void MultTransposeMatrixdARB(Context& ctx, const GLdouble* m) { MultTransposeMat
 void PushMatrix(Context& ctx) {
   MatrixStack* s = current_stack(ctx);
   if (!s) return;
-  if (s->stack.size() >= s->max_depth) return ctx.record_error(GL_STACK_OVERFLOW);
+  if (s->stack.size() >= s->max_depth) return ctx.record_error(GL_STACK_OVERFLOW, "the current matrix stack is full");
   s->stack.push_back(s->top());
 }
 
 void PopMatrix(Context& ctx) {
   MatrixStack* s = current_stack(ctx);
   if (!s) return;
-  if (s->stack.size() <= 1) return ctx.record_error(GL_STACK_UNDERFLOW);
+  if (s->stack.size() <= 1) return ctx.record_error(GL_STACK_UNDERFLOW, "the current matrix stack has one matrix only");
   s->stack.pop_back();
 }
 
@@ -114,12 +115,15 @@ void Scaled(Context& ctx, GLdouble x, GLdouble y, GLdouble z) {
 void Scalef(Context& ctx, GLfloat x, GLfloat y, GLfloat z) { Scaled(ctx, x, y, z); }
 
 void Frustum(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  if (n <= 0.0 || f <= 0.0 || l == r || b == t || n == f) return ctx.record_error(GL_INVALID_VALUE);
+  if (n <= 0.0 || f <= 0.0) return ctx.record_error(GL_INVALID_VALUE, "nearVal or farVal is not positive");
+  if (l == r || b == t || n == f)
+    return ctx.record_error(GL_INVALID_VALUE, "left equals right, bottom equals top or nearVal equals farVal");
   multiply(ctx, glm::frustum(l, r, b, t, n, f));
 }
 
 void Ortho(Context& ctx, GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
-  if (l == r || b == t || n == f) return ctx.record_error(GL_INVALID_VALUE);
+  if (l == r || b == t || n == f)
+    return ctx.record_error(GL_INVALID_VALUE, "left equals right, bottom equals top or nearVal equals farVal");
   multiply(ctx, glm::ortho(l, r, b, t, n, f));
 }
 

@@ -13,52 +13,55 @@ bool valid_index_type(GLenum type) {
 }
 
 // The error of a multi-draw call before anything is drawn (GL_NO_ERROR when it may run).
-GLenum multi_draw_error(GLenum mode, const GLsizei* count, GLsizei drawcount) {
+GlError multi_draw_error(GLenum mode, const GLsizei* count, GLsizei drawcount) {
   raster::Primitive p;
-  if (!to_primitive(mode, p)) return GL_INVALID_ENUM;
-  if (drawcount < 0) return GL_INVALID_VALUE;
+  if (!to_primitive(mode, p)) return {GL_INVALID_ENUM, "mode is not a primitive type"};
+  if (drawcount < 0) return {GL_INVALID_VALUE, "drawcount is negative"};
   for (GLsizei i = 0; count && i < drawcount; ++i)
-    if (count[i] < 0) return GL_INVALID_VALUE;
+    if (count[i] < 0) return {GL_INVALID_VALUE, "an element of count is negative"};
   return GL_NO_ERROR;
 }
 
-GLenum range_error(GLuint start, GLuint end) { return end < start ? GL_INVALID_VALUE : GL_NO_ERROR; }
+GlError range_error(GLuint start, GLuint end) {
+  return end < start ? GlError{GL_INVALID_VALUE, "end is less than start"} : GlError{};
+}
 
-void compile_error(Context& ctx, GLenum error) {
+void compile_error(Context& ctx, GlError error) {
   ctx.record_list_command([error](Context& c) { c.record_error(error); });
 }
 
 }  // namespace
 
 void MultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsizei* count, GLsizei drawcount) {
-  if (GLenum e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return ctx.record_error(e);
+  if (GlError e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return ctx.record_error(e);
   if (!first || !count) return;
   for (GLsizei i = 0; i < drawcount; ++i) DrawArrays(ctx, mode, first[i], count[i]);
 }
 
 void MultiDrawElements(Context& ctx, GLenum mode, const GLsizei* count, GLenum type, const void* const* indices,
                        GLsizei drawcount) {
-  if (GLenum e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return ctx.record_error(e);
-  if (!valid_index_type(type)) return ctx.record_error(GL_INVALID_ENUM);
+  if (GlError e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return ctx.record_error(e);
+  if (!valid_index_type(type))
+    return ctx.record_error(GL_INVALID_ENUM, "type is not GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or GL_UNSIGNED_INT");
   if (!count || !indices) return;
   for (GLsizei i = 0; i < drawcount; ++i) DrawElements(ctx, mode, count[i], type, indices[i]);
 }
 
 void DrawRangeElements(Context& ctx, GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                        const void* indices) {
-  if (GLenum e = range_error(start, end); e != GL_NO_ERROR) return ctx.record_error(e);
+  if (GlError e = range_error(start, end); e != GL_NO_ERROR) return ctx.record_error(e);
   DrawElements(ctx, mode, count, type, indices);
 }
 
 void compile_MultiDrawArrays(Context& ctx, GLenum mode, const GLint* first, const GLsizei* count, GLsizei drawcount) {
-  if (GLenum e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return compile_error(ctx, e);
+  if (GlError e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return compile_error(ctx, e);
   if (!first || !count) return;
   for (GLsizei i = 0; i < drawcount; ++i) compile_DrawArrays(ctx, mode, first[i], count[i]);
 }
 
 void compile_MultiDrawElements(Context& ctx, GLenum mode, const GLsizei* count, GLenum type,
                                const void* const* indices, GLsizei drawcount) {
-  if (GLenum e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return compile_error(ctx, e);
+  if (GlError e = multi_draw_error(mode, count, drawcount); e != GL_NO_ERROR) return compile_error(ctx, e);
   if (!valid_index_type(type)) return compile_error(ctx, GL_INVALID_ENUM);
   if (!count || !indices) return;
   for (GLsizei i = 0; i < drawcount; ++i) compile_DrawElements(ctx, mode, count[i], type, indices[i]);
@@ -66,7 +69,7 @@ void compile_MultiDrawElements(Context& ctx, GLenum mode, const GLsizei* count, 
 
 void compile_DrawRangeElements(Context& ctx, GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                                const void* indices) {
-  if (GLenum e = range_error(start, end); e != GL_NO_ERROR) return compile_error(ctx, e);
+  if (GlError e = range_error(start, end); e != GL_NO_ERROR) return compile_error(ctx, e);
   compile_DrawElements(ctx, mode, count, type, indices);
 }
 

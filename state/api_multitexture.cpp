@@ -16,7 +16,7 @@ int unit_index(GLenum texture, int units = raster::kMaxTextureUnits) {
 
 void set_multi_texcoord(Context& ctx, GLenum target, float s, float t, float r, float q) {
   const int unit = unit_index(target);
-  if (unit < 0) return ctx.record_error(GL_INVALID_ENUM);
+  if (unit < 0) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_TEXTUREi below GL_MAX_TEXTURE_COORDS");
   const float coords[4] = {s, t, r, q};
   std::copy(coords, coords + 4, ctx.texture_units[unit].current_texcoord);
 }
@@ -27,14 +27,15 @@ void set_multi_texcoord(Context& ctx, GLenum target, float s, float t, float r, 
 // fixed-function units only. Texture coordinate sets stay MAX_TEXTURE_COORDS.
 void ActiveTexture(Context& ctx, GLenum texture) {
   const int unit = unit_index(texture, ctx.es1() ? raster::kMaxTextureUnits : raster::kMaxTextureImageUnits);
-  if (unit < 0) return ctx.record_error(GL_INVALID_ENUM);
+  if (unit < 0)
+    return ctx.record_error(GL_INVALID_ENUM, "texture is not GL_TEXTUREi below the number of texture units");
   ctx.active_texture = GLuint(unit);
 }
 void ActiveTextureARB(Context& ctx, GLenum texture) { ActiveTexture(ctx, texture); }
 
 void ClientActiveTexture(Context& ctx, GLenum texture) {
   const int unit = unit_index(texture);
-  if (unit < 0) return ctx.record_error(GL_INVALID_ENUM);
+  if (unit < 0) return ctx.record_error(GL_INVALID_ENUM, "texture is not GL_TEXTUREi below GL_MAX_TEXTURE_COORDS");
   ctx.client_active_texture = GLuint(unit);
 }
 void ClientActiveTextureARB(Context& ctx, GLenum texture) { ClientActiveTexture(ctx, texture); }

@@ -40,7 +40,7 @@ void set_transfer(Context& ctx, GLenum pname, double value) {
     case GL_MAP_STENCIL: m.map_stencil = value != 0.0; return;
     case GL_INDEX_SHIFT: m.index_shift = round_int_param(value); return;
     case GL_INDEX_OFFSET: m.index_offset = round_int_param(value); return;
-    default: ctx.record_error(GL_INVALID_ENUM);
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a pixel transfer parameter");
   }
 }
 
@@ -51,17 +51,19 @@ bool is_index_map(GLenum map) { return map == GL_PIXEL_MAP_I_TO_I || map == GL_P
 bool needs_power_of_two(GLenum map) { return map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_I_TO_A; }
 
 // `normalize_max`: the integer type's maximum (colour maps read unsigned integers as [0, 1]).
-GLenum pixel_map_error(GLenum map, GLsizei size) {
-  if (!is_pixel_map(map)) return GL_INVALID_ENUM;
-  if (size < 1 || size > kMaxPixelMapTable) return GL_INVALID_VALUE;
-  if (needs_power_of_two(map) && (size & (size - 1)) != 0) return GL_INVALID_VALUE;
+GlError pixel_map_error(GLenum map, GLsizei size) {
+  if (!is_pixel_map(map)) return {GL_INVALID_ENUM, "map is not a pixel map"};
+  if (size < 1 || size > kMaxPixelMapTable)
+    return {GL_INVALID_VALUE, "mapsize is less than 1 or above GL_MAX_PIXEL_MAP_TABLE"};
+  if (needs_power_of_two(map) && (size & (size - 1)) != 0)
+    return {GL_INVALID_VALUE, "mapsize is not a power of two for an index map"};
   return GL_NO_ERROR;
 }
 
 // With a pixel unpack buffer bound, `values` is an offset into it (no pixel store mode applies).
 template <typename T>
 void set_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
-  if (const GLenum error = pixel_map_error(map, size); error != GL_NO_ERROR) return ctx.record_error(error);
+  if (const GlError error = pixel_map_error(map, size); error != GL_NO_ERROR) return ctx.record_error(error);
   const void* data = values;
   if (!unpack_pixels(ctx, data, size_t(size) * sizeof(T)) || !data) return;
   std::vector<float>& table = ctx.pixel_maps[map];
@@ -76,7 +78,7 @@ void set_map(Context& ctx, GLenum map, GLsizei size, const T* values, double nor
 // The values are copied at compile time only when the call is valid: `size` may be anything.
 template <typename T>
 void compile_map(Context& ctx, GLenum map, GLsizei size, const T* values, double normalize_max) {
-  const GLenum error = pixel_map_error(map, size);
+  const GlError error = pixel_map_error(map, size);
   std::vector<T> copy;
   const void* data = values;
   if (error == GL_NO_ERROR && unpack_pixels(ctx, data, size_t(size) * sizeof(T)) && data) {
@@ -84,7 +86,7 @@ void compile_map(Context& ctx, GLenum map, GLsizei size, const T* values, double
     std::memcpy(copy.data(), data, size_t(size) * sizeof(T));
   }
   ctx.record_list_command([=, copy = std::move(copy)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     if (error != GL_NO_ERROR) return c.record_error(error);
     with_packed_unpack(c, [&] { set_map(c, map, size, copy.empty() ? nullptr : copy.data(), normalize_max); });
   });
@@ -93,7 +95,7 @@ void compile_map(Context& ctx, GLenum map, GLsizei size, const T* values, double
 // `client_bytes`: how much client memory `values` holds, when no pack buffer is bound.
 template <typename T>
 void get_map(Context& ctx, GLenum map, T* values, double normalize_max, size_t client_bytes = SIZE_MAX) {
-  if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!is_pixel_map(map)) return ctx.record_error(GL_INVALID_ENUM, "map is not a pixel map");
   const std::vector<float>& table = ctx.pixel_maps[map];
   void* data = values;
   if (!pack_pixels(ctx, data, table.size() * sizeof(T), client_bytes) || !data) return;

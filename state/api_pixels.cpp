@@ -30,8 +30,8 @@ void set_store(Context& ctx, GLenum pname, double value) {
       pname != GL_PACK_ALIGNMENT && pname != GL_UNPACK_ROW_LENGTH && pname != GL_UNPACK_SKIP_ROWS &&
       pname != GL_UNPACK_SKIP_PIXELS && pname != GL_UNPACK_ALIGNMENT && pname != GL_PACK_SKIP_IMAGES &&
       pname != GL_PACK_IMAGE_HEIGHT && pname != GL_UNPACK_SKIP_IMAGES && pname != GL_UNPACK_IMAGE_HEIGHT)
-    return ctx.record_error(GL_INVALID_ENUM);
-  if (v < 0) return ctx.record_error(GL_INVALID_VALUE);
+    return ctx.record_error(GL_INVALID_ENUM, "pname is not a pixel storage parameter");
+  if (v < 0) return ctx.record_error(GL_INVALID_VALUE, "param is negative");
   switch (pname) {
     case GL_PACK_ROW_LENGTH: case GL_UNPACK_ROW_LENGTH: s.row_length = v; return;
     case GL_PACK_SKIP_ROWS: case GL_UNPACK_SKIP_ROWS: s.skip_rows = v; return;
@@ -39,27 +39,31 @@ void set_store(Context& ctx, GLenum pname, double value) {
     case GL_PACK_SKIP_IMAGES: case GL_UNPACK_SKIP_IMAGES: s.skip_images = v; return;
     case GL_PACK_IMAGE_HEIGHT: case GL_UNPACK_IMAGE_HEIGHT: s.image_height = v; return;
     default:
-      if (v != 1 && v != 2 && v != 4 && v != 8) return ctx.record_error(GL_INVALID_VALUE);
+      if (v != 1 && v != 2 && v != 4 && v != 8)
+        return ctx.record_error(GL_INVALID_VALUE, "the alignment is not 1, 2, 4 or 8");
       s.alignment = v;
   }
 }
 
 // GL 1.5 spec 4.3.2: format/type as for DrawPixels; colour indices cannot be read from an
 // RGBA framebuffer, depth and stencil need their buffer.
-GLenum read_pixels_error(const Context& ctx, GLenum format, GLenum type) {
-  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) {
+GlError read_pixels_error(const Context& ctx, GLenum format, GLenum type) {
+  if (GlError error; packed_depth_stencil_pixels(format, type, error)) {
     const Drawable* d = ctx.read_drawable();
     if (error == GL_NO_ERROR && (!d || !d->framebuffer.depth.bits || !d->framebuffer.stencil.bits))
-      return GL_INVALID_OPERATION;
+      return {GL_INVALID_OPERATION, "the read framebuffer has no depth or no stencil buffer"};
     return error;
   }
-  if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  if (const GlError error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
   const Drawable* d = ctx.read_drawable();
-  if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;
-  if (format == GL_DEPTH_COMPONENT && (!d || d->framebuffer.depth.bits == 0)) return GL_INVALID_OPERATION;
-  if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0)) return GL_INVALID_OPERATION;
+  if (format == GL_COLOR_INDEX) return {GL_INVALID_OPERATION, "format is GL_COLOR_INDEX and the framebuffer is RGBA"};
+  if (format == GL_DEPTH_COMPONENT && (!d || d->framebuffer.depth.bits == 0))
+    return {GL_INVALID_OPERATION, "the read framebuffer has no depth buffer"};
+  if (format == GL_STENCIL_INDEX && (!d || d->framebuffer.stencil.bits == 0))
+    return {GL_INVALID_OPERATION, "the read framebuffer has no stencil buffer"};
   // A framebuffer object's read buffer may be NONE or name an attachment without an image.
-  if (color_format_components(format) > 0 && d && !ctx.read_framebuffer().color.base) return GL_INVALID_OPERATION;
+  if (color_format_components(format) > 0 && d && !ctx.read_framebuffer().color.base)
+    return {GL_INVALID_OPERATION, "the read framebuffer has no colour buffer to read"};
   return GL_NO_ERROR;
 }
 
@@ -79,12 +83,12 @@ void transfer_read_color(const Context& ctx, double rgba[4]) {
 // `client_bytes`: how much client memory `pixels` holds (glReadnPixelsARB), when no pack buffer is bound.
 void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format, GLenum type,
                  void* pixels, size_t client_bytes) {
-  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0) return ctx.record_error(GL_INVALID_VALUE, "width or height is negative");
   if (ctx.es2()) {
-    if (const GLenum error = es2_read_pixels_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
+    if (const GlError error = es2_read_pixels_error(format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   }
   if (!check_read_single_sampled(ctx)) return;
-  if (const GLenum error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
+  if (const GlError error = read_pixels_error(ctx, format, type); error != GL_NO_ERROR) return ctx.record_error(error);
   const Drawable* d = ctx.read_drawable();
   if (!d || width == 0 || height == 0) return;
   if (!pack_pixels(ctx, pixels, client_image_extent(ctx.pack, width, height, 1, false, format, type), client_bytes) ||

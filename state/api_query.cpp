@@ -20,7 +20,7 @@ void stop_counting(Context& ctx) {
 QueryObject* finished_query(Context& ctx, GLuint id) {
   std::shared_ptr<QueryObject> q = ctx.queries.names.find(id);
   if (!q || q == ctx.queries.active_samples_passed) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "id is not a query object or is the active query");
     return nullptr;
   }
   return q.get();
@@ -29,7 +29,7 @@ QueryObject* finished_query(Context& ctx, GLuint id) {
 // Result of query `id` for `pname`; false when an error was recorded.
 bool query_result(Context& ctx, GLuint id, GLenum pname, uint64_t& out) {
   if (pname != GL_QUERY_RESULT && pname != GL_QUERY_RESULT_AVAILABLE) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "pname is not GL_QUERY_RESULT or GL_QUERY_RESULT_AVAILABLE");
     return false;
   }
   QueryObject* q = finished_query(ctx, id);
@@ -42,7 +42,7 @@ bool query_result(Context& ctx, GLuint id, GLenum pname, uint64_t& out) {
 }  // namespace
 
 void GenQueries(Context& ctx, GLsizei n, GLuint* ids) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (ids) ctx.queries.names.generate(n, ids);
 }
 
@@ -60,8 +60,10 @@ void DeleteQueries(Context& ctx, GLsizei n, const GLuint* ids) {
 GLboolean IsQuery(Context& ctx, GLuint id) { return ctx.queries.names.exists(id) ? GL_TRUE : GL_FALSE; }
 
 void BeginQuery(Context& ctx, GLenum target, GLuint id) {
-  if (target != GL_SAMPLES_PASSED) return ctx.record_error(GL_INVALID_ENUM);
-  if (id == 0 || ctx.queries.active_samples_passed) return ctx.record_error(GL_INVALID_OPERATION);
+  if (target != GL_SAMPLES_PASSED) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_SAMPLES_PASSED");
+  if (id == 0) return ctx.record_error(GL_INVALID_OPERATION, "id is zero");
+  if (ctx.queries.active_samples_passed)
+    return ctx.record_error(GL_INVALID_OPERATION, "a query of target is already active");
   const std::shared_ptr<QueryObject>& q = ctx.queries.names.get_or_create(id);
   q->counter = std::make_shared<raster::SampleCounter>();
   ctx.queries.active_samples_passed = q;
@@ -69,20 +71,20 @@ void BeginQuery(Context& ctx, GLenum target, GLuint id) {
 }
 
 void EndQuery(Context& ctx, GLenum target) {
-  if (target != GL_SAMPLES_PASSED) return ctx.record_error(GL_INVALID_ENUM);
-  if (!ctx.queries.active_samples_passed) return ctx.record_error(GL_INVALID_OPERATION);
+  if (target != GL_SAMPLES_PASSED) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_SAMPLES_PASSED");
+  if (!ctx.queries.active_samples_passed) return ctx.record_error(GL_INVALID_OPERATION, "no query of target is active");
   stop_counting(ctx);
 }
 
 void GetQueryiv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
-  if (target != GL_SAMPLES_PASSED) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_SAMPLES_PASSED) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_SAMPLES_PASSED");
   GLint value = 0;
   switch (pname) {
     case GL_CURRENT_QUERY:
       value = ctx.queries.active_samples_passed ? GLint(ctx.queries.active_samples_passed->name) : 0;
       break;
     case GL_QUERY_COUNTER_BITS: value = kQueryCounterBits; break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not GL_CURRENT_QUERY or GL_QUERY_COUNTER_BITS");
   }
   if (params) *params = value;
 }

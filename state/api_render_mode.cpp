@@ -18,12 +18,12 @@ bool selecting(const Context& ctx) { return ctx.render_mode.mode == GL_SELECT; }
 GLint RenderMode(Context& ctx, GLenum mode) {
   RenderModeState& rm = ctx.render_mode;
   if (mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "mode is not GL_RENDER, GL_SELECT or GL_FEEDBACK");
     return 0;
   }
   if ((mode == GL_SELECT && (!rm.select_buffer || rm.select_size == 0)) ||
       (mode == GL_FEEDBACK && (!rm.feedback_buffer || rm.feedback_size == 0))) {
-    ctx.record_error(GL_INVALID_OPERATION);  // no buffer to write to
+    ctx.record_error(GL_INVALID_OPERATION, "the mode has no buffer to write to");  // no buffer to write to
     return 0;
   }
   GLint result = 0;
@@ -44,16 +44,17 @@ GLint RenderMode(Context& ctx, GLenum mode) {
 }
 
 void SelectBuffer(Context& ctx, GLsizei size, GLuint* buffer) {
-  if (selecting(ctx)) return ctx.record_error(GL_INVALID_OPERATION);
-  if (size < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (selecting(ctx)) return ctx.record_error(GL_INVALID_OPERATION, "the render mode is GL_SELECT");
+  if (size < 0) return ctx.record_error(GL_INVALID_VALUE, "size is negative");
   ctx.render_mode.select_buffer = buffer;
   ctx.render_mode.select_size = buffer ? size : 0;
 }
 
 void FeedbackBuffer(Context& ctx, GLsizei size, GLenum type, GLfloat* buffer) {
-  if (ctx.render_mode.mode == GL_FEEDBACK) return ctx.record_error(GL_INVALID_OPERATION);
-  if (size < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (!valid_feedback_type(type)) return ctx.record_error(GL_INVALID_ENUM);
+  if (ctx.render_mode.mode == GL_FEEDBACK)
+    return ctx.record_error(GL_INVALID_OPERATION, "the render mode is GL_FEEDBACK");
+  if (size < 0) return ctx.record_error(GL_INVALID_VALUE, "size is negative");
+  if (!valid_feedback_type(type)) return ctx.record_error(GL_INVALID_ENUM, "type is not a feedback type");
   ctx.render_mode.feedback_buffer = buffer;
   ctx.render_mode.feedback_size = buffer ? size : 0;
   ctx.render_mode.feedback_type = type;
@@ -68,7 +69,7 @@ void InitNames(Context& ctx) {
 void LoadName(Context& ctx, GLuint name) {
   if (!selecting(ctx)) return;
   RenderModeState& rm = ctx.render_mode;
-  if (rm.names.empty()) return ctx.record_error(GL_INVALID_OPERATION);
+  if (rm.names.empty()) return ctx.record_error(GL_INVALID_OPERATION, "the name stack is empty");
   rm.write_hit_record();
   rm.names.back() = name;
 }
@@ -77,7 +78,8 @@ void PushName(Context& ctx, GLuint name) {
   if (!selecting(ctx)) return;
   RenderModeState& rm = ctx.render_mode;
   rm.write_hit_record();
-  if (rm.names.size() >= kMaxNameStackDepth) return ctx.record_error(GL_STACK_OVERFLOW);
+  if (rm.names.size() >= kMaxNameStackDepth)
+    return ctx.record_error(GL_STACK_OVERFLOW, "the name stack is full (GL_MAX_NAME_STACK_DEPTH)");
   rm.names.push_back(name);
 }
 
@@ -85,7 +87,7 @@ void PopName(Context& ctx) {
   if (!selecting(ctx)) return;
   RenderModeState& rm = ctx.render_mode;
   rm.write_hit_record();
-  if (rm.names.empty()) return ctx.record_error(GL_STACK_UNDERFLOW);
+  if (rm.names.empty()) return ctx.record_error(GL_STACK_UNDERFLOW, "the name stack is empty");
   rm.names.pop_back();
 }
 

@@ -49,7 +49,8 @@ namespace pineda::gl {
 
 void StencilFuncSeparate(Context& ctx, GLenum face, GLenum func, GLint ref, GLuint mask) {
   raster::CompareFunc f;
-  if (!is_face(face) || !to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!is_face(face)) return ctx.record_error(GL_INVALID_ENUM, "face is not GL_FRONT, GL_BACK or GL_FRONT_AND_BACK");
+  if (!to_compare_func(func, f)) return ctx.record_error(GL_INVALID_ENUM, "func is not a comparison function");
   if (sets_front(face)) {
     ctx.stencil_func = func;
     ctx.stencil_value_mask = mask;
@@ -64,8 +65,9 @@ void StencilFuncSeparate(Context& ctx, GLenum face, GLenum func, GLint ref, GLui
 
 void StencilOpSeparate(Context& ctx, GLenum face, GLenum fail, GLenum zfail, GLenum zpass) {
   raster::StencilOp f, zf, zp;
-  if (!is_face(face) || !to_stencil_op(fail, f) || !to_stencil_op(zfail, zf) || !to_stencil_op(zpass, zp))
-    return ctx.record_error(GL_INVALID_ENUM);
+  if (!is_face(face)) return ctx.record_error(GL_INVALID_ENUM, "face is not GL_FRONT, GL_BACK or GL_FRONT_AND_BACK");
+  if (!to_stencil_op(fail, f) || !to_stencil_op(zfail, zf) || !to_stencil_op(zpass, zp))
+    return ctx.record_error(GL_INVALID_ENUM, "sfail, dpfail or dppass is not a stencil operation");
   if (sets_front(face)) {
     ctx.stencil_fail = fail;
     ctx.stencil_zfail = zfail;
@@ -82,7 +84,7 @@ void StencilOpSeparate(Context& ctx, GLenum face, GLenum fail, GLenum zfail, GLe
 }
 
 void StencilMaskSeparate(Context& ctx, GLenum face, GLuint mask) {
-  if (!is_face(face)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!is_face(face)) return ctx.record_error(GL_INVALID_ENUM, "face is not GL_FRONT, GL_BACK or GL_FRONT_AND_BACK");
   if (sets_front(face)) {
     ctx.stencil_write_mask = mask;
     ctx.draw_state.stencil_front.write_mask = static_cast<uint8_t>(mask);
@@ -104,7 +106,8 @@ void StencilMask(Context& ctx, GLuint mask) { StencilMaskSeparate(ctx, GL_FRONT_
 // ATI_separate_stencil: one call sets both faces' functions, with one reference and mask.
 void StencilFuncSeparateATI(Context& ctx, GLenum front_func, GLenum back_func, GLint ref, GLuint mask) {
   raster::CompareFunc f;
-  if (!to_compare_func(front_func, f) || !to_compare_func(back_func, f)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!to_compare_func(front_func, f) || !to_compare_func(back_func, f))
+    return ctx.record_error(GL_INVALID_ENUM, "frontfunc or backfunc is not a comparison function");
   StencilFuncSeparate(ctx, GL_FRONT, front_func, ref, mask);
   StencilFuncSeparate(ctx, GL_BACK, back_func, ref, mask);
 }

@@ -48,7 +48,7 @@ void compile_PolygonStipple(Context& ctx, const GLubyte* mask) {
   if (!unpack_pixels(ctx, data, stipple_extent(ctx.unpack)) || !data) return;
   const StippleRows rows = unpack_stipple(ctx.unpack, static_cast<const GLubyte*>(data));
   ctx.record_list_command([rows](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     c.draw_state.polygon_stipple.rows = rows;
   });
 }

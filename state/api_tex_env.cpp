@@ -64,25 +64,27 @@ float* scale_param(TexEnvState& env, GLenum pname) {
 }
 
 void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
-  if (!ctx.fixed_function_texture_unit()) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!ctx.fixed_function_texture_unit())
+    return ctx.record_error(GL_INVALID_OPERATION, "the active texture unit is above GL_MAX_TEXTURE_UNITS");
   TexEnvState& env = ctx.texture_units[ctx.active_texture].env;
   if (target == GL_TEXTURE_FILTER_CONTROL && pname == GL_TEXTURE_LOD_BIAS) {
     env.lod_bias = v[0];
     return;
   }
   if (target == GL_POINT_SPRITE) return set_point_sprite_env(ctx, pname, v[0]);
-  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_ENV) return ctx.record_error(GL_INVALID_ENUM, "target is not a texture environment target");
   if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) env.color[i] = std::clamp(v[i], 0.f, 1.f);
   } else if (GLenum* e = enum_param(env, pname)) {
     const GLenum value = enum_from_float(v[0]);
-    if (!valid_enum_value(pname, value)) return ctx.record_error(GL_INVALID_ENUM);
+    if (!valid_enum_value(pname, value)) return ctx.record_error(GL_INVALID_ENUM, "param is not a value of pname");
     *e = value;
   } else if (float* scale = scale_param(env, pname)) {
-    if (v[0] != 1.f && v[0] != 2.f && v[0] != 4.f) return ctx.record_error(GL_INVALID_VALUE);
+    if (v[0] != 1.f && v[0] != 2.f && v[0] != 4.f)
+      return ctx.record_error(GL_INVALID_VALUE, "the scale is not 1, 2 or 4");
     *scale = v[0];
   } else {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "pname is not a texture environment parameter");
   }
 }
 
@@ -90,7 +92,7 @@ void tex_env(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
 // it is not one.
 int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
   if (!ctx.fixed_function_texture_unit()) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the active texture unit is above GL_MAX_TEXTURE_UNITS");
     return 0;
   }
   TexEnvState& env = ctx.texture_units[ctx.active_texture].env;
@@ -100,7 +102,7 @@ int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
   }
   if (target == GL_POINT_SPRITE) return get_point_sprite_env(ctx, pname, v[0]) ? 1 : 0;
   if (target != GL_TEXTURE_ENV) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "target is not a texture environment target");
     return 0;
   }
   if (pname == GL_TEXTURE_ENV_COLOR) {
@@ -115,7 +117,7 @@ int get_tex_env(Context& ctx, GLenum target, GLenum pname, GLfloat v[4]) {
     v[0] = *scale;
     return 1;
   }
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, "pname is not a texture environment parameter");
   return 0;
 }
 

@@ -14,11 +14,11 @@ namespace {
 
 TexGenCoordState* coord_state(Context& ctx, GLenum coord) {
   if (coord < GL_S || coord > GL_Q) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "coord is not GL_S, GL_T, GL_R or GL_Q");
     return nullptr;
   }
   if (!ctx.fixed_function_texture_unit()) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the active texture unit is above GL_MAX_TEXTURE_UNITS");
     return nullptr;
   }
   return &ctx.extras.texgen[ctx.active_texture][coord - GL_S];
@@ -37,7 +37,8 @@ void set_mode(Context& ctx, GLenum coord, double value) {
   TexGenCoordState* c = coord_state(ctx, coord);
   if (!c) return;
   const GLenum mode = enum_from_float(value);
-  if (static_cast<double>(mode) != value || !valid_mode(coord, mode)) return ctx.record_error(GL_INVALID_ENUM);
+  if (static_cast<double>(mode) != value || !valid_mode(coord, mode))
+    return ctx.record_error(GL_INVALID_ENUM, "param is not a texture generation mode of coord");
   c->mode = mode;
 }
 
@@ -54,7 +55,7 @@ void set_vector(Context& ctx, GLenum coord, GLenum pname, const T* params) {
       c->eye_plane = glm::transpose(glm::inverse(ctx.modelview.top())) * p;
       return;
     }
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not a texture generation parameter");
   }
 }
 
@@ -75,7 +76,7 @@ void get_vector(Context& ctx, GLenum coord, GLenum pname, T* params) {
       return;
     case GL_OBJECT_PLANE: plane = &c->object_plane; break;
     case GL_EYE_PLANE: plane = &c->eye_plane; break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not a texture generation parameter");
   }
   if (!params) return;
   for (int i = 0; i < 4; ++i) {

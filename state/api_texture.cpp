@@ -46,7 +46,7 @@ bool image_target_of(GLenum target, int dims, bool proxy_ok, ImageTarget& out) {
 }
 
 bool valid_format_type(Context& ctx, GLenum format, GLenum type) {
-  const GLenum error = texture_image_format_type_error(format, type);
+  const GlError error = texture_image_format_type_error(format, type);
   if (error != GL_NO_ERROR) ctx.record_error(error);
   return error == GL_NO_ERROR;
 }
@@ -120,14 +120,15 @@ void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const Clie
 
 bool valid_depth_use(Context& ctx, const TextureFormat& storage, TexTarget kind, GLenum format) {
   if (depth_use_allowed(storage, kind, format)) return true;
-  ctx.record_error(GL_INVALID_OPERATION);
+  ctx.record_error(GL_INVALID_OPERATION,
+                   "format and internalformat differ in depth or stencil, or the target is not 1D or 2D");
   return false;
 }
 
 // glTexImage1D/2D/3D: height and depth are 1 where the target has no such dimension.
 void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint internal_format, GLsizei width,
                GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
-  const GLenum error =
+  const GlError error =
       tex_image_error(target_enum, dims, level, internal_format, width, height, depth, border, format, type);
   if (error != GL_NO_ERROR) return ctx.record_error(error);
   ImageTarget target;
@@ -172,14 +173,18 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
                    GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
   TextureObject& tex = image_texture(ctx, target);
   if (!valid_format_type(ctx, format, type)) return;
-  if (level < 0 || level > max_texture_level(target.kind) || width < 0 || height < 0 || depth < 0)
-    return ctx.record_error(GL_INVALID_VALUE);
+  if (level < 0) return ctx.record_error(GL_INVALID_VALUE, "level is negative");
+  if (level > max_texture_level(target.kind))
+    return ctx.record_error(GL_INVALID_VALUE, "level is above log2 of the maximum texture size");
+  if (width < 0 || height < 0 || depth < 0)
+    return ctx.record_error(GL_INVALID_VALUE, "width, height or depth is negative");
   std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
-  if (size_t(level) >= levels.size() || levels[level].width == 0) return ctx.record_error(GL_INVALID_OPERATION);
+  if (size_t(level) >= levels.size() || levels[level].width == 0)
+    return ctx.record_error(GL_INVALID_OPERATION, "the level has no image to replace");
   TextureLevelData& l = levels[level];
   if (xoffset < 0 || yoffset < 0 || zoffset < 0 || int64_t(xoffset) + width > l.width ||
       int64_t(yoffset) + height > l.height || int64_t(zoffset) + depth > l.depth)
-    return ctx.record_error(GL_INVALID_VALUE);
+    return ctx.record_error(GL_INVALID_VALUE, "the offsets and sizes reach outside the level's image");
   const TextureFormat storage = *texture_format(l.internal_format);
   if (!valid_depth_use(ctx, storage, target.kind, format)) return;
   const bool volume = target.kind == TexTarget::T3D;
@@ -195,25 +200,25 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
 }
 
 // Sets one parameter; returns the error the spec names for a bad one.
-GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
+GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   TexParams& p = tex.params;
   const GLenum e = enum_from_float(v[0]);
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
           e != GL_NEAREST_MIPMAP_LINEAR && e != GL_LINEAR_MIPMAP_LINEAR)
-        return GL_INVALID_ENUM;
+        return {GL_INVALID_ENUM, "param is not a minifying filter"};
       p.min_filter = e;
       break;
     case GL_TEXTURE_MAG_FILTER:
-      if (e != GL_NEAREST && e != GL_LINEAR) return GL_INVALID_ENUM;
+      if (e != GL_NEAREST && e != GL_LINEAR) return {GL_INVALID_ENUM, "param is not GL_NEAREST or GL_LINEAR"};
       p.mag_filter = e;
       break;
     case GL_TEXTURE_WRAP_S:
     case GL_TEXTURE_WRAP_T:
     case GL_TEXTURE_WRAP_R:
       if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT)
-        return GL_INVALID_ENUM;
+        return {GL_INVALID_ENUM, "param is not a wrap mode"};
       (pname == GL_TEXTURE_WRAP_S ? p.wrap_s : pname == GL_TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = e;
       break;
     case GL_TEXTURE_BORDER_COLOR:
@@ -227,26 +232,28 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
     case GL_TEXTURE_LOD_BIAS: p.lod_bias = v[0]; break;
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
-      if (!(v[0] >= 0.f)) return GL_INVALID_VALUE;  // negative or NaN
+      if (!(v[0] >= 0.f)) return {GL_INVALID_VALUE, "the level is negative"};  // or NaN
       const GLint level = v[0] >= 2147483648.f ? 2147483647 : GLint(v[0]);
       (pname == GL_TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = level;
       break;
     }
     case GL_GENERATE_MIPMAP:
-      if (e != GL_TRUE && e != GL_FALSE) return GL_INVALID_ENUM;
+      if (e != GL_TRUE && e != GL_FALSE) return {GL_INVALID_ENUM, "param is not GL_TRUE or GL_FALSE"};
       p.generate_mipmap = e == GL_TRUE;
       return GL_NO_ERROR;
     case GL_DEPTH_TEXTURE_MODE:
-      if (e != GL_LUMINANCE && e != GL_INTENSITY && e != GL_ALPHA) return GL_INVALID_ENUM;
+      if (e != GL_LUMINANCE && e != GL_INTENSITY && e != GL_ALPHA)
+        return {GL_INVALID_ENUM, "param is not GL_LUMINANCE, GL_INTENSITY or GL_ALPHA"};
       p.depth_mode = e;
       break;
     case GL_TEXTURE_COMPARE_MODE:
-      if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE) return GL_INVALID_ENUM;
+      if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE)
+        return {GL_INVALID_ENUM, "param is not GL_NONE or GL_COMPARE_R_TO_TEXTURE"};
       p.compare_mode = e;
       break;
     case GL_TEXTURE_COMPARE_FUNC: {
       raster::CompareFunc f;
-      if (!to_compare_func(e, f)) return GL_INVALID_ENUM;
+      if (!to_compare_func(e, f)) return {GL_INVALID_ENUM, "param is not a comparison function"};
       p.compare_func = e;
       break;
     }
@@ -255,7 +262,7 @@ GLenum set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
         p.crop_rect[i] = std::isnan(v[i]) ? 0 : GLint(std::clamp(v[i], -2147483648.f, 2147483520.f));
       return GL_NO_ERROR;
     default:
-      return GL_INVALID_ENUM;
+      return {GL_INVALID_ENUM, "pname is not a texture parameter"};
   }
   tex.changed();
   return GL_NO_ERROR;
@@ -266,10 +273,11 @@ bool known_pname(const Context& ctx, GLenum pname) { return pname != GL_TEXTURE_
 
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
-  if (!tex || !known_pname(ctx, pname)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!tex) return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target");
+  if (!known_pname(ctx, pname)) return ctx.record_error(GL_INVALID_ENUM, "pname is an OpenGL ES 1.1 parameter");
   if (ctx.es2() && !es2_tex_parameter_allowed(pname, enum_from_float(v[0])))
     return ctx.record_error(GL_INVALID_ENUM, "not a wrap mode of OpenGL ES 2.0");
-  if (const GLenum error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
+  if (const GlError error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
 
 bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_CROP_RECT_OES; }
@@ -342,11 +350,11 @@ bool get_tex_level_parameter(Context& ctx, const ImageTarget& target, GLint leve
 bool level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLint& out) {
   ImageTarget t;
   if (!image_target(target, t)) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "target is not a texture image target");
     return false;
   }
   if (level < 0 || level > max_texture_level(t.kind)) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "level is negative or above log2 of the maximum texture size");
     return false;
   }
   if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) {
@@ -355,18 +363,18 @@ bool level_parameter(Context& ctx, GLenum target, GLint level, GLenum pname, GLi
     const std::vector<TextureLevelData>& levels = image_texture(ctx, t).face_levels(t.face);
     out = 0;
     if (size_t(level) >= levels.size() || levels[level].width == 0) return true;
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the level's image is not compressed");
     return false;
   }
   if (get_tex_level_parameter(ctx, t, level, pname, out)) return true;
-  ctx.record_error(GL_INVALID_ENUM);
+  ctx.record_error(GL_INVALID_ENUM, "pname is not a texture level parameter");
   return false;
 }
 
 }  // namespace
 
 void GenTextures(Context& ctx, GLsizei n, GLuint* textures) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (textures) ctx.textures.generate(n, textures);
 }
 
@@ -387,10 +395,11 @@ void DeleteTextures(Context& ctx, GLsizei n, const GLuint* textures) {
 
 void BindTexture(Context& ctx, GLenum target, GLuint texture) {
   TexTarget kind;
-  if (!binding_target(target, kind)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!binding_target(target, kind)) return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target");
   if (texture != 0) {
     TextureObject* existing = ctx.textures.find(texture);
-    if (existing && existing->target != 0 && existing->target != target) return ctx.record_error(GL_INVALID_OPERATION);
+    if (existing && existing->target != 0 && existing->target != target)
+      return ctx.record_error(GL_INVALID_OPERATION, "the texture was first bound to another target");
     ctx.textures.get_or_create(texture, target).target = target;
   }
   bound_name(ctx.texture_units[ctx.active_texture], kind) = texture;
@@ -425,14 +434,15 @@ void TexImage3DEXT(Context& ctx, GLenum target, GLint level, GLenum internalform
 void TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format, GLenum type,
                    const void* pixels) {
   ImageTarget t;
-  if (!image_target_of(target, 1, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!image_target_of(target, 1, false, t)) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_TEXTURE_1D");
   tex_sub_image(ctx, t, level, xoffset, 0, 0, width, 1, 1, format, type, pixels);
 }
 
 void TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
                    GLsizei height, GLenum format, GLenum type, const void* pixels) {
   ImageTarget t;
-  if (!image_target_of(target, 2, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!image_target_of(target, 2, false, t))
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a 2D texture image target");
   if (ctx.es2() && !es2_tex_sub_image_allowed(ctx, format, type)) return;
   tex_sub_image(ctx, t, level, xoffset, yoffset, 0, width, height, 1, format, type, pixels);
 }
@@ -440,7 +450,7 @@ void TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLin
 void TexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
                    GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
   ImageTarget t;
-  if (!image_target_of(target, 3, false, t)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!image_target_of(target, 3, false, t)) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_TEXTURE_3D");
   tex_sub_image(ctx, t, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
 }
 
@@ -452,14 +462,15 @@ void TexSubImage3DEXT(Context& ctx, GLenum target, GLint level, GLint xoffset, G
 // The border colour takes only the vector forms, but a display list holds the scalar forms as
 // vector ones with (param, 0, 0, 0), so there they are accepted, as in Mesa.
 void TexParameterf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
-  if (is_vector_tex_param(pname) && !ctx.compiling_list()) return ctx.record_error(GL_INVALID_ENUM);
+  if (is_vector_tex_param(pname) && !ctx.compiling_list())
+    return ctx.record_error(GL_INVALID_ENUM, "pname takes a vector: use glTexParameterfv or glTexParameteriv");
   const GLfloat v[4] = {param, 0, 0, 0};
   tex_parameter(ctx, target, pname, v);
 }
 void TexParameteri(Context& ctx, GLenum target, GLenum pname, GLint param) { TexParameterf(ctx, target, pname, GLfloat(param)); }
 void compile_TexParameterf(Context& ctx, GLenum target, GLenum pname, GLfloat param) {
   ctx.record_list_command([=](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     const GLfloat v[4] = {param, 0, 0, 0};
     tex_parameter(c, target, pname, v);
   });
@@ -484,14 +495,16 @@ void GetTexParameterfv(Context& ctx, GLenum target, GLenum pname, GLfloat* param
   float v[4];
   int count;
   bool colour;
-  if (!get_tex_parameter(ctx, target, pname, v, count, colour)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!get_tex_parameter(ctx, target, pname, v, count, colour))
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target or pname is not a texture parameter");
   if (params) std::copy(v, v + count, params);
 }
 void GetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
   float v[4];
   int count;
   bool colour;
-  if (!get_tex_parameter(ctx, target, pname, v, count, colour)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!get_tex_parameter(ctx, target, pname, v, count, colour))
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target or pname is not a texture parameter");
   if (!params) return;
   for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : truncate_int_param(v[i]);
 }
@@ -506,7 +519,7 @@ void GetTexLevelParameterfv(Context& ctx, GLenum target, GLint level, GLenum pna
 }
 
 void PrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures, const GLfloat* priorities) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!textures || !priorities) return;
   for (GLsizei i = 0; i < n; ++i)
     if (TextureObject* t = ctx.textures.find(textures[i])) t->params.priority = std::clamp(priorities[i], 0.f, 1.f);
@@ -515,13 +528,13 @@ void PrioritizeTextures(Context& ctx, GLsizei n, const GLuint* textures, const G
 // Every texture is resident in a software renderer.
 GLboolean AreTexturesResident(Context& ctx, GLsizei n, const GLuint* textures, GLboolean* residences) {
   if (n < 0) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "n is negative");
     return GL_FALSE;
   }
   if (!textures) return GL_TRUE;
   for (GLsizei i = 0; i < n; ++i)
     if (textures[i] == 0 || !ctx.textures.is_texture(textures[i])) {
-      ctx.record_error(GL_INVALID_VALUE);
+      ctx.record_error(GL_INVALID_VALUE, "a name in textures is zero or not a texture");
       return GL_FALSE;
     }
   return GL_TRUE;

@@ -8,7 +8,7 @@ namespace {
 
 bool count_valid(Context& ctx, GLsizei count) {
   if (count >= 0) return true;
-  ctx.record_error(GL_INVALID_VALUE);
+  ctx.record_error(GL_INVALID_VALUE, "count is negative");
   return false;
 }
 

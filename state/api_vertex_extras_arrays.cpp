@@ -9,10 +9,10 @@ namespace {
 
 void set_array(Context& ctx, ClientArray& array, GLint size, GLenum type, GLsizei stride, const void* ptr,
                std::initializer_list<GLenum> types) {
-  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE, "stride is negative");
   bool known = false;
   for (GLenum t : types) known |= t == type;
-  if (!known) return ctx.record_error(GL_INVALID_ENUM);
+  if (!known) return ctx.record_error(GL_INVALID_ENUM, "type is not a type of this array");
   array.size = size;
   array.type = type;
   array.stride = stride;
@@ -25,7 +25,7 @@ void fog_coord_pointer(Context& ctx, GLenum type, GLsizei stride, const void* pt
 }
 
 void secondary_color_pointer(Context& ctx, GLint size, GLenum type, GLsizei stride, const void* ptr) {
-  if (size != 3) return ctx.record_error(GL_INVALID_VALUE);
+  if (size != 3) return ctx.record_error(GL_INVALID_VALUE, "size is not 3");
   set_array(ctx, ctx.secondary_color_array, size, type, stride, ptr,
             {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
 }

@@ -31,7 +31,7 @@ bool arrays_ready(Context& ctx, size_t last_index) {
     inside &= array_element(a, last_index, element_bytes(a, &a == &ctx.edge_flag_array)) != nullptr;
   });
   check_generic_arrays(ctx, last_index, mapped, inside);
-  if (mapped) ctx.record_error(GL_INVALID_OPERATION);
+  if (mapped) ctx.record_error(GL_INVALID_OPERATION, "the buffer of an enabled array is mapped");
   return !mapped && inside;
 }
 
@@ -39,7 +39,7 @@ const void* element_indices(Context& ctx, const void* indices, size_t bytes) {
   const BufferObject* b = ctx.buffers.element_array.get();
   if (!b) return indices;
   if (b->mapped) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the element array buffer is mapped");
     return nullptr;
   }
   return buffer_range(*b, reinterpret_cast<uintptr_t>(indices), bytes);

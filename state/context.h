@@ -26,6 +26,7 @@
 #include "state/debug/debug_output.h"
 #include "state/display_list.h"
 #include "state/draw_buffer_list.h"
+#include "state/gl_error.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
 #include "state/evaluator.h"
@@ -158,6 +159,8 @@ class Context {
     if (error_ == GL_NO_ERROR) error_ = error;
     if (debug.reports_errors()) debug.report_error(current_call, error, make_why());
   }
+  // The same for an error a check returned with its rule.
+  void record_error(GlError error) { record_error(error.code, std::string_view(error.why)); }
   // Counts every recorded error, kept or not: a wrapper compares it around a call to learn
   // whether the call failed (state/es1/).
   uint64_t errors_recorded() const { return errors_recorded_; }

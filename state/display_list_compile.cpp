@@ -45,11 +45,11 @@ void merge_current(const Context& ctx, const ArraySources& s, raster::VertexInpu
 }
 
 // `last_index`: the index array's value for the last vertex, which the draw leaves current.
-void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> vertices, GLenum error,
+void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> vertices, GlError error,
                  std::optional<float> last_index = {}) {
   const ArraySources sources = array_sources(ctx);
   ctx.record_list_command([mode, vertices = std::move(vertices), sources, error, last_index](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     if (error != GL_NO_ERROR) return c.record_error(error);
     if (!sources.vertex || vertices.empty()) return;
     c.fetched = vertices;
@@ -59,9 +59,9 @@ void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> ver
   });
 }
 
-GLenum mode_error(GLenum mode) {
+GlError mode_error(GLenum mode) {
   raster::Primitive p;
-  return to_primitive(mode, p) ? GL_NO_ERROR : GL_INVALID_ENUM;
+  return to_primitive(mode, p) ? GlError{} : GlError{GL_INVALID_ENUM, "mode is not a primitive type"};
 }
 
 // Returns the last element's colour index (see record_draw).
@@ -98,7 +98,7 @@ void compile_ArrayElement(Context& ctx, GLint i) {
   const ArraySources sources = array_sources(ctx);
   const float index = fetch_index(ctx, i >= 0 ? size_t(i) : 0);
   ctx.record_list_command([i, v, sources, index](Context& c) {
-    if (i < 0) return c.record_error(GL_INVALID_VALUE);
+    if (i < 0) return c.record_error(GL_INVALID_VALUE, "i is negative");
     if (sources.index) c.color_index.current_index = index;
     if (sources.color) std::copy(v.color, v.color + 4, c.current_color);
     if (sources.normal) std::copy(v.normal, v.normal + 3, c.current_normal);
@@ -112,8 +112,9 @@ void compile_ArrayElement(Context& ctx, GLint i) {
 }
 
 void compile_DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
-  GLenum error = mode_error(mode);
-  if (error == GL_NO_ERROR && (count < 0 || first < 0)) error = GL_INVALID_VALUE;
+  GlError error = mode_error(mode);
+  if (error == GL_NO_ERROR && count < 0) error = {GL_INVALID_VALUE, "count is negative"};
+  if (error == GL_NO_ERROR && first < 0) error = {GL_INVALID_VALUE, "first is negative"};
   std::vector<raster::VertexInput> vertices;
   if (error == GL_NO_ERROR && array_sources(ctx).vertex) {
     vertices.resize(count);
@@ -125,10 +126,10 @@ void compile_DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
 }
 
 void compile_DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
-  GLenum error = mode_error(mode);
-  if (error == GL_NO_ERROR && count < 0) error = GL_INVALID_VALUE;
+  GlError error = mode_error(mode);
+  if (error == GL_NO_ERROR && count < 0) error = {GL_INVALID_VALUE, "count is negative"};
   if (error == GL_NO_ERROR && type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
-    error = GL_INVALID_ENUM;
+    error = {GL_INVALID_ENUM, "type is not GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT or GL_UNSIGNED_INT"};
   std::vector<raster::VertexInput> vertices;
   std::optional<float> last_index;
   if (error == GL_NO_ERROR && count > 0 && array_sources(ctx).vertex)
@@ -155,7 +156,7 @@ void compile_TexImage2D(Context& ctx, GLenum target, GLint level, GLint internal
                      GL_NO_ERROR;
   auto image = texture_pixels(ctx, reads, width, height, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     with_packed_unpack(c, [&] {
       TexImage2D(c, target, level, internalformat, width, height, border, format, type,
                  image.empty() ? nullptr : image.data());
@@ -170,7 +171,7 @@ void compile_TexImage1D(Context& ctx, GLenum target, GLint level, GLint internal
                      GL_NO_ERROR;
   auto image = texture_pixels(ctx, reads, width, 1, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     with_packed_unpack(c, [&] {
       TexImage1D(c, target, level, internalformat, width, border, format, type, image.empty() ? nullptr : image.data());
     });
@@ -182,7 +183,7 @@ void compile_TexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffs
   const bool reads = tex_sub_image_may_read(target, 2, level, width, height, 1, format, type);
   auto image = texture_pixels(ctx, reads, width, height, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     with_packed_unpack(c, [&] {
       TexSubImage2D(c, target, level, xoffset, yoffset, width, height, format, type,
                     image.empty() ? nullptr : image.data());
@@ -195,7 +196,7 @@ void compile_TexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffs
   const bool reads = tex_sub_image_may_read(target, 1, level, width, 1, 1, format, type);
   auto image = texture_pixels(ctx, reads, width, 1, 1, false, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     with_packed_unpack(c, [&] {
       TexSubImage1D(c, target, level, xoffset, width, format, type, image.empty() ? nullptr : image.data());
     });
@@ -210,7 +211,7 @@ void compile_TexImage3D(Context& ctx, GLenum target, GLint level, GLint internal
                                      type) == GL_NO_ERROR;
   auto image = texture_pixels(ctx, reads, width, height, depth, true, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     with_packed_unpack(c, [&] {
       TexImage3D(c, target, level, internalformat, width, height, depth, border, format, type,
                  image.empty() ? nullptr : image.data());
@@ -229,7 +230,7 @@ void compile_TexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffs
   const bool reads = tex_sub_image_may_read(target, 3, level, width, height, depth, format, type);
   auto image = texture_pixels(ctx, reads, width, height, depth, true, format, type, pixels);
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     with_packed_unpack(c, [&] {
       TexSubImage3D(c, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type,
                     image.empty() ? nullptr : image.data());

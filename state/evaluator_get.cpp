@@ -58,7 +58,8 @@ bool map_values(const Context& ctx, GLenum target, GLenum query, std::vector<dou
 template <typename T, typename Convert>
 void get_map(Context& ctx, GLenum target, GLenum query, T* v, Convert convert, size_t client_bytes = SIZE_MAX) {
   std::vector<double> values;
-  if (!map_values(ctx, target, query, values)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!map_values(ctx, target, query, values))
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a map or query is not GL_COEFF, GL_ORDER or GL_DOMAIN");
   if (values.size() * sizeof(T) > client_bytes)
     return ctx.record_error(GL_INVALID_OPERATION, "the values do not fit in bufSize bytes");
   if (!v) return;

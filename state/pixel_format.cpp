@@ -81,27 +81,32 @@ int pixel_element_size(GLenum type) {
   return packed ? packed->bytes : pixel_type_size(type);
 }
 
-GLenum color_format_type_error(GLenum format, GLenum type) {
-  if (color_format_components(format) == 0 || pixel_element_size(type) == 0) return GL_INVALID_ENUM;
+GlError color_format_type_error(GLenum format, GLenum type) {
+  if (color_format_components(format) == 0) return {GL_INVALID_ENUM, "format is not a colour format"};
+  if (pixel_element_size(type) == 0) return {GL_INVALID_ENUM, "type is not a pixel type"};
   const PackedLayout* packed = packed_layout(type);
   if (!packed) return GL_NO_ERROR;
   const bool fits = packed->components == 3 ? format == GL_RGB : (format == GL_RGBA || format == GL_BGRA);
-  return fits ? GL_NO_ERROR : GL_INVALID_OPERATION;
+  if (!fits) return {GL_INVALID_OPERATION, "type is a packed type whose components format does not have"};
+  return GL_NO_ERROR;
 }
 
-GLenum pixel_rect_format_type_error(GLenum format, GLenum type) {
-  if (is_packed_pixel_type(type) && color_format_type_error(format, type) != GL_NO_ERROR) return GL_INVALID_OPERATION;
+GlError pixel_rect_format_type_error(GLenum format, GLenum type) {
+  if (is_packed_pixel_type(type) && color_format_type_error(format, type) != GL_NO_ERROR)
+    return {GL_INVALID_OPERATION, "type is a packed type whose components format does not have"};
   if (color_format_components(format) > 0) return color_format_type_error(format, type);
   const bool index = format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX;
-  if (!index && format != GL_DEPTH_COMPONENT) return GL_INVALID_ENUM;
-  if (type == GL_BITMAP) return index ? GL_NO_ERROR : GL_INVALID_ENUM;
-  return pixel_element_size(type) == 0 ? GL_INVALID_ENUM : GL_NO_ERROR;
+  if (!index && format != GL_DEPTH_COMPONENT) return {GL_INVALID_ENUM, "format is not a pixel format"};
+  if (type == GL_BITMAP && !index) return {GL_INVALID_ENUM, "type is GL_BITMAP and format is not an index format"};
+  if (type == GL_BITMAP) return GL_NO_ERROR;
+  return pixel_element_size(type) == 0 ? GlError{GL_INVALID_ENUM, "type is not a pixel type"} : GlError{};
 }
 
-GLenum texture_image_format_type_error(GLenum format, GLenum type) {
-  if (GLenum error; packed_depth_stencil_pixels(format, type, error)) return error;
-  if (const GLenum error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
-  return format == GL_STENCIL_INDEX ? GL_INVALID_ENUM : GL_NO_ERROR;
+GlError texture_image_format_type_error(GLenum format, GLenum type) {
+  if (GlError error; packed_depth_stencil_pixels(format, type, error)) return error;
+  if (const GlError error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  if (format == GL_STENCIL_INDEX) return {GL_INVALID_ENUM, "format GL_STENCIL_INDEX is not a texture format"};
+  return GL_NO_ERROR;
 }
 
 // GL 1.1 spec 3.6.4: rows start at multiples of the alignment when elements are smaller.

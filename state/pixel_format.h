@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "state/gl_error.h"
+
 namespace pineda {
 
 struct PixelStore;
@@ -25,17 +27,17 @@ int pixel_element_size(GLenum type);
 // GL_NO_ERROR when colour pixels of format/type can be read or written; GL_INVALID_ENUM for
 // an unknown format or type; GL_INVALID_OPERATION for a packed type the format does not fit
 // (3-component types need RGB, 4-component ones RGBA or BGRA).
-GLenum color_format_type_error(GLenum format, GLenum type);
+GlError color_format_type_error(GLenum format, GLenum type);
 // GL_NO_ERROR when format/type can describe a pixel rectangle of glDrawPixels or glReadPixels:
 // the colour formats, COLOR_INDEX and STENCIL_INDEX (also with BITMAP) and DEPTH_COMPONENT.
 // GL_INVALID_ENUM for an unknown format or type, or BITMAP with another format;
 // GL_INVALID_OPERATION for a packed type the format does not fit, whatever the format (as Mesa).
-GLenum pixel_rect_format_type_error(GLenum format, GLenum type);
+GlError pixel_rect_format_type_error(GLenum format, GLenum type);
 // GL_NO_ERROR when format/type can describe a texture image (GL 1.5 3.8.1): a colour format
 // with its types, COLOR_INDEX (BITMAP too) or DEPTH_COMPONENT. Otherwise the error of
 // pixel_rect_format_type_error (a packed type the format does not fit is INVALID_OPERATION
 // whatever the format, as Mesa), or INVALID_ENUM for stencil data.
-GLenum texture_image_format_type_error(GLenum format, GLenum type);
+GlError texture_image_format_type_error(GLenum format, GLenum type);
 
 // The byte layout of a width x height image in client memory.
 struct ImageLayout {

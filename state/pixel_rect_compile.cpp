@@ -22,7 +22,7 @@ void compile_DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum form
                                          packed_ds ? GL_UNSIGNED_INT : type, pixels)
                      : std::vector<uint8_t>{};
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     const void* data = image.empty() ? nullptr : image.data();
     with_packed_unpack(c, [&] { DrawPixels(c, width, height, format, type, data); });
   });
@@ -38,7 +38,7 @@ void compile_Bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, 
   auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, GL_COLOR_INDEX, GL_BITMAP, data)
                      : std::vector<uint8_t>{};
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
-    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION);
+    if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     const GLubyte* data = image.empty() ? nullptr : image.data();
     with_packed_unpack(c, [&] { Bitmap(c, width, height, xorig, yorig, xmove, ymove, data); });
   });

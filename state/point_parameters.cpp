@@ -40,18 +40,19 @@ void PointParameterfv(Context& ctx, GLenum pname, const GLfloat* v) {
     case GL_POINT_SIZE_MIN:
     case GL_POINT_SIZE_MAX:
     case GL_POINT_FADE_THRESHOLD_SIZE:
-      if (!(v[0] >= 0.f)) return ctx.record_error(GL_INVALID_VALUE);
+      if (!(v[0] >= 0.f)) return ctx.record_error(GL_INVALID_VALUE, "the size or threshold is negative");
       (pname == GL_POINT_SIZE_MIN ? p.size_min : pname == GL_POINT_SIZE_MAX ? p.size_max : p.fade_threshold) = v[0];
       return;
     case GL_POINT_DISTANCE_ATTENUATION:
       for (int i = 0; i < 3; ++i) p.attenuation[i] = v[i];
       return;
     case GL_POINT_SPRITE_COORD_ORIGIN:  // GL 2.0 point sprites
-      if (v[0] != GLfloat(GL_LOWER_LEFT) && v[0] != GLfloat(GL_UPPER_LEFT)) return ctx.record_error(GL_INVALID_VALUE);
+      if (v[0] != GLfloat(GL_LOWER_LEFT) && v[0] != GLfloat(GL_UPPER_LEFT))
+        return ctx.record_error(GL_INVALID_VALUE, "GL_POINT_SPRITE_COORD_ORIGIN is not GL_LOWER_LEFT or GL_UPPER_LEFT");
       p.sprite.origin_lower_left = v[0] == GLfloat(GL_LOWER_LEFT);
       return;
     default:
-      return ctx.record_error(GL_INVALID_ENUM);
+      return ctx.record_error(GL_INVALID_ENUM, "pname is not a point parameter");
   }
 }
 

@@ -21,22 +21,28 @@ bool depth_use_allowed(const TextureFormat& storage, TexTarget kind, GLenum form
   return depth == (format == GL_DEPTH_COMPONENT) && (!depth || kind == TexTarget::T1D || kind == TexTarget::T2D);
 }
 
-GLenum tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
-                       GLsizei depth, GLint border, GLenum format, GLenum type) {
+GlError tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
+                        GLsizei depth, GLint border, GLenum format, GLenum type) {
   ImageTarget t;
-  if (!image_target_of(target, dims, true, t)) return GL_INVALID_ENUM;
-  if (const GLenum error = texture_image_format_type_error(format, type); error != GL_NO_ERROR) return error;
+  if (!image_target_of(target, dims, true, t)) return {GL_INVALID_ENUM, "target is not a texture image target of the call"};
+  if (const GlError error = texture_image_format_type_error(format, type); error != GL_NO_ERROR) return error;
   const std::optional<TextureFormat> storage = texture_format(internal_format);
-  if (level < 0 || level > max_texture_level(t.kind) || !storage || (border != 0 && border != 1))
-    return GL_INVALID_VALUE;
+  if (level < 0) return {GL_INVALID_VALUE, "level is negative"};
+  if (level > max_texture_level(t.kind)) return {GL_INVALID_VALUE, "level is above log2 of the maximum texture size"};
+  if (!storage) return {GL_INVALID_VALUE, "internalformat is not a texture format"};
+  if (border != 0 && border != 1) return {GL_INVALID_VALUE, "border is not 0 or 1"};
   const int64_t inner_w = int64_t(width) - 2 * border;
   const int64_t inner_h = dims >= 2 ? int64_t(height) - 2 * border : 1;
   const int64_t inner_d = dims == 3 ? int64_t(depth) - 2 * border : 1;
-  if (inner_w < 0 || inner_h < 0 || inner_d < 0) return GL_INVALID_VALUE;
-  if (t.kind == TexTarget::Cube && width != height) return GL_INVALID_VALUE;
-  if (!depth_use_allowed(*storage, t.kind, format)) return GL_INVALID_OPERATION;
+  if (inner_w < 0) return {GL_INVALID_VALUE, width < 0 ? "width is negative" : "width is less than twice border"};
+  if (inner_h < 0) return {GL_INVALID_VALUE, height < 0 ? "height is negative" : "height is less than twice border"};
+  if (inner_d < 0) return {GL_INVALID_VALUE, depth < 0 ? "depth is negative" : "depth is less than twice border"};
+  if (t.kind == TexTarget::Cube && width != height) return {GL_INVALID_VALUE, "a cube map face's width and height differ"};
+  if (!depth_use_allowed(*storage, t.kind, format))
+    return {GL_INVALID_OPERATION, "format and internalformat differ in depth or stencil, or the target is not 1D or 2D"};
   const int level_max = max_texture_size(t.kind) >> level;  // level l of a full chain is at most max >> l
-  if (!t.proxy && (inner_w > level_max || inner_h > level_max || inner_d > level_max)) return GL_INVALID_VALUE;
+  if (!t.proxy && (inner_w > level_max || inner_h > level_max || inner_d > level_max))
+    return {GL_INVALID_VALUE, "the image is larger than the maximum texture size allows at level"};
   return GL_NO_ERROR;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 #include <GL/gl.h>
 
+#include "state/gl_error.h"
 #include "state/texture_format.h"
 #include "state/texture_target.h"
 
@@ -12,7 +13,7 @@ namespace pineda {
 // The error of a glTexImage*D whose images have `dims` dimensions (height and depth are 1
 // where the target has no such dimension), in the calls' order; GL_NO_ERROR when the image is
 // defined (for a proxy target: when the proxy level is set, fitting or not).
-GLenum tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
+GlError tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
                        GLsizei depth, GLint border, GLenum format, GLenum type);
 
 // GL 1.4 3.8.1: depth data only for depth formats and the other way round; depth formats on

@@ -43,8 +43,10 @@ bool application_source(GLenum s) { return s == GL_DEBUG_SOURCE_APPLICATION || s
 GLsizei message_length(Context& ctx, GLsizei length, const GLchar* buf) {
   if (length < 0) length = buf ? GLsizei(std::strlen(buf)) : 0;
   if (length >= DebugOutput::kMaxMessageLength) {
-    ctx.record_error(GL_INVALID_VALUE, "the message is not shorter than GL_MAX_DEBUG_MESSAGE_LENGTH (" +
-                                           std::to_string(DebugOutput::kMaxMessageLength) + ")");
+    ctx.record_error(GL_INVALID_VALUE, [] {
+      return "the message is not shorter than GL_MAX_DEBUG_MESSAGE_LENGTH (" +
+             std::to_string(DebugOutput::kMaxMessageLength) + ")";
+    });
     return -1;
   }
   return length;

@@ -51,8 +51,9 @@ bool read_label(Context& ctx, GLsizei length, const GLchar* label, std::string* 
   }
   const size_t n = length < 0 ? std::strlen(label) : size_t(length);
   if (n >= size_t(DebugOutput::kMaxLabelLength)) {
-    ctx.record_error(GL_INVALID_VALUE, "the label is not shorter than GL_MAX_LABEL_LENGTH (" +
-                                           std::to_string(DebugOutput::kMaxLabelLength) + ")");
+    ctx.record_error(GL_INVALID_VALUE, [] {
+      return "the label is not shorter than GL_MAX_LABEL_LENGTH (" + std::to_string(DebugOutput::kMaxLabelLength) + ")";
+    });
     return false;
   }
   out->assign(label, n);

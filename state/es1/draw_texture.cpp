@@ -16,7 +16,7 @@ namespace {
 float clamp01(float v) { return v > 0.f ? (v < 1.f ? v : 1.f) : 0.f; }  // NaN -> 0
 
 void draw_texture(Context& ctx, float x, float y, float z, float width, float height) {
-  if (!(width > 0.f) || !(height > 0.f)) return ctx.record_error(GL_INVALID_VALUE);
+  if (!(width > 0.f) || !(height > 0.f)) return ctx.record_error(GL_INVALID_VALUE, "width or height is not positive");
   const Drawable* drawable = ctx.draw_drawable();
   if (!drawable) return;
   raster::DrawState state = fragment_snapshot(ctx);

@@ -29,7 +29,7 @@ void get_converted(Context& ctx, GLenum pname, GLfixed* params, bool is_enum, Qu
 
 void GetFixedv(Context& ctx, GLenum pname, GLfixed* params) {
   GetValues values;
-  if (!query_get_values(ctx, pname, values)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!query_get_values(ctx, pname, values)) return ctx.record_error(GL_INVALID_ENUM, "pname is not a state variable");
   if (!params) return;
   for (size_t i = 0; i < values.v.size(); ++i) {
     const double v = values.v[i];

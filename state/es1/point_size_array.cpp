@@ -6,8 +6,9 @@
 namespace pineda::gl {
 
 void PointSizePointerOES(Context& ctx, GLenum type, GLsizei stride, const void* pointer) {
-  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (type != GL_FIXED && type != GL_FLOAT) return ctx.record_error(GL_INVALID_ENUM);
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE, "stride is negative");
+  if (type != GL_FIXED && type != GL_FLOAT)
+    return ctx.record_error(GL_INVALID_ENUM, "type is not GL_FIXED or GL_FLOAT");
   ctx.point_size_array.type = type;
   ctx.point_size_array.stride = stride;
   ctx.point_size_array.pointer = pointer;

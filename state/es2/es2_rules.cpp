@@ -82,17 +82,19 @@ bool es2_tex_image_allowed(Context& ctx, GLint internalformat, GLint border, GLe
   return true;
 }
 
-GLenum es2_read_pixels_error(GLenum format, GLenum type) {
+GlError es2_read_pixels_error(GLenum format, GLenum type) {
   switch (format) {
     case GL_ALPHA: case GL_LUMINANCE: case GL_LUMINANCE_ALPHA: case GL_RGB: case GL_RGBA: case GL_BGRA: break;
-    default: return GL_INVALID_ENUM;
+    default: return {GL_INVALID_ENUM, "format is not a pixel format of OpenGL ES 2.0"};
   }
   switch (type) {
     case GL_UNSIGNED_BYTE: case GL_UNSIGNED_SHORT_5_6_5: case GL_UNSIGNED_SHORT_4_4_4_4:
     case GL_UNSIGNED_SHORT_5_5_5_1: break;
-    default: return GL_INVALID_ENUM;
+    default: return {GL_INVALID_ENUM, "type is not a pixel type of OpenGL ES 2.0"};
   }
-  return format == GL_RGBA && type == GL_UNSIGNED_BYTE ? GL_NO_ERROR : GL_INVALID_OPERATION;
+  if (format != GL_RGBA || type != GL_UNSIGNED_BYTE)
+    return {GL_INVALID_OPERATION, "format and type are not GL_RGBA and GL_UNSIGNED_BYTE"};
+  return GL_NO_ERROR;
 }
 
 GLint es2_storage_format(GLint internalformat) { return internalformat == GL_BGRA ? GL_RGBA8 : internalformat; }

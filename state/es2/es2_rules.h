@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "state/gl_error.h"
+
 namespace pineda {
 
 class Context;
@@ -36,7 +38,7 @@ bool es2_renderbuffer_format(GLenum internalformat);
 
 // glReadPixels (ES 2.0 4.3.1): RGBA/UNSIGNED_BYTE and the IMPLEMENTATION_COLOR_READ pair,
 // which is the same one here; other pairs of table 3.4 INVALID_OPERATION, others INVALID_ENUM.
-GLenum es2_read_pixels_error(GLenum format, GLenum type);
+GlError es2_read_pixels_error(GLenum format, GLenum type);
 
 // glCopyTexImage2D: the five base formats.
 bool es2_copy_tex_image_format(GLenum internalformat);

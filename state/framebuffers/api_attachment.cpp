@@ -14,7 +14,7 @@ namespace {
 FramebufferObject* attachment_target(Context& ctx, GLenum target, GLenum attachment, int points[2], int& count) {
   bool draw = false, read = false;
   if (!framebuffer_target(target, draw, read)) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "target is not a framebuffer target");
     return nullptr;
   }
   count = 1;
@@ -27,12 +27,13 @@ FramebufferObject* attachment_target(Context& ctx, GLenum target, GLenum attachm
     if (points[0] < 0) {
       // A colour attachment past MAX_COLOR_ATTACHMENTS is INVALID_OPERATION, as Mesa.
       const bool color = attachment >= GL_COLOR_ATTACHMENT0 && attachment <= GL_COLOR_ATTACHMENT15;
-      ctx.record_error(color ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+      if (color) ctx.record_error(GL_INVALID_OPERATION, "attachment is above GL_MAX_COLOR_ATTACHMENTS");
+      else ctx.record_error(GL_INVALID_ENUM, "attachment is not an attachment point");
       return nullptr;
     }
   }
   FramebufferObject* fb = draw ? ctx.framebuffers.draw_object() : ctx.framebuffers.read_object();
-  if (!fb) ctx.record_error(GL_INVALID_OPERATION);  // the window-system framebuffer has no attachments to set
+  if (!fb) ctx.record_error(GL_INVALID_OPERATION, "the default framebuffer, which has no attachments, is bound");
   return fb;
 }
 
@@ -69,9 +70,12 @@ void attach_texture(Context& ctx, FramebufferObject& fb, const int points[2], in
   Attachment a;
   if (texture != 0) {
     const TextureObject* tex = ctx.textures.find(texture);
-    if (!tex || tex->target != binding_enum(kind)) return ctx.record_error(GL_INVALID_OPERATION);
-    if (level < 0 || level > max_texture_level(kind)) return ctx.record_error(GL_INVALID_VALUE);
-    if (layer < 0 || (kind == TexTarget::T3D && layer >= kMax3DTextureSize)) return ctx.record_error(GL_INVALID_VALUE);
+    if (!tex || tex->target != binding_enum(kind))
+      return ctx.record_error(GL_INVALID_OPERATION, "texture is not a texture of the call's target");
+    if (level < 0 || level > max_texture_level(kind))
+      return ctx.record_error(GL_INVALID_VALUE, "level is negative or above log2 of the maximum texture size");
+    if (layer < 0 || (kind == TexTarget::T3D && layer >= kMax3DTextureSize))
+      return ctx.record_error(GL_INVALID_VALUE, "layer is negative or not less than GL_MAX_3D_TEXTURE_SIZE");
     a.type = GL_TEXTURE;
     a.name = texture;
     a.level = level;
@@ -89,7 +93,8 @@ void framebuffer_texture(Context& ctx, int dims, GLenum target, GLenum attachmen
   if (!fb) return;
   TexTarget kind = TexTarget::T2D;
   int face = 0;
-  if (texture != 0 && !textarget_for(dims, textarget, kind, face)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (texture != 0 && !textarget_for(dims, textarget, kind, face))
+    return ctx.record_error(GL_INVALID_OPERATION, "textarget is not a texture image target of the call");
   attach_texture(ctx, *fb, points, count, kind, face, texture, level, layer);
 }
 
@@ -163,7 +168,8 @@ void FramebufferTextureLayer(Context& ctx, GLenum target, GLenum attachment, GLu
   if (!fb) return;
   if (texture != 0) {
     const TextureObject* tex = ctx.textures.find(texture);
-    if (!tex || tex->target != GL_TEXTURE_3D) return ctx.record_error(GL_INVALID_OPERATION);
+    if (!tex || tex->target != GL_TEXTURE_3D)
+      return ctx.record_error(GL_INVALID_OPERATION, "texture is not a 3D texture");
   }
   attach_texture(ctx, *fb, points, count, TexTarget::T3D, 0, texture, level, layer);
 }
@@ -173,11 +179,13 @@ void FramebufferRenderbuffer(Context& ctx, GLenum target, GLenum attachment, GLe
   int points[2], count = 0;
   FramebufferObject* fb = attachment_target(ctx, target, attachment, points, count);
   if (!fb) return;
-  if (renderbuffertarget != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  if (renderbuffertarget != GL_RENDERBUFFER)
+    return ctx.record_error(GL_INVALID_ENUM, "renderbuffertarget is not GL_RENDERBUFFER");
   Attachment a;
   if (renderbuffer != 0) {
     auto it = ctx.framebuffers.renderbuffers.find(renderbuffer);
-    if (it == ctx.framebuffers.renderbuffers.end() || !it->second) return ctx.record_error(GL_INVALID_OPERATION);
+    if (it == ctx.framebuffers.renderbuffers.end() || !it->second)
+      return ctx.record_error(GL_INVALID_OPERATION, "renderbuffer is not a renderbuffer object");
     a.type = GL_RENDERBUFFER;
     a.renderbuffer = it->second;
     a.name = renderbuffer;
@@ -201,7 +209,7 @@ void default_framebuffer_parameter(Context& ctx, const Drawable* d, GLenum attac
       break;
     case GL_DEPTH: exists = d && d->framebuffer.depth.bits; bits[4] = exists ? d->framebuffer.depth.bits : 0; break;
     case GL_STENCIL: exists = d && d->framebuffer.stencil.bits; bits[5] = exists ? d->framebuffer.stencil.bits : 0; break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "attachment is not a buffer of the default framebuffer");
   }
   GLint value = 0;
   switch (pname) {
@@ -210,18 +218,21 @@ void default_framebuffer_parameter(Context& ctx, const Drawable* d, GLenum attac
     case GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_GREEN_SIZE:
     case GL_FRAMEBUFFER_ATTACHMENT_BLUE_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE:
     case GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE: case GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE:
-      if (!exists) return ctx.record_error(GL_INVALID_OPERATION);
+      if (!exists) return ctx.record_error(GL_INVALID_OPERATION, "the default framebuffer has no such buffer");
       value = bits[pname - GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE];
       break;
     case GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE:
-      if (!exists) return ctx.record_error(GL_INVALID_OPERATION);
+      if (!exists) return ctx.record_error(GL_INVALID_OPERATION, "the default framebuffer has no such buffer");
       value = attachment == GL_STENCIL ? GL_UNSIGNED_INT : GL_UNSIGNED_NORMALIZED;
       break;
     case GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING:
-      if (!exists) return ctx.record_error(GL_INVALID_OPERATION);
+      if (!exists) return ctx.record_error(GL_INVALID_OPERATION, "the default framebuffer has no such buffer");
       value = GL_LINEAR;
       break;
-    default: return ctx.record_error(is_attachment_pname(pname) ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
+    default:
+      if (is_attachment_pname(pname))
+        return ctx.record_error(GL_INVALID_OPERATION, "pname is not a parameter of the default framebuffer");
+      return ctx.record_error(GL_INVALID_ENUM, "pname is not a framebuffer attachment parameter");
   }
   if (params) *params = value;
 }
@@ -243,14 +254,15 @@ void GetFramebufferAttachmentParameteriv(Context& ctx, GLenum target, GLenum att
   if (count == 2) {
     const Attachment& s = fb->attachments[points[1]];
     if (a.type != s.type || a.name != s.name || a.level != s.level || a.face != s.face || a.layer != s.layer)
-      return ctx.record_error(GL_INVALID_OPERATION);
+      return ctx.record_error(GL_INVALID_OPERATION, "depth and stencil have different images attached");
   }
   bool ok = false;
   const GLint value = attachment_parameter(ctx, a, pname, ok);
   // Of an attachment point with nothing attached only the type and name can be queried
   // (GL 3.0 6.1.17: INVALID_OPERATION for a known pname, as Mesa).
-  if (!ok && a.type == GL_NONE && is_attachment_pname(pname)) return ctx.record_error(GL_INVALID_OPERATION);
-  if (!ok) return ctx.record_error(GL_INVALID_ENUM);
+  if (!ok && a.type == GL_NONE && is_attachment_pname(pname))
+    return ctx.record_error(GL_INVALID_OPERATION, "nothing is attached: only the type and name can be queried");
+  if (!ok) return ctx.record_error(GL_INVALID_ENUM, "pname is not a framebuffer attachment parameter");
   if (params) *params = value;
 }
 

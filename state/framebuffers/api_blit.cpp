@@ -74,11 +74,12 @@ void write_color(const raster::ColorBuffer& cb, int x, int y, const uint8_t sour
 void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint srcY1, GLint dstX0, GLint dstY0,
                      GLint dstX1, GLint dstY1, GLbitfield mask, GLenum filter) {
   if (!check_draw_framebuffer(ctx) || !check_read_framebuffer(ctx)) return;
-  if (filter != GL_NEAREST && filter != GL_LINEAR) return ctx.record_error(GL_INVALID_ENUM);
+  if (filter != GL_NEAREST && filter != GL_LINEAR)
+    return ctx.record_error(GL_INVALID_ENUM, "filter is not GL_NEAREST or GL_LINEAR");
   if (mask & ~GLbitfield(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT))
-    return ctx.record_error(GL_INVALID_VALUE);
+    return ctx.record_error(GL_INVALID_VALUE, "mask has bits other than colour, depth and stencil");
   if ((mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT)) && filter != GL_NEAREST)
-    return ctx.record_error(GL_INVALID_OPERATION);
+    return ctx.record_error(GL_INVALID_OPERATION, "depth or stencil copies take filter GL_NEAREST only");
   const Drawable* draw = ctx.draw_drawable();
   const Drawable* read = ctx.read_drawable();
   if (!draw || !read) return;
@@ -87,8 +88,10 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
   // Depth and stencil copy between buffers of one format only.
   const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && src_fb.depth.bits && dst_all.depth.bits;
   const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && src_fb.stencil.bits && dst_all.stencil.bits;
-  if (depth && src_fb.depth.bits != dst_all.depth.bits) return ctx.record_error(GL_INVALID_OPERATION);
-  if (stencil && src_fb.stencil.bits != dst_all.stencil.bits) return ctx.record_error(GL_INVALID_OPERATION);
+  if (depth && src_fb.depth.bits != dst_all.depth.bits)
+    return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' depth formats differ");
+  if (stencil && src_fb.stencil.bits != dst_all.stencil.bits)
+    return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' stencil formats differ");
   const bool color = (mask & GL_COLOR_BUFFER_BIT) && src_fb.color.base;
   if ((!color && !depth && !stencil) || srcX0 == srcX1 || srcY0 == srcY1 || dstX0 == dstX1 || dstY0 == dstY1) return;
 
@@ -99,7 +102,8 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
   if (src_samples > 1 && dst_samples > 1 && src_samples != dst_samples)
     return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' sample counts differ");
   if (src_samples > 1 && (srcX0 != dstX0 || srcY0 != dstY0 || srcX1 != dstX1 || srcY1 != dstY1))
-    return ctx.record_error(GL_INVALID_OPERATION, "a multisampled source and the destination differ in their rectangles");
+    return ctx.record_error(GL_INVALID_OPERATION,
+                            "a multisampled source and the destination differ in their rectangles");
   const bool per_sample = src_samples > 1 && dst_samples > 1;
 
   ctx.finish();

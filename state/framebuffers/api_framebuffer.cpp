@@ -44,7 +44,7 @@ void bind(Context& ctx, bool draw, bool read, GLuint name) {
 GLenum check_status(Context& ctx, GLenum target, bool ext_rules) {
   bool draw = false, read = false;
   if (!framebuffer_target(target, draw, read)) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "target is not a framebuffer target");
     return 0;
   }
   FramebufferObject* fb = draw ? ctx.framebuffers.draw_object() : ctx.framebuffers.read_object();
@@ -73,8 +73,12 @@ void set_object_color_buffer(Context& ctx, GLenum buffer, bool read) {
   FramebufferState& fs = ctx.framebuffers;
   FramebufferObject* fb = read ? fs.read_object() : fs.draw_object();
   const bool attachment = buffer >= GL_COLOR_ATTACHMENT0 && buffer <= GL_COLOR_ATTACHMENT15;
-  if (buffer != GL_NONE && !attachment) return ctx.record_error(is_window_buffer(buffer) ? GL_INVALID_OPERATION : GL_INVALID_ENUM);
-  if (attachment && attachment_point(buffer) < 0) return ctx.record_error(GL_INVALID_OPERATION);
+  if (buffer != GL_NONE && !attachment && is_window_buffer(buffer))
+    return ctx.record_error(GL_INVALID_OPERATION, "mode is a window-system buffer and a framebuffer object is bound");
+  if (buffer != GL_NONE && !attachment)
+    return ctx.record_error(GL_INVALID_ENUM, "mode is not GL_NONE or a colour attachment");
+  if (attachment && attachment_point(buffer) < 0)
+    return ctx.record_error(GL_INVALID_OPERATION, "mode is above GL_MAX_COLOR_ATTACHMENTS");
   resolve_rendered_textures(ctx);
   if (read) {
     fb->read_buffer = ctx.read_buffer = buffer;
@@ -90,7 +94,7 @@ void set_object_color_buffer(Context& ctx, GLenum buffer, bool read) {
 namespace pineda::gl {
 
 void GenFramebuffers(Context& ctx, GLsizei n, GLuint* framebuffers) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!framebuffers) return;
   FramebufferState& fs = ctx.framebuffers;
   GLuint next = 1;
@@ -102,7 +106,7 @@ void GenFramebuffers(Context& ctx, GLsizei n, GLuint* framebuffers) {
 }
 
 void DeleteFramebuffers(Context& ctx, GLsizei n, const GLuint* framebuffers) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!framebuffers) return;
   FramebufferState& fs = ctx.framebuffers;
   for (GLsizei i = 0; i < n; ++i) {
@@ -123,7 +127,8 @@ GLboolean IsFramebuffer(Context& ctx, GLuint framebuffer) {
 
 void BindFramebuffer(Context& ctx, GLenum target, GLuint framebuffer) {
   bool draw = false, read = false;
-  if (!framebuffer_target(target, draw, read)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!framebuffer_target(target, draw, read))
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a framebuffer target");
   FramebufferState& fs = ctx.framebuffers;
   if (framebuffer != 0 && !fs.find(framebuffer)) {  // compatibility GL: any name may be bound
     fs.framebuffers[framebuffer] = std::make_unique<FramebufferObject>();

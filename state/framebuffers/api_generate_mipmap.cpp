@@ -8,7 +8,7 @@ namespace pineda::gl {
 
 void GenerateMipmap(Context& ctx, GLenum target) {
   TexTarget kind;
-  if (!binding_target(target, kind)) return ctx.record_error(GL_INVALID_ENUM);
+  if (!binding_target(target, kind)) return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target");
   TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[ctx.active_texture], kind), target);
   const int faces = kind == TexTarget::Cube ? kCubeFaces : 1;
   const size_t base = size_t(std::max(tex.params.base_level, 0));
@@ -19,7 +19,7 @@ void GenerateMipmap(Context& ctx, GLenum target) {
       const TextureLevelData* l = base < levels.size() ? &levels[base] : nullptr;
       if (!first || !l || l->width == 0 || l->width != l->height || l->width != first->width ||
           l->internal_format != first->internal_format)
-        return ctx.record_error(GL_INVALID_OPERATION);
+        return ctx.record_error(GL_INVALID_OPERATION, "the cube map's base images are missing, not square or differ");
     }
   }
   resolve_rendered_textures(ctx);

@@ -18,14 +18,14 @@ Renderbuffer* bound_renderbuffer(Context& ctx) {
 }
 
 void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height) {
-  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_RENDERBUFFER");
   const std::optional<RenderableFormat> format = renderbuffer_format(internalformat);
-  if (!format) return ctx.record_error(GL_INVALID_ENUM);
+  if (!format) return ctx.record_error(GL_INVALID_ENUM, "internalformat is not a renderable format");
   if (width < 0 || height < 0 || width > kMaxRenderbufferSize || height > kMaxRenderbufferSize)
-    return ctx.record_error(GL_INVALID_VALUE);
+    return ctx.record_error(GL_INVALID_VALUE, "width or height is negative or above GL_MAX_RENDERBUFFER_SIZE");
   if (samples > kMaxSamples) return ctx.record_error(GL_INVALID_VALUE, "samples is greater than GL_MAX_SAMPLES");
   Renderbuffer* rb = bound_renderbuffer(ctx);
-  if (!rb) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!rb) return ctx.record_error(GL_INVALID_OPERATION, "no renderbuffer is bound");
   resolve_rendered_textures(ctx);
   ctx.finish();  // queued rendering may still write the old storage
   Renderbuffer fresh;
@@ -41,7 +41,7 @@ void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat
     if (format->has_depth()) fresh.depth.assign(n, 0);
     if (format->has_stencil()) fresh.stencil.assign(n, 0);
   } catch (const std::bad_alloc&) {
-    return ctx.record_error(GL_OUT_OF_MEMORY);
+    return ctx.record_error(GL_OUT_OF_MEMORY, "no memory for the renderbuffer's storage");
   }
   *rb = std::move(fresh);
   refresh_framebuffer_views(ctx);
@@ -50,7 +50,7 @@ void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat
 }  // namespace
 
 void GenRenderbuffers(Context& ctx, GLsizei n, GLuint* renderbuffers) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!renderbuffers) return;
   FramebufferState& fs = ctx.framebuffers;
   GLuint next = 1;
@@ -62,7 +62,7 @@ void GenRenderbuffers(Context& ctx, GLsizei n, GLuint* renderbuffers) {
 }
 
 void DeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers) {
-  if (n < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (n < 0) return ctx.record_error(GL_INVALID_VALUE, "n is negative");
   if (!renderbuffers) return;
   FramebufferState& fs = ctx.framebuffers;
   for (GLsizei i = 0; i < n; ++i) {
@@ -83,7 +83,7 @@ GLboolean IsRenderbuffer(Context& ctx, GLuint renderbuffer) {
 }
 
 void BindRenderbuffer(Context& ctx, GLenum target, GLuint renderbuffer) {
-  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_RENDERBUFFER");
   FramebufferState& fs = ctx.framebuffers;
   if (renderbuffer != 0) {
     std::shared_ptr<Renderbuffer>& slot = fs.renderbuffers[renderbuffer];
@@ -100,14 +100,14 @@ void RenderbufferStorage(Context& ctx, GLenum target, GLenum internalformat, GLs
 
 void RenderbufferStorageMultisample(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat,
                                     GLsizei width, GLsizei height) {
-  if (samples < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (samples < 0) return ctx.record_error(GL_INVALID_VALUE, "samples is negative");
   storage(ctx, target, samples, internalformat, width, height);
 }
 
 void GetRenderbufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
-  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM);
+  if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_RENDERBUFFER");
   const Renderbuffer* rb = bound_renderbuffer(ctx);
-  if (!rb) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!rb) return ctx.record_error(GL_INVALID_OPERATION, "no renderbuffer is bound");
   const RenderableFormat& f = rb->format;
   const bool color = f.kind == RenderableFormat::Kind::Color;
   GLint value = 0;
@@ -123,7 +123,7 @@ void GetRenderbufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint
     case GL_RENDERBUFFER_ALPHA_SIZE: value = color && rb->width ? f.color.alpha : 0; break;
     case GL_RENDERBUFFER_DEPTH_SIZE: value = rb->width ? f.depth_bits : 0; break;
     case GL_RENDERBUFFER_STENCIL_SIZE: value = rb->width ? f.stencil_bits : 0; break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not a renderbuffer parameter");
   }
   if (params) *params = value;
 }

@@ -279,7 +279,7 @@ bool check_draw_framebuffer(Context& ctx) {
   if (!fb) return true;
   refresh_framebuffer_views(ctx);
   if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
-  ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION, "the draw framebuffer is not complete");
   return false;
 }
 
@@ -289,7 +289,7 @@ bool check_read_framebuffer(Context& ctx) {
   resolve_rendered_textures(ctx);
   refresh_framebuffer_views(ctx);
   if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
-  ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION);
+  ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION, "the read framebuffer is not complete");
   return false;
 }
 

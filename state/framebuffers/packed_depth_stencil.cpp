@@ -7,12 +7,14 @@
 
 namespace pineda {
 
-bool packed_depth_stencil_pixels(GLenum format, GLenum type, GLenum& error) {
+bool packed_depth_stencil_pixels(GLenum format, GLenum type, GlError& error) {
   if (type == GL_UNSIGNED_INT_24_8) {
-    error = format == GL_DEPTH_STENCIL ? GL_NO_ERROR : GL_INVALID_OPERATION;
+    error = format == GL_DEPTH_STENCIL
+                ? GlError{}
+                : GlError{GL_INVALID_OPERATION, "type GL_UNSIGNED_INT_24_8 takes format GL_DEPTH_STENCIL only"};
     return true;
   }
-  error = GL_INVALID_ENUM;
+  error = {GL_INVALID_ENUM, "format GL_DEPTH_STENCIL takes type GL_UNSIGNED_INT_24_8 only"};
   return format == GL_DEPTH_STENCIL;
 }
 

@@ -17,7 +17,7 @@ struct PixelStore;
 // Whether format/type involve DEPTH_STENCIL or UNSIGNED_INT_24_8; `error` is then their error
 // (other formats with UNSIGNED_INT_24_8: INVALID_OPERATION; DEPTH_STENCIL with another type:
 // INVALID_ENUM) or GL_NO_ERROR.
-bool packed_depth_stencil_pixels(GLenum format, GLenum type, GLenum& error);
+bool packed_depth_stencil_pixels(GLenum format, GLenum type, GlError& error);
 
 // The layout of a width-wide DEPTH_STENCIL image: one 4-byte element per pixel.
 ImageLayout packed_depth_stencil_layout(const PixelStore& store, int width);

@@ -26,7 +26,7 @@ void AttachShader(Context& ctx, GLuint program, GLuint shader) {
   ShaderObject* s = shader_or_error(ctx, shader);
   if (!s) return;
   if (std::find(p->attached.begin(), p->attached.end(), shader) != p->attached.end())
-    return ctx.record_error(GL_INVALID_OPERATION);
+    return ctx.record_error(GL_INVALID_OPERATION, "the shader is already attached to the program");
   if (ctx.es2()) {  // ES 2.0 2.10.3: one shader object of each type per program
     for (GLuint other : p->attached) {
       const ShaderObject* o = ctx.programs.objects.shader(other);
@@ -44,7 +44,8 @@ void DetachShader(Context& ctx, GLuint program, GLuint shader) {
   ShaderObject* s = shader_or_error(ctx, shader);
   if (!s) return;
   auto it = std::find(p->attached.begin(), p->attached.end(), shader);
-  if (it == p->attached.end()) return ctx.record_error(GL_INVALID_OPERATION);
+  if (it == p->attached.end())
+    return ctx.record_error(GL_INVALID_OPERATION, "the shader is not attached to the program");
   p->attached.erase(it);
   if (--s->attachments <= 0 && s->delete_pending) ctx.programs.objects.remove_shader(shader);
 }
@@ -70,7 +71,7 @@ void UseProgram(Context& ctx, GLuint program) {
   if (program != 0) {
     ProgramObject* p = program_or_error(ctx, program);
     if (!p) return;
-    if (!p->link_status || !p->executable) return ctx.record_error(GL_INVALID_OPERATION);
+    if (!p->link_status || !p->executable) return ctx.record_error(GL_INVALID_OPERATION, "the program is not linked");
     exec = p->executable;
   }
   ps.use(program, std::move(exec));
@@ -112,7 +113,7 @@ void GetProgramiv(Context& ctx, GLuint program, GLenum pname, GLint* params) {
       if (exec)
         for (const shader::Uniform& u : exec->uniforms.active) value = std::max(value, static_cast<GLint>(u.name.size() + 1));
       break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not a program parameter");
   }
   if (params) *params = value;
 }
@@ -120,14 +121,14 @@ void GetProgramiv(Context& ctx, GLuint program, GLenum pname, GLint* params) {
 void GetProgramInfoLog(Context& ctx, GLuint program, GLsizei bufSize, GLsizei* length, GLchar* infoLog) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
-  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE, "bufSize is negative");
   copy_string_out(p->info_log, bufSize, length, infoLog);
 }
 
 void GetAttachedShaders(Context& ctx, GLuint program, GLsizei maxCount, GLsizei* count, GLuint* shaders) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
-  if (maxCount < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (maxCount < 0) return ctx.record_error(GL_INVALID_VALUE, "maxCount is negative");
   GLsizei n = 0;
   if (shaders)
     for (; n < maxCount && n < static_cast<GLsizei>(p->attached.size()); ++n) shaders[n] = p->attached[n];
@@ -137,9 +138,10 @@ void GetAttachedShaders(Context& ctx, GLuint program, GLsizei maxCount, GLsizei*
 void BindAttribLocation(Context& ctx, GLuint program, GLuint index, const GLchar* name) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
-  if (index >= static_cast<GLuint>(kMaxVertexAttribs)) return ctx.record_error(GL_INVALID_VALUE);
+  if (index >= static_cast<GLuint>(kMaxVertexAttribs))
+    return ctx.record_error(GL_INVALID_VALUE, "index is not less than GL_MAX_VERTEX_ATTRIBS");
   if (!name) return;
-  if (starts_with_gl(name)) return ctx.record_error(GL_INVALID_OPERATION);
+  if (starts_with_gl(name)) return ctx.record_error(GL_INVALID_OPERATION, "name starts with gl_");
   p->bindings[name] = index;
 }
 
@@ -147,7 +149,7 @@ GLint GetAttribLocation(Context& ctx, GLuint program, const GLchar* name) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return -1;
   if (!p->link_status || !p->executable) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the program is not linked");
     return -1;
   }
   if (!name || starts_with_gl(name) || !p->executable->program) return -1;
@@ -161,7 +163,9 @@ void GetActiveAttrib(Context& ctx, GLuint program, GLuint index, GLsizei bufSize
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
   const LinkedProgram* exec = p->executable.get();
-  if (!exec || index >= exec->attributes.size() || bufSize < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!exec || index >= exec->attributes.size())
+    return ctx.record_error(GL_INVALID_VALUE, "index is not below the number of active attributes");
+  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE, "bufSize is negative");
   const shader::Attribute& a = exec->program->attributes()[exec->attributes[index]];
   copy_string_out(a.name, bufSize, length, name);
   if (size) *size = a.array_size;
@@ -173,7 +177,9 @@ void GetActiveUniform(Context& ctx, GLuint program, GLuint index, GLsizei bufSiz
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return;
   const LinkedProgram* exec = p->executable.get();
-  if (!exec || index >= exec->uniforms.active.size() || bufSize < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (!exec || index >= exec->uniforms.active.size())
+    return ctx.record_error(GL_INVALID_VALUE, "index is not below the number of active uniforms");
+  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE, "bufSize is negative");
   const shader::Uniform& u = exec->uniforms.active[index];
   copy_string_out(u.name, bufSize, length, name);
   if (size) *size = u.array_size;
@@ -184,7 +190,7 @@ GLint GetUniformLocation(Context& ctx, GLuint program, const GLchar* name) {
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return -1;
   if (!p->link_status || !p->executable) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "the program is not linked");
     return -1;
   }
   if (!name) return -1;

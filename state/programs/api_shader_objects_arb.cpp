@@ -33,15 +33,15 @@ bool object_parameter(Context& ctx, GLhandleARB obj, GLenum pname, GLint& value)
   const bool is_shader = ctx.programs.objects.shader(obj) != nullptr;
   const bool is_program = ctx.programs.objects.program(obj) != nullptr;
   if (!shader_pname(pname) && !program_pname(pname)) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "pname is not an object parameter");
     return false;
   }
   if (!is_shader && !is_program) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "obj is not a shader or program object");
     return false;
   }
   if (is_shader ? !shader_pname(pname) : !program_pname(pname)) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "pname is not a parameter of that kind of object");
     return false;
   }
   if (pname == GL_OBJECT_TYPE_ARB) {
@@ -61,12 +61,12 @@ void DeleteObjectARB(Context& ctx, GLhandleARB obj) {
   if (obj == 0) return;
   if (ctx.programs.objects.shader(obj)) return DeleteShader(ctx, obj);
   if (ctx.programs.objects.program(obj)) return DeleteProgram(ctx, obj);
-  ctx.record_error(GL_INVALID_VALUE);
+  ctx.record_error(GL_INVALID_VALUE, "obj is not a shader or program object");
 }
 
 GLhandleARB GetHandleARB(Context& ctx, GLenum pname) {
   if (pname != GL_PROGRAM_OBJECT_ARB) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "pname is not GL_PROGRAM_OBJECT_ARB");
     return 0;
   }
   return ctx.programs.current;
@@ -85,7 +85,7 @@ void GetObjectParameterfvARB(Context& ctx, GLhandleARB obj, GLenum pname, GLfloa
 void GetInfoLogARB(Context& ctx, GLhandleARB obj, GLsizei maxLength, GLsizei* length, GLcharARB* infoLog) {
   if (ctx.programs.objects.shader(obj)) return GetShaderInfoLog(ctx, obj, maxLength, length, infoLog);
   if (ctx.programs.objects.program(obj)) return GetProgramInfoLog(ctx, obj, maxLength, length, infoLog);
-  ctx.record_error(GL_INVALID_VALUE);
+  ctx.record_error(GL_INVALID_VALUE, "obj is not a shader or program object");
 }
 
 #define PINEDA_FORWARD_V(name, T)                                                                  \

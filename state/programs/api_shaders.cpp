@@ -22,7 +22,7 @@ GLint length_with_nul(const std::string& s) { return s.empty() ? 0 : static_cast
 
 GLuint CreateShader(Context& ctx, GLenum type) {
   if (type != GL_VERTEX_SHADER && type != GL_FRAGMENT_SHADER) {
-    ctx.record_error(GL_INVALID_ENUM);
+    ctx.record_error(GL_INVALID_ENUM, "shaderType is not GL_VERTEX_SHADER or GL_FRAGMENT_SHADER");
     return 0;
   }
   return ctx.programs.objects.create_shader(type);
@@ -31,13 +31,13 @@ GLuint CreateShader(Context& ctx, GLenum type) {
 void ShaderSource(Context& ctx, GLuint shader, GLsizei count, const GLchar* const* string, const GLint* length) {
   ShaderObject* s = shader_or_error(ctx, shader);
   if (!s) return;
-  if (count < 0) return ctx.record_error(GL_INVALID_VALUE);
-  if (count > 0 && !string) return ctx.record_error(GL_INVALID_VALUE);
+  if (count < 0) return ctx.record_error(GL_INVALID_VALUE, "count is negative");
+  if (count > 0 && !string) return ctx.record_error(GL_INVALID_VALUE, "string is null");
   std::vector<std::string> sources;
   sources.reserve(static_cast<size_t>(count));
   for (GLsizei i = 0; i < count; ++i) {
     const GLchar* str = string[i];
-    if (!str) return ctx.record_error(GL_INVALID_VALUE);
+    if (!str) return ctx.record_error(GL_INVALID_VALUE, "an element of string is null");
     if (length && length[i] >= 0) sources.emplace_back(str, static_cast<size_t>(length[i]));
     else sources.emplace_back(str);
   }
@@ -82,7 +82,7 @@ void GetShaderiv(Context& ctx, GLuint shader, GLenum pname, GLint* params) {
     case GL_COMPILE_STATUS: value = s->compile_status ? GL_TRUE : GL_FALSE; break;
     case GL_INFO_LOG_LENGTH: value = length_with_nul(s->info_log); break;
     case GL_SHADER_SOURCE_LENGTH: value = s->has_source ? static_cast<GLint>(joined_source(*s).size() + 1) : 0; break;
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "pname is not a shader parameter");
   }
   if (params) *params = value;
 }
@@ -90,14 +90,14 @@ void GetShaderiv(Context& ctx, GLuint shader, GLenum pname, GLint* params) {
 void GetShaderInfoLog(Context& ctx, GLuint shader, GLsizei bufSize, GLsizei* length, GLchar* infoLog) {
   ShaderObject* s = shader_or_error(ctx, shader);
   if (!s) return;
-  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE, "bufSize is negative");
   copy_string_out(s->info_log, bufSize, length, infoLog);
 }
 
 void GetShaderSource(Context& ctx, GLuint shader, GLsizei bufSize, GLsizei* length, GLchar* source) {
   ShaderObject* s = shader_or_error(ctx, shader);
   if (!s) return;
-  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (bufSize < 0) return ctx.record_error(GL_INVALID_VALUE, "bufSize is negative");
   copy_string_out(joined_source(*s), bufSize, length, source);
 }
 

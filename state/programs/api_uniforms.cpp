@@ -21,22 +21,22 @@ bool is_sampler(shader::BaseType b) { return b >= shader::BaseType::Sampler1D; }
 const shader::Uniform* target(Context& ctx, GLint location, GLsizei count, LinkedProgram*& exec, int& element) {
   exec = ctx.programs.current_exec.get();
   if (!exec) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "no program is current");
     return nullptr;
   }
   if (count < 0) {
-    ctx.record_error(GL_INVALID_VALUE);
+    ctx.record_error(GL_INVALID_VALUE, "count is negative");
     return nullptr;
   }
   if (location == -1) return nullptr;
   if (location < 0 || static_cast<size_t>(location) >= exec->uniforms.locations.size()) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "location is not a uniform location of the current program");
     return nullptr;
   }
   const UniformLocation& l = exec->uniforms.locations[static_cast<size_t>(location)];
   const shader::Uniform& u = exec->uniforms.active[static_cast<size_t>(l.uniform)];
   if (count > 1 && u.array_size <= 1) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "count is above 1 and the uniform is not an array");
     return nullptr;
   }
   element = l.element;
@@ -59,12 +59,13 @@ void set_vector(Context& ctx, GLint location, GLsizei count, int components, Sou
   if (t.base == shader::BaseType::Float) ok &= source == Source::Float;
   else if (t.base == shader::BaseType::Int) ok &= source == Source::Int;
   else if (is_sampler(t.base)) ok &= source == Source::Int && components == 1;
-  if (!ok) return ctx.record_error(GL_INVALID_OPERATION);
+  if (!ok) return ctx.record_error(GL_INVALID_OPERATION, "the call's type or size does not match the uniform's");
   const int n = elements_to_write(*u, element, count);
   if (n > 0 && !v) return;
   if (is_sampler(t.base))
     for (int i = 0; i < n; ++i)
-      if (v[i] < 0 || v[i] >= raster::kMaxTextureImageUnits) return ctx.record_error(GL_INVALID_VALUE);
+      if (v[i] < 0 || v[i] >= raster::kMaxTextureImageUnits)
+        return ctx.record_error(GL_INVALID_VALUE, "a sampler value is not a texture image unit");
   for (int e = 0; e < n; ++e) {
     const size_t at = static_cast<size_t>(u->offset + (element + e) * u->stride);
     if (at + components > exec->values.size()) return;
@@ -83,8 +84,9 @@ void set_matrix(Context& ctx, GLint location, GLsizei count, int columns, int ro
   if (!u) return;
   const shader::Type& t = u->type;
   if (t.base != shader::BaseType::Float || t.columns != columns || t.rows != rows)
-    return ctx.record_error(GL_INVALID_OPERATION);
-  if (ctx.attribs().gles && transpose) return ctx.record_error(GL_INVALID_VALUE);
+    return ctx.record_error(GL_INVALID_OPERATION, "the uniform is not a matrix of the call's size");
+  if (ctx.attribs().gles && transpose)
+    return ctx.record_error(GL_INVALID_VALUE, "transpose is not GL_FALSE in OpenGL ES");
   const int n = elements_to_write(*u, element, count);
   if (n > 0 && !v) return;
   const int size = columns * rows;
@@ -103,8 +105,12 @@ const shader::Uniform* query_target(Context& ctx, GLuint program, GLint location
   ProgramObject* p = program_or_error(ctx, program);
   if (!p) return nullptr;
   exec = p->executable.get();
-  if (!p->link_status || !exec || location < 0 || static_cast<size_t>(location) >= exec->uniforms.locations.size()) {
-    ctx.record_error(GL_INVALID_OPERATION);
+  if (!p->link_status || !exec) {
+    ctx.record_error(GL_INVALID_OPERATION, "the program is not linked");
+    return nullptr;
+  }
+  if (location < 0 || static_cast<size_t>(location) >= exec->uniforms.locations.size()) {
+    ctx.record_error(GL_INVALID_OPERATION, "location is not a uniform location of the program");
     return nullptr;
   }
   const UniformLocation& l = exec->uniforms.locations[static_cast<size_t>(location)];
@@ -134,7 +140,8 @@ void compile_vector(Context& ctx, GLsizei count, int components, const T* v, Cal
   std::vector<T> copy;
   if (v && count > 0) copy.assign(v, v + static_cast<size_t>(count) * components);
   ctx.record_list_command([copy = std::move(copy), call](Context& list_ctx) {
-    if (list_ctx.inside_begin_end()) return list_ctx.record_error(GL_INVALID_OPERATION);
+    if (list_ctx.inside_begin_end())
+      return list_ctx.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     call(list_ctx, copy.empty() ? nullptr : copy.data());
   });
 }

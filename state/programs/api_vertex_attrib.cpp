@@ -11,7 +11,7 @@ namespace {
 
 bool valid_index(Context& ctx, GLuint index) {
   if (index < static_cast<GLuint>(kMaxVertexAttribs)) return true;
-  ctx.record_error(GL_INVALID_VALUE);
+  ctx.record_error(GL_INVALID_VALUE, "index is not less than GL_MAX_VERTEX_ATTRIBS");
   return false;
 }
 
@@ -68,14 +68,15 @@ void VertexAttrib4Nub(Context& ctx, GLuint index, GLubyte x, GLubyte y, GLubyte 
 void VertexAttribPointer(Context& ctx, GLuint index, GLint size, GLenum type, GLboolean normalized, GLsizei stride,
                          const void* pointer) {
   if (!valid_index(ctx, index)) return;
-  if (size < 1 || size > 4 || stride < 0) return ctx.record_error(GL_INVALID_VALUE);
+  if (size < 1 || size > 4) return ctx.record_error(GL_INVALID_VALUE, "size is not 1, 2, 3 or 4");
+  if (stride < 0) return ctx.record_error(GL_INVALID_VALUE, "stride is negative");
   switch (type) {
     case GL_BYTE: case GL_UNSIGNED_BYTE: case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_FLOAT: break;
     case GL_INT: case GL_UNSIGNED_INT: case GL_DOUBLE:
-      if (ctx.es2()) return ctx.record_error(GL_INVALID_ENUM);
+      if (ctx.es2()) return ctx.record_error(GL_INVALID_ENUM, "type is not a type of OpenGL ES 2.0");
       break;
     case GL_FIXED: break;  // OpenGL ES 2.0 2.8; desktop GL through GL_ARB_ES2_compatibility
-    default: return ctx.record_error(GL_INVALID_ENUM);
+    default: return ctx.record_error(GL_INVALID_ENUM, "type is not a vertex attribute type");
   }
   GenericArray& a = ctx.programs.arrays[index];
   a.size = size;
@@ -111,14 +112,14 @@ bool vertex_attrib_values(Context& ctx, GLuint index, GLenum pname, double out[4
     case GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING: out[0] = buffer_name(a.buffer); return true;
     case GL_CURRENT_VERTEX_ATTRIB:
       if (index == 0 && !ctx.es2()) {
-        ctx.record_error(GL_INVALID_OPERATION);
+        ctx.record_error(GL_INVALID_OPERATION, "vertex attribute 0 has no current value outside OpenGL ES");
         return false;
       }
       n = 4;
       is_float = true;
       for (int i = 0; i < 4; ++i) out[i] = ctx.programs.current_attrib[index][i];
       return true;
-    default: ctx.record_error(GL_INVALID_ENUM); return false;
+    default: ctx.record_error(GL_INVALID_ENUM, "pname is not a vertex attribute parameter"); return false;
   }
 }
 
@@ -151,7 +152,8 @@ void GetVertexAttribiv(Context& ctx, GLuint index, GLenum pname, GLint* params) 
 
 void GetVertexAttribPointerv(Context& ctx, GLuint index, GLenum pname, void** pointer) {
   if (!valid_index(ctx, index)) return;
-  if (pname != GL_VERTEX_ATTRIB_ARRAY_POINTER) return ctx.record_error(GL_INVALID_ENUM);
+  if (pname != GL_VERTEX_ATTRIB_ARRAY_POINTER)
+    return ctx.record_error(GL_INVALID_ENUM, "pname is not GL_VERTEX_ATTRIB_ARRAY_POINTER");
   if (pointer) *pointer = const_cast<void*>(ctx.programs.arrays[index].pointer);
 }
 

@@ -196,7 +196,7 @@ const LinkedProgram* program_in_use(Context& ctx) {
 // The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
 std::shared_ptr<raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec) {
   if (!samplers_consistent(exec, nullptr)) {
-    ctx.record_error(GL_INVALID_OPERATION);
+    ctx.record_error(GL_INVALID_OPERATION, "samplers of different types use the same texture unit");
     return nullptr;
   }
   auto draw = std::make_shared<raster::ShaderDraw>();

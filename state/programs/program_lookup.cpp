@@ -7,13 +7,15 @@ namespace pineda {
 
 ShaderObject* shader_or_error(Context& ctx, GLuint name) {
   if (ShaderObject* s = ctx.programs.objects.shader(name)) return s;
-  ctx.record_error(ctx.programs.objects.program(name) ? GL_INVALID_OPERATION : GL_INVALID_VALUE);
+  if (ctx.programs.objects.program(name)) ctx.record_error(GL_INVALID_OPERATION, "shader is a program object");
+  else ctx.record_error(GL_INVALID_VALUE, "shader is not a shader or program object");
   return nullptr;
 }
 
 ProgramObject* program_or_error(Context& ctx, GLuint name) {
   if (ProgramObject* p = ctx.programs.objects.program(name)) return p;
-  ctx.record_error(ctx.programs.objects.shader(name) ? GL_INVALID_OPERATION : GL_INVALID_VALUE);
+  if (ctx.programs.objects.shader(name)) ctx.record_error(GL_INVALID_OPERATION, "program is a shader object");
+  else ctx.record_error(GL_INVALID_VALUE, "program is not a shader or program object");
   return nullptr;
 }
 

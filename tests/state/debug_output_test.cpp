@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -300,6 +301,155 @@ TEST_F(DebugOutputTest, ObjectLabelErrors) {
   ASSERT_EQ(log.size(), 5u);
   EXPECT_EQ(log[0].text, "glObjectLabel: GL_INVALID_VALUE: name 4242 is not an object of that identifier");
 }
+
+// Every error names the argument and the rule it broke: one case a call, the message read back
+// exactly. `setup` makes the state the call needs and records no error.
+struct ErrorCase {
+  const char* name;
+  void (*setup)();
+  void (*call)();
+  GLenum error;
+  const char* text;
+};
+
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+
+void no_setup() {}
+
+GLuint bound_buffer() {
+  GLuint b = 0;
+  glGenBuffers(1, &b);
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  glBufferData(GL_ARRAY_BUFFER, 16, nullptr, GL_STATIC_DRAW);
+  return b;
+}
+
+GLuint program_with_shader() {
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, glCreateShader(GL_VERTEX_SHADER));
+  return program;
+}
+
+const ErrorCase kErrorCases[] = {
+    {"TexImageWidth", no_setup, [] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, -1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr); },
+     GL_INVALID_VALUE, "glTexImage2D: GL_INVALID_VALUE: width is negative"},
+    {"TexImageBorder", no_setup, [] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 2, GL_RGBA, GL_UNSIGNED_BYTE, nullptr); },
+     GL_INVALID_VALUE, "glTexImage2D: GL_INVALID_VALUE: border is not 0 or 1"},
+    {"TexImageFormat", no_setup, [] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, 0x1234, GL_UNSIGNED_BYTE, nullptr); },
+     GL_INVALID_ENUM, "glTexImage2D: GL_INVALID_ENUM: format is not a pixel format"},
+    {"TexSubImageNoImage", no_setup,
+     [] {
+       const GLubyte texel[4] = {};
+       glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+     },
+     GL_INVALID_OPERATION, "glTexSubImage2D: GL_INVALID_OPERATION: the level has no image to replace"},
+    {"TexParameterTarget", no_setup, [] { glTexParameteri(0x1234, GL_TEXTURE_MIN_FILTER, GL_NEAREST); },
+     GL_INVALID_ENUM, "glTexParameteri: GL_INVALID_ENUM: target is not a texture target"},
+    {"GenTextures", no_setup, [] { glGenTextures(-1, nullptr); }, GL_INVALID_VALUE,
+     "glGenTextures: GL_INVALID_VALUE: n is negative"},
+    {"BindTextureOtherTarget", [] { glBindTexture(GL_TEXTURE_1D, 7); }, [] { glBindTexture(GL_TEXTURE_2D, 7); },
+     GL_INVALID_OPERATION, "glBindTexture: GL_INVALID_OPERATION: the texture was first bound to another target"},
+    {"BufferDataSize", [] { bound_buffer(); }, [] { glBufferData(GL_ARRAY_BUFFER, -1, nullptr, GL_STATIC_DRAW); },
+     GL_INVALID_VALUE, "glBufferData: GL_INVALID_VALUE: size is negative"},
+    {"BufferDataTarget", no_setup, [] { glBufferData(0x1234, 4, nullptr, GL_STATIC_DRAW); }, GL_INVALID_ENUM,
+     "glBufferData: GL_INVALID_ENUM: target is not a buffer target"},
+    {"MapBufferTwice", [] { bound_buffer(), glMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY); },
+     [] { glMapBuffer(GL_ARRAY_BUFFER, GL_WRITE_ONLY); }, GL_INVALID_OPERATION,
+     "glMapBuffer: GL_INVALID_OPERATION: the buffer is already mapped"},
+    {"UnmapUnmapped", [] { bound_buffer(); }, [] { glUnmapBuffer(GL_ARRAY_BUFFER); }, GL_INVALID_OPERATION,
+     "glUnmapBuffer: GL_INVALID_OPERATION: the buffer is not mapped"},
+    {"CreateShaderType", no_setup, [] { glCreateShader(0x1234); }, GL_INVALID_ENUM,
+     "glCreateShader: GL_INVALID_ENUM: shaderType is not GL_VERTEX_SHADER or GL_FRAGMENT_SHADER"},
+    {"ShaderSourceCount", [] { glCreateShader(GL_VERTEX_SHADER); }, [] { glShaderSource(1, -1, nullptr, nullptr); },
+     GL_INVALID_VALUE, "glShaderSource: GL_INVALID_VALUE: count is negative"},
+    {"GetShaderivName", no_setup,
+     [] {
+       GLint v = 0;
+       glGetShaderiv(4242, GL_COMPILE_STATUS, &v);
+     },
+     GL_INVALID_VALUE, "glGetShaderiv: GL_INVALID_VALUE: shader is not a shader or program object"},
+    {"AttachTwice", [] { program_with_shader(); }, [] { glAttachShader(1, 2); }, GL_INVALID_OPERATION,
+     "glAttachShader: GL_INVALID_OPERATION: the shader is already attached to the program"},
+    {"UseUnlinkedProgram", [] { glCreateProgram(); }, [] { glUseProgram(1); }, GL_INVALID_OPERATION,
+     "glUseProgram: GL_INVALID_OPERATION: the program is not linked"},
+    {"UniformWithoutProgram", no_setup, [] { glUniform1f(0, 1.f); }, GL_INVALID_OPERATION,
+     "glUniform1f: GL_INVALID_OPERATION: no program is current"},
+    {"BindFramebufferTarget", no_setup, [] { glBindFramebuffer(0x1234, 0); }, GL_INVALID_ENUM,
+     "glBindFramebuffer: GL_INVALID_ENUM: target is not a framebuffer target"},
+    {"AttachToDefaultFramebuffer", no_setup,
+     [] { glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0); }, GL_INVALID_OPERATION,
+     "glFramebufferTexture2D: GL_INVALID_OPERATION: the default framebuffer, which has no attachments, is bound"},
+    {"RenderbufferStorageUnbound", no_setup, [] { glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1, 1); },
+     GL_INVALID_OPERATION, "glRenderbufferStorage: GL_INVALID_OPERATION: no renderbuffer is bound"},
+    {"BlitFilter", no_setup, [] { glBlitFramebuffer(0, 0, 1, 1, 0, 0, 1, 1, GL_COLOR_BUFFER_BIT, 0x1234); },
+     GL_INVALID_ENUM, "glBlitFramebuffer: GL_INVALID_ENUM: filter is not GL_NEAREST or GL_LINEAR"},
+    {"NewListZero", no_setup, [] { glNewList(0, GL_COMPILE); }, GL_INVALID_VALUE,
+     "glNewList: GL_INVALID_VALUE: list is zero"},
+    {"EndListOutsideList", no_setup, [] { glEndList(); }, GL_INVALID_OPERATION,
+     "glEndList: GL_INVALID_OPERATION: no display list is being compiled"},
+    {"CallListsInList", [] { glNewList(1, GL_COMPILE); }, [] { glCallLists(1, 0x1234, nullptr), glEndList(), glCallList(1); },
+     GL_INVALID_ENUM, "glCallList: GL_INVALID_ENUM: type is not a list name type"},
+    {"BeginMode", no_setup, [] { glBegin(0x1234); }, GL_INVALID_ENUM,
+     "glBegin: GL_INVALID_ENUM: mode is not a primitive type"},
+    {"EndOutsideBegin", no_setup, [] { glEnd(); }, GL_INVALID_OPERATION,
+     "glEnd: GL_INVALID_OPERATION: called outside glBegin and glEnd"},
+    {"IsEnabledCap", no_setup, [] { glIsEnabled(0x1234); }, GL_INVALID_ENUM,
+     "glIsEnabled: GL_INVALID_ENUM: cap 0x1234 is not a capability"},
+    {"GetIntegerPname", no_setup,
+     [] {
+       GLint v = 0;
+       glGetIntegerv(0x1234, &v);
+     },
+     GL_INVALID_ENUM, "glGetIntegerv: GL_INVALID_ENUM: pname is not a state variable"},
+    {"GetStringName", no_setup, [] { glGetString(0x1234); }, GL_INVALID_ENUM,
+     "glGetString: GL_INVALID_ENUM: name is not a string name"},
+    {"PixelStoreAlignment", no_setup, [] { glPixelStorei(GL_UNPACK_ALIGNMENT, 3); }, GL_INVALID_VALUE,
+     "glPixelStorei: GL_INVALID_VALUE: the alignment is not 1, 2, 4 or 8"},
+    {"ReadPixelsWidth", no_setup, [] { glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, nullptr); },
+     GL_INVALID_VALUE, "glReadPixels: GL_INVALID_VALUE: width or height is negative"},
+    {"DrawPixelsType", no_setup, [] { glDrawPixels(1, 1, GL_RGBA, 0x1234, nullptr); }, GL_INVALID_ENUM,
+     "glDrawPixels: GL_INVALID_ENUM: type is not a pixel type"},
+    {"PopMatrixEmpty", no_setup, [] { glPopMatrix(); }, GL_STACK_UNDERFLOW,
+     "glPopMatrix: GL_STACK_UNDERFLOW: the current matrix stack has one matrix only"},
+    {"FrustumNear", no_setup, [] { glFrustum(-1, 1, -1, 1, 0, 1); }, GL_INVALID_VALUE,
+     "glFrustum: GL_INVALID_VALUE: nearVal or farVal is not positive"},
+    {"PopAttribEmpty", no_setup, [] { glPopAttrib(); }, GL_STACK_UNDERFLOW,
+     "glPopAttrib: GL_STACK_UNDERFLOW: the attribute stack is empty"},
+    {"SpotExponent", no_setup, [] { glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 200.f); }, GL_INVALID_VALUE,
+     "glLightf: GL_INVALID_VALUE: GL_SPOT_EXPONENT is outside [0, 128]"},
+    {"DrawArraysCount", no_setup, [] { glDrawArrays(GL_POINTS, 0, -1); }, GL_INVALID_VALUE,
+     "glDrawArrays: GL_INVALID_VALUE: count is negative"},
+    {"MultiDrawArraysDrawcount", no_setup, [] { glMultiDrawArrays(GL_POINTS, nullptr, nullptr, -1); },
+     GL_INVALID_VALUE, "glMultiDrawArrays: GL_INVALID_VALUE: drawcount is negative"},
+    {"EndQueryInactive", no_setup, [] { glEndQuery(GL_SAMPLES_PASSED); }, GL_INVALID_OPERATION,
+     "glEndQuery: GL_INVALID_OPERATION: no query of target is active"},
+    {"ClearMask", no_setup, [] { glClear(0x1); }, GL_INVALID_VALUE,
+     "glClear: GL_INVALID_VALUE: mask has bits other than the four buffer bits"},
+    {"StencilOpSeparateFace", no_setup, [] { glStencilOpSeparate(0x1234, GL_KEEP, GL_KEEP, GL_KEEP); },
+     GL_INVALID_ENUM, "glStencilOpSeparate: GL_INVALID_ENUM: face is not GL_FRONT, GL_BACK or GL_FRONT_AND_BACK"},
+    {"Map1Order", no_setup,
+     [] {
+       const GLfloat points[4] = {};
+       glMap1f(GL_MAP1_VERTEX_3, 0.f, 1.f, 3, 0, points);
+     },
+     GL_INVALID_VALUE, "glMap1f: GL_INVALID_VALUE: order is less than 1 or above GL_MAX_EVAL_ORDER"},
+};
+
+class ErrorMessageTest : public DebugOutputTest, public ::testing::WithParamInterface<ErrorCase> {};
+
+TEST_P(ErrorMessageTest, NamesTheArgumentAndTheRule) {
+  GetParam().setup();
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  drain_log();
+  GetParam().call();
+  EXPECT_EQ(glGetError(), GetParam().error);
+  const std::vector<Logged> log = drain_log();
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_EQ(log[0].text, GetParam().text);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sites, ErrorMessageTest, ::testing::ValuesIn(kErrorCases),
+                         [](const ::testing::TestParamInfo<ErrorCase>& info) { return std::string(info.param.name); });
 
 class PineDebugEnvTest : public GlTest {
  protected:
