@@ -87,47 +87,60 @@ struct TargetViews {
 };
 struct NoTargets {};
 
-// Shades up to four quads of row y as one block; returns the samples that passed depth.
-// kTargets: the framebuffer has several draw buffers, gl_FragData[i] (or gl_FragColor) goes to
-// draw buffer i, all from one run of the shader.
-template <bool kTargets>
-uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, Quad* quads, int n,
-                     const float* uniform_values) {
+// Up to four blocks of row y shaded together (shader::Program::run_fragment_blocks): each
+// block's quads, its fragment inputs, and what it needs after the run.
+struct RowBlocks {
+  static constexpr int kMax = shader::kMaxBlocksPerRun;
+  int count = 0;
+  Quad quads[kMax][4];
+  int quad_count[kMax] = {};
+  shader::FragmentBlock blocks[kMax];
+  alignas(64) float varyings[kMax][shader::kMaxVaryingFloats][kLanes];
+};
+
+bool early_tests(const DrawRecord& d, const shader::Program& program) {
+  return (d.key.depth || d.key.stencil) && !program.writes_depth() && !program.uses_discard() && !d.state.alpha_test;
+}
+
+// Fills block k of `row` for up to four quads of row y (depth and stencil first when no
+// fragment can change them); returns false when no pixel is left to shade. Adds the samples
+// that passed an early depth test to `passed`.
+bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, const float* uniform_values,
+                 RowBlocks& row, int k, uint32_t& passed) {
   const ShaderDraw& sd = *d.state.shader;
   const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
-  const bool count = d.key.count_samples;
-  const bool tests = d.key.depth || d.key.stencil;
-  const bool early = tests && !program.writes_depth() && !program.uses_discard() && !s.alpha_test;
-  uint32_t passed = 0;
-  uint32_t plane_z[4][4];
-  if (early) {  // depth and stencil first: only surviving fragments are shaded
-    for (int k = 0; k < n; ++k) {
-      plane_depths(d, p, quads[k].ox, quads[k].oy, plane_z[k]);
-      quads[k].mask = depth_stencil_lanes(d, p, fb, quads[k].x, y, quads[k].mask, plane_z[k]);
-      if (count) passed += static_cast<uint32_t>(__builtin_popcount(quads[k].mask));
+  Quad* quads = row.quads[k];
+  const int n = row.quad_count[k];
+  if (early_tests(d, program)) {
+    for (int q = 0; q < n; ++q) {
+      uint32_t plane_z[4];
+      plane_depths(d, p, quads[q].ox, quads[q].oy, plane_z);
+      quads[q].mask = depth_stencil_lanes(d, p, fb, quads[q].x, y, quads[q].mask, plane_z);
+      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quads[q].mask));
     }
   }
-  shader::FragmentBlock block;  // filled below as far as the program reads it
-  for (int k = 0; k < n; ++k) block.live |= static_cast<shader::LaneMask>(quads[k].mask << (4 * k));
-  if (!block.live) return passed;
+  shader::FragmentBlock& block = row.blocks[k];
+  block.live = 0;
+  for (int q = 0; q < n; ++q) block.live |= static_cast<shader::LaneMask>(quads[q].mask << (4 * q));
+  if (!block.live) return false;
 
   const int nv = program.varying_floats();
-  alignas(64) float varyings[shader::kMaxVaryingFloats][kLanes];
+  float (*varyings)[kLanes] = row.varyings[k];
   const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
   const bool frag_coord = program.reads_frag_coord();
-  for (int k = 0; k < 4; ++k) {
-    const Quad& q = quads[k < n ? k : 0];  // unused lanes repeat quad 0: derivatives stay finite
+  for (int j = 0; j < 4; ++j) {
+    const Quad& q = quads[j < n ? j : 0];  // unused lanes repeat quad 0: derivatives stay finite
     const F4 w = eval_plane(p.inv_w, q.ox, q.oy);
     const F4 inv = 1.f / w;
     for (int v = 0; v < nv; ++v) {
       F4 value = eval_plane(p.varying_planes[v], q.ox, q.oy);
       if (p.perspective) value *= inv;
-      store4(&varyings[v][4 * k], value);
+      store4(&varyings[v][4 * j], value);
     }
     if (!frag_coord && !point) continue;
     for (int i = 0; i < 4; ++i) {
-      const int lane = 4 * k + i;
+      const int lane = 4 * j + i;
       const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
       block.frag_coord[0][lane] = fx;
       block.frag_coord[1][lane] = fy;
@@ -147,39 +160,41 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
   if (sd.color_output != 0 && s.alpha_test)  // colour 0's alpha is tested even if never written
     std::fill(&block.color[0][3][0], &block.color[0][3][0] + kLanes, 0.f);
-  std::conditional_t<kTargets, TargetViews, NoTargets> targets;
-  if constexpr (kTargets) {
-    for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
-      std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
-    for (int i = 0; i < fb.color_targets; ++i) {
-      const DrawRecord& record = (*d.target_draws)[size_t(i)];
-      if (!fb.target_color(i).base || !record.color_write_any) continue;
-      targets.view[size_t(targets.count)] = fb.target(i);
-      targets.record[size_t(targets.count)] = &record;
-      targets.output[size_t(targets.count++)] = i;
-    }
-  }
+  for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
+    std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
   block.uniform_values = uniform_values;
-  const UnitTextureAccess textures(s.texture_units);
-  program.run_fragments(sd.uniforms.data(), &textures, block);
+  return true;
+}
 
+// After the run: alpha test, late depth and stencil, colour writes of block k; returns the
+// samples that passed a late depth test.
+template <bool kTargets>
+uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y,
+                      const std::conditional_t<kTargets, TargetViews, NoTargets>& targets, RowBlocks& row, int k) {
+  const ShaderDraw& sd = *d.state.shader;
+  const shader::Program& program = *sd.program;
+  const DrawState& s = d.state;
+  const shader::FragmentBlock& block = row.blocks[k];
+  const bool early = early_tests(d, program);
+  const bool tests = d.key.depth || d.key.stencil;
   bool write_color = fb.color.base && d.color_write_any;
   if constexpr (kTargets) write_color = targets.count > 0;
-  for (int k = 0; k < n; ++k) {
-    unsigned mask = (block.live >> (4 * k)) & 0xfu;
+  uint32_t passed = 0;
+  for (int j = 0; j < row.quad_count[k]; ++j) {
+    unsigned mask = (block.live >> (4 * j)) & 0xfu;
     if (!mask) continue;
-    const Quad& q = quads[k];
+    const Quad& q = row.quads[k][j];
     QuadColor col;
-    for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * k]);
+    for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * j]);
     if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
     if (s.alpha_test) {
       // The alpha of colour 0 decides for every draw buffer (as in Mesa; GL 3.0 4.1.4).
       F4 alpha = col.c[3];
       if (sd.color_output != 0) {
-        alpha = load4(&block.color[0][3][4 * k]);
+        alpha = load4(&block.color[0][3][4 * j]);
         if (d.key.extras) apply_coverage(p, q.x, y, alpha);
       }
       for (int i = 0; i < 4; ++i)
@@ -190,7 +205,7 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       uint32_t z[4];
       if (program.writes_depth()) {
         for (int i = 0; i < 4; ++i) {
-          const float v = clamp01(block.depth[4 * k + i]);
+          const float v = clamp01(block.depth[4 * j + i]);
           z[i] = static_cast<uint32_t>(static_cast<double>(v) * d.depth_max + 0.5);
         }
       } else {
@@ -198,14 +213,14 @@ uint32_t shade_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       }
       mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, z);
     }
-    if (count && !early) passed += static_cast<uint32_t>(__builtin_popcount(mask));
+    if (d.key.count_samples && !early) passed += static_cast<uint32_t>(__builtin_popcount(mask));
     if (!mask || !write_color) continue;
     if constexpr (!kTargets) {
       write_colors(d, fb, q.x, y, mask, col);
     } else {
       for (int t = 0; t < targets.count; ++t) {
         QuadColor out;
-        for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[targets.output[size_t(t)]][c][4 * k]);
+        for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[targets.output[size_t(t)]][c][4 * j]);
         if (d.key.extras) apply_coverage(p, q.x, y, out.c[3]);
         if (d.alpha_to_one) out.c[3] = splat(1.f);
         write_colors(*targets.record[size_t(t)], targets.view[size_t(t)], q.x, y, mask, out);
@@ -219,26 +234,51 @@ template <bool kTargets>
 uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                      const uint8_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return 0;
+  const ShaderDraw& sd = *d.state.shader;
   const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
   const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
-  const float* uniform_values = d.state.shader->fragment_uniform_values();
+  const float* uniform_values = sd.fragment_uniform_values();
+  std::conditional_t<kTargets, TargetViews, NoTargets> targets;
+  if constexpr (kTargets) {
+    for (int i = 0; i < fb.color_targets; ++i) {
+      const DrawRecord& record = (*d.target_draws)[size_t(i)];
+      if (!fb.target_color(i).base || !record.color_write_any) continue;
+      targets.view[size_t(targets.count)] = fb.target(i);
+      targets.record[size_t(targets.count)] = &record;
+      targets.output[size_t(targets.count++)] = i;
+    }
+  }
+  const UnitTextureAccess textures(d.state.texture_units);
   uint32_t passed = 0;
-  Quad quads[4];
+  RowBlocks row;
+  auto run = [&] {
+    if (!row.count) return;
+    sd.program->run_fragment_blocks(sd.uniforms.data(), &textures, row.blocks, row.count);
+    for (int k = 0; k < row.count; ++k) passed += finish_block<kTargets>(d, p, fb, y, targets, row, k);
+    row.count = 0;
+  };
   int n = 0;
   for (int q = 0; q < count; ++q) {
     unsigned mask = masks[q];
     if (d.key.extras) mask &= stipple_mask(d, p, x + 2 * q, y);
     if (!mask) continue;
-    quads[n].x = x + 2 * q;
-    quads[n].mask = mask;
-    quads[n].ox = ox0 + splat(static_cast<float>(2 * q));
-    quads[n].oy = oy;
-    if (++n == 4) {
-      passed += shade_block<kTargets>(d, p, fb, y, quads, n, uniform_values);
+    Quad& quad = row.quads[row.count][n];
+    quad.x = x + 2 * q;
+    quad.mask = mask;
+    quad.ox = ox0 + splat(static_cast<float>(2 * q));
+    quad.oy = oy;
+    if (++n == 4 || q == count - 1) {
+      row.quad_count[row.count] = n;
+      if (begin_block(d, p, fb, y, uniform_values, row, row.count, passed)) ++row.count;
       n = 0;
+      if (row.count == RowBlocks::kMax) run();
     }
   }
-  if (n) passed += shade_block<kTargets>(d, p, fb, y, quads, n, uniform_values);
+  if (n) {
+    row.quad_count[row.count] = n;
+    if (begin_block(d, p, fb, y, uniform_values, row, row.count, passed)) ++row.count;
+  }
+  run();
   return passed;
 }
 

@@ -18,7 +18,6 @@ using ir::Operand;
 
 namespace {
 
-constexpr LaneMask kAllLanes = 0xFFFF;
 constexpr int kStackRegisters = 256;
 constexpr int kStackFrames = 64;
 // Loop iterations one invocation may run in total (all loops together): a shader with an
@@ -27,9 +26,9 @@ constexpr int kIterationBudget = 1 << 18;
 
 struct Frame {
   Op kind;
-  LaneMask entry;    // lanes that continue after the construct
-  LaneMask cond;     // if: lanes that took the then branch
-  LaneMask running;  // loop: lanes still iterating
+  RunMask entry;    // lanes that continue after the construct
+  RunMask cond;     // if: lanes that took the then branch
+  RunMask running;  // loop: lanes still iterating
 };
 
 inline int clamp_index(float x, int limit) {
@@ -88,9 +87,10 @@ void StageCode::prepare() {
     if (in.op == Op::IfBegin || in.op == Op::LoopBegin || in.op == Op::FuncBegin) max_depth = std::max(max_depth, ++depth);
     if (in.op == Op::EndIf || in.op == Op::LoopEnd || in.op == Op::FuncEnd) --depth;
   }
-  constant_lanes.resize(code.constants.size() * kLanes);
+  constexpr int kRunLanes = kMaxBlocksPerRun * kLanes;
+  constant_lanes.resize(code.constants.size() * kRunLanes);
   for (size_t i = 0; i < code.constants.size(); ++i)
-    for (int l = 0; l < kLanes; ++l) constant_lanes[i * kLanes + l] = code.constants[i];
+    for (int l = 0; l < kRunLanes; ++l) constant_lanes[i * kRunLanes + l] = code.constants[i];
 }
 
 void StageCode::compute_uniform_ops(const float* uniforms, float* slot_lanes) const {
@@ -139,19 +139,26 @@ namespace exec_avx512 {
 #pragma GCC pop_options
 #undef PINEDA_EXEC_VECTOR_BYTES
 
-using Executor = LaneMask (*)(const StageCode&, Stage, LaneMask, const LaneIo&);
+using Executor = RunMask (*)(const StageCode&, Stage, RunMask, const LaneIo&);
 
-Executor choose_executor() {
+// Runs of 1, 2 and 4 blocks.
+struct Executors {
+  Executor one, two, four;
+};
+
+Executors choose_executors() {
   const raster::SimdPath path = raster::simd_path_from_environment();
-  if (raster::uses_avx512(path)) return &exec_avx512::run;
-  return raster::uses_avx2(path) ? &exec_avx2::run : &exec_baseline::run;
+  if (raster::uses_avx512(path)) return {&exec_avx512::run<1>, &exec_avx512::run<2>, &exec_avx512::run<4>};
+  if (raster::uses_avx2(path)) return {&exec_avx2::run<1>, &exec_avx2::run<2>, &exec_avx2::run<4>};
+  return {&exec_baseline::run<1>, &exec_baseline::run<2>, &exec_baseline::run<4>};
 }
 
 }  // namespace
 
-LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo& io) {
-  static const Executor run = choose_executor();
-  return run(stage, kind, mask, io);
+RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
+  static const Executors run = choose_executors();
+  if (blocks >= 4) return run.four(stage, kind, mask, io);
+  return blocks == 2 ? run.two(stage, kind, mask, io) : run.one(stage, kind, mask, io);
 }
 
 }  // namespace pineda::shader

@@ -1,17 +1,24 @@
-// The lane executor: runs one stage's IR over 16 lanes with execution masks.
+// The lane executor: runs one stage's IR over the 16 lanes of up to four blocks at once, with
+// execution masks.
 #pragma once
 #include "shader/ir.h"
 #include "shader/program.h"
 
 namespace pineda::shader {
 
+// A run executes one instruction over the lanes of several fragment blocks together
+// (kMaxBlocksPerRun, program.h), so that each dispatch does more work: lane l of block b is
+// lane b * kLanes + l of the run.
+using RunMask = uint64_t;
+
 // A stage's code ready to run: the IR, and the same instructions with every value operand
 // turned into a float offset into one lane buffer (constants, splatted, then registers, then
 // the slots of the uniform-only operations, shader/hoist.h), so that the executor reads
-// operands without a branch.
+// operands without a branch. Offsets count kLanes floats per register; a run of several
+// blocks scales them by its block count.
 struct StageCode {
   ir::Code code;
-  std::vector<float> constant_lanes;  // [constant][kLanes]
+  std::vector<float> constant_lanes;  // [constant][kMaxBlocksPerRun * kLanes]
   std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as buffer offsets, then Op::Count
   std::vector<ir::TextureLookup> exec_textures;  // exec's lookups (IR operands, slots included)
   std::vector<ir::Inst> uniform_ops;  // run once per draw or per run; d and register operands: slots
@@ -31,14 +38,16 @@ struct StageCode {
 struct LaneIo {
   const float* uniforms = nullptr;
   const TextureAccess* textures = nullptr;
-  const float* inputs = nullptr;   // vertex inputs [slot][4][kLanes]
+  const float* inputs = nullptr;   // vertex inputs [slot][4][kLanes] (runs of one block)
   float* outputs = nullptr;        // vertex outputs [float][kLanes]
-  FragmentBlock* block = nullptr;  // fragments
-  LaneMask needed = 0xFFFF;        // lanes whose results are used (texture lookups read only these)
+  FragmentBlock* blocks[kMaxBlocksPerRun] = {};  // fragments: the run's blocks
+  // Per block: the lanes whose results are used (texture lookups read only these).
+  LaneMask needed[kMaxBlocksPerRun] = {0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
   const float* slot_lanes = nullptr;  // the stage's compute_uniform_ops values; null: computed per run
 };
 
-// Runs `stage` over the lanes of `mask`; returns the lanes that executed discard.
-LaneMask execute(const StageCode& stage, Stage kind, LaneMask mask, const LaneIo& io);
+// Runs `stage` over the lanes of `mask` of `blocks` blocks (1, 2 or 4; vertices: 1); returns
+// the lanes that executed discard.
+RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io);
 
 }  // namespace pineda::shader

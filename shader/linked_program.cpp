@@ -11,24 +11,58 @@ void LinkedProgram::run_vertices(const float* uniforms, const TextureAccess* tex
   io.textures = textures;
   io.inputs = batch.inputs;
   io.outputs = batch.outputs;
-  execute(*vertex_, Stage::Vertex, mask, io);
+  execute(*vertex_, Stage::Vertex, 1, mask, io);
 }
 
-void LinkedProgram::run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const {
-  if (!fragment_ || block.live == 0) return;
-  // Every lane of a quad with a covered pixel runs, so that derivatives and implicit LOD
-  // see real neighbours; only covered lanes come out live.
+namespace {
+
+// Every lane of a quad with a covered pixel runs, so that derivatives and implicit LOD see
+// real neighbours; only covered lanes come out live.
+LaneMask quads_of(LaneMask live) {
   LaneMask quads = 0;
   for (int q = 0; q < 4; ++q)
-    if (block.live >> (4 * q) & 0xF) quads |= static_cast<LaneMask>(0xF << (4 * q));
+    if (live >> (4 * q) & 0xF) quads |= static_cast<LaneMask>(0xF << (4 * q));
+  return quads;
+}
+
+}  // namespace
+
+void LinkedProgram::run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const {
+  run_fragment_blocks(uniforms, textures, &block, 1);
+}
+
+void LinkedProgram::run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
+                                        int count) const {
+  if (!fragment_ || count <= 0) return;
+  count = count < kMaxBlocksPerRun ? count : kMaxBlocksPerRun;
   LaneIo io;
   io.uniforms = uniforms;
   io.textures = textures;
-  io.block = &block;
-  io.needed = quads;
-  io.slot_lanes = block.uniform_values;
-  const LaneMask discarded = execute(*fragment_, Stage::Fragment, block.run ? block.run : quads, io);
-  block.live &= static_cast<LaneMask>(~discarded);
+  io.slot_lanes = blocks[0].uniform_values;
+  RunMask mask = 0;
+  int first_live = -1;
+  for (int k = 0; k < count; ++k) {
+    const LaneMask quads = quads_of(blocks[k].live);
+    io.blocks[k] = &blocks[k];
+    io.needed[k] = quads;
+    if (!quads) continue;
+    if (first_live < 0) first_live = k;
+    mask |= static_cast<RunMask>(blocks[k].run ? blocks[k].run : quads) << (k * kLanes);
+  }
+  if (first_live < 0) return;
+  // Three blocks run as four: the fourth repeats the first live one's inputs, reads no texture
+  // and its results go nowhere.
+  const int run = count == 3 ? 4 : count;
+  FragmentBlock pad;
+  if (run > count) {
+    pad = blocks[first_live];
+    io.blocks[3] = &pad;
+    io.needed[3] = 0;
+    const FragmentBlock& model = blocks[first_live];
+    mask |= static_cast<RunMask>(model.run ? model.run : quads_of(model.live)) << (3 * kLanes);
+  }
+  const RunMask discarded = execute(*fragment_, Stage::Fragment, run, mask, io);
+  for (int k = 0; k < count; ++k) blocks[k].live &= static_cast<LaneMask>(~(discarded >> (k * kLanes)));
 }
 
 std::vector<float> LinkedProgram::fragment_uniform_values(const float* uniforms) const {

@@ -40,6 +40,8 @@ class LinkedProgram final : public Program {
   bool reads_frag_coord() const override { return reads_frag_coord_; }
   void run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const override;
   void run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const override;
+  void run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
+                           int count) const override;
   std::vector<float> fragment_uniform_values(const float* uniforms) const override;
 };
 

@@ -15,6 +15,7 @@ namespace pineda::shader {
 
 constexpr int kLanes = 16;       // a 4x4 fragment block, or a batch of 16 vertices
 using LaneMask = uint16_t;       // bit i: lane i is live
+constexpr int kMaxBlocksPerRun = 4;  // fragment blocks one run_fragment_blocks shades together
 constexpr int kMaxDrawBuffers = 4;
 constexpr int kMaxVaryingFloats = 64;   // GL_MAX_VARYING_FLOATS (16 vec4)
 constexpr int kMaxVertexAttribs = 16;
@@ -161,6 +162,10 @@ class Program {
                             VertexBatch& batch) const = 0;
   virtual void run_fragments(const float* uniforms, const TextureAccess* textures,
                              FragmentBlock& block) const = 0;
+  // The same for `count` (1 to 4) blocks of one draw at once: each comes out as run alone,
+  // and each instruction's dispatch serves them all.
+  virtual void run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
+                                   int count) const = 0;
   // What the fragment shader computes from uniforms alone (shader/hoist.h), for
   // FragmentBlock::uniform_values: computed once per draw instead of once per block.
   virtual std::vector<float> fragment_uniform_values(const float* uniforms) const = 0;

@@ -1,0 +1,81 @@
+// Program::run_fragment_blocks: blocks shaded together (2, 3 or 4 per run) come out exactly as
+// each block run alone, through divergent branches, loops with per-lane exits, discard,
+// dynamic indexing, derivatives, gl_FrontFacing and gl_FragCoord, and partly live blocks.
+#include <cstring>
+#include <random>
+
+#include "tests/shader/shader_test_util.h"
+
+namespace pineda::shader::test {
+namespace {
+
+const char* const kShader =
+    "varying vec4 a;\n"
+    "uniform float u;\n"
+    "void main() {\n"
+    "  float k[4];\n"
+    "  for (int i = 0; i < 4; i++) k[i] = a.y * float(i);\n"
+    "  float s = 0.0;\n"
+    "  for (int i = 0; i < 12; i++) { if (float(i) > a.x * 3.0) break; s += k[int(mod(float(i), 4.0))]; }\n"
+    "  if (a.z < 0.2) discard;\n"
+    "  vec4 c;\n"
+    "  if (a.w > 0.5) c = vec4(s, dFdx(a.x), dFdy(a.y), u); else c = vec4(-s, gl_FragCoord.xy, 1.0);\n"
+    "  if (!gl_FrontFacing) c.w += 10.0;\n"
+    "  gl_FragColor = c;\n"
+    "}\n";
+
+struct BlockInputs {
+  std::vector<float> varyings;
+  FragmentBlock block{};
+};
+
+BlockInputs make_block(const Program& p, std::mt19937& random, int index) {
+  BlockInputs in;
+  in.varyings.assign(static_cast<size_t>(p.varying_floats() + 1) * kLanes, 0.0f);
+  std::uniform_real_distribution<float> value(0.0f, 1.0f);
+  for (float& v : in.varyings) v = value(random);
+  std::uniform_int_distribution<int> bits(0, 0xFFFF);
+  in.block.live = static_cast<LaneMask>(index == 1 ? 0x0F0F : bits(random) | 1);  // some quads with no live pixel
+  in.block.front_facing = index % 2 ? 0 : 0xFFFF;
+  for (int l = 0; l < kLanes; ++l) {
+    in.block.frag_coord[0][l] = static_cast<float>(8 * index + (l & 1) + 2 * (l >> 2)) + 0.5f;
+    in.block.frag_coord[1][l] = static_cast<float>((l >> 1) & 1) + 0.5f;
+    in.block.frag_coord[2][l] = 0.5f;
+    in.block.frag_coord[3][l] = 1.0f;
+  }
+  return in;
+}
+
+TEST(BlockRuns, BlocksShadedTogetherComeOutAsEachAlone) {
+  auto p = link_ok("", kShader);
+  ASSERT_TRUE(p);
+  std::vector<float> uniforms(static_cast<size_t>(p->uniform_floats() + 1), 0.0f);
+  uniforms[static_cast<size_t>(find_uniform(*p, "u")->offset)] = 0.25f;
+  std::mt19937 random(3);
+  for (int trial = 0; trial < 20; ++trial)
+    for (int count = 1; count <= kMaxBlocksPerRun; ++count) {
+      std::vector<BlockInputs> inputs;
+      for (int k = 0; k < count; ++k) inputs.push_back(make_block(*p, random, k));
+      FragmentBlock together[kMaxBlocksPerRun];
+      for (int k = 0; k < count; ++k) {
+        together[k] = inputs[static_cast<size_t>(k)].block;
+        together[k].varyings = inputs[static_cast<size_t>(k)].varyings.data();
+      }
+      p->run_fragment_blocks(uniforms.data(), nullptr, together, count);
+      for (int k = 0; k < count; ++k) {
+        FragmentBlock alone = inputs[static_cast<size_t>(k)].block;
+        alone.varyings = inputs[static_cast<size_t>(k)].varyings.data();
+        p->run_fragments(uniforms.data(), nullptr, alone);
+        ASSERT_EQ(together[k].live, alone.live) << count << " " << k;
+        for (int l = 0; l < kLanes; ++l) {
+          if (!(alone.live >> l & 1)) continue;
+          for (int c = 0; c < 4; ++c)
+            ASSERT_EQ(std::memcmp(&together[k].color[0][c][l], &alone.color[0][c][l], sizeof(float)), 0)
+                << "trial " << trial << " blocks " << count << " block " << k << " lane " << l << " component " << c;
+        }
+      }
+    }
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
