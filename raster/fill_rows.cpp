@@ -19,6 +19,7 @@
 namespace pineda::raster::fill_sse2 {
 namespace {
 constexpr bool kDoubles8 = false;
+constexpr int kGatherBytes = 0;
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_sse2
@@ -28,6 +29,7 @@ constexpr bool kDoubles8 = false;
 namespace pineda::raster::fill_avx2 {
 namespace {
 constexpr bool kDoubles8 = false;
+constexpr int kGatherBytes = 32;
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx2
@@ -38,6 +40,7 @@ constexpr bool kDoubles8 = false;
 namespace pineda::raster::fill_avx512 {
 namespace {
 constexpr bool kDoubles8 = true;  // 512-bit vectors of 8 doubles
+constexpr int kGatherBytes = 32;  // rows of 8 lanes
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx512

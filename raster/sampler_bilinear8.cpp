@@ -8,6 +8,7 @@
 namespace pineda::raster {
 namespace {
 
+constexpr int kGatherBytes = 0;  // quads: four scalar loads
 #include "raster/bilinear8_lanes.inc"
 
 }  // namespace

@@ -9,13 +9,14 @@
 // The helpers pass vectors wider than the baseline's registers but are always inlined.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
-// Three copies: baseline (4 lanes at a time), AVX2 (8, hardware gathers), AVX-512 (16); the
+// Three copies: baseline (4 lanes at a time), AVX2 (8, gather instructions), AVX-512 (16); the
 // lanes' arithmetic is integers and lane-wise float operations, so every copy gives the same texels.
 
 namespace pineda::raster::block_sse2 {
 namespace {
 using VF = float __attribute__((vector_size(16)));
 using VI = int32_t __attribute__((vector_size(16)));
+constexpr int kGatherBytes = 0;
 #include "raster/sampler_bilinear_block_body.inc"
 }  // namespace
 }  // namespace pineda::raster::block_sse2
@@ -26,6 +27,7 @@ namespace pineda::raster::block_avx2 {
 namespace {
 using VF = float __attribute__((vector_size(32)));
 using VI = int32_t __attribute__((vector_size(32)));
+constexpr int kGatherBytes = 32;
 #include "raster/sampler_bilinear_block_body.inc"
 }  // namespace
 }  // namespace pineda::raster::block_avx2
@@ -37,6 +39,7 @@ namespace pineda::raster::block_avx512 {
 namespace {
 using VF = float __attribute__((vector_size(64)));
 using VI = int32_t __attribute__((vector_size(64)));
+constexpr int kGatherBytes = 64;
 #include "raster/sampler_bilinear_block_body.inc"
 }  // namespace
 }  // namespace pineda::raster::block_avx512
