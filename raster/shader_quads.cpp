@@ -9,6 +9,7 @@
 #include "raster/quad_ops.h"
 #include "raster/shader_draw.h"
 #include "raster/shader_textures.h"
+#include "raster/varying_lanes.h"
 
 namespace pineda::raster {
 namespace {
@@ -129,28 +130,30 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   float (*varyings)[kLanes] = row.varyings[k];
   const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
   const bool frag_coord = program.reads_frag_coord();
+  alignas(64) float ox[kLanes], oy[kLanes], w[kLanes];
   for (int j = 0; j < 4; ++j) {
     const Quad& q = quads[j < n ? j : 0];  // unused lanes repeat quad 0: derivatives stay finite
-    const F4 w = eval_plane(p.inv_w, q.ox, q.oy);
-    const F4 inv = 1.f / w;
-    for (int v = 0; v < nv; ++v) {
-      F4 value = eval_plane(p.varying_planes[v], q.ox, q.oy);
-      if (p.perspective) value *= inv;
-      store4(&varyings[v][4 * j], value);
-    }
-    if (!frag_coord && !point) continue;
-    for (int i = 0; i < 4; ++i) {
-      const int lane = 4 * j + i;
-      const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
-      block.frag_coord[0][lane] = fx;
-      block.frag_coord[1][lane] = fy;
-      double z = p.z0 + p.dzdx * static_cast<double>(q.ox[i]) + p.dzdy * static_cast<double>(q.oy[i]);
-      z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
-      block.frag_coord[2][lane] = static_cast<float>(z / d.depth_max);
-      block.frag_coord[3][lane] = w[i];
-      if (point && point[2] > 0.f) {
-        block.point_coord[0][lane] = 0.5f + (fx - point[0]) / point[2];
-        block.point_coord[1][lane] = 0.5f - (fy - point[1]) / point[2];
+    store4(&ox[4 * j], q.ox);
+    store4(&oy[4 * j], q.oy);
+  }
+  static const VaryingInterpolator interpolate = select_varying_interpolator(simd_path_from_environment());
+  interpolate(p.varying_planes, nv, p.inv_w, p.perspective, ox, oy, varyings, w);
+  if (frag_coord || point) {
+    for (int j = 0; j < 4; ++j) {
+      const Quad& q = quads[j < n ? j : 0];
+      for (int i = 0; i < 4; ++i) {
+        const int lane = 4 * j + i;
+        const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
+        block.frag_coord[0][lane] = fx;
+        block.frag_coord[1][lane] = fy;
+        double z = p.z0 + p.dzdx * static_cast<double>(q.ox[i]) + p.dzdy * static_cast<double>(q.oy[i]);
+        z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+        block.frag_coord[2][lane] = static_cast<float>(z / d.depth_max);
+        block.frag_coord[3][lane] = w[lane];
+        if (point && point[2] > 0.f) {
+          block.point_coord[0][lane] = 0.5f + (fx - point[0]) / point[2];
+          block.point_coord[1][lane] = 0.5f - (fy - point[1]) / point[2];
+        }
       }
     }
   }

@@ -1,0 +1,20 @@
+// The varyings of a shader's fragment block (16 lanes) interpolated in one pass per varying,
+// over vectors as wide as the instruction set has: the same operations per lane as
+// eval_plane (fragment_extras.h), so the same values on every path.
+#pragma once
+
+#include "raster/prim_setup.h"
+#include "raster/simd_path.h"
+
+namespace pineda::raster {
+
+constexpr int kVaryingLanes = 16;
+
+// For each lane l at (ox[l], oy[l]) relative to the primitive's reference point:
+// w[l] = inv_w's plane there, and out[v][l] = plane v there, times 1 / w[l] when perspective.
+using VaryingInterpolator = void (*)(const Plane* planes, int count, const Plane& inv_w, bool perspective,
+                                     const float* ox, const float* oy, float (*out)[kVaryingLanes], float* w);
+
+VaryingInterpolator select_varying_interpolator(SimdPath path);
+
+}  // namespace pineda::raster

@@ -1,0 +1,44 @@
+// The shader block's varying interpolation: every SIMD path gives, lane by lane, what
+// eval_plane gives a quad (and the perspective division by the 1/w plane).
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "raster/fragment_extras.h"
+#include "raster/varying_lanes.h"
+
+namespace pineda::raster {
+namespace {
+
+TEST(VaryingLanes, EveryPathGivesTheQuadValues) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> value(-100.f, 100.f), step(-2.f, 2.f), offset(-40.f, 40.f);
+  for (int trial = 0; trial < 100; ++trial) {
+    Plane planes[8];
+    for (Plane& plane : planes) plane = {value(random), step(random), step(random)};
+    const Plane inv_w{1.f + 0.01f * value(random), 0.001f * step(random), 0.001f * step(random)};
+    alignas(64) float ox[kVaryingLanes], oy[kVaryingLanes];
+    for (int l = 0; l < kVaryingLanes; ++l) ox[l] = offset(random), oy[l] = offset(random);
+    const bool perspective = trial % 2 == 0;
+    for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
+      alignas(64) float out[8][kVaryingLanes], w[kVaryingLanes];
+      select_varying_interpolator(path)(planes, 8, inv_w, perspective, ox, oy, out, w);
+      for (int q = 0; q < 4; ++q) {
+        const F4 qx = load4(&ox[4 * q]), qy = load4(&oy[4 * q]);
+        const F4 expected_w = eval_plane(inv_w, qx, qy);
+        const F4 inv = 1.f / expected_w;
+        for (int i = 0; i < 4; ++i) ASSERT_EQ(std::memcmp(&w[4 * q + i], &expected_w[i], 4), 0);
+        for (int v = 0; v < 8; ++v) {
+          F4 expected = eval_plane(planes[v], qx, qy);
+          if (perspective) expected *= inv;
+          for (int i = 0; i < 4; ++i)
+            ASSERT_EQ(std::memcmp(&out[v][4 * q + i], &expected[i], 4), 0) << trial << " " << v << " " << q << " " << i;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pineda::raster
