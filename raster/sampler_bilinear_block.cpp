@@ -27,7 +27,7 @@ namespace pineda::raster::block_avx2 {
 namespace {
 using VF = float __attribute__((vector_size(32)));
 using VI = int32_t __attribute__((vector_size(32)));
-constexpr int kGatherBytes = 32;
+constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 #include "raster/sampler_bilinear_block_body.inc"
 }  // namespace
 }  // namespace pineda::raster::block_avx2
@@ -39,7 +39,7 @@ namespace pineda::raster::block_avx512 {
 namespace {
 using VF = float __attribute__((vector_size(64)));
 using VI = int32_t __attribute__((vector_size(64)));
-constexpr int kGatherBytes = 64;
+constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;
 #include "raster/sampler_bilinear_block_body.inc"
 }  // namespace
 }  // namespace pineda::raster::block_avx512

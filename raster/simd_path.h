@@ -12,6 +12,15 @@ namespace pineda::raster {
 
 enum class SimdPath : uint8_t { Best, Avx2, Baseline };
 
+// The copies are compiled for their instruction sets with '#pragma GCC target', which clang
+// ignores: its copies (the sanitizer build's) are all baseline code, so a copy that calls an
+// instruction set's intrinsics asks this first.
+#if defined(__clang__)
+constexpr bool kCopiesHaveTheirTargets = false;
+#else
+constexpr bool kCopiesHaveTheirTargets = true;
+#endif
+
 inline SimdPath simd_path_from_environment() {
   const char* v = std::getenv("PINEDA_SIMD");
   if (v && std::strcmp(v, "baseline") == 0) return SimdPath::Baseline;
