@@ -62,8 +62,7 @@ BlockSampler for_wrap_t(TexWrap t, SimdPath path) {
 
 }  // namespace
 
-BlockSampler select_bilinear8_block_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {
-  if (!select_bilinear8_sampler(image, sampler, path)) return nullptr;
+BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path) {
   return sampler.wrap_s == TexWrap::Repeat ? for_wrap_t<TexWrap::Repeat>(sampler.wrap_t, path)
                                            : for_wrap_t<TexWrap::ClampToEdge>(sampler.wrap_t, path);
 }

@@ -16,8 +16,7 @@ constexpr int kBlockLanes = 16;
 using BlockSampler = void (*)(const TextureImage& image, const LevelChoice& choice, const float* s, const float* t,
                               float (*out)[kBlockLanes]);
 
-// Non-null exactly when select_bilinear8_sampler is.
-BlockSampler select_bilinear8_block_sampler(const TextureImage& image, const Sampler& sampler,
-                                            SimdPath path = SimdPath::Best);
+// The block sampler for an image and sampler that select_bilinear8_sampler takes.
+BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

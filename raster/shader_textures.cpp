@@ -50,11 +50,11 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
 
 // The fast sampler's lookups of a whole block at once when its live quads read the same level
 // or levels (the same per-quad choice, bias included, as the quad sampler's); false otherwise.
+// Only for an image and sampler that select_bilinear8_sampler takes.
 bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler, const float (*coords)[kLanes],
                                shader::LodMode mode, const float* lod, shader::LaneMask live, float (*out)[kLanes]) {
   static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
-  const BlockSampler block = select_bilinear8_block_sampler(image, sampler, path);
-  if (!block) return false;
+  const BlockSampler block = select_bilinear8_block_sampler(sampler, path);
   LevelChoice choice;
   bool any = false;
   for (int first = 0; first < kLanes; first += 4) {
