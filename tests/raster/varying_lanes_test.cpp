@@ -26,14 +26,17 @@ TEST(VaryingLanes, EveryPathGivesTheQuadValues) {
       select_varying_interpolator(path)(planes, 8, inv_w, perspective, ox, oy, out, w);
       for (int q = 0; q < 4; ++q) {
         const F4 qx = load4(&ox[4 * q]), qy = load4(&oy[4 * q]);
-        const F4 expected_w = eval_plane(inv_w, qx, qy);
-        const F4 inv = 1.f / expected_w;
-        for (int i = 0; i < 4; ++i) ASSERT_EQ(std::memcmp(&w[4 * q + i], &expected_w[i], 4), 0);
+        const F4 quad_w = eval_plane(inv_w, qx, qy);
+        const F4 inv = 1.f / quad_w;
+        float expected_w[4];
+        store4(expected_w, quad_w);
+        ASSERT_EQ(std::memcmp(&w[4 * q], expected_w, sizeof expected_w), 0);
         for (int v = 0; v < 8; ++v) {
-          F4 expected = eval_plane(planes[v], qx, qy);
-          if (perspective) expected *= inv;
-          for (int i = 0; i < 4; ++i)
-            ASSERT_EQ(std::memcmp(&out[v][4 * q + i], &expected[i], 4), 0) << trial << " " << v << " " << q << " " << i;
+          F4 value = eval_plane(planes[v], qx, qy);
+          if (perspective) value *= inv;
+          float expected[4];
+          store4(expected, value);
+          ASSERT_EQ(std::memcmp(&out[v][4 * q], expected, sizeof expected), 0) << trial << " " << v << " " << q;
         }
       }
     }
