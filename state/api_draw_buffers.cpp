@@ -31,7 +31,7 @@ Named name_object_buffer(GLenum buffer) {
   if (buffer >= GL_COLOR_ATTACHMENT0 && buffer <= GL_COLOR_ATTACHMENT15) {
     const int point = attachment_point(buffer);
     if (point < 0) return {0, {GL_INVALID_OPERATION, "a buffer is above GL_MAX_COLOR_ATTACHMENTS"}};
-    return {1u << point};
+    return {1u << point, {}};
   }
   switch (buffer) {
     // Names of several buffers: INVALID_ENUM, as on the window-system framebuffer (GL 4.5).
@@ -50,9 +50,9 @@ Named name_buffer(const Context& ctx, GLenum buffer) {
   const Drawable* d = ctx.draw_drawable();
   switch (buffer) {
     case GL_NONE: return {};
-    case GL_FRONT_LEFT: return {kFrontLeft};
+    case GL_FRONT_LEFT: return {kFrontLeft, {}};
     case GL_BACK_LEFT:
-      if (d && d->double_buffered) return {kBackLeft};
+      if (d && d->double_buffered) return {kBackLeft, {}};
       return {0, {GL_INVALID_OPERATION, "a buffer is GL_BACK_LEFT and the drawable is single-buffered"}};
     // Buffers GL defines that a Pineda drawable never has (no stereo, no aux buffers).
     case GL_FRONT_RIGHT: case GL_BACK_RIGHT: case GL_AUX0: case GL_AUX1: case GL_AUX2: case GL_AUX3:
