@@ -296,6 +296,8 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
       to_clip(v, cache_clip_);
       if (clip_outcode(cache_clip_, volume_) == 0) {
         to_window(cache_clip_, false, slot.window);
+        // A programmable draw's varyings, as to_clip copies them, stay put in the draw's array.
+        if (shader_) slot.window.varyings = varyings_ + index * static_cast<size_t>(varying_count_);
         slot.usable = has_window_position(slot.window);
       }
     }
@@ -322,7 +324,9 @@ bool GeometryStage::fill_cached_triangle(std::span<const ClipVertex* const> v, c
 void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
                             const ClipVertex& provoking) {
   if (!active_) return;
-  if (v.size() == 3 && vertex_base_ && !shader_ && !reference_ && fill_cached_triangle(v, provoking)) return;
+  // Not for flat-shaded gl_Color varyings, which polygon() takes from the provoking vertex.
+  if (v.size() == 3 && vertex_base_ && flat_ranges_.empty() && !reference_ && fill_cached_triangle(v, provoking))
+    return;
   for (const ClipVertex* p : v)
     if (!finite_position(*p)) return;
   in_.resize(v.size());

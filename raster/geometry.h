@@ -27,8 +27,8 @@ class GeometryStage final : public PrimitiveSink {
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
   bool active() const { return active_; }
 
-  // The draw's vertices (the ones assembly passes are elements of it): fixed-function polygons
-  // inside the clip volume take their window positions from a cache of the recent ones.
+  // The draw's vertices (the ones assembly passes are elements of it): triangles inside the
+  // clip volume take their window positions from a cache of the recent ones.
   void set_vertices(std::span<const ClipVertex> vertices) {
     vertex_base_ = vertices.data();
     vertex_count_ = vertices.size();
