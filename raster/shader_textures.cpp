@@ -56,8 +56,9 @@ bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler
   static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
   const BlockSampler block = select_bilinear8_block_sampler(sampler, path);
   LevelChoice choice;
-  bool any = false;
-  for (int first = 0; first < kLanes; first += 4) {
+  const bool level_zero = sampler.min_filter == TexFilter::Linear;  // for every quad: no mipmaps
+  bool any = level_zero && live != 0;
+  for (int first = 0; first < kLanes && !level_zero; first += 4) {
     if (!((live >> first) & 0xf)) continue;
     Sampler quad = sampler;
     if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) quad.lod_bias += lod[first];
@@ -69,6 +70,7 @@ bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler
   if (!any) return false;
   block(image, choice, coords[0], coords[1], out);
   for (int first = 0; first < kLanes; first += 4) {
+    if (image.base_format == TexBaseFormat::RGBA && ((live >> first) & 0xf)) continue;  // as sampled
     F4 lanes[4];
     if (!((live >> first) & 0xf)) {
       lanes[0] = lanes[1] = lanes[2] = splat(0.f);
