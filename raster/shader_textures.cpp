@@ -60,9 +60,14 @@ bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler
   bool any = level_zero && live != 0;
   for (int first = 0; first < kLanes && !level_zero; first += 4) {
     if (!((live >> first) & 0xf)) continue;
-    Sampler quad = sampler;
-    if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) quad.lod_bias += lod[first];
-    const LevelChoice c = bilinear8_quad_levels(image, quad, load4(&coords[0][first]), load4(&coords[1][first]));
+    const Sampler* quad = &sampler;
+    Sampler biased;
+    if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) {
+      biased = sampler;
+      biased.lod_bias += lod[first];
+      quad = &biased;
+    }
+    const LevelChoice c = bilinear8_quad_levels(image, *quad, load4(&coords[0][first]), load4(&coords[1][first]));
     if (any && (c.first != choice.first || c.two != choice.two || c.blend != choice.blend)) return false;
     choice = c;
     any = true;
