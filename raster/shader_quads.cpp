@@ -4,6 +4,7 @@
 #include <array>
 #include <type_traits>
 
+#include "raster/block_write.h"
 #include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
 #include "raster/quad_ops.h"
@@ -172,6 +173,18 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   return true;
 }
 
+// Whether block k of the row is four adjacent quads whose 16 pixels all get written, each
+// wholly and in the same way (block_write.h): nothing but the colour is left to decide.
+bool writes_whole_block(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
+                        bool write_color) {
+  if (!write_color || !no_late_tests || row.quad_count[k] != 4 || row.blocks[k].live != 0xFFFF) return false;
+  for (int j = 1; j < 4; ++j)
+    if (row.quads[k][j].x != row.quads[k][0].x + 2 * j) return false;
+  const DrawState& s = d.state;
+  return !d.key.extras && !s.alpha_test && !d.alpha_to_one && d.color_write_all && !fb.color.reduction.active &&
+         (!d.key.blend || (d.key.blend_over && !s.logic_op_enabled));
+}
+
 // After the run: alpha test, late depth and stencil, colour writes of block k; returns the
 // samples that passed a late depth test.
 template <bool kTargets>
@@ -186,6 +199,15 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
   bool write_color = fb.color.base && d.color_write_any;
   if constexpr (kTargets) write_color = targets.count > 0;
   uint32_t passed = 0;
+  if constexpr (!kTargets) {
+    if (writes_whole_block(d, fb, row, k, early || !tests, write_color)) {
+      static const BlockWriter write = select_block_writer(simd_path_from_environment());
+      const Quad& q = row.quads[k][0];
+      write(block.color[sd.color_output], fb.color.format == ColorFormat::BGRA8 ? kBgraShift.at : kRgbaShift.at,
+            d.key.blend, color_address(fb, q.x, y), color_address(fb, q.x, y + 1));
+      return d.key.count_samples && !early ? 16 : 0;
+    }
+  }
   for (int j = 0; j < row.quad_count[k]; ++j) {
     unsigned mask = (block.live >> (4 * j)) & 0xfu;
     if (!mask) continue;
