@@ -18,7 +18,6 @@ using ir::Operand;
 
 namespace {
 
-constexpr int kStackRegisters = 256;
 constexpr int kStackFrames = 64;
 // Loop iterations one invocation may run in total (all loops together): a shader with an
 // unbounded loop ends instead of hanging the draw.

@@ -35,6 +35,18 @@ struct StageCode {
   }
 };
 
+// The lane buffer a run keeps on its stack (16 KiB: a GL call may come from a thread with a
+// small stack); a run that needs more takes it from the heap.
+constexpr int kStackLaneFloats = 256 * kLanes;
+
+// The most blocks a run of `stage` takes with its lane buffer on the stack (1, 2 or 4).
+inline int blocks_per_run(const StageCode& stage) {
+  const int values = static_cast<int>(stage.code.constants.size()) + stage.code.registers + stage.slots;
+  for (int blocks = kMaxBlocksPerRun; blocks > 1; blocks /= 2)
+    if (values * blocks * kLanes <= kStackLaneFloats) return blocks;
+  return 1;
+}
+
 struct LaneIo {
   const float* uniforms = nullptr;
   const TextureAccess* textures = nullptr;

@@ -34,7 +34,13 @@ void LinkedProgram::run_fragments(const float* uniforms, const TextureAccess* te
 void LinkedProgram::run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
                                         int count) const {
   if (!fragment_ || count <= 0) return;
-  count = count < kMaxBlocksPerRun ? count : kMaxBlocksPerRun;
+  // A shader with many values runs fewer blocks at a time, its lane buffer on the stack.
+  const int per_run = blocks_per_run(*fragment_);
+  if (count > per_run) {
+    for (int first = 0; first < count; first += per_run)
+      run_fragment_blocks(uniforms, textures, blocks + first, count - first < per_run ? count - first : per_run);
+    return;
+  }
   LaneIo io;
   io.uniforms = uniforms;
   io.textures = textures;

@@ -46,8 +46,23 @@ BlockInputs make_block(const Program& p, std::mt19937& random, int index) {
   return in;
 }
 
-TEST(BlockRuns, BlocksShadedTogetherComeOutAsEachAlone) {
-  auto p = link_ok("", kShader);
+// A shader with more values than four blocks' lanes fit on the stack: runs of fewer blocks.
+const char* const kLargeShader =
+    "varying vec4 a;\n"
+    "uniform float u;\n"
+    "void main() {\n"
+    "  float k[100];\n"
+    "  for (int i = 0; i < 100; i++) k[i] = a.y * float(i) + u;\n"
+    "  float s = 0.0;\n"
+    "  for (int i = 0; i < 100; i++) { if (float(i) > a.x * 90.0) break; s += k[int(mod(float(i) * 7.0, 100.0))]; }\n"
+    "  if (a.z < 0.2) discard;\n"
+    "  gl_FragColor = vec4(s, dFdx(s), a.w, 1.0);\n"
+    "}\n";
+
+class BlockRuns : public testing::TestWithParam<const char*> {};
+
+TEST_P(BlockRuns, BlocksShadedTogetherComeOutAsEachAlone) {
+  auto p = link_ok("", GetParam());
   ASSERT_TRUE(p);
   std::vector<float> uniforms(static_cast<size_t>(p->uniform_floats() + 1), 0.0f);
   uniforms[static_cast<size_t>(find_uniform(*p, "u")->offset)] = 0.25f;
@@ -76,6 +91,8 @@ TEST(BlockRuns, BlocksShadedTogetherComeOutAsEachAlone) {
       }
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(Shaders, BlockRuns, testing::Values(kShader, kLargeShader));
 
 }  // namespace
 }  // namespace pineda::shader::test
