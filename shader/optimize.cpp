@@ -39,12 +39,23 @@ struct Analysis {
       if (r == ancestor) return true;
     return false;
   }
-  bool promotable(int reg) const {
-    const RegInfo& info = regs[reg];
-    if (info.defs != 1 || info.pinned) return false;
-    for (int pc : info.use_pcs)
-      if (pc <= info.def_pc || !inside(region[pc], region[info.def_pc])) return false;
-    return true;
+  // A register written once whose every read follows the write inside its region: it holds
+  // one value wherever it is read. Computed once per analysis (the passes ask per operand).
+  std::vector<char> promotable_regs;
+  bool promotable(int reg) const { return promotable_regs[static_cast<size_t>(reg)] != 0; }
+  void find_promotable() {
+    promotable_regs.assign(regs.size(), 0);
+    for (size_t r = 0; r < regs.size(); ++r) {
+      const RegInfo& info = regs[r];
+      if (info.defs != 1 || info.pinned) continue;
+      bool ok = true;
+      for (int pc : info.use_pcs)
+        if (pc <= info.def_pc || !inside(region[pc], region[info.def_pc])) {
+          ok = false;
+          break;
+        }
+      promotable_regs[r] = ok;
+    }
   }
 };
 
@@ -82,6 +93,7 @@ Analysis analyze(ir::Code& code) {
         if (in.op == Op::Scatter) an.regs[r].defs += 2;
       }
   }
+  an.find_promotable();
   return an;
 }
 
