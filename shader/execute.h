@@ -50,16 +50,17 @@ inline int blocks_per_run(const StageCode& stage) {
 struct LaneIo {
   const float* uniforms = nullptr;
   const TextureAccess* textures = nullptr;
-  const float* inputs = nullptr;   // vertex inputs [slot][4][kLanes] (runs of one block)
-  float* outputs = nullptr;        // vertex outputs [float][kLanes]
+  // Vertices, per batch of the run: inputs [slot][4][kLanes], outputs [float][kLanes].
+  const float* inputs[kMaxBlocksPerRun] = {};
+  float* outputs[kMaxBlocksPerRun] = {};
   FragmentBlock* blocks[kMaxBlocksPerRun] = {};  // fragments: the run's blocks
   // Per block: the lanes whose results are used (texture lookups read only these).
   LaneMask needed[kMaxBlocksPerRun] = {0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
   const float* slot_lanes = nullptr;  // the stage's compute_uniform_ops values; null: computed per run
 };
 
-// Runs `stage` over the lanes of `mask` of `blocks` blocks (1, 2 or 4; vertices: 1); returns
-// the lanes that executed discard.
+// Runs `stage` over the lanes of `mask` of `blocks` blocks or vertex batches (1, 2 or 4);
+// returns the lanes that executed discard.
 RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io);
 
 }  // namespace pineda::shader

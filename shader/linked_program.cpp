@@ -3,15 +3,30 @@
 namespace pineda::shader {
 
 void LinkedProgram::run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const {
-  if (!vertex_ || batch.count <= 0) return;
-  const int count = batch.count > kLanes ? kLanes : batch.count;
-  const LaneMask mask = static_cast<LaneMask>(count == kLanes ? 0xFFFF : (1u << count) - 1);
+  run_vertex_batches(uniforms, textures, &batch, 1);
+}
+
+void LinkedProgram::run_vertex_batches(const float* uniforms, const TextureAccess* textures, VertexBatch* batches,
+                                       int count) const {
+  if (!vertex_ || count <= 0) return;
+  const int per_run = blocks_per_run(*vertex_);
+  if (count > per_run || count == 3) {  // three run as two and one: a padding batch would need outputs
+    const int first = count > per_run ? per_run : 2;
+    run_vertex_batches(uniforms, textures, batches, first);
+    run_vertex_batches(uniforms, textures, batches + first, count - first);
+    return;
+  }
   LaneIo io;
   io.uniforms = uniforms;
   io.textures = textures;
-  io.inputs = batch.inputs;
-  io.outputs = batch.outputs;
-  execute(*vertex_, Stage::Vertex, 1, mask, io);
+  RunMask mask = 0;
+  for (int k = 0; k < count; ++k) {
+    const int lanes = batches[k].count > kLanes ? kLanes : (batches[k].count < 0 ? 0 : batches[k].count);
+    mask |= (lanes == kLanes ? RunMask{0xFFFF} : (RunMask{1} << lanes) - 1) << (k * kLanes);
+    io.inputs[k] = batches[k].inputs;
+    io.outputs[k] = batches[k].outputs;
+  }
+  if (mask) execute(*vertex_, Stage::Vertex, count, mask, io);
 }
 
 namespace {

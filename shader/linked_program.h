@@ -39,6 +39,8 @@ class LinkedProgram final : public Program {
   bool reads(const char* builtin) const override { return reads_.count(builtin) != 0; }
   bool reads_frag_coord() const override { return reads_frag_coord_; }
   void run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const override;
+  void run_vertex_batches(const float* uniforms, const TextureAccess* textures, VertexBatch* batches,
+                          int count) const override;
   void run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const override;
   void run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
                            int count) const override;

@@ -160,6 +160,9 @@ class Program {
   // `uniforms` has uniform_floats() values; `textures` may be null when no sampler is used.
   virtual void run_vertices(const float* uniforms, const TextureAccess* textures,
                             VertexBatch& batch) const = 0;
+  // The same for `count` (1 to 4) batches at once, as run_fragment_blocks does for blocks.
+  virtual void run_vertex_batches(const float* uniforms, const TextureAccess* textures, VertexBatch* batches,
+                                  int count) const = 0;
   virtual void run_fragments(const float* uniforms, const TextureAccess* textures,
                              FragmentBlock& block) const = 0;
   // The same for `count` (1 to 4) blocks of one draw at once: each comes out as run alone,

@@ -120,48 +120,58 @@ void run_vertex_shader(const Context& ctx, const shader::Program& program, const
   const int slots = std::max(program.input_slots(), 1);
   const int nv = program.varying_floats();
   const int outputs = shader::kOutFirstVarying + nv;
-  std::vector<float> in(static_cast<size_t>(slots) * 4 * kLanes), result(static_cast<size_t>(outputs) * kLanes);
+  // Up to kMaxBlocksPerRun batches of 16 vertices run together (Program::run_vertex_batches).
+  constexpr size_t kRunVertices = static_cast<size_t>(shader::kMaxBlocksPerRun) * kLanes;
+  const size_t in_floats = static_cast<size_t>(slots) * 4 * kLanes, out_floats = static_cast<size_t>(outputs) * kLanes;
+  std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
   out.resize(vertices.size());
   varyings.resize(vertices.size() * static_cast<size_t>(nv));
   const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
-  for (size_t first = 0; first < vertices.size(); first += kLanes) {
-    const int count = static_cast<int>(std::min<size_t>(kLanes, vertices.size() - first));
-    if (count < kLanes) std::fill(in.begin(), in.end(), 0.f);
-    for (int lane = 0; lane < count; ++lane) {
-      const raster::VertexInput& v = vertices[first + lane];
+  for (size_t first = 0; first < vertices.size(); first += kRunVertices) {
+    const size_t count = std::min(kRunVertices, vertices.size() - first);
+    const int batch_count = static_cast<int>((count + kLanes - 1) / kLanes);
+    if (count % kLanes != 0) std::fill(in.begin(), in.end(), 0.f);
+    for (size_t i = 0; i < count; ++i) {
+      const raster::VertexInput& v = vertices[first + i];
+      float* batch_in = in.data() + (i / kLanes) * in_floats;
+      const size_t lane = i % kLanes;
       for (const InputFetch& f : fetches) {
         float value[4];
         if (f.builtin != shader::BuiltinAttribute::None) builtin_input(v, f.builtin, value);
         else if (f.from_view) f.view.read(v.source, value);
         else fetch_generic(ctx, source, v, f.location, value);
-        for (int c = 0; c < 4; ++c) in[(static_cast<size_t>(f.slot) * 4 + c) * kLanes + lane] = value[c];
+        for (int c = 0; c < 4; ++c) batch_in[(static_cast<size_t>(f.slot) * 4 + c) * kLanes + lane] = value[c];
       }
     }
     std::fill(result.begin(), result.end(), 0.f);
-    shader::VertexBatch batch;
-    batch.count = count;
-    batch.inputs = in.data();
-    batch.outputs = result.data();
-    program.run_vertices(uniforms, textures, batch);
-    for (int lane = 0; lane < count; ++lane) {
-      raster::ClipVertex& c = out[first + lane];
+    shader::VertexBatch batches[shader::kMaxBlocksPerRun];
+    for (int b = 0; b < batch_count; ++b) {
+      batches[b].count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes));
+      batches[b].inputs = in.data() + static_cast<size_t>(b) * in_floats;
+      batches[b].outputs = result.data() + static_cast<size_t>(b) * out_floats;
+    }
+    program.run_vertex_batches(uniforms, textures, batches, batch_count);
+    for (size_t i = 0; i < count; ++i) {
+      const float* r = result.data() + (i / kLanes) * out_floats;
+      const size_t lane = i % kLanes;
+      raster::ClipVertex& c = out[first + i];
       c = raster::ClipVertex{};
-      for (int i = 0; i < 4; ++i) c.clip[i] = result[static_cast<size_t>(shader::kOutPosition + i) * kLanes + lane];
-      const glm::dvec4 clip_vertex(result[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
-                                   result[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
-                                   result[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
-                                   result[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
+      for (int k = 0; k < 4; ++k) c.clip[k] = r[static_cast<size_t>(shader::kOutPosition + k) * kLanes + lane];
+      const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
+                                   r[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
+                                   r[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
+                                   r[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
       for (uint32_t left = planes; left; left &= left - 1) {  // GL 2.0 2.12: planes test gl_ClipVertex
         const int p = __builtin_ctz(left);
         c.clip_distance[p] = static_cast<float>(glm::dot(ctx.extras.clip_planes[p], clip_vertex));
       }
-      c.edge_flag = vertices[first + lane].edge_flag;
-      const float size = point_size_from_shader ? result[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
+      c.edge_flag = vertices[first + i].edge_flag;
+      const float size = point_size_from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
                                                 : fixed_point_size;
       c.point_size = std::isfinite(size) ? size : 1.f;
-      float* dst = varyings.data() + (first + lane) * static_cast<size_t>(nv);
-      for (int k = 0; k < nv; ++k) dst[k] = result[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
+      float* dst = varyings.data() + (first + i) * static_cast<size_t>(nv);
+      for (int k = 0; k < nv; ++k) dst[k] = r[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
     }
   }
 }

@@ -92,6 +92,48 @@ TEST_P(BlockRuns, BlocksShadedTogetherComeOutAsEachAlone) {
     }
 }
 
+// Vertex batches run together (run_vertex_batches) give each batch's outputs as run alone,
+// partial batches included.
+TEST(VertexBatchRuns, BatchesRunTogetherComeOutAsEachAlone) {
+  auto p = link_ok("attribute vec4 position;\nattribute vec4 weights;\nuniform mat4 m;\nvarying vec4 v;\n"
+                   "void main() {\n"
+                   "  vec4 q = m * position;\n"
+                   "  for (int i = 0; i < 3; i++) if (weights[i] > 0.5) q.xy += weights.zw * float(i);\n"
+                   "  v = vec4(length(q.xyz), sin(q.x), weights.x > 0.3 ? 1.0 : -1.0, q.w);\n"
+                   "  gl_Position = q;\n"
+                   "}\n",
+                   "varying vec4 v;\nvoid main() { gl_FragColor = v; }\n");
+  ASSERT_TRUE(p);
+  std::mt19937 random(9);
+  std::uniform_real_distribution<float> value(-2.0f, 2.0f);
+  std::vector<float> uniforms(static_cast<size_t>(p->uniform_floats() + 1), 0.0f);
+  for (float& u : uniforms) u = value(random);
+  const size_t in_floats = static_cast<size_t>(p->input_slots() + 1) * 4 * kLanes;
+  const size_t out_floats = static_cast<size_t>(kOutFirstVarying + p->varying_floats()) * kLanes;
+  for (int count = 1; count <= kMaxBlocksPerRun; ++count) {
+    std::vector<float> inputs(in_floats * static_cast<size_t>(count)), together(out_floats * static_cast<size_t>(count), -99.0f);
+    for (float& v : inputs) v = value(random);
+    VertexBatch batches[kMaxBlocksPerRun];
+    for (int k = 0; k < count; ++k) {
+      batches[k].count = k == count - 1 ? 16 - 5 * k : kLanes;  // the last batch partly filled
+      batches[k].inputs = inputs.data() + in_floats * static_cast<size_t>(k);
+      batches[k].outputs = together.data() + out_floats * static_cast<size_t>(k);
+    }
+    p->run_vertex_batches(uniforms.data(), nullptr, batches, count);
+    for (int k = 0; k < count; ++k) {
+      std::vector<float> alone(out_floats, -99.0f);
+      VertexBatch one = batches[k];
+      one.outputs = alone.data();
+      p->run_vertices(uniforms.data(), nullptr, one);
+      for (size_t f = 0; f < out_floats; ++f) {
+        if (static_cast<int>(f % kLanes) >= one.count) continue;
+        ASSERT_EQ(std::memcmp(&together[out_floats * static_cast<size_t>(k) + f], &alone[f], sizeof(float)), 0)
+            << "batches " << count << " batch " << k << " float " << f;
+      }
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Shaders, BlockRuns, testing::Values(kShader, kLargeShader));
 
 }  // namespace
