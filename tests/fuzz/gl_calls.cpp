@@ -510,7 +510,8 @@ const GlCall kCalls[] = {
      }},
     {"glNewList",
      [](FuzzInput& in, ClientMemory& memory) {
-       memory.calls_to_lists_in_list = 0;
+       // Inside a list glNewList fails: the list being compiled keeps its count.
+       if (!compiling_list()) memory.calls_to_lists_in_list = 0;
        glNewList(in.name(), in.enumeration({GL_COMPILE, GL_COMPILE_AND_EXECUTE}));
      }},
     {"glEndList", [](FuzzInput&, ClientMemory&) { glEndList(); }},
