@@ -1,8 +1,12 @@
-// The shader block's lane helpers (varying_lanes.h, block_write.h) in three copies: baseline
-// x86-64, AVX2 and AVX-512, the same operations per lane in each.
+// The shader block's lane helpers (varying_lanes.h, block_write.h, sampler_bilinear_block.h) in
+// three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather instructions) and AVX-512 (16),
+// the same operations per lane in each, so the same values.
+#include <immintrin.h>
+
 #include <cstring>
 
 #include "raster/block_write.h"
+#include "raster/sampler_bilinear_block.h"
 #include "raster/varying_lanes.h"
 
 // The copies pass vectors wider than the baseline's registers but only within one function.
@@ -10,8 +14,10 @@
 
 namespace pineda::raster::block_lanes_sse2 {
 using VF = float __attribute__((vector_size(16)));
+constexpr int kGatherBytes = 0;
 #include "raster/block_lanes_types.inc"
 #include "raster/block_write_body.inc"
+#include "raster/sampler_bilinear_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 }  // namespace pineda::raster::block_lanes_sse2
 
@@ -19,8 +25,10 @@ using VF = float __attribute__((vector_size(16)));
 #pragma GCC target("avx2")
 namespace pineda::raster::block_lanes_avx2 {
 using VF = float __attribute__((vector_size(32)));
+constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 #include "raster/block_lanes_types.inc"
 #include "raster/block_write_body.inc"
+#include "raster/sampler_bilinear_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 }  // namespace pineda::raster::block_lanes_avx2
 #pragma GCC pop_options
@@ -29,13 +37,36 @@ using VF = float __attribute__((vector_size(32)));
 #pragma GCC target("avx512f,avx512bw,avx512vl,avx512dq")
 namespace pineda::raster::block_lanes_avx512 {
 using VF = float __attribute__((vector_size(64)));
+constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;
 #include "raster/block_lanes_types.inc"
 #include "raster/block_write_body.inc"
+#include "raster/sampler_bilinear_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 }  // namespace pineda::raster::block_lanes_avx512
 #pragma GCC pop_options
 
 namespace pineda::raster {
+namespace {
+
+template <TexWrap kWrapS, TexWrap kWrapT>
+BlockSampler block_sampler_for_path(SimdPath path) {
+  if (uses_avx512(path)) return &block_lanes_avx512::sample_block<kWrapS, kWrapT>;
+  if (uses_avx2(path)) return &block_lanes_avx2::sample_block<kWrapS, kWrapT>;
+  return &block_lanes_sse2::sample_block<kWrapS, kWrapT>;
+}
+
+template <TexWrap kWrapS>
+BlockSampler block_sampler_for_wrap_t(TexWrap t, SimdPath path) {
+  return t == TexWrap::Repeat ? block_sampler_for_path<kWrapS, TexWrap::Repeat>(path)
+                              : block_sampler_for_path<kWrapS, TexWrap::ClampToEdge>(path);
+}
+
+}  // namespace
+
+BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path) {
+  return sampler.wrap_s == TexWrap::Repeat ? block_sampler_for_wrap_t<TexWrap::Repeat>(sampler.wrap_t, path)
+                                           : block_sampler_for_wrap_t<TexWrap::ClampToEdge>(sampler.wrap_t, path);
+}
 
 VaryingInterpolator select_varying_interpolator(SimdPath path) {
   if (uses_avx512(path)) return &block_lanes_avx512::interpolate;
