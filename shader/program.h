@@ -133,8 +133,10 @@ struct FragmentBlock {
   // Program::fragment_uniform_values() of this draw's uniforms, or null (computed per block).
   const float* uniform_values = nullptr;
   const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
-  float frag_coord[4][kLanes];        // x+0.5, y+0.5, window z, 1/w
   LaneMask front_facing = 0;
+  // Each row of lanes on a 64-byte line: the executors read and write whole rows, and a row
+  // across two lines made every colour store two (glsl_lit spent a tenth of its time there).
+  alignas(64) float frag_coord[4][kLanes];  // x+0.5, y+0.5, window z, 1/w
   float point_coord[2][kLanes];
   float color[kMaxDrawBuffers][4][kLanes];  // out: gl_FragColor (broadcast) or gl_FragData[i] < draw_buffers_written()
   float depth[kLanes];                      // out, when writes_depth()

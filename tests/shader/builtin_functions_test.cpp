@@ -89,6 +89,27 @@ TEST(BuiltinFunctions, PowAndAtan2) {
   EXPECT_EQ(z.c[0][5], 1.0f);
 }
 
+// Whole exponents up to 256 multiply (shader/lane_pow.inc): the same exponent in every lane, a
+// negative one, and odd powers of negative bases, against the correctly rounded power.
+TEST(BuiltinFunctions, PowWholeExponents) {
+  ExprResult r = run_fragment("gl_FragColor = vec4(pow(abs(a.x), 32.0), pow(abs(a.x), -3.0), pow(a.x, 3.0), "
+                              "pow(abs(a.x) * 0.01 + 1.0, 255.0));",
+                              interesting);
+  auto rounded = [](double x, double y) {
+    const float p = static_cast<float>(std::pow(x, y));
+    return std::fabs(p) < std::numeric_limits<float>::min() ? 0.0f * p : p;
+  };
+  expect_lanes(r, 0, [&](int l) { return rounded(std::fabs(interesting(l, 0)), 32.0); }, "pow 32");
+  expect_lanes(r, 1, [&](int l) { return rounded(std::fabs(interesting(l, 0)), -3.0); }, "pow -3");
+  expect_lanes(r, 2, [&](int l) { return rounded(interesting(l, 0), 3.0); }, "pow 3");
+  expect_lanes(r, 3, [&](int l) { return rounded(std::fabs(interesting(l, 0)) * 0.01f + 1.0f, 255.0); }, "pow 255");
+  EXPECT_EQ(r.c[0][10], kInf);     // 100^32 overflows
+  EXPECT_EQ(r.c[1][0], kInf);      // 0^-3
+  EXPECT_EQ(r.c[2][1], -0.0f);     // (-0)^3
+  EXPECT_TRUE(std::signbit(r.c[2][1]));
+  EXPECT_EQ(r.c[2][9], -381.078125f);  // (-7.25)^3, exact
+}
+
 TEST(BuiltinFunctions, ModMinMaxClamp) {
   ExprResult r = run_fragment("gl_FragColor = vec4(mod(a.x, b.x), min(a.x, b.x), max(a.x, b.x), clamp(a.x, -1.0, 2.0));",
                               interesting, second);
