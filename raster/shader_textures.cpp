@@ -51,10 +51,9 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
 // The fast sampler's lookups of a whole block at once when its live quads read the same level
 // or levels (the same per-quad choice, bias included, as the quad sampler's); false otherwise.
 // Only for an image and sampler that select_bilinear8_sampler takes.
-bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler, const float (*coords)[kLanes],
-                               shader::LodMode mode, const float* lod, shader::LaneMask live, float (*out)[kLanes]) {
-  static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
-  const BlockSampler block = select_bilinear8_block_sampler(sampler, path);
+bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, const Sampler& sampler,
+                               const float (*coords)[kLanes], shader::LodMode mode, const float* lod,
+                               shader::LaneMask live, float (*out)[kLanes]) {
   LevelChoice choice;
   const bool level_zero = sampler.min_filter == TexFilter::Linear;  // for every quad: no mipmaps
   bool any = level_zero && live != 0;
@@ -91,6 +90,18 @@ bool sample_block_at_one_level(const TextureImage& image, const Sampler& sampler
 
 }  // namespace
 
+const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {
+  FastSamplers& f = fast_[static_cast<size_t>(unit)];
+  if (!f.chosen) {
+    static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
+    const Sampler& sampler = units_[static_cast<size_t>(unit)].sampler;
+    f.quad = select_bilinear8_sampler(image, sampler);
+    f.block = f.quad ? select_bilinear8_block_sampler(sampler, path) : nullptr;
+    f.chosen = true;
+  }
+  return f;
+}
+
 void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)[kLanes], shader::LodMode mode,
                                const float* lod, shader::LaneMask live, float (*out)[kLanes]) const {
   const TextureUnit* tu = unit >= 0 && unit < kMaxTextureImageUnits ? &units_[unit] : nullptr;
@@ -100,10 +111,12 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D;
   // 2D lookups of RGBA8 images with linear filters take the fixed-function unit's fast sampler
   // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler.
-  const QuadSampler fast = image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit
-                               ? select_bilinear8_sampler(*image, tu->sampler)
-                               : nullptr;
-  if (fast && sample_block_at_one_level(*image, tu->sampler, coords, mode, lod, live, out)) return;
+  QuadSampler fast = nullptr;
+  if (image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit) {
+    const FastSamplers& f = fast_samplers(unit, *image);
+    if (f.block && sample_block_at_one_level(f.block, *image, tu->sampler, coords, mode, lod, live, out)) return;
+    fast = f.quad;
+  }
   for (int q = 0; q < kLanes / 4; ++q) {
     const int first = 4 * q;
     if (!((live >> first) & 0xf) || !image) {

@@ -3,11 +3,15 @@
 #pragma once
 #include <array>
 
+#include "raster/sampler_bilinear8.h"
+#include "raster/sampler_bilinear_block.h"
 #include "raster/texture.h"
 #include "shader/program.h"
 
 namespace pineda::raster {
 
+// Lives on one thread's stack for a stretch of one draw (its units do not change meanwhile), so
+// the fast samplers of a unit are chosen at its first 2D lookup and kept.
 class UnitTextureAccess final : public shader::TextureAccess {
  public:
   explicit UnitTextureAccess(const std::array<TextureUnit, kMaxTextureImageUnits>& units) : units_(units) {}
@@ -16,7 +20,16 @@ class UnitTextureAccess final : public shader::TextureAccess {
               const float* lod, shader::LaneMask live, float (*out)[shader::kLanes]) const override;
 
  private:
+  // The fast quad and block samplers of a unit's image for 2D lookups (null: none fits).
+  struct FastSamplers {
+    bool chosen = false;
+    QuadSampler quad = nullptr;
+    BlockSampler block = nullptr;
+  };
+  const FastSamplers& fast_samplers(int unit, const TextureImage& image) const;
+
   const std::array<TextureUnit, kMaxTextureImageUnits>& units_;
+  mutable std::array<FastSamplers, kMaxTextureImageUnits> fast_{};
 };
 
 }  // namespace pineda::raster
