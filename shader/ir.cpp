@@ -8,18 +8,24 @@
 #define PINEDA_HAS_MXCSR 1
 #endif
 
-// lane_pow.inc works on 32-byte double vectors in helpers that are always inlined.
+// lane_pow.inc and lane_sin_cos.inc work on 32-byte double vectors in helpers that are always inlined.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace pineda::shader::ir {
 
 namespace {
 #include "shader/lane_pow.inc"
+#include "shader/lane_sin_cos.inc"
 
 // The executor's pow over vectors, for one value.
 float pow_value(float x, float y) {
-  const PowLanes<4>::F r = lane_pow<4>(PowLanes<4>::F{x, x, x, x}, PowLanes<4>::F{y, y, y, y});  // not 0 + x: -0 stays -0
+  const LaneTypes<4>::F r = lane_pow<4>(LaneTypes<4>::F{x, x, x, x}, LaneTypes<4>::F{y, y, y, y});  // not 0 + x: -0 stays -0
   return r[0];
+}
+
+// The executor's sin and cos over vectors, for one value.
+float sin_cos_value(float x, bool cosine) {
+  return lane_sin_cos<4>(LaneTypes<4>::F{x, x, x, x}, cosine)[0];
 }
 
 const char* const kOpNames[] = {
@@ -83,8 +89,8 @@ float eval_unary(Op op, float a) {
     case Op::Log: return std::log(a);
     case Op::Exp2: return std::exp2(a);
     case Op::Log2: return std::log2(a);
-    case Op::Sin: return std::sin(a);
-    case Op::Cos: return std::cos(a);
+    case Op::Sin: return sin_cos_value(a, false);
+    case Op::Cos: return sin_cos_value(a, true);
     case Op::Tan: return std::tan(a);
     case Op::Asin: return std::asin(a);
     case Op::Acos: return std::acos(a);

@@ -42,13 +42,29 @@ UNARY_TEST(Sign, "sign", x > 0.0f ? 1.0f : (x < 0.0f ? -1.0f : 0.0f))
 UNARY_TEST(Floor, "floor", std::floor(x))
 UNARY_TEST(Ceil, "ceil", std::ceil(x))
 UNARY_TEST(Fract, "fract", x - std::floor(x))
-UNARY_TEST(Sin, "sin", std::sin(x))
-UNARY_TEST(Cos, "cos", std::cos(x))
+// sin and cos are correctly rounded (shader/lane_sin_cos.inc): the double result rounded once.
+UNARY_TEST(Sin, "sin", static_cast<float>(std::sin(static_cast<double>(x))))
+UNARY_TEST(Cos, "cos", static_cast<float>(std::cos(static_cast<double>(x))))
 UNARY_TEST(Tan, "tan", std::tan(x))
 UNARY_TEST(Atan, "atan", std::atan(x))
 UNARY_TEST(Exp, "exp", std::exp(x))
 UNARY_TEST(Exp2, "exp2", std::exp2(x))
 UNARY_TEST(Negate, "-", -x)
+
+// Arguments over many quadrants, and beyond 2^17 (reduced by C's sin and cos in double), and a
+// constant folded at link time against the same value computed per lane.
+TEST(BuiltinFunctions, SinCosLargeArgumentsAndConstants) {
+  ExprResult r = run_fragment("gl_FragColor = vec4(sin(a.x * 1000.0), cos(a.x * 1000.0), sin(a.x * 1e6), cos(2.5));",
+                              interesting);
+  auto rounded = [](float x, bool cosine) {
+    return static_cast<float>(cosine ? std::cos(static_cast<double>(x)) : std::sin(static_cast<double>(x)));
+  };
+  expect_lanes(r, 0, [&](int l) { return rounded(interesting(l, 0) * 1000.0f, false); }, "sin(1000 x)");
+  expect_lanes(r, 1, [&](int l) { return rounded(interesting(l, 0) * 1000.0f, true); }, "cos(1000 x)");
+  expect_lanes(r, 2, [&](int l) { return rounded(interesting(l, 0) * 1e6f, false); }, "sin(1e6 x)");
+  ExprResult lanes = run_fragment("gl_FragColor = vec4(cos(a.x));", interesting);
+  EXPECT_EQ(r.c[3][0], lanes.c[0][6]);  // interesting(6, 0) is 2.5
+}
 
 TEST(BuiltinFunctions, AsinAcosOutsideDomainAreNan) {
   ExprResult r = run_fragment("gl_FragColor = vec4(asin(a.x), acos(a.x), asin(0.5), acos(-1.0));", interesting);
