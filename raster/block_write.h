@@ -1,5 +1,5 @@
-// The colour write of a whole shader block when nothing is left to decide per pixel: four
-// adjacent full quads (8x2 pixels) of an RGBA8 or BGRA8 buffer, every channel written, no
+// The colour write of a shader block when nothing is left to decide per pixel but coverage: up
+// to four adjacent quads (8x2 pixels) of an RGBA8 or BGRA8 buffer, every channel written, no
 // reduction, either no blending or SRC_ALPHA / ONE_MINUS_SRC_ALPHA. The same conversion
 // (clamp, round to nearest even) and blend arithmetic per pixel as write_quad (quad_ops.h,
 // blend_over.h), 16 lanes at a time.
@@ -11,9 +11,10 @@
 namespace pineda::raster {
 
 // color[c][lane]: channel c of lane 4j + i (quad j, pixel i = (i & 1, i >> 1)); shift[c]: where
-// channel c goes in a pixel; row0/row1: the block's 8 pixels in its first and second row.
+// channel c goes in a pixel; row0/row1: the block's 8 pixels in its first and second row;
+// live: the lanes written (only their pixels are read and written).
 using BlockWriter = void (*)(const float (*color)[16], const uint32_t shift[4], bool blend_over, uint8_t* row0,
-                             uint8_t* row1);
+                             uint8_t* row1, uint16_t live);
 
 BlockWriter select_block_writer(SimdPath path);
 

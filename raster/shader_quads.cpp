@@ -173,12 +173,12 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   return true;
 }
 
-// Whether block k of the row is four adjacent quads whose 16 pixels all get written, each
-// wholly and in the same way (block_write.h): nothing but the colour is left to decide.
-bool writes_whole_block(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
+// Whether block k of the row is adjacent quads whose live pixels all get written, each wholly
+// and in the same way (block_write.h): nothing but the colour and coverage is left to decide.
+bool writes_block_lanes(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
                         bool write_color) {
-  if (!write_color || !no_late_tests || row.quad_count[k] != 4 || row.blocks[k].live != 0xFFFF) return false;
-  for (int j = 1; j < 4; ++j)
+  if (!write_color || !no_late_tests) return false;
+  for (int j = 1; j < row.quad_count[k]; ++j)
     if (row.quads[k][j].x != row.quads[k][0].x + 2 * j) return false;
   const DrawState& s = d.state;
   return !d.key.extras && !s.alpha_test && !d.alpha_to_one && d.color_write_all && !fb.color.reduction.active &&
@@ -200,12 +200,17 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
   if constexpr (kTargets) write_color = targets.count > 0;
   uint32_t passed = 0;
   if constexpr (!kTargets) {
-    if (writes_whole_block(d, fb, row, k, early || !tests, write_color)) {
+    if (writes_block_lanes(d, fb, row, k, early || !tests, write_color)) {
       static const BlockWriter write = select_block_writer(simd_path_from_environment());
       const Quad& q = row.quads[k][0];
+      const auto live = static_cast<uint16_t>(block.live & ((1u << (4 * row.quad_count[k])) - 1u));
+      // The writer touches the live pixels alone; without any in the second row, that row may
+      // lie past the buffer, and is not addressed.
+      uint8_t* const row0 = color_address(fb, q.x, y);
+      uint8_t* const row1 = (live & 0xCCCCu) ? color_address(fb, q.x, y + 1) : row0;
       write(block.color[sd.color_output], fb.color.format == ColorFormat::BGRA8 ? kBgraShift.at : kRgbaShift.at,
-            d.key.blend, color_address(fb, q.x, y), color_address(fb, q.x, y + 1));
-      return d.key.count_samples && !early ? 16 : 0;
+            d.key.blend, row0, row1, live);
+      return d.key.count_samples && !early ? static_cast<uint32_t>(__builtin_popcount(live)) : 0;
     }
   }
   for (int j = 0; j < row.quad_count[k]; ++j) {
