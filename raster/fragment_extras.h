@@ -50,7 +50,7 @@ inline void apply_color_sum_and_fog(const DrawRecord& d, const PrimSetup& p, F4 
   if (d.fog_plane < 0) return;
   const Fog& fog = d.state.fog;
   const F4 z = varying(p, d.fog_plane, ox, oy);
-  F4 f;
+  F4 f = splat(1.f);  // (every mode sets it; GCC cannot tell)
   switch (fog.mode) {
     case FogMode::Linear: {
       const float range = fog.end - fog.start;

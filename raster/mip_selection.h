@@ -3,6 +3,8 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "raster/texture.h"
 
@@ -13,8 +15,19 @@ namespace pineda::raster {
 // uses, so that mipmap blends match it. -inf when rho is 0.
 inline float lambda_from_rho2(float rho2) {
   if (!(rho2 > 0.f)) return rho2 == 0.f ? -INFINITY : NAN;
-  int e;
-  const float m = std::frexp(rho2, &e);  // rho2 = m * 2^e, m in [0.5, 1)
+  // rho2 = m * 2^e, m in [0.5, 1), as std::frexp gives them, from the bits (frexp is a call).
+  int shift = 0;
+  if (rho2 < 0x1p-126f) {  // subnormal: scaled up exactly first
+    rho2 *= 0x1p24f;
+    shift = 24;
+  }
+  uint32_t bits;
+  std::memcpy(&bits, &rho2, sizeof bits);
+  if (bits >= 0x7f800000u) return INFINITY;  // rho2 infinite (NaN was returned above)
+  const int e = static_cast<int>(bits >> 23) - 126 - shift;
+  bits = (bits & 0x807fffffu) | 0x3f000000u;
+  float m;
+  std::memcpy(&m, &bits, sizeof m);
   return 0.5f * (static_cast<float>(e - 1) + (2.f * m - 1.f));
 }
 
