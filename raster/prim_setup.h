@@ -1,5 +1,6 @@
 // A primitive after setup: what a tile needs to find its pixels and shade them.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "raster/texture.h"
@@ -73,13 +74,19 @@ struct PrimSetup {
   float ref_x = 0.f, ref_y = 0.f;
   double z0 = 0.0, dzdx = 0.0, dzdy = 0.0;  // window depth in depth-buffer units
   Plane inv_w;
-  // r, g, b, a, then s, t, q (and r: DrawRecord::r_plane) per enabled unit (in unit order), then the secondary colour and
-  // the fog coordinate when the draw uses them (DrawRecord::secondary_plane, fog_plane).
-  Plane planes[kMaxPlanes];
   // A programmable draw's varyings (DrawState::shader), in the scene's storage; perspective
   // like planes[].
   const Plane* varying_planes = nullptr;
   float flat_color[4] = {0, 0, 0, 0};
+  // r, g, b, a, then s, t, q (and r: DrawRecord::r_plane) per enabled unit (in unit order), then the secondary colour and
+  // the fog coordinate when the draw uses them (DrawRecord::secondary_plane, fog_plane). Last:
+  // the scene copies only the draw's DrawRecord::planes of them (used_bytes).
+  Plane planes[kMaxPlanes];
 };
+
+// The bytes of a PrimSetup up to its first `planes` planes: all a draw with that many reads.
+inline size_t used_bytes(int planes) {
+  return offsetof(PrimSetup, planes) + sizeof(Plane) * static_cast<size_t>(planes);
+}
 
 }  // namespace pineda::raster

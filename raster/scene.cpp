@@ -1,6 +1,7 @@
 #include "raster/scene.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "raster/multisample.h"
 #include "raster/raster_limits.h"
@@ -31,7 +32,8 @@ void Scene::reset(const Framebuffer& fb) {
   tiles_y_ = (render_h_ + kTileSize - 1) / kTileSize;
   if (tiles_x_ == 0 || tiles_y_ == 0) tiles_x_ = tiles_y_ = 0;
   draws_.clear();
-  prims_.clear();
+  prims_.resize(kMaxPrims);
+  prim_count_ = 0;
   clears_.clear();
   bins_.assign(static_cast<size_t>(tiles_x_) * tiles_y_, {});
   touched_tiles_.clear();
@@ -60,7 +62,7 @@ void Scene::retain_textures(const DrawRecord& draw) {
 void Scene::add_prim(const PrimSetup& prim) {
   const PixelRect r = intersect(prim.bounds, render_area());
   if (r.empty() || draws_.empty()) return;
-  const uint32_t index = static_cast<uint32_t>(prims_.size());
+  const uint32_t index = static_cast<uint32_t>(prim_count_);
   bool used = false;
   for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
     for (int tx = r.x0 >> kTileShift; tx <= (r.x1 - 1) >> kTileShift; ++tx) {
@@ -76,8 +78,11 @@ void Scene::add_prim(const PrimSetup& prim) {
       used = true;
     }
   if (!used) return;
-  prims_.push_back(prim);
-  prims_.back().draw = static_cast<uint32_t>(draws_.size() - 1);
+  if (prim_count_ == prims_.size()) prims_.resize(prims_.size() + kMaxPrims);  // (full() stops binning before)
+  PrimSetup& stored = prims_[prim_count_++];
+  const int planes = std::clamp(draws_.back()->planes, 0, kMaxPlanes);
+  std::memcpy(static_cast<void*>(&stored), &prim, used_bytes(planes));
+  stored.draw = static_cast<uint32_t>(draws_.size() - 1);
 }
 
 void Scene::add_prim(PrimSetup prim, const Plane* varying_planes, int count) {
@@ -110,7 +115,7 @@ void Scene::add_clear(const ClearRecord& clear) {
 }
 
 bool Scene::full() const {
-  return prims_.size() >= kMaxPrims || commands_ >= kMaxCommands || clears_.size() >= kMaxPrims ||
+  return prim_count_ >= kMaxPrims || commands_ >= kMaxCommands || clears_.size() >= kMaxPrims ||
          draws_.size() >= kMaxDraws || retained_texture_bytes_ >= kMaxRetainedTextureBytes ||
          plane_chunks_.size() >= kMaxPlaneChunks;
 }
@@ -168,7 +173,7 @@ void Scene::continue_draw(const Scene& from) {
 void Scene::drop_commands() {
   for (const int t : touched_tiles_) bins_[t].clear();
   touched_tiles_.clear();
-  prims_.clear();
+  prim_count_ = 0;
   clears_.clear();
   commands_ = 0;
   retained_images_.clear();

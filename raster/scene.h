@@ -64,7 +64,10 @@ class Scene {
   // draw that filled the scene goes on adding primitives, here or in the next scene, and the
   // pool's threads may read it while this goes on.
   std::deque<std::shared_ptr<const DrawRecord>> draws_;
+  // kMaxPrims records made once; the first prim_count_ are queued, each holding only the planes
+  // its draw uses (a whole PrimSetup is large: copying all of it took a tenth of small triangles).
   std::vector<PrimSetup> prims_;
+  size_t prim_count_ = 0;
   std::vector<ClearRecord> clears_;
   std::vector<std::vector<uint32_t>> bins_;
   std::vector<int> touched_tiles_;
