@@ -73,10 +73,10 @@ void StageCode::prepare() {
   slots = hoisted.slots;
   for (ir::Inst& in : exec) {
     if (in.op == Op::Texture) continue;  // its operands stay in code.textures
-    in.d = offset(in.d);
-    in.a = offset(in.a);
-    in.b = offset(in.b);
-    in.c = offset(in.c);
+    in.d = byte_offset(in.d);
+    in.a = byte_offset(in.a);
+    in.b = byte_offset(in.b);
+    in.c = byte_offset(in.c);
     if (in.op == Op::Gather || in.op == Op::Scatter) in.i0 = offset(in.i0);
   }
   exec.push_back(ir::Inst{Op::Count});  // the executor's end: its handler leaves the run

@@ -12,14 +12,14 @@ namespace pineda::shader {
 using RunMask = uint64_t;
 
 // A stage's code ready to run: the IR, and the same instructions with every value operand
-// turned into a float offset into one lane buffer (constants, splatted, then registers, then
-// the slots of the uniform-only operations, shader/hoist.h), so that the executor reads
-// operands without a branch. Offsets count kLanes floats per register; a run of several
-// blocks scales them by its block count.
+// turned into an offset into one lane buffer (constants, splatted, then registers, then the
+// slots of the uniform-only operations, shader/hoist.h), so that the executor reads operands
+// without a branch. offset() counts kLanes floats per register; a run of several blocks
+// scales it by its block count.
 struct StageCode {
   ir::Code code;
   std::vector<float> constant_lanes;  // [constant][kMaxBlocksPerRun * kLanes]
-  std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as buffer offsets, then Op::Count
+  std::vector<ir::Inst> exec;         // code.insts without uniform_ops, operands as byte_offset()s, then Op::Count
   std::vector<ir::TextureLookup> exec_textures;  // exec's lookups (IR operands, slots included)
   std::vector<ir::Inst> uniform_ops;  // run once per draw or per run; d and register operands: slots
   int slots = 0;                      // slot s is register code.registers + s
@@ -33,6 +33,9 @@ struct StageCode {
     return ir::is_const(o) ? ir::const_index(o) * kLanes
                            : (static_cast<int32_t>(code.constants.size()) + o) * kLanes;
   }
+  // exec's operands d, a, b, c: offset() in bytes, which a run scales by its block count
+  // (1, 2 or 4) within one address computation.
+  int32_t byte_offset(ir::Operand o) const { return offset(o) * static_cast<int32_t>(sizeof(float)); }
 };
 
 // The lane buffer a run keeps on its stack (16 KiB: a GL call may come from a thread with a
