@@ -26,7 +26,7 @@ void allocate(Surface& s) {
   raster::Framebuffer& fb = s.drawable.framebuffer;
   fb.width = s.width;
   fb.height = s.height;
-  fb.color = {s.color.data(), static_cast<ptrdiff_t>(s.width) * 4, raster::ColorFormat::RGBA8};
+  fb.color = {s.color.data(), static_cast<ptrdiff_t>(s.width) * 4, raster::ColorFormat::RGBA8, {}, 0};
   fb.depth = {s.config->depth ? s.depth.data() : nullptr, s.width, s.config->depth};
   fb.stencil = {s.config->stencil ? s.stencil.data() : nullptr, s.width, s.config->stencil};
   fb.samples = samples;

@@ -59,7 +59,7 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   const ptrdiff_t row_bytes = static_cast<ptrdiff_t>(width) * 4;
   // Framebuffer row 0 (the bottom) is the last row in memory.
   auto bottom_up = [&](uint8_t* top_row) -> raster::ColorBuffer {
-    return {count ? top_row + (height - 1) * row_bytes : nullptr, -row_bytes, raster::ColorFormat::BGRA8};
+    return {count ? top_row + (height - 1) * row_bytes : nullptr, -row_bytes, raster::ColorFormat::BGRA8, {}, 0};
   };
   fb.color = bottom_up(double_buffered ? d.back.data() : d.pixels);
   d.drawable.front = double_buffered ? bottom_up(d.pixels) : raster::ColorBuffer{};

@@ -33,8 +33,7 @@ void osmesa_context::describe_framebuffer() {
     fb.color.format = format == OSMESA_BGRA ? pineda::raster::ColorFormat::BGRA8
                                             : pineda::raster::ColorFormat::RGBA8;
   } else {
-    fb.color = {copy.data(), static_cast<ptrdiff_t>(user.width) * 4,
-                pineda::raster::ColorFormat::RGBA8};
+    fb.color = {copy.data(), static_cast<ptrdiff_t>(user.width) * 4, pineda::raster::ColorFormat::RGBA8, {}, 0};
   }
   fb.depth = {depth_bits ? depth.data() : nullptr, user.width, depth_bits};
   fb.stencil = {stencil_bits ? stencil.data() : nullptr, user.width, stencil_bits};

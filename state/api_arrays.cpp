@@ -211,14 +211,14 @@ void InterleavedArrays(Context& ctx, GLenum format, GLsizei stride, const void* 
   const auto* base = at(0);
   ClientArray& tex = ctx.texture_units[ctx.client_active_texture].texcoord_array;
   tex.enabled = layout->tex;
-  if (layout->tex) tex = {true, layout->st, GL_FLOAT, s, base};
+  if (layout->tex) tex = {true, layout->st, GL_FLOAT, s, base, nullptr};
   ctx.color_array.enabled = layout->color;
-  if (layout->color) ctx.color_array = {true, layout->sc, layout->tc, s, at(layout->pc * f)};
+  if (layout->color) ctx.color_array = {true, layout->sc, layout->tc, s, at(layout->pc * f), nullptr};
   ctx.normal_array.enabled = layout->normal;
-  if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, at(layout->pn * f)};
+  if (layout->normal) ctx.normal_array = {true, 3, GL_FLOAT, s, at(layout->pn * f), nullptr};
   ctx.index_array.enabled = false;
   ctx.edge_flag_array.enabled = false;
-  ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, at(layout->pv * f)};
+  ctx.vertex_array = {true, layout->sv, GL_FLOAT, s, at(layout->pv * f), nullptr};
   for (ClientArray* a : {&tex, &ctx.color_array, &ctx.normal_array, &ctx.vertex_array}) a->buffer = ctx.buffers.array;
 }
 

@@ -19,7 +19,7 @@ bool plane_index(Context& ctx, GLenum plane, int& index) {
 }  // namespace
 
 void ClipPlane(Context& ctx, GLenum plane, const GLdouble* equation) {
-  int i;
+  int i = 0;
   if (!plane_index(ctx, plane, i) || !equation) return;
   // GL 1.5 section 2.12: (p1 p2 p3 p4) M^-1, M the modelview at the time of the call.
   const glm::dvec4 p(equation[0], equation[1], equation[2], equation[3]);
@@ -27,7 +27,7 @@ void ClipPlane(Context& ctx, GLenum plane, const GLdouble* equation) {
 }
 
 void GetClipPlane(Context& ctx, GLenum plane, GLdouble* equation) {
-  int i;
+  int i = 0;
   if (!plane_index(ctx, plane, i) || !equation) return;
   for (int c = 0; c < 4; ++c) equation[c] = ctx.extras.clip_planes[i][c];
 }

@@ -145,13 +145,13 @@ void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint in
     if (levels.size() <= size_t(level)) levels.resize(level + 1);
     const bool too_large = inner_w > level_max || inner_h > level_max || inner_d > level_max;
     levels[level] = too_large ? TextureLevelData{}
-                              : TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
+                              : TextureLevelData{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}, {}};
     return;
   }
   if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, dims == 3, format, type)))
     return;
   // Allocated before the level changes, so that running out of memory leaves the texture as it was.
-  TextureLevelData image{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}};
+  TextureLevelData image{inner_w, inner_h, inner_d, border, recorded_format, storage.base, {}, {}};
   image.texels.assign(size_t(inner_w) * inner_h * inner_d, 0u);
   if (storage.stencil) image.stencil.assign(size_t(inner_w) * inner_h * inner_d, 0);
   if (levels.size() <= size_t(level)) levels.resize(level + 1);

@@ -71,6 +71,14 @@ struct ClientArray {
   bool active() const { return enabled && (pointer || buffer); }
 };
 
+// A disabled array's initial state with `size` components of `type` (GL's tables 6.6-6.8).
+inline ClientArray initial_array(GLint size, GLenum type = GL_FLOAT) {
+  ClientArray a;
+  a.size = size;
+  a.type = type;
+  return a;
+}
+
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
   GLint image_height = 0, skip_images = 0;  // 3D images only
@@ -86,9 +94,9 @@ struct ClientAttribFrame {
   PixelStore pack, unpack;
   ClientArray vertex_array, color_array, normal_array;
   std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
-  ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};
-  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
-  ClientArray index_array{.size = 1};
+  ClientArray edge_flag_array = initial_array(1, GL_UNSIGNED_BYTE);
+  ClientArray fog_coord_array = initial_array(1), secondary_color_array = initial_array(3);
+  ClientArray index_array = initial_array(1);
   std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
   GLuint client_active_texture = 0;
   std::array<GenericArray, kMaxVertexAttribs> generic_arrays;  // GL 2.0 table 6.7: vertex-array group
@@ -253,10 +261,10 @@ class Context {
 
   // Client arrays and pixel storage
   ClientArray vertex_array, color_array, normal_array;
-  ClientArray edge_flag_array{false, 1, GL_UNSIGNED_BYTE, 0, nullptr};  // GLboolean flags
-  ClientArray fog_coord_array{.size = 1}, secondary_color_array{.size = 3};
-  ClientArray index_array{.size = 1};
-  ClientArray point_size_array{.size = 1};  // OpenGL ES 1.1 (OES_point_size_array)
+  ClientArray edge_flag_array = initial_array(1, GL_UNSIGNED_BYTE);  // GLboolean flags
+  ClientArray fog_coord_array = initial_array(1), secondary_color_array = initial_array(3);
+  ClientArray index_array = initial_array(1);
+  ClientArray point_size_array = initial_array(1);  // OpenGL ES 1.1 (OES_point_size_array)
   PixelStore pack, unpack;
 
   // Textures
