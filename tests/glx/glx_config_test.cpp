@@ -78,7 +78,9 @@ TEST_F(GlxConfigTest, MultisampledConfigsSortAfterSingleSampled) {
   int last_samples = 0, last_size = 0, multisampled = 0;
   for (int i = 0; i < n; ++i) {
     const int samples = attrib(dpy, configs[i], GLX_SAMPLES), size = attrib(dpy, configs[i], GLX_BUFFER_SIZE);
-    if (size == last_size) EXPECT_GE(samples, last_samples) << i;
+    if (size == last_size) {
+      EXPECT_GE(samples, last_samples) << i;
+    }
     last_samples = samples;
     last_size = size;
     multisampled += samples > 0;

@@ -136,7 +136,7 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
 }
 
 void expect_same_as_generic(const Config& c, const std::string& name) {
-  for (const auto [w, h] : {std::pair{77, 53}, std::pair{150, 97}}) {
+  for (const auto& [w, h] : {std::pair{77, 53}, std::pair{150, 97}}) {
     std::mt19937 rng(w * 1000 + h);
     const std::vector<PrimSetup> prims = random_triangles(c, w, h, rng);
     const Buffers generic = render(c, prims, w, h, SimdPath::Baseline, true);

@@ -326,7 +326,7 @@ TEST(Fragment, NegativeStrideIsTopDownMemory) {
   std::vector<uint8_t> mem(kS * kS * 4, 0);
   Framebuffer fb;
   fb.width = fb.height = kS;
-  fb.color = {mem.data() + (kS - 1) * kS * 4, -kS * 4, ColorFormat::RGBA8};
+  fb.color = {mem.data() + (kS - 1) * kS * 4, -kS * 4, ColorFormat::RGBA8, {}, 0};
   Renderer r(1);
   r.set_framebuffer(fb);
   // The bottom row only (window y in [0, 1)).

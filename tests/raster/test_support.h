@@ -12,7 +12,7 @@ struct OwnedFramebuffer {
       : color(static_cast<size_t>(w) * h * 4), depth(static_cast<size_t>(w) * h), stencil_buf(static_cast<size_t>(w) * h) {
     fb.width = w;
     fb.height = h;
-    fb.color = {color.data(), static_cast<ptrdiff_t>(w) * 4, format};
+    fb.color = {color.data(), static_cast<ptrdiff_t>(w) * 4, format, {}, 0};
     if (depth_bits) fb.depth = {depth.data(), w, depth_bits};
     if (stencil) fb.stencil = {stencil_buf.data(), w, 8};
   }

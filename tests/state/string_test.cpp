@@ -32,7 +32,9 @@ TEST_F(StringTest, ExtensionsAreSpaceSeparatedGLNames) {
     size_t end = ext.find(' ', start);
     if (end == std::string::npos) end = ext.size();
     const std::string name = ext.substr(start, end - start);
-    if (!name.empty()) EXPECT_EQ(name.rfind("GL_", 0), 0u) << name;
+    if (!name.empty()) {
+      EXPECT_EQ(name.rfind("GL_", 0), 0u) << name;
+    }
     start = end + 1;
   }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));

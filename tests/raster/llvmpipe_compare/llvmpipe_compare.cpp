@@ -170,7 +170,7 @@ std::vector<uint8_t> draw_pineda(const std::vector<Vert>& v, const Scene& sc, co
   r.draw(s, sc.mode, cv);
   r.flush();
   if (!sc.msaa) return color;
-  resolve_color(fb, {resolved.data(), kW * 4, ColorFormat::RGBA8});
+  resolve_color(fb, {resolved.data(), kW * 4, ColorFormat::RGBA8, {}, 0});
   return resolved;
 }
 
