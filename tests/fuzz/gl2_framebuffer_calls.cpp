@@ -43,6 +43,17 @@ GLbitfield blit_mask(FuzzInput& in) {
   return mask;
 }
 
+constexpr GLenum kTexEnvTargets[] = {GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL, GL_POINT_SPRITE};
+constexpr GLenum kTexEnvNames[] = {GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_COMBINE_RGB, GL_SOURCE2_ALPHA,
+                                   GL_RGB_SCALE, GL_TEXTURE_LOD_BIAS, GL_COORD_REPLACE};
+
+template <typename T>
+void get_tex_env(FuzzInput& in, void (*get)(GLenum, GLenum, T*)) {
+  std::vector<T> out(4);  // GL_TEXTURE_ENV_COLOR, the largest
+  const GLenum target = in.enumeration(kTexEnvTargets);
+  get(target, in.enumeration(kTexEnvNames), out.data());
+}
+
 void framebuffer_texture_2d(FuzzInput& in, ClientMemory&) {
   const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
   const GLenum textarget = in.enumeration(kTextureTargets2D);
@@ -201,14 +212,14 @@ const GlCall kCalls[] = {
                                            GL_TEXTURE_RESIDENT, GL_TEXTURE_PRIORITY}),
                            out.data());
      }},
-    {"glGetTexEnvfv",
+    {"glTexEnvfv",
      [](FuzzInput& in, ClientMemory&) {
-       std::vector<GLfloat> out(4);  // GL_TEXTURE_ENV_COLOR, the largest
-       glGetTexEnvfv(in.enumeration({GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL, GL_POINT_SPRITE}),
-                     in.enumeration({GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_COMBINE_RGB, GL_SOURCE2_ALPHA,
-                                     GL_RGB_SCALE, GL_TEXTURE_LOD_BIAS, GL_COORD_REPLACE}),
-                     out.data());
+       const GLenum target = in.enumeration(kTexEnvTargets), pname = in.enumeration(kTexEnvNames);
+       const GLfloat v[4] = {in.real(), in.unit(), in.unit(), in.unit()};
+       glTexEnvfv(target, pname, v);
      }},
+    {"glGetTexEnvfv", [](FuzzInput& in, ClientMemory&) { get_tex_env(in, glGetTexEnvfv); }},
+    {"glGetTexEnviv", [](FuzzInput& in, ClientMemory&) { get_tex_env(in, glGetTexEnviv); }},
 };
 
 }  // namespace

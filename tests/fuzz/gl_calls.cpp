@@ -682,7 +682,7 @@ const GlCall kCalls[] = {
 std::span<const GlCall> gl_calls() {
   static const std::vector<GlCall> calls = [] {
     std::vector<GlCall> all(std::begin(kCalls), std::end(kCalls));
-    for (std::span<const GlCall> more : {program_calls(), uniform_calls(), framebuffer_calls()})
+    for (std::span<const GlCall> more : {program_calls(), uniform_calls(), framebuffer_calls(), query_calls()})
       all.insert(all.end(), more.begin(), more.end());
     return all;
   }();
