@@ -5,6 +5,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/color_material.h"
 #include "state/context.h"
+#include "state/pixel_state.h"
 
 namespace pineda::gl {
 namespace {
@@ -236,8 +237,7 @@ bool material_value(Context& ctx, GLenum face, GLenum pname, glm::vec4& v) {
 void to_ints(GLenum pname, const glm::vec4& v, GLint* out) {
   const bool colour = is_colour_param(pname);
   for (int i = 0; i < param_count(pname); ++i)
-    out[i] = colour ? GLint(std::clamp(double(v[i]), -1.0, 1.0) * 2147483647.0)
-                    : GLint(std::clamp(std::round(double(v[i])), -2147483648.0, 2147483647.0));
+    out[i] = colour ? colour_int_param(v[i]) : round_int_param(v[i]);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/pixel_state.h"
 #include "state/point_sprite.h"
 
 namespace pineda::gl {
@@ -149,9 +150,9 @@ void GetTexEnviv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
   const int n = get_tex_env(ctx, target, pname, v);
   if (!n || !params) return;
   if (pname == GL_TEXTURE_ENV_COLOR)
-    for (int i = 0; i < 4; ++i) params[i] = GLint(double(v[i]) * 2147483647.0);
+    for (int i = 0; i < 4; ++i) params[i] = colour_int_param(v[i]);
   else
-    params[0] = GLint(v[0]);
+    params[0] = truncate_int_param(v[0]);
 }
 
 }  // namespace pineda::gl

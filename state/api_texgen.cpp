@@ -8,6 +8,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/enum_translate.h"
+#include "state/pixel_state.h"
 
 namespace pineda::gl {
 namespace {
@@ -83,7 +84,7 @@ void get_vector(Context& ctx, GLenum coord, GLenum pname, T* params) {
     const double v = (*plane)[i];
     // GL 1.5 section 6.1.2: floating-point state is rounded to the nearest integer.
     if constexpr (std::is_integral_v<T>)
-      params[i] = static_cast<T>(std::clamp(std::round(v), -2147483648.0, 2147483647.0));
+      params[i] = round_int_param(v);
     else
       params[i] = static_cast<T>(v);
   }

@@ -506,7 +506,7 @@ void GetTexParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params)
   if (!get_tex_parameter(ctx, target, pname, v, count, colour))
     return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target or pname is not a texture parameter");
   if (!params) return;
-  for (int i = 0; i < count; ++i) params[i] = colour ? GLint(double(v[i]) * 2147483647.0) : truncate_int_param(v[i]);
+  for (int i = 0; i < count; ++i) params[i] = colour ? colour_int_param(v[i]) : truncate_int_param(v[i]);
 }
 
 void GetTexLevelParameteriv(Context& ctx, GLenum target, GLint level, GLenum pname, GLint* params) {

@@ -24,6 +24,12 @@ inline GLint truncate_int_param(double v) {
   return std::isnan(v) ? 0 : static_cast<GLint>(std::clamp(v, -2147483648.0, 2147483647.0));
 }
 
+// A colour component in an integer query (GL 1.1 6.1.2): [-1, 1] maps linearly onto the GLint
+// range, beyond is clamped, NaN is 0.
+inline GLint colour_int_param(double v) {
+  return std::isnan(v) ? 0 : static_cast<GLint>(std::clamp(v, -1.0, 1.0) * 2147483647.0);
+}
+
 // GL_CURRENT_RASTER_*: saved with GL_CURRENT_BIT.
 struct RasterPosition {
   float window[4] = {0, 0, 0, 1};  // x, y, z in window coordinates; w is the clip w

@@ -5,6 +5,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/component_convert.h"
 #include "state/context.h"
+#include "state/pixel_state.h"
 
 namespace pineda::gl {
 namespace {
@@ -147,7 +148,7 @@ void GetVertexAttribiv(Context& ctx, GLuint index, GLenum pname, GLint* params) 
   bool is_float;
   if (!vertex_attrib_values(ctx, index, pname, v, n, is_float) || !params) return;
   for (int i = 0; i < n; ++i)
-    params[i] = is_float ? static_cast<GLint>(std::clamp(v[i], -2147483648.0, 2147483647.0)) : static_cast<GLint>(v[i]);
+    params[i] = is_float ? truncate_int_param(v[i]) : static_cast<GLint>(v[i]);
 }
 
 void GetVertexAttribPointerv(Context& ctx, GLuint index, GLenum pname, void** pointer) {

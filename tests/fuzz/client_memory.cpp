@@ -1,4 +1,7 @@
+#define GL_GLEXT_PROTOTYPES
 #include "tests/fuzz/client_memory.h"
+
+#include <GL/glext.h>
 
 #include <sys/mman.h>
 #include <unistd.h>
@@ -21,6 +24,28 @@ GuardedBytes::~GuardedBytes() { munmap(mapping_, ((kSize + page_ - 1) / page_ + 
 
 ClientMemory::ClientMemory() : feedback(4096), selection(4096) {
   for (size_t i = 0; i < arrays.size(); ++i) arrays.data()[i] = uint8_t(i * 37 + 11);
+}
+
+namespace {
+
+// Between glBegin and glEnd the query fails and leaves 0: the call is an error there (or is
+// compiled while a list is, which the client pointer path keeps in bounds too).
+bool pixel_buffer_bound(GLenum binding) {
+  GLint bound = 0;
+  glGetIntegerv(binding, &bound);
+  return bound != 0;
+}
+
+}  // namespace
+
+const void* ClientMemory::image_source(size_t footprint, bool invalid) const {
+  if (pixel_buffer_bound(GL_PIXEL_UNPACK_BUFFER_BINDING)) return reinterpret_cast<const void*>(pixel_buffer_offset);
+  return invalid || footprint <= arrays.size() ? arrays.data() : nullptr;
+}
+
+void* ClientMemory::image_destination(std::vector<uint8_t>& out) const {
+  if (pixel_buffer_bound(GL_PIXEL_PACK_BUFFER_BINDING)) return reinterpret_cast<void*>(pixel_buffer_offset);
+  return out.data();
 }
 
 size_t image_footprint(bool pack, int64_t width, int64_t height, int64_t depth) {

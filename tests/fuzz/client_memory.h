@@ -41,12 +41,15 @@ struct ClientMemory {
   std::vector<GLfloat> feedback;  // glFeedbackBuffer's, kept until the next one
   std::vector<GLuint> selection;  // glSelectBuffer's
   int calls_to_lists_in_list = 0;  // glCallList(s) compiled into the list being built
+  uintptr_t pixel_buffer_offset = 0;  // the offset pixel calls pass while a pixel buffer is bound
 
-  // Where a call reading an image of up to `footprint` bytes gets its pixels: `arrays` when it
-  // fits or when the call is invalid whatever the state (it must read nothing), else null.
-  const void* image_source(size_t footprint, bool invalid) const {
-    return invalid || footprint <= arrays.size() ? arrays.data() : nullptr;
-  }
+  // Where a call reading an image of up to `footprint` bytes gets its pixels: with a pixel
+  // unpack buffer bound, an offset into it (GL checks it); else `arrays` when it fits or when the
+  // call is invalid whatever the state (it must read nothing), else null.
+  const void* image_source(size_t footprint, bool invalid) const;
+  // Where a call writing an image gets its pixels: an offset into the bound pixel pack buffer, or
+  // `out`, which the caller sized to the image's footprint.
+  void* image_destination(std::vector<uint8_t>& out) const;
 };
 
 // An upper bound of the bytes a width x height x depth image spans from its pointer under the

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "tests/fuzz/client_arrays.h"
+
 namespace pineda::fuzz {
 namespace {
 
@@ -117,53 +119,9 @@ constexpr GLenum kGetNames[] = {
     GL_COMPRESSED_TEXTURE_FORMATS, GL_FOG_COLOR,      GL_LIGHT_MODEL_AMBIENT, GL_POLYGON_MODE,
     GL_ARRAY_BUFFER_BINDING, GL_VERTEX_ARRAY_POINTER, GL_FEEDBACK_BUFFER_SIZE, GL_MAP2_GRID_DOMAIN,
     GL_ACCUM_CLEAR_VALUE, GL_DEPTH_RANGE,             GL_SCISSOR_BOX,      GL_COLOR_WRITEMASK};
-constexpr GLenum kBufferTargets[] = {GL_ARRAY_BUFFER};  // no element array buffer: see bind_buffer
+// No element array buffer: see glBindBuffer. Pixel calls take offsets into pixel buffers (image_source).
+constexpr GLenum kBufferTargets[] = {GL_ARRAY_BUFFER, GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER};
 constexpr GLenum kBufferUsages[] = {GL_STATIC_DRAW, GL_DYNAMIC_DRAW, GL_STREAM_READ};
-
-bool buffer_bound() {
-  GLint bound = 0;
-  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &bound);
-  return bound != 0;
-}
-
-// A client array pointer: an offset into the bound buffer object (any value: GL checks it) or
-// a pointer into `arrays` from which vertices 0 to kMaxVertexIndex can be read.
-const void* array_pointer(FuzzInput& in, const ClientMemory& memory) {
-  if (buffer_bound()) return reinterpret_cast<const void*>(uintptr_t(in.integer(0, 4096)));
-  return memory.arrays.data() + in.offset(kArrayOffsetMax);
-}
-
-// Whether a client array takes its data from buffer `name`. Deleting that buffer resets the
-// array's binding to 0 (GL 1.5 2.9), and the array's offset then reads as a client pointer:
-// an application error the fuzzer must not make.
-bool array_uses_buffer(GLuint name) {
-  constexpr GLenum kBindings[] = {GL_VERTEX_ARRAY_BUFFER_BINDING,    GL_COLOR_ARRAY_BUFFER_BINDING,
-                                  GL_NORMAL_ARRAY_BUFFER_BINDING,    GL_INDEX_ARRAY_BUFFER_BINDING,
-                                  GL_EDGE_FLAG_ARRAY_BUFFER_BINDING, GL_FOG_COORD_ARRAY_BUFFER_BINDING,
-                                  GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING};
-  GLint bound = 0;
-  for (GLenum binding : kBindings) {
-    glGetIntegerv(binding, &bound);
-    if (GLuint(bound) == name) return true;
-  }
-  GLint units = 0, active = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_UNITS, &units);
-  glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &active);
-  bool used = false;
-  for (GLint u = 0; u < units && !used; ++u) {
-    glClientActiveTexture(GL_TEXTURE0 + u);
-    glGetIntegerv(GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING, &bound);
-    used = GLuint(bound) == name;
-  }
-  glClientActiveTexture(GLenum(active));
-  return used;
-}
-
-// A stride for client arrays: up to kArrayStrideMax, sometimes negative (rejected).
-GLsizei array_stride(FuzzInput& in) {
-  const GLsizei s = in.bounded_size(kArrayStrideMax / 4);
-  return s < 0 ? -4 : 4 * s;
-}
 
 // Vertex indices of a draw, all within what the client arrays hold.
 std::vector<uint8_t> index_bytes(FuzzInput& in, GLenum type, GLsizei count) {
@@ -190,6 +148,11 @@ bool may_call_lists(ClientMemory& memory) {
   if (!compiling_list()) return true;
   return memory.calls_to_lists_in_list++ == 0;
 }
+
+// The last grid step of a mesh from `first`: extremes stay (an empty range, or steps near
+// INT_MIN/INT_MAX), but at most 64 steps a side. A million-vertex mesh is an application's
+// request that takes seconds, not a bug.
+GLint mesh_end(GLint first, GLint last) { return GLint(std::min<int64_t>(last, int64_t(first) + 64)); }
 
 void tex_image_2d(FuzzInput& in, ClientMemory& memory) {
   const GLenum target = in.enumeration(kImage2DTargets);
@@ -388,14 +351,14 @@ const GlCall kCalls[] = {
        glDrawPixels(w, h, format, type, pixels);
      }},
     {"glReadPixels",
-     [](FuzzInput& in, ClientMemory&) {
+     [](FuzzInput& in, ClientMemory& memory) {
        const GLint x = in.integer(-8, 40), y = in.integer(-8, 40);
        const GLsizei w = in.bounded_size(40), h = in.bounded_size(40);
        const GLenum format = in.enumeration(kFormats), type = in.enumeration(kTypes);
        const size_t bytes = image_footprint(true, w, h, 1);
        if (bytes > (size_t(1) << 24)) return;
        std::vector<uint8_t> out(std::max<size_t>(bytes, 1));
-       glReadPixels(x, y, w, h, format, type, out.data());
+       glReadPixels(x, y, w, h, format, type, memory.image_destination(out));
      }},
     {"glCopyPixels",
      [](FuzzInput& in, ClientMemory&) {
@@ -465,7 +428,7 @@ const GlCall kCalls[] = {
                            in.integer(-8, 40), in.integer(-8, 40), in.bounded_size(40), in.bounded_size(40));
      }},
     {"glGetTexImage",
-     [](FuzzInput& in, ClientMemory&) {
+     [](FuzzInput& in, ClientMemory& memory) {
        const GLenum target = in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP_POSITIVE_X});
        const GLint level = in.integer(0, 4);
        const GLenum format = in.enumeration(kFormats), type = in.enumeration(kTypes);
@@ -476,7 +439,7 @@ const GlCall kCalls[] = {
        const size_t bytes = image_footprint(true, w, h, d);
        if (bytes > (size_t(1) << 24)) return;
        std::vector<uint8_t> out(std::max<size_t>(bytes, 1));
-       glGetTexImage(target, level, format, type, out.data());
+       glGetTexImage(target, level, format, type, memory.image_destination(out));
      }},
     {"glTexParameteri",
      [](FuzzInput& in, ClientMemory&) {
@@ -603,7 +566,10 @@ const GlCall kCalls[] = {
     {"glBindBuffer",
      // Never GL_ELEMENT_ARRAY_BUFFER: its indices would come from buffer data, and client arrays
      // read at any index past what the application holds.
-     [](FuzzInput& in, ClientMemory&) { glBindBuffer(in.enumeration(kBufferTargets), in.name()); }},
+     [](FuzzInput& in, ClientMemory& memory) {
+       memory.pixel_buffer_offset = uintptr_t(in.integer(0, 4096));
+       glBindBuffer(in.enumeration(kBufferTargets), in.name());
+     }},
     {"glBufferData",
      [](FuzzInput& in, ClientMemory& memory) {
        const GLsizeiptr size = in.bounded_size(4096);
@@ -654,8 +620,10 @@ const GlCall kCalls[] = {
      }},
     {"glEvalMesh2",
      [](FuzzInput& in, ClientMemory&) {
-       glEvalMesh2(in.enumeration({GL_POINT, GL_LINE, GL_FILL}), in.integer(-2, 16), in.integer(-2, 16),
-                   in.integer(-2, 16), in.integer(-2, 16));
+       const GLenum mode = in.enumeration({GL_POINT, GL_LINE, GL_FILL});
+       const GLint i1 = in.integer(-2, 16), i2 = mesh_end(i1, in.integer(-2, 16));
+       const GLint j1 = in.integer(-2, 16), j2 = mesh_end(j1, in.integer(-2, 16));
+       glEvalMesh2(mode, i1, i2, j1, j2);
      }},
     {"glEvalCoord2f", [](FuzzInput& in, ClientMemory&) { glEvalCoord2f(in.real(), in.real()); }},
     {"glEvalPoint1", [](FuzzInput& in, ClientMemory&) { glEvalPoint1(in.integer(-2, 16)); }},
@@ -711,6 +679,14 @@ const GlCall kCalls[] = {
 
 }  // namespace
 
-std::span<const GlCall> gl_calls() { return kCalls; }
+std::span<const GlCall> gl_calls() {
+  static const std::vector<GlCall> calls = [] {
+    std::vector<GlCall> all(std::begin(kCalls), std::end(kCalls));
+    for (std::span<const GlCall> more : {program_calls(), uniform_calls(), framebuffer_calls(), query_calls()})
+      all.insert(all.end(), more.begin(), more.end());
+    return all;
+  }();
+  return calls;
+}
 
 }  // namespace pineda::fuzz

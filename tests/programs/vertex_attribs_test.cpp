@@ -1,4 +1,6 @@
 // Generic vertex attributes: current values, arrays and their queries (GL 2.0 2.7, 2.8, 6.1.14).
+#include <limits>
+
 #include "tests/programs/program_test.h"
 
 namespace pineda::test {
@@ -40,6 +42,18 @@ TEST_F(VertexAttribsTest, CurrentValuesAndConversions) {
   glGetVertexAttribiv(7, GL_CURRENT_VERTEX_ATTRIB, i);
   EXPECT_EQ(i[0], 1);  // float values are truncated
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// An API fuzzing run found the NaN's conversion to int undefined (UBSan).
+TEST_F(VertexAttribsTest, NonFiniteCurrentValuesQueriedAsIntegers) {
+  glVertexAttrib4f(2, std::numeric_limits<float>::quiet_NaN(), 1e30f, -1e30f, -2.5f);
+  GLint i[4] = {1, 1, 1, 1};
+  glGetVertexAttribiv(2, GL_CURRENT_VERTEX_ATTRIB, i);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(i[0], 0);  // NaN
+  EXPECT_EQ(i[1], 2147483647);  // clamped to GLint
+  EXPECT_EQ(i[2], -2147483647 - 1);
+  EXPECT_EQ(i[3], -2);  // truncated
 }
 
 TEST_F(VertexAttribsTest, IndexErrors) {
