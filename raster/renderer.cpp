@@ -1,5 +1,7 @@
 #include "raster/renderer.h"
 
+#include <algorithm>
+
 #include "raster/clear.h"
 #include "raster/draw_record.h"
 #include "raster/fragment_pipeline.h"
@@ -74,6 +76,22 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
   if (scene.full()) submit();
+}
+
+void Renderer::for_each_piece(size_t count, size_t grain, const std::function<void(size_t, size_t)>& fn) {
+  if (count == 0) return;
+  Impl& r = *impl_;
+  if (r.running_started && r.pool.finished()) r.finish_running();
+  grain = std::max<size_t>(grain, 1);
+  const size_t grains = (count + grain - 1) / grain;
+  if (r.pool.threads() == 1 || r.running_started || grains < 2) return fn(0, count);
+  // A few pieces per thread, so that a thread the system delays holds up little.
+  const size_t pieces = std::min(grains, static_cast<size_t>(r.pool.threads()) * 4);
+  const size_t piece = (grains + pieces - 1) / pieces * grain;
+  r.pool.run(static_cast<int>((count + piece - 1) / piece), [&](int i) {
+    const size_t begin = static_cast<size_t>(i) * piece;
+    fn(begin, std::min(count, begin + piece));
+  });
 }
 
 void Renderer::flush() {

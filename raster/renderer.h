@@ -1,7 +1,9 @@
 // The pipeline below the API, one per context: primitive assembly, clipping, setup,
 // binning into tiles, and the deferred tile rasterization on worker threads.
 #pragma once
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -37,6 +39,12 @@ class Renderer {
   // at varyings[i * program->varying_floats()].
   void draw(const DrawState& state, Primitive mode, std::span<const ClipVertex> vertices,
             std::span<const uint32_t> indices = {}, const float* varyings = nullptr);
+
+  // Calls fn(begin, end) on pieces that cover [0, count), each a multiple of `grain` long but
+  // the last: spread over the pool's threads when none of them is rendering a scene and there
+  // are at least two pieces, otherwise at once on this thread. For per-element work whose
+  // results do not depend on the pieces (the vertex stages); fn must be safe to run in parallel.
+  void for_each_piece(size_t count, size_t grain, const std::function<void(size_t, size_t)>& fn);
 
   // Executes everything queued; afterwards the framebuffer's memory is up to date.
   void flush();

@@ -113,6 +113,10 @@ Needs needs_of(const Transform& t) {
 
 void transform_vertices(const Transform& t, std::span<const VertexInput> in, std::vector<ClipVertex>& out) {
   out.resize(in.size());
+  transform_vertices(t, in, std::span<ClipVertex>(out));
+}
+
+void transform_vertices(const Transform& t, std::span<const VertexInput> in, std::span<ClipVertex> out) {
   const Lighting& lighting = t.lighting;
   const VertexExtras& x = t.extras;
   const Needs needs = needs_of(t);

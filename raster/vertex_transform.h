@@ -77,5 +77,7 @@ struct Transform {
 
 void transform_vertices(const Transform& transform, std::span<const VertexInput> in,
                         std::vector<ClipVertex>& out);
+// As above, into out[0, in.size()) (out is at least as long as in).
+void transform_vertices(const Transform& transform, std::span<const VertexInput> in, std::span<ClipVertex> out);
 
 }  // namespace pineda::raster

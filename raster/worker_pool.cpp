@@ -79,4 +79,9 @@ void WorkerPool::wait() {
   finished_ = 0;
 }
 
+bool WorkerPool::finished() {
+  std::lock_guard lock(mutex_);
+  return finished_ == count_;
+}
+
 }  // namespace pineda::raster

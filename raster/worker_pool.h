@@ -27,6 +27,8 @@ class WorkerPool {
   // time (start after the previous job's wait).
   void start(int count, std::function<void(int)> fn);
   void wait();
+  // True when every item of the started job is finished (wait() would not block).
+  bool finished();
 
  private:
   void worker_loop();

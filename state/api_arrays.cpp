@@ -6,6 +6,7 @@
 #include <span>
 
 #include "glapi/gl_entry_points.h"
+#include "raster/renderer.h"
 #include "state/buffer_draw.h"
 #include "state/color_material.h"
 #include "state/es1/es1_enums.h"
@@ -53,6 +54,17 @@ std::span<raster::VertexInput> fetched_vertices(Context& ctx, size_t n) {
   return {ctx.fetched.data(), n};
 }
 
+// fetch_vertex of array element index_of(i) into vertices[i] for every i, in pieces on the
+// renderer's threads.
+template <typename IndexOf>
+void fetch_in_pieces(Context& ctx, std::span<raster::VertexInput> vertices, IndexOf index_of) {
+  constexpr size_t kVerticesPerPiece = 2048;
+  const Context& arrays = ctx;
+  ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) fetch_vertex(arrays, index_of(i), vertices[i]);
+  });
+}
+
 template <typename Index>
 void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {
   Index lo = indices[0], hi = indices[0];
@@ -67,12 +79,12 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
   if (range <= size_t(count) * 4) {
     // Dense indices: transform each referenced vertex once and pass the indices along.
     vertices = fetched_vertices(ctx, range);
-    for (size_t i = 0; i < range; ++i) fetch_vertex(ctx, lo + i, vertices[i]);
+    fetch_in_pieces(ctx, vertices, [lo](size_t i) { return lo + i; });
     rebased.resize(count);
     for (GLsizei i = 0; i < count; ++i) rebased[i] = uint32_t(indices[i] - lo);
   } else {
     vertices = fetched_vertices(ctx, size_t(count));
-    for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], vertices[i]);
+    fetch_in_pieces(ctx, vertices, [indices](size_t i) { return size_t(indices[i]); });
   }
   draw_vertices(ctx, mode, vertices, rebased, {}, AttribSource::Arrays);
   take_current_index(ctx, indices[count - 1]);  // GL leaves it indeterminate: the last element's
@@ -126,7 +138,7 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
   const std::span<raster::VertexInput> vertices = fetched_vertices(ctx, size_t(count));
-  for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, vertices[i]);
+  fetch_in_pieces(ctx, vertices, [first](size_t i) { return size_t(first) + i; });
   draw_vertices(ctx, mode, vertices, {}, {}, AttribSource::Arrays);
   take_current_index(ctx, size_t(first) + count - 1);  // GL leaves it indeterminate: the last element's
 }

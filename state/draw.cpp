@@ -4,6 +4,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "raster/renderer.h"
 #include "state/context.h"
 #include "state/enum_translate.h"
 #include "state/programs/program_draw.h"
@@ -70,6 +71,17 @@ int snapshot_textures(Context& ctx) {
   return used;
 }
 
+// Transform and lighting of a draw's vertices into ctx.transformed, in pieces on the renderer's
+// threads (each vertex alone: the pieces do not change a value).
+void transform_in_pieces(Context& ctx, const raster::Transform& transform, std::span<const raster::VertexInput> vertices) {
+  constexpr size_t kVerticesPerPiece = 1024;
+  ctx.transformed.resize(vertices.size());
+  const std::span<raster::ClipVertex> out(ctx.transformed);
+  ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
+    raster::transform_vertices(transform, vertices.subspan(begin, end - begin), out.subspan(begin, end - begin));
+  });
+}
+
 }  // namespace
 
 raster::ClipVertex transform_single_vertex(Context& ctx, const raster::VertexInput& vertex) {
@@ -117,7 +129,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   if (program && run_vertex_program_only(ctx, vertices, generic_source, ctx.transformed)) {
     // the vertex shader replaced transform and lighting
   } else if (materials.empty() || !ctx.lighting.enabled) {
-    raster::transform_vertices(transform, vertices, ctx.transformed);
+    transform_in_pieces(ctx, transform, vertices);
   } else {
     // Each run of vertices is lit with the material in effect when they were specified.
     ctx.transformed.resize(vertices.size());

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "raster/draw_record.h"
+#include "raster/renderer.h"
 #include "raster/shader_draw.h"
 #include "raster/shader_textures.h"
 #include "state/context.h"
@@ -111,69 +112,80 @@ std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program&
   return fetches;
 }
 
+// Vertices per piece of a draw's vertex stage on the renderer's threads: a multiple of the
+// vertices one executor run takes (Program::run_vertex_batches), big enough that a piece costs
+// far more than handing it to a thread.
+constexpr size_t kVerticesPerPiece = 1024;
+
 // Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
-// varyings into `varyings` (program.varying_floats() per vertex).
-void run_vertex_shader(const Context& ctx, const shader::Program& program, const float* uniforms,
-                       const shader::TextureAccess* textures, std::span<const raster::VertexInput> vertices,
-                       AttribSource source, bool point_size_from_shader, float fixed_point_size,
-                       std::vector<raster::ClipVertex>& out, std::vector<float>& varyings) {
+// varyings into `varyings` (program.varying_floats() per vertex). Texture lookups read `units`.
+void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
+                       const std::array<raster::TextureUnit, raster::kMaxTextureImageUnits>& units,
+                       std::span<const raster::VertexInput> vertices, AttribSource source,
+                       bool point_size_from_shader, float fixed_point_size, std::vector<raster::ClipVertex>& out,
+                       std::vector<float>& varyings) {
   const int slots = std::max(program.input_slots(), 1);
   const int nv = program.varying_floats();
   const int outputs = shader::kOutFirstVarying + nv;
   // Up to kMaxBlocksPerRun batches of 16 vertices run together (Program::run_vertex_batches).
   constexpr size_t kRunVertices = static_cast<size_t>(shader::kMaxBlocksPerRun) * kLanes;
+  static_assert(kVerticesPerPiece % kRunVertices == 0);
   const size_t in_floats = static_cast<size_t>(slots) * 4 * kLanes, out_floats = static_cast<size_t>(outputs) * kLanes;
-  std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
   out.resize(vertices.size());
   varyings.resize(vertices.size() * static_cast<size_t>(nv));
   const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
-  for (size_t first = 0; first < vertices.size(); first += kRunVertices) {
-    const size_t count = std::min(kRunVertices, vertices.size() - first);
-    const int batch_count = static_cast<int>((count + kLanes - 1) / kLanes);
-    if (count % kLanes != 0) std::fill(in.begin(), in.end(), 0.f);
-    for (size_t i = 0; i < count; ++i) {
-      const raster::VertexInput& v = vertices[first + i];
-      float* batch_in = in.data() + (i / kLanes) * in_floats;
-      const size_t lane = i % kLanes;
-      for (const InputFetch& f : fetches) {
-        float value[4];
-        if (f.builtin != shader::BuiltinAttribute::None) builtin_input(v, f.builtin, value);
-        else if (f.from_view) f.view.read(v.source, value);
-        else fetch_generic(ctx, source, v, f.location, value);
-        for (int c = 0; c < 4; ++c) batch_in[(static_cast<size_t>(f.slot) * 4 + c) * kLanes + lane] = value[c];
+  const Context& state = ctx;
+  ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
+    const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
+    std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
+    for (size_t first = begin; first < end; first += kRunVertices) {
+      const size_t count = std::min(kRunVertices, end - first);
+      const int batch_count = static_cast<int>((count + kLanes - 1) / kLanes);
+      if (count % kLanes != 0) std::fill(in.begin(), in.end(), 0.f);
+      for (size_t i = 0; i < count; ++i) {
+        const raster::VertexInput& v = vertices[first + i];
+        float* batch_in = in.data() + (i / kLanes) * in_floats;
+        const size_t lane = i % kLanes;
+        for (const InputFetch& f : fetches) {
+          float value[4];
+          if (f.builtin != shader::BuiltinAttribute::None) builtin_input(v, f.builtin, value);
+          else if (f.from_view) f.view.read(v.source, value);
+          else fetch_generic(state, source, v, f.location, value);
+          for (int c = 0; c < 4; ++c) batch_in[(static_cast<size_t>(f.slot) * 4 + c) * kLanes + lane] = value[c];
+        }
+      }
+      std::fill(result.begin(), result.end(), 0.f);
+      shader::VertexBatch batches[shader::kMaxBlocksPerRun];
+      for (int b = 0; b < batch_count; ++b) {
+        batches[b].count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes));
+        batches[b].inputs = in.data() + static_cast<size_t>(b) * in_floats;
+        batches[b].outputs = result.data() + static_cast<size_t>(b) * out_floats;
+      }
+      program.run_vertex_batches(uniforms, &textures, batches, batch_count);
+      for (size_t i = 0; i < count; ++i) {
+        const float* r = result.data() + (i / kLanes) * out_floats;
+        const size_t lane = i % kLanes;
+        raster::ClipVertex& c = out[first + i];
+        c = raster::ClipVertex{};
+        for (int k = 0; k < 4; ++k) c.clip[k] = r[static_cast<size_t>(shader::kOutPosition + k) * kLanes + lane];
+        const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
+                                     r[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
+                                     r[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
+                                     r[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
+        for (uint32_t left = planes; left; left &= left - 1) {  // GL 2.0 2.12: planes test gl_ClipVertex
+          const int p = __builtin_ctz(left);
+          c.clip_distance[p] = static_cast<float>(glm::dot(state.extras.clip_planes[p], clip_vertex));
+        }
+        c.edge_flag = vertices[first + i].edge_flag;
+        const float size = point_size_from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
+                                                  : fixed_point_size;
+        c.point_size = std::isfinite(size) ? size : 1.f;
+        float* dst = varyings.data() + (first + i) * static_cast<size_t>(nv);
+        for (int k = 0; k < nv; ++k) dst[k] = r[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
       }
     }
-    std::fill(result.begin(), result.end(), 0.f);
-    shader::VertexBatch batches[shader::kMaxBlocksPerRun];
-    for (int b = 0; b < batch_count; ++b) {
-      batches[b].count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes));
-      batches[b].inputs = in.data() + static_cast<size_t>(b) * in_floats;
-      batches[b].outputs = result.data() + static_cast<size_t>(b) * out_floats;
-    }
-    program.run_vertex_batches(uniforms, textures, batches, batch_count);
-    for (size_t i = 0; i < count; ++i) {
-      const float* r = result.data() + (i / kLanes) * out_floats;
-      const size_t lane = i % kLanes;
-      raster::ClipVertex& c = out[first + i];
-      c = raster::ClipVertex{};
-      for (int k = 0; k < 4; ++k) c.clip[k] = r[static_cast<size_t>(shader::kOutPosition + k) * kLanes + lane];
-      const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
-                                   r[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
-                                   r[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
-                                   r[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
-      for (uint32_t left = planes; left; left &= left - 1) {  // GL 2.0 2.12: planes test gl_ClipVertex
-        const int p = __builtin_ctz(left);
-        c.clip_distance[p] = static_cast<float>(glm::dot(ctx.extras.clip_planes[p], clip_vertex));
-      }
-      c.edge_flag = vertices[first + i].edge_flag;
-      const float size = point_size_from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
-                                                : fixed_point_size;
-      c.point_size = std::isfinite(size) ? size : 1.f;
-      float* dst = varyings.data() + (first + i) * static_cast<size_t>(nv);
-      for (int k = 0; k < nv; ++k) dst[k] = r[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
-    }
-  }
+  });
 }
 
 }  // namespace
@@ -259,10 +271,9 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
 
   // Vertex-shader texture lookups read the same (usable) images the fragments will.
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
-  const raster::UnitTextureAccess vertex_textures(textures_record.state.texture_units);
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), &vertex_textures, vertices, source, shader_size,
-                    ctx.draw_state.point_size, ctx.transformed, varyings);
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
+                    shader_size, ctx.draw_state.point_size, ctx.transformed, varyings);
   const raster::PointParameters& pp = state.point_params;
   for (raster::ClipVertex& v : ctx.transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
   draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
@@ -282,11 +293,10 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   raster::DrawState state = ctx.draw_state;
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
-  const raster::UnitTextureAccess vertex_textures(textures_record.state.texture_units);
   const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), &vertex_textures, vertices, source, shader_size,
-                    ctx.draw_state.point_size, out, varyings);
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
+                    shader_size, ctx.draw_state.point_size, out, varyings);
   const int nv = program.varying_floats();
   const raster::PointParameters& pp = ctx.draw_state.point_params;
   for (size_t i = 0; i < out.size(); ++i) {
