@@ -59,7 +59,7 @@ void Scene::retain_textures(const DrawRecord& draw) {
   }
 }
 
-void Scene::add_prim(const PrimSetup& prim) {
+void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int count) {
   const PixelRect r = intersect(prim.bounds, render_area());
   if (r.empty() || draws_.empty()) return;
   const uint32_t index = static_cast<uint32_t>(prim_count_);
@@ -83,21 +83,16 @@ void Scene::add_prim(const PrimSetup& prim) {
   const int planes = std::clamp(draws_.back()->planes, 0, kMaxPlanes);
   std::memcpy(static_cast<void*>(&stored), &prim, used_bytes(planes));
   stored.draw = static_cast<uint32_t>(draws_.size() - 1);
-}
-
-void Scene::add_prim(PrimSetup prim, const Plane* varying_planes, int count) {
-  if (count > 0) {
-    const size_t n = static_cast<size_t>(count);
-    if (plane_chunks_.empty() || planes_used_ + n > kPlaneChunk) {
-      plane_chunks_.push_back(std::make_unique<Plane[]>(kPlaneChunk));
-      planes_used_ = 0;
-    }
-    Plane* dst = plane_chunks_.back().get() + planes_used_;
-    std::copy(varying_planes, varying_planes + n, dst);
-    planes_used_ += n;
-    prim.varying_planes = dst;
+  if (count <= 0) return;
+  const size_t n = static_cast<size_t>(count);
+  if (plane_chunks_.empty() || planes_used_ + n > kPlaneChunk) {
+    plane_chunks_.push_back(std::make_unique<Plane[]>(kPlaneChunk));
+    planes_used_ = 0;
   }
-  add_prim(prim);
+  Plane* dst = plane_chunks_.back().get() + planes_used_;
+  std::copy(varying_planes, varying_planes + n, dst);
+  planes_used_ += n;
+  stored.varying_planes = dst;
 }
 
 void Scene::add_clear(const ClearRecord& clear) {

@@ -26,9 +26,9 @@ class Scene {
   // Primitives added afterwards belong to this draw.
   void begin_draw(DrawRecord&& draw);
   const DrawRecord& current_draw() const { return *draws_.back(); }
-  void add_prim(const PrimSetup& prim);
-  // A primitive of a programmable draw with its varying planes (copied into the scene).
-  void add_prim(PrimSetup prim, const Plane* varying_planes, int count);
+  // A programmable draw's primitives bring their varying planes (`count` of them, copied into
+  // the scene with a primitive that touches a tile).
+  void add_prim(const PrimSetup& prim, const Plane* varying_planes = nullptr, int count = 0);
   void add_clear(const ClearRecord& clear);
 
   bool empty() const { return commands_ == 0; }
