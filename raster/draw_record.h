@@ -62,6 +62,10 @@ struct DrawRecord {
   // one record per sample when they differ (alpha to coverage), else null.
   uint32_t sample_mask = ~0u;
   std::shared_ptr<const std::vector<DrawRecord>> sample_draws;
+  // A sample's record under alpha to coverage: its sample is kept where alpha >= this too,
+  // besides the application's alpha test (state.alpha_test is on, ALWAYS when GL's is off).
+  bool alpha_to_coverage = false;
+  float coverage_alpha_min = 0.f;
   // GL_SAMPLE_ALPHA_TO_ONE on a multisampled draw: alpha is 1 after the alpha test (key.extras).
   bool alpha_to_one = false;
   // Several draw buffers (Framebuffer::color_targets > 1): one record per draw buffer, each

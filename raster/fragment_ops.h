@@ -23,6 +23,14 @@ inline bool compare(CompareFunc f, T incoming, T stored) {
   return true;
 }
 
+// The alpha test of a draw whose state.alpha_test is on: its function and reference, and on a
+// sample's record under alpha to coverage (DrawRecord::alpha_to_coverage) that sample's
+// threshold. `Record` is DrawRecord (declared after this header).
+template <typename Record>
+inline bool alpha_passes(const Record& d, float alpha) {
+  return compare(d.state.alpha_func, alpha, d.alpha_ref) && (!d.alpha_to_coverage || alpha >= d.coverage_alpha_min);
+}
+
 inline uint8_t stencil_op(StencilOp op, uint8_t value, uint8_t ref) {
   switch (op) {
     case StencilOp::Keep: return value;

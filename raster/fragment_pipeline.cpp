@@ -120,7 +120,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     }
     QuadColor col = colors();
     for (int i = 0; i < 4; ++i)
-      if (!compare(s.alpha_func, col.c[3][i], d.alpha_ref)) mask &= ~(1u << i);
+      if (!alpha_passes(d, col.c[3][i])) mask &= ~(1u << i);
     if constexpr (kExtras) {
       if (d.alpha_to_one) col.c[3] = splat(1.f);
     }

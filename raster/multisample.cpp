@@ -33,21 +33,38 @@ const DrawRecord& sample_draw(const DrawRecord& draw, int sample) {
   return draw.sample_draws ? (*draw.sample_draws)[sample] : draw;
 }
 
+namespace {
+
+// A sample's alpha-to-coverage threshold, on its record and on its draw buffers' records.
+void set_coverage_alpha(DrawRecord& record, float min) {
+  record.alpha_to_coverage = true;
+  record.coverage_alpha_min = min;
+  if (!record.target_draws) return;
+  auto targets = std::make_shared<std::vector<DrawRecord>>(*record.target_draws);
+  for (DrawRecord& target : *targets) set_coverage_alpha(target, min);
+  record.target_draws = std::move(targets);
+}
+
+}  // namespace
+
 void prepare_sample_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path) {
   const MultisampleState& ms = draw.state.multisample;
   if (!ms.multisample) return;  // GL 1.5 3.2.1: the multisample fragment operations are off too
   draw.sample_mask = sample_coverage_mask(ms, fb.samples);
   // Alpha to coverage keeps round(alpha * samples) samples: sample s when alpha >= (s + 1/2) /
-  // samples, an alpha test per sample. With the application's own alpha test it is not applied.
-  if (!ms.alpha_to_coverage || draw.state.alpha_test) return;
+  // samples, an alpha test per sample, passed besides the application's own (GL 1.5 4.1.3 and
+  // 4.1.4: the same alpha decides both).
+  if (!ms.alpha_to_coverage) return;
   auto records = std::make_shared<std::vector<DrawRecord>>();
   for (int s = 0; s < fb.samples; ++s) {
     DrawState state = draw.state;
-    state.alpha_test = true;
-    state.alpha_func = CompareFunc::GreaterEqual;
-    state.alpha_ref = (s + 0.5f) / static_cast<float>(fb.samples);
+    if (!state.alpha_test) {
+      state.alpha_test = true;
+      state.alpha_func = CompareFunc::Always;
+    }
     records->push_back(make_draw_record(state, fb, path));
     records->back().sample_mask = draw.sample_mask;
+    set_coverage_alpha(records->back(), (s + 0.5f) / static_cast<float>(fb.samples));
   }
   draw.sample_draws = std::move(records);
 }

@@ -151,9 +151,7 @@ uint32_t reference_shade_quad(const DrawRecord& d, bool back_facing, const float
   for (int i = 0; i < 4; ++i) {
     if (!(quad.mask & (1u << i))) continue;
     const int px = quad.x + (i & 1), py = quad.y + (i >> 1);
-    if (d.state.alpha_test &&
-        !compare(d.state.alpha_func, static_cast<float>(color[i][3]), d.alpha_ref))
-      continue;
+    if (d.state.alpha_test && !alpha_passes(d, static_cast<float>(color[i][3]))) continue;
     if (!depth_stencil(d, back_facing, fb, px, py, quad.z[i])) continue;
     ++passed;
     if (fb.color.base && d.color_write_any) write_color(d, fb, px, py, color[i]);

@@ -228,7 +228,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
         if (d.key.extras) apply_coverage(p, q.x, y, alpha);
       }
       for (int i = 0; i < 4; ++i)
-        if (!compare(s.alpha_func, clamp01(alpha[i]), d.alpha_ref)) mask &= ~(1u << i);
+        if (!alpha_passes(d, clamp01(alpha[i]))) mask &= ~(1u << i);
     }
     if (d.alpha_to_one) col.c[3] = splat(1.f);  // after alpha to coverage (the alpha test above)
     if (!early && tests) {

@@ -265,6 +265,34 @@ TEST_F(MultisampleTest, AlphaToCoverage) {
   for (int band = 0; band < 4; ++band) EXPECT_EQ(resolved(8, 4 * band + 2)[0], expected[band]) << band;
 }
 
+// Alpha to coverage and the alpha test both apply, to the same alpha (GL 1.5 4.1.3, 4.1.4).
+TEST_F(MultisampleTest, AlphaToCoverageWithAlphaTest) {
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glEnable(GL_ALPHA_TEST);
+  const float alpha[4] = {0.1f, 0.3f, 0.5f, 0.8f};  // alpha to coverage alone: 0, 1, 2, 3 samples
+  const struct {
+    GLenum func;
+    float ref;
+    int expected[4];  // resolved red of each band
+  } cases[] = {{GL_GREATER, 0.2f, {0, 64, 128, 191}},
+               {GL_LESS, 0.6f, {0, 64, 128, 0}},
+               {GL_EQUAL, 0.5f, {0, 0, 128, 0}},
+               {GL_NOTEQUAL, 0.3f, {0, 0, 128, 191}},
+               {GL_NEVER, 0.0f, {0, 0, 0, 0}}};
+  for (const auto& c : cases) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    glAlphaFunc(c.func, c.ref);
+    for (int band = 0; band < 4; ++band) {
+      glColor4f(1, 1, 1, alpha[band]);
+      rect(0, 4 * band, 16, 4 * band + 4);
+    }
+    for (int band = 0; band < 4; ++band)
+      EXPECT_EQ(resolved(8, 4 * band + 2)[0], c.expected[band]) << "func " << c.func << ", band " << band;
+  }
+  glDisable(GL_ALPHA_TEST);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+}
+
 // GL 1.5 4.1.3: SAMPLE_ALPHA_TO_ONE sets alpha to 1 after alpha to coverage, before blending.
 TEST_F(MultisampleTest, AlphaToOne) {
   glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
@@ -305,6 +333,24 @@ TEST_F(MultisampleTest, AlphaToOneWithAFragmentShader) {
   glUseProgram(0);
   glDeleteProgram(p);
   EXPECT_EQ(resolved(8, 8), (Rgba{0, 255, 0, 255}));
+}
+
+// A fragment shader's alpha decides both tests too.
+TEST_F(MultisampleTest, AlphaToCoverageWithAlphaTestAndAFragmentShader) {
+  const GLuint p = fragment_program("void main() { gl_FragColor = vec4(0.0, 1.0, 0.0, 0.5); }");
+  glUseProgram(p);
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glEnable(GL_ALPHA_TEST);
+  glAlphaFunc(GL_LESS, 0.6f);  // passes; alpha to coverage keeps 2 of 4 samples
+  rect(0, 0, 16, 8);
+  glAlphaFunc(GL_GREATER, 0.6f);  // fails
+  rect(0, 8, 16, 16);
+  glDisable(GL_ALPHA_TEST);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glUseProgram(0);
+  glDeleteProgram(p);
+  EXPECT_EQ(resolved(8, 4), (Rgba{0, 128, 0, 64}));
+  EXPECT_EQ(resolved(8, 12), (Rgba{0, 0, 0, 0}));
 }
 
 // With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
