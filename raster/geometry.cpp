@@ -85,6 +85,8 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   line_width_ = s.line_width;
   point_size_ = derived_point_size(s.point_params, s.point_size, 0.f);
   line_smooth_ = s.line_smooth;
+  // Stippled multisampled lines keep the single-sampled shape, whose dashes the stipple counts.
+  rectangle_lines_ = scene_.framebuffer().samples > 1 && s.multisample.multisample && !s.line_stipple.enabled;
   point_smooth_ = s.point_smooth;
   point_size_per_vertex_ = s.point_params.per_vertex();
   shader_ = s.shader.get();
@@ -198,6 +200,7 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   if (!clip_line(a, b, view)) return;
   const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
   if (!has_window_position(wa) || !has_window_position(wb)) return;
+  if (rectangle_lines_) return draw_line_rectangle(wa, wb, style);
   PrimSetup prim;
   const bool covered = line_smooth_ ? setup_smooth_line(wa, wb, smooth_size(line_width_, kMaxLineWidth), params(style), prim)
                                     : setup_line(wa, wb, rounded_size(line_width_, kMaxLineWidth), params(style), prim);
@@ -214,6 +217,28 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   l.stipple_count = stipple_count_;
   stipple_count_ += l.stipple_length;
   emit(prim);
+}
+
+// A multisampled line (GL 1.5 3.4.4, whatever LINE_SMOOTH says): the rectangle of the line's
+// width centred on the segment, as two triangles, covering the samples that lie inside it. Its
+// attributes vary along the segment only, so both triangles get the same planes.
+void GeometryStage::draw_line_rectangle(const WinVert& a, const WinVert& b, const Style& style) {
+  const double dx = b.fx - a.fx, dy = b.fy - a.fy, length = std::hypot(dx, dy);
+  if (!(length > 0.0)) return;
+  const double half = smooth_size(line_width_, kMaxLineWidth) / 2.0;
+  const double nx = -dy / length * half, ny = dx / length * half;
+  WinVert corners[4] = {a, a, b, b};
+  const double side[4] = {1.0, -1.0, -1.0, 1.0};  // around the rectangle
+  for (int i = 0; i < 4; ++i) {
+    corners[i].fx += side[i] * nx;
+    corners[i].fy += side[i] * ny;
+    corners[i].x = snap(corners[i].fx);
+    corners[i].y = snap(corners[i].fy);
+  }
+  const SetupParams p = params(style);
+  PrimSetup prim;
+  if (setup_triangle(corners[0], corners[1], corners[2], p, prim)) emit(prim);
+  if (setup_triangle(corners[0], corners[2], corners[3], p, prim)) emit(prim);
 }
 
 float GeometryStage::point_size_of(const ClipVertex& v) const {

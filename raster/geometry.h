@@ -66,6 +66,7 @@ class GeometryStage final : public PrimitiveSink {
   Style style_for(const ClipVertex& provoking, bool back_facing) const;
   void emit(const PrimSetup& prim);
   void draw_line(ClipVert a, ClipVert b, const Style& style);
+  void draw_line_rectangle(const WinVert& a, const WinVert& b, const Style& style);
   void draw_point(const ClipVert& v, const Style& style, float size);
   float point_size_of(const ClipVertex& v) const;  // derived, before rounding
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
@@ -83,6 +84,7 @@ class GeometryStage final : public PrimitiveSink {
   double vp_x_ = 0, vp_y_ = 0, vp_half_w_ = 0, vp_half_h_ = 0, depth_near_ = 0, depth_far_ = 1;
   float line_width_ = 1.f, point_size_ = 1.f;  // as set (derived for points), before rounding
   bool line_smooth_ = false, point_smooth_ = false;
+  bool rectangle_lines_ = false;  // multisampled lines (draw_line_rectangle)
   bool point_size_per_vertex_ = false;
   float stipple_count_ = 0.f;  // major-axis length of the strip's lines so far (line stipple)
   std::vector<ClipVert> in_, clipped_, scratch_;

@@ -353,6 +353,39 @@ TEST_F(MultisampleTest, AlphaToCoverageWithAlphaTestAndAFragmentShader) {
   EXPECT_EQ(resolved(8, 12), (Rgba{0, 0, 0, 0}));
 }
 
+// GL 1.5 3.4.4: a multisampled line covers the samples inside the rectangle of its width
+// centred on the segment. Sample rows of the 4x pattern lie at y + 1/8, 3/8, 5/8, 7/8.
+TEST_F(MultisampleTest, LinesCoverTheSamplesOfTheirRectangle) {
+  const auto line = [](float x0, float y0, float x1, float y1) {
+    glBegin(GL_LINES);
+    glVertex2f(x0, y0);
+    glVertex2f(x1, y1);
+    glEnd();
+  };
+  glColor3f(1, 0, 0);
+  line(2, 2.5f, 14, 2.5f);  // width 1 on row 2's centre: [2, 3] holds its four samples
+  line(2, 6.0f, 14, 6.0f);  // [5.5, 6.5]: the upper two samples of row 5, the lower two of row 6
+  glLineWidth(2.0f);
+  line(2, 11.0f, 14, 11.0f);  // [10, 12]: rows 10 and 11 whole
+  glLineWidth(1.0f);
+  line(8.5f, 13, 8.5f, 15);  // vertical, on column 8's centre: rows 13 and 14 whole
+  EXPECT_EQ(resolved(8, 2), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 1), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(resolved(8, 3), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(resolved(8, 5), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(8, 6), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(8, 10), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 11), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 12), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(resolved(8, 13), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 14), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(7, 14), (Rgba{0, 0, 0, 0}));
+  // The ends: x in [2, 14] holds column 1's samples at x + 7/8 and 5/8 not, column 2's all.
+  EXPECT_EQ(resolved(1, 2), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(resolved(13, 2), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(14, 2), (Rgba{0, 0, 0, 0}));
+}
+
 // With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
 // SAMPLE_COVERAGE no longer applies.
 TEST_F(MultisampleTest, MultisampleDisabledUsesPixelCentres) {
