@@ -10,6 +10,7 @@
 
 #include "tests/fuzz/es_prototypes.h"
 #include "tests/fuzz/gl_calls.h"
+#include "tests/fuzz/object_names.h"
 
 namespace pineda::fuzz {
 namespace {
@@ -58,18 +59,6 @@ void get_tex_env(FuzzInput& in, void (*get)(GLenum, GLenum, T*)) {
 }
 
 // Each helper takes the call as a template argument: the GL 3.0 and the EXT names share it.
-template <auto Gen>
-void gen_names(FuzzInput& in, ClientMemory&) {
-  GLuint names[4];
-  Gen(in.bounded_size(4), names);
-}
-
-template <auto Delete>
-void delete_names(FuzzInput& in, ClientMemory&) {
-  const GLuint names[2] = {in.name(), in.name()};
-  Delete(in.bounded_size(2), names);
-}
-
 template <auto Bind>
 void bind_framebuffer(FuzzInput& in, ClientMemory&) {
   Bind(in.enumeration(kFramebufferTargets), in.name());
@@ -187,16 +176,16 @@ void blend_func_separate(FuzzInput& in, ClientMemory&) {
 }
 
 const GlCall kCalls[] = {
-    {"glGenFramebuffers", gen_names<glGenFramebuffers>},
-    {"glGenFramebuffersEXT", gen_names<glGenFramebuffersEXT>},
+    {"glGenFramebuffers", gen_names<glGenFramebuffers, 4>},
+    {"glGenFramebuffersEXT", gen_names<glGenFramebuffersEXT, 4>},
     {"glBindFramebuffer", bind_framebuffer<glBindFramebuffer>},
     {"glBindFramebuffer", bind_framebuffer<glBindFramebuffer>},
     {"glBindFramebufferEXT", bind_framebuffer<glBindFramebufferEXT>},
     {"glDeleteFramebuffers", delete_names<glDeleteFramebuffers>},
     {"glDeleteFramebuffersEXT", delete_names<glDeleteFramebuffersEXT>},
     {"glIsFramebuffer", [](FuzzInput& in, ClientMemory&) { glIsFramebuffer(in.name()); }},
-    {"glGenRenderbuffers", gen_names<glGenRenderbuffers>},
-    {"glGenRenderbuffersEXT", gen_names<glGenRenderbuffersEXT>},
+    {"glGenRenderbuffers", gen_names<glGenRenderbuffers, 4>},
+    {"glGenRenderbuffersEXT", gen_names<glGenRenderbuffersEXT, 4>},
     {"glBindRenderbuffer", bind_renderbuffer<glBindRenderbuffer>},
     {"glBindRenderbufferEXT", bind_renderbuffer<glBindRenderbufferEXT>},
     {"glDeleteRenderbuffers", delete_names<glDeleteRenderbuffers>},

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tests/fuzz/client_arrays.h"
+#include "tests/fuzz/object_names.h"
 
 namespace pineda::fuzz {
 namespace {
@@ -227,12 +228,6 @@ void stencil_op_separate(FuzzInput& in, ClientMemory& memory) {
   Call(in.enumeration(kFaces), in.enumeration(kStencilOps), in.enumeration(kStencilOps), in.enumeration(kStencilOps));
 }
 
-// glGen* of up to N names.
-template <auto Call, GLsizei N>
-void gen_names(FuzzInput& in, ClientMemory& memory) {
-  GLuint names[N];
-  Call(in.bounded_size(N), names);
-}
 
 template <auto Call>
 void begin_query(FuzzInput& in, ClientMemory& memory) {

@@ -12,6 +12,7 @@
 
 #include "tests/fuzz/gl_calls.h"
 #include "tests/fuzz/gl_enum_lists.h"
+#include "tests/fuzz/object_names.h"
 #include "tests/fuzz/sized_query.h"
 
 namespace pineda::fuzz {
@@ -85,12 +86,6 @@ void get_query_object(FuzzInput& in, ClientMemory&) {
   Get(query, in.enumeration({GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE}), &value);
 }
 
-template <auto Delete>
-void delete_queries(FuzzInput& in, ClientMemory&) {
-  const GLuint names[2] = {in.name(), in.name()};
-  Delete(in.bounded_size(2), names);
-}
-
 template <auto Get>
 void get_pointer(FuzzInput& in, ClientMemory&) {
   void* pointer = nullptr;
@@ -158,8 +153,8 @@ const GlCall kCalls[] = {
     {"glGetQueryivARB", get_query<glGetQueryivARB>},
     {"glGetQueryObjectiv", get_query_object<glGetQueryObjectiv>},
     {"glGetQueryObjectivARB", get_query_object<glGetQueryObjectivARB>},
-    {"glDeleteQueries", delete_queries<glDeleteQueries>},
-    {"glDeleteQueriesARB", delete_queries<glDeleteQueriesARB>},
+    {"glDeleteQueries", delete_names<glDeleteQueries>},
+    {"glDeleteQueriesARB", delete_names<glDeleteQueriesARB>},
     {"glIsEnabled", [](FuzzInput& in, ClientMemory&) { glIsEnabled(in.enumeration(kCapabilities)); }},
     {"glGetShaderPrecisionFormat",
      [](FuzzInput& in, ClientMemory&) {
