@@ -100,7 +100,8 @@ void get_map(Context& ctx, GLenum map, T* values, double normalize_max, size_t c
   void* data = values;
   if (!pack_pixels(ctx, data, table.size() * sizeof(T), client_bytes) || !data) return;
   for (size_t i = 0; i < table.size(); ++i) {
-    const double v = table[i];
+    double v = table[i];
+    if (normalize_max != 1.0 && std::isnan(v)) v = 0.0;  // as an integer NaN reads 0 (converting it is undefined)
     T out;
     if (normalize_max == 1.0) out = static_cast<T>(v);
     else if (is_index_map(map)) out = static_cast<T>(std::clamp(v, 0.0, normalize_max));

@@ -5,13 +5,15 @@
 #include <GL/glext.h>
 
 #include <climits>
+#include <cmath>
 
 namespace pineda::es1 {
 
 inline float from_fixed(GLfixed x) { return static_cast<float>(x) / 65536.f; }
 
-// Truncates toward zero; saturates outside the range.
+// Truncates toward zero; saturates outside the range; NaN is 0 (converting it is undefined).
 inline GLfixed to_fixed(double v) {
+  if (std::isnan(v)) return 0;
   const double scaled = v * 65536.0;
   if (scaled >= double(INT_MAX)) return INT_MAX;
   if (scaled <= double(INT_MIN)) return INT_MIN;

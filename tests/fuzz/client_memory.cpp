@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
+#include <limits>
 
 namespace pineda::fuzz {
 
@@ -24,6 +26,12 @@ GuardedBytes::~GuardedBytes() { munmap(mapping_, ((kSize + page_ - 1) / page_ + 
 
 ClientMemory::ClientMemory() : feedback(4096), selection(4096) {
   for (size_t i = 0; i < arrays.size(); ++i) arrays.data()[i] = uint8_t(i * 37 + 11);
+  // The byte pattern never forms a NaN or an infinite float: some floats of every 16 are, so
+  // that calls reading floats from here (glPixelMapfv, glTexParameterfv, arrays) meet them.
+  constexpr float kSpecial[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                                -1e30f};
+  for (size_t i = 0; i + 16 <= arrays.size() / sizeof(float); i += 16)
+    std::memcpy(arrays.data() + (i + 5 + i / 16 % 7) * sizeof(float), &kSpecial[i / 16 % 3], sizeof(float));
 }
 
 namespace {

@@ -24,6 +24,8 @@ class FuzzInput {
 
   bool empty() { return in_.remaining_bytes() == 0; }
   uint8_t byte() { return in_.ConsumeIntegral<uint8_t>(); }
+  // An index into a table of `size` entries (one byte, or two once the table has more than 256).
+  size_t index(size_t size) { return in_.ConsumeIntegralInRange<size_t>(0, size - 1); }
   bool boolean() { return in_.ConsumeBool(); }
 
   // One of `valid` (7 times in 8), otherwise an enum the call does not take.

@@ -1,12 +1,16 @@
-// The fuzzed framebuffer object calls (GL 3.0 / ARB_framebuffer_object as GL 2.1 exports them)
-// and the other GL 1.4-2.0 state calls the fixed-function table leaves out.
+// The fuzzed framebuffer object calls (GL 3.0 / ARB_framebuffer_object as GL 2.1 exports them,
+// and by their EXT_framebuffer_object names) and the other GL 1.4-2.0 state calls the
+// fixed-function table leaves out, with their ARB, ATI and EXT names.
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <algorithm>
 #include <vector>
 
+#include "tests/fuzz/es_prototypes.h"
 #include "tests/fuzz/gl_calls.h"
+#include "tests/fuzz/object_names.h"
 
 namespace pineda::fuzz {
 namespace {
@@ -54,76 +58,152 @@ void get_tex_env(FuzzInput& in, void (*get)(GLenum, GLenum, T*)) {
   get(target, in.enumeration(kTexEnvNames), out.data());
 }
 
+// Each helper takes the call as a template argument: the GL 3.0 and the EXT names share it.
+template <auto Bind>
+void bind_framebuffer(FuzzInput& in, ClientMemory&) {
+  Bind(in.enumeration(kFramebufferTargets), in.name());
+}
+
+template <auto Bind>
+void bind_renderbuffer(FuzzInput& in, ClientMemory&) {
+  Bind(in.enumeration({GL_RENDERBUFFER}), in.name());
+}
+
+template <auto Storage>
+void renderbuffer_storage(FuzzInput& in, ClientMemory&) {
+  const GLenum format = in.enumeration(kRenderbufferFormats);
+  const CheckedSize w = in.checked_size(40), h = in.checked_size(40);
+  Storage(in.enumeration({GL_RENDERBUFFER}), format, w.value, h.value);
+}
+
+template <auto Storage>
+void renderbuffer_storage_multisample(FuzzInput& in, ClientMemory&) {
+  const GLenum format = in.enumeration(kRenderbufferFormats);
+  const CheckedSize w = in.checked_size(40), h = in.checked_size(40);
+  Storage(in.enumeration({GL_RENDERBUFFER}), in.integer(0, 8), format, w.value, h.value);
+}
+
+template <auto Attach>
+void framebuffer_renderbuffer(FuzzInput& in, ClientMemory&) {
+  const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
+  Attach(target, attachment, in.enumeration({GL_RENDERBUFFER}), in.name());
+}
+
+template <auto Attach>
+void framebuffer_texture_1d(FuzzInput& in, ClientMemory&) {
+  const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
+  const GLuint texture = in.name();
+  Attach(target, attachment, in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D}), texture, in.integer(0, 4));
+}
+
+template <auto Attach>
 void framebuffer_texture_2d(FuzzInput& in, ClientMemory&) {
   const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
   const GLenum textarget = in.enumeration(kTextureTargets2D);
   const GLuint texture = in.name();
-  glFramebufferTexture2D(target, attachment, textarget, texture, in.integer(0, 4));
+  Attach(target, attachment, textarget, texture, in.integer(0, 4));
+}
+
+template <auto Attach>
+void framebuffer_texture_3d(FuzzInput& in, ClientMemory&) {
+  const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
+  const GLuint texture = in.name();
+  const GLint level = in.integer(0, 3);
+  Attach(target, attachment, in.enumeration({GL_TEXTURE_3D, GL_TEXTURE_2D}), texture, level, in.integer(-1, 9));
+}
+
+template <auto Check>
+void check_framebuffer_status(FuzzInput& in, ClientMemory&) {
+  Check(in.enumeration(kFramebufferTargets));
+}
+
+template <auto Blit>
+void blit_framebuffer(FuzzInput& in, ClientMemory&) {
+  const GLint sx0 = blit_coordinate(in), sy0 = blit_coordinate(in), sx1 = blit_coordinate(in),
+              sy1 = blit_coordinate(in);
+  const GLint dx0 = blit_coordinate(in), dy0 = blit_coordinate(in), dx1 = blit_coordinate(in),
+              dy1 = blit_coordinate(in);
+  const GLbitfield mask = blit_mask(in);
+  Blit(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, in.enumeration({GL_NEAREST, GL_LINEAR}));
+}
+
+template <auto Generate>
+void generate_mipmap(FuzzInput& in, ClientMemory&) {
+  Generate(in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP}));
+}
+
+template <auto Get>
+void get_attachment_parameter(FuzzInput& in, ClientMemory&) {
+  GLint v = 0;
+  const GLenum target = in.enumeration(kFramebufferTargets);
+  const GLenum attachment =
+      in.enumeration({GL_COLOR_ATTACHMENT0, GL_DEPTH_ATTACHMENT, GL_STENCIL_ATTACHMENT, GL_DEPTH_STENCIL_ATTACHMENT,
+                      GL_FRONT_LEFT, GL_BACK, GL_DEPTH, GL_STENCIL, GL_COLOR_ATTACHMENT8});
+  Get(target, attachment,
+      in.enumeration({GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                      GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
+                      GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE,
+                      GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE,
+                      GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING}),
+      &v);
+}
+
+template <auto Get>
+void get_renderbuffer_parameter(FuzzInput& in, ClientMemory&) {
+  GLint v = 0;
+  Get(in.enumeration({GL_RENDERBUFFER}),
+      in.enumeration({GL_RENDERBUFFER_WIDTH, GL_RENDERBUFFER_HEIGHT, GL_RENDERBUFFER_INTERNAL_FORMAT,
+                      GL_RENDERBUFFER_SAMPLES, GL_RENDERBUFFER_STENCIL_SIZE, GL_RENDERBUFFER_ALPHA_SIZE}),
+      &v);
+}
+
+template <auto Set>
+void draw_buffers(FuzzInput& in, ClientMemory&) {
+  GLenum bufs[9];
+  for (GLenum& b : bufs) b = in.enumeration(kColorBuffers);
+  Set(in.integer(-1, 9), bufs);
+}
+
+template <auto Set>
+void blend_equation_separate(FuzzInput& in, ClientMemory&) {
+  Set(in.enumeration(kBlendEquations), in.enumeration(kBlendEquations));
+}
+
+template <auto Set>
+void blend_func_separate(FuzzInput& in, ClientMemory&) {
+  Set(in.enumeration(kBlendFactors), in.enumeration(kBlendFactors), in.enumeration(kBlendFactors),
+      in.enumeration(kBlendFactors));
 }
 
 const GlCall kCalls[] = {
-    {"glGenFramebuffers",
-     [](FuzzInput& in, ClientMemory&) {
-       GLuint names[4];
-       glGenFramebuffers(in.bounded_size(4), names);
-     }},
-    {"glBindFramebuffer",
-     [](FuzzInput& in, ClientMemory&) { glBindFramebuffer(in.enumeration(kFramebufferTargets), in.name()); }},
-    {"glBindFramebuffer",
-     [](FuzzInput& in, ClientMemory&) { glBindFramebuffer(in.enumeration(kFramebufferTargets), in.name()); }},
-    {"glDeleteFramebuffers",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLuint names[2] = {in.name(), in.name()};
-       glDeleteFramebuffers(in.bounded_size(2), names);
-     }},
+    {"glGenFramebuffers", gen_names<glGenFramebuffers, 4>},
+    {"glGenFramebuffersEXT", gen_names<glGenFramebuffersEXT, 4>},
+    {"glBindFramebuffer", bind_framebuffer<glBindFramebuffer>},
+    {"glBindFramebuffer", bind_framebuffer<glBindFramebuffer>},
+    {"glBindFramebufferEXT", bind_framebuffer<glBindFramebufferEXT>},
+    {"glDeleteFramebuffers", delete_names<glDeleteFramebuffers>},
+    {"glDeleteFramebuffersEXT", delete_names<glDeleteFramebuffersEXT>},
     {"glIsFramebuffer", [](FuzzInput& in, ClientMemory&) { glIsFramebuffer(in.name()); }},
-    {"glGenRenderbuffers",
-     [](FuzzInput& in, ClientMemory&) {
-       GLuint names[4];
-       glGenRenderbuffers(in.bounded_size(4), names);
-     }},
-    {"glBindRenderbuffer",
-     [](FuzzInput& in, ClientMemory&) { glBindRenderbuffer(in.enumeration({GL_RENDERBUFFER}), in.name()); }},
-    {"glDeleteRenderbuffers",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLuint names[2] = {in.name(), in.name()};
-       glDeleteRenderbuffers(in.bounded_size(2), names);
-     }},
+    {"glGenRenderbuffers", gen_names<glGenRenderbuffers, 4>},
+    {"glGenRenderbuffersEXT", gen_names<glGenRenderbuffersEXT, 4>},
+    {"glBindRenderbuffer", bind_renderbuffer<glBindRenderbuffer>},
+    {"glBindRenderbufferEXT", bind_renderbuffer<glBindRenderbufferEXT>},
+    {"glDeleteRenderbuffers", delete_names<glDeleteRenderbuffers>},
+    {"glDeleteRenderbuffersEXT", delete_names<glDeleteRenderbuffersEXT>},
     {"glIsRenderbuffer", [](FuzzInput& in, ClientMemory&) { glIsRenderbuffer(in.name()); }},
-    {"glRenderbufferStorage",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum format = in.enumeration(kRenderbufferFormats);
-       const CheckedSize w = in.checked_size(40), h = in.checked_size(40);
-       glRenderbufferStorage(in.enumeration({GL_RENDERBUFFER}), format, w.value, h.value);
-     }},
-    {"glRenderbufferStorageMultisample",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum format = in.enumeration(kRenderbufferFormats);
-       const CheckedSize w = in.checked_size(40), h = in.checked_size(40);
-       glRenderbufferStorageMultisample(in.enumeration({GL_RENDERBUFFER}), in.integer(0, 8), format, w.value, h.value);
-     }},
-    {"glFramebufferRenderbuffer",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
-       glFramebufferRenderbuffer(target, attachment, in.enumeration({GL_RENDERBUFFER}), in.name());
-     }},
-    {"glFramebufferTexture2D", framebuffer_texture_2d},
-    {"glFramebufferTexture2D", framebuffer_texture_2d},
-    {"glFramebufferTexture1D",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
-       const GLuint texture = in.name();
-       glFramebufferTexture1D(target, attachment, in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D}), texture,
-                              in.integer(0, 4));
-     }},
-    {"glFramebufferTexture3D",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
-       const GLuint texture = in.name();
-       const GLint level = in.integer(0, 3);
-       glFramebufferTexture3D(target, attachment, in.enumeration({GL_TEXTURE_3D, GL_TEXTURE_2D}), texture, level,
-                              in.integer(-1, 9));
-     }},
+    {"glRenderbufferStorage", renderbuffer_storage<glRenderbufferStorage>},
+    {"glRenderbufferStorageEXT", renderbuffer_storage<glRenderbufferStorageEXT>},
+    {"glRenderbufferStorageMultisample", renderbuffer_storage_multisample<glRenderbufferStorageMultisample>},
+    {"glRenderbufferStorageMultisampleEXT", renderbuffer_storage_multisample<glRenderbufferStorageMultisampleEXT>},
+    {"glFramebufferRenderbuffer", framebuffer_renderbuffer<glFramebufferRenderbuffer>},
+    {"glFramebufferRenderbufferEXT", framebuffer_renderbuffer<glFramebufferRenderbufferEXT>},
+    {"glFramebufferTexture2D", framebuffer_texture_2d<glFramebufferTexture2D>},
+    {"glFramebufferTexture2D", framebuffer_texture_2d<glFramebufferTexture2D>},
+    {"glFramebufferTexture2DEXT", framebuffer_texture_2d<glFramebufferTexture2DEXT>},
+    {"glFramebufferTexture1D", framebuffer_texture_1d<glFramebufferTexture1D>},
+    {"glFramebufferTexture1DEXT", framebuffer_texture_1d<glFramebufferTexture1DEXT>},
+    {"glFramebufferTexture3D", framebuffer_texture_3d<glFramebufferTexture3D>},
+    {"glFramebufferTexture3DEXT", framebuffer_texture_3d<glFramebufferTexture3DEXT>},
     {"glFramebufferTextureLayer",
      [](FuzzInput& in, ClientMemory&) {
        const GLenum target = in.enumeration(kFramebufferTargets), attachment = in.enumeration(kAttachments);
@@ -131,65 +211,46 @@ const GlCall kCalls[] = {
        const GLint level = in.integer(0, 3);
        glFramebufferTextureLayer(target, attachment, texture, level, in.integer(-1, 9));
      }},
-    {"glCheckFramebufferStatus",
-     [](FuzzInput& in, ClientMemory&) { glCheckFramebufferStatus(in.enumeration(kFramebufferTargets)); }},
-    {"glBlitFramebuffer",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLint sx0 = blit_coordinate(in), sy0 = blit_coordinate(in), sx1 = blit_coordinate(in),
-                   sy1 = blit_coordinate(in);
-       const GLint dx0 = blit_coordinate(in), dy0 = blit_coordinate(in), dx1 = blit_coordinate(in),
-                   dy1 = blit_coordinate(in);
-       const GLbitfield mask = blit_mask(in);
-       glBlitFramebuffer(sx0, sy0, sx1, sy1, dx0, dy0, dx1, dy1, mask, in.enumeration({GL_NEAREST, GL_LINEAR}));
-     }},
-    {"glGenerateMipmap",
-     [](FuzzInput& in, ClientMemory&) {
-       glGenerateMipmap(in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP}));
-     }},
-    {"glGetFramebufferAttachmentParameteriv",
-     [](FuzzInput& in, ClientMemory&) {
-       GLint v = 0;
-       const GLenum target = in.enumeration(kFramebufferTargets);
-       const GLenum attachment = in.enumeration(
-           {GL_COLOR_ATTACHMENT0, GL_DEPTH_ATTACHMENT, GL_STENCIL_ATTACHMENT, GL_DEPTH_STENCIL_ATTACHMENT,
-            GL_FRONT_LEFT, GL_BACK, GL_DEPTH, GL_STENCIL, GL_COLOR_ATTACHMENT8});
-       glGetFramebufferAttachmentParameteriv(
-           target, attachment,
-           in.enumeration({GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
-                           GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
-                           GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LAYER, GL_FRAMEBUFFER_ATTACHMENT_RED_SIZE,
-                           GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE,
-                           GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING}),
-           &v);
-     }},
-    {"glGetRenderbufferParameteriv",
-     [](FuzzInput& in, ClientMemory&) {
-       GLint v = 0;
-       glGetRenderbufferParameteriv(
-           in.enumeration({GL_RENDERBUFFER}),
-           in.enumeration({GL_RENDERBUFFER_WIDTH, GL_RENDERBUFFER_HEIGHT, GL_RENDERBUFFER_INTERNAL_FORMAT,
-                           GL_RENDERBUFFER_SAMPLES, GL_RENDERBUFFER_STENCIL_SIZE, GL_RENDERBUFFER_ALPHA_SIZE}),
-           &v);
-     }},
+    {"glCheckFramebufferStatus", check_framebuffer_status<glCheckFramebufferStatus>},
+    {"glCheckFramebufferStatusEXT", check_framebuffer_status<glCheckFramebufferStatusEXT>},
+    {"glBlitFramebuffer", blit_framebuffer<glBlitFramebuffer>},
+    {"glBlitFramebufferEXT", blit_framebuffer<glBlitFramebufferEXT>},
+    {"glGenerateMipmap", generate_mipmap<glGenerateMipmap>},
+    {"glGenerateMipmapEXT", generate_mipmap<glGenerateMipmapEXT>},
+    {"glGetFramebufferAttachmentParameteriv", get_attachment_parameter<glGetFramebufferAttachmentParameteriv>},
+    {"glGetFramebufferAttachmentParameterivEXT", get_attachment_parameter<glGetFramebufferAttachmentParameterivEXT>},
+    {"glGetRenderbufferParameteriv", get_renderbuffer_parameter<glGetRenderbufferParameteriv>},
+    {"glGetRenderbufferParameterivEXT", get_renderbuffer_parameter<glGetRenderbufferParameterivEXT>},
     {"glDrawBuffer", [](FuzzInput& in, ClientMemory&) { glDrawBuffer(in.enumeration(kColorBuffers)); }},
     {"glReadBuffer", [](FuzzInput& in, ClientMemory&) { glReadBuffer(in.enumeration(kColorBuffers)); }},
-    {"glDrawBuffers(attachments)",
-     [](FuzzInput& in, ClientMemory&) {
-       GLenum bufs[9];
-       for (GLenum& b : bufs) b = in.enumeration(kColorBuffers);
-       glDrawBuffers(in.integer(-1, 9), bufs);
-     }},
-    {"glBlendEquationSeparate",
-     [](FuzzInput& in, ClientMemory&) {
-       glBlendEquationSeparate(in.enumeration(kBlendEquations), in.enumeration(kBlendEquations));
-     }},
-    {"glBlendFuncSeparate",
-     [](FuzzInput& in, ClientMemory&) {
-       glBlendFuncSeparate(in.enumeration(kBlendFactors), in.enumeration(kBlendFactors),
-                           in.enumeration(kBlendFactors), in.enumeration(kBlendFactors));
-     }},
+    {"glDrawBuffers(attachments)", draw_buffers<glDrawBuffers>},
+    {"glDrawBuffersARB", draw_buffers<glDrawBuffersARB>},
+    {"glDrawBuffersATI", draw_buffers<glDrawBuffersATI>},
+    {"glDrawBuffersEXT", draw_buffers<glDrawBuffersEXT>},
+    {"glBlendEquationSeparate", blend_equation_separate<glBlendEquationSeparate>},
+    {"glBlendEquationSeparateEXT", blend_equation_separate<glBlendEquationSeparateEXT>},
+    {"glBlendFuncSeparate", blend_func_separate<glBlendFuncSeparate>},
+    {"glBlendFuncSeparateEXT", blend_func_separate<glBlendFuncSeparateEXT>},
     {"glBlendColor", [](FuzzInput& in, ClientMemory&) { glBlendColor(in.unit(), in.unit(), in.unit(), in.unit()); }},
     {"glSampleCoverage", [](FuzzInput& in, ClientMemory&) { glSampleCoverage(in.unit(), in.boolean()); }},
+    {"glSampleCoverageARB", [](FuzzInput& in, ClientMemory&) { glSampleCoverageARB(in.unit(), in.boolean()); }},
+    {"glColorMaskIndexedEXT",
+     [](FuzzInput& in, ClientMemory&) {
+       glColorMaskIndexedEXT(GLuint(in.integer(0, 8)), in.boolean(), in.boolean(), in.boolean(), in.boolean());
+     }},
+    {"glStencilFuncSeparateATI",
+     [](FuzzInput& in, ClientMemory&) {
+       const GLenum front = in.enumeration({GL_NEVER, GL_LESS, GL_EQUAL, GL_ALWAYS});
+       glStencilFuncSeparateATI(front, in.enumeration({GL_GEQUAL, GL_NOTEQUAL, GL_ALWAYS}), in.integer(-2, 300),
+                                GLuint(in.integer(0, 255)));
+     }},
+    {"glDiscardFramebufferEXT",
+     [](FuzzInput& in, ClientMemory&) {
+       GLenum attachments[3];
+       // GL_COLOR, GL_DEPTH and GL_STENCIL are the values of GL_COLOR_EXT, GL_DEPTH_EXT and GL_STENCIL_EXT.
+       for (GLenum& a : attachments) a = in.enumeration({GL_COLOR, GL_DEPTH, GL_STENCIL, GL_COLOR_ATTACHMENT0});
+       glDiscardFramebufferEXT(in.enumeration(kFramebufferTargets), std::min(in.integer(-1, 3), 3), attachments);
+     }},
     {"glPointParameterfv",
      [](FuzzInput& in, ClientMemory& memory) {
        glPointParameterfv(in.enumeration({GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE,

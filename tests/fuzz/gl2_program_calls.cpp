@@ -101,6 +101,17 @@ void get_active(FuzzInput& in, void (*get)(GLuint, GLuint, GLsizei, GLsizei*, GL
   get(program, index, size, in.boolean() ? &length : nullptr, &elements, &type, name.data());
 }
 
+void get_attached(FuzzInput& in, void (*get)(GLuint, GLsizei, GLsizei*, GLuint*)) {
+  const GLsizei max = in.bounded_size(4);
+  std::vector<GLuint> shaders(size_t(std::max(max, 1)));
+  GLsizei count = 0;
+  get(in.name(), max, in.boolean() ? &count : nullptr, shaders.data());
+}
+
+constexpr GLenum kObjectParameters[] = {GL_OBJECT_TYPE_ARB, GL_OBJECT_SUBTYPE_ARB, GL_OBJECT_DELETE_STATUS_ARB,
+                                        GL_OBJECT_COMPILE_STATUS_ARB, GL_OBJECT_INFO_LOG_LENGTH_ARB,
+                                        GL_OBJECT_ATTACHED_OBJECTS_ARB, GL_OBJECT_ACTIVE_UNIFORMS_ARB};
+
 GLuint compiled_shader(FuzzInput& in, GLenum type, size_t first_source, size_t sources) {
   const GLuint shader = glCreateShader(type);
   const char* source = kSources[first_source + in.byte() % sources].data();
@@ -187,12 +198,53 @@ const GlCall kCalls[] = {
     {"glGetShaderSource", [](FuzzInput& in, ClientMemory&) { get_text(in, 600, glGetShaderSource); }},
     {"glGetActiveUniform", [](FuzzInput& in, ClientMemory&) { get_active(in, glGetActiveUniform); }},
     {"glGetActiveAttrib", [](FuzzInput& in, ClientMemory&) { get_active(in, glGetActiveAttrib); }},
-    {"glGetAttachedShaders",
+    {"glGetAttachedShaders", [](FuzzInput& in, ClientMemory&) { get_attached(in, glGetAttachedShaders); }},
+    // The ARB_shader_objects names (GLhandleARB is a GLuint here) and the ES 2.0 shader compiler calls.
+    {"glCreateShaderObjectARB", [](FuzzInput& in, ClientMemory&) { glCreateShaderObjectARB(pick_shader_type(in)); }},
+    {"glCreateProgramObjectARB", [](FuzzInput&, ClientMemory&) { glCreateProgramObjectARB(); }},
+    {"glShaderSourceARB",
      [](FuzzInput& in, ClientMemory&) {
-       const GLsizei max = in.bounded_size(4);
-       std::vector<GLuint> shaders(size_t(std::max(max, 1)));
-       GLsizei count = 0;
-       glGetAttachedShaders(in.name(), max, in.boolean() ? &count : nullptr, shaders.data());
+       const char* source = kSources[in.byte() % std::size(kSources)].data();
+       const GLuint shader = in.name();
+       glShaderSourceARB(shader, std::min(in.bounded_size(1), 1), &source, nullptr);
+     }},
+    {"glCompileShaderARB", [](FuzzInput& in, ClientMemory&) { glCompileShaderARB(in.name()); }},
+    {"glAttachObjectARB", [](FuzzInput& in, ClientMemory&) { glAttachObjectARB(in.name(), in.name()); }},
+    {"glDetachObjectARB", [](FuzzInput& in, ClientMemory&) { glDetachObjectARB(in.name(), in.name()); }},
+    {"glBindAttribLocationARB",
+     [](FuzzInput& in, ClientMemory&) { glBindAttribLocationARB(in.name(), GLuint(in.integer(0, 17)), pick(in, kAttribNames)); }},
+    {"glLinkProgramARB", [](FuzzInput& in, ClientMemory&) { glLinkProgramARB(in.name()); }},
+    {"glUseProgramObjectARB", [](FuzzInput& in, ClientMemory&) { glUseProgramObjectARB(in.name()); }},
+    {"glValidateProgramARB", [](FuzzInput& in, ClientMemory&) { glValidateProgramARB(in.name()); }},
+    {"glDeleteObjectARB", [](FuzzInput& in, ClientMemory&) { glDeleteObjectARB(in.name()); }},
+    {"glGetHandleARB", [](FuzzInput& in, ClientMemory&) { glGetHandleARB(in.enumeration({GL_PROGRAM_OBJECT_ARB})); }},
+    {"glGetObjectParameterivARB",
+     [](FuzzInput& in, ClientMemory&) {
+       GLint v = 0;
+       const GLuint object = in.name();
+       glGetObjectParameterivARB(object, in.enumeration(kObjectParameters), &v);
+     }},
+    {"glGetObjectParameterfvARB",
+     [](FuzzInput& in, ClientMemory&) {
+       GLfloat v = 0;
+       const GLuint object = in.name();
+       glGetObjectParameterfvARB(object, in.enumeration(kObjectParameters), &v);
+     }},
+    {"glGetInfoLogARB", [](FuzzInput& in, ClientMemory&) { get_text(in, 300, glGetInfoLogARB); }},
+    {"glGetShaderSourceARB", [](FuzzInput& in, ClientMemory&) { get_text(in, 600, glGetShaderSourceARB); }},
+    {"glGetActiveUniformARB", [](FuzzInput& in, ClientMemory&) { get_active(in, glGetActiveUniformARB); }},
+    {"glGetActiveAttribARB", [](FuzzInput& in, ClientMemory&) { get_active(in, glGetActiveAttribARB); }},
+    {"glGetAttachedObjectsARB", [](FuzzInput& in, ClientMemory&) { get_attached(in, glGetAttachedObjectsARB); }},
+    {"glGetAttribLocationARB", [](FuzzInput& in, ClientMemory&) { glGetAttribLocationARB(in.name(), pick(in, kAttribNames)); }},
+    {"glGetUniformLocationARB",
+     [](FuzzInput& in, ClientMemory&) { glGetUniformLocationARB(in.name(), pick(in, kUniformNames)); }},
+    {"glReleaseShaderCompiler", [](FuzzInput&, ClientMemory&) { glReleaseShaderCompiler(); }},
+    {"glShaderBinary",
+     [](FuzzInput& in, ClientMemory& memory) {
+       const GLuint shaders[2] = {in.name(), in.name()};
+       const GLsizei length = in.bounded_size(64);
+       glShaderBinary(std::min(in.bounded_size(2), 2), shaders, in.enumeration({GL_SHADER_BINARY_FORMAT_SPIR_V}),
+                      memory.arrays.data(), length);
      }},
 };
 

@@ -1,4 +1,4 @@
-// The fuzzed GL 2.x uniform and generic vertex attribute calls. Locations are the current
+// The fuzzed GL 2.x uniform and generic vertex attribute calls, and their ARB names. Locations are the current
 // program's (looked up by name), small numbers (some stale after a relink), -1 or extremes;
 // counts run past every array and go negative; values come from ClientMemory, which holds
 // kMaxUniformCount of the largest (mat4) uniform.
@@ -63,6 +63,29 @@ void get_vertex_attrib(FuzzInput& in, void (*get)(GLuint, GLenum, T*)) {
       out.data());
 }
 
+template <typename T>
+void get_uniform(FuzzInput& in, void (*get)(GLuint, GLint, T*)) {
+  std::vector<T> out(16);  // a mat4, the largest uniform
+  const GLuint program = in.name();
+  get(program, location(in), out.data());
+}
+
+void vertex_attrib_pointer(FuzzInput& in, ClientMemory& memory,
+                           void (*set)(GLuint, GLint, GLenum, GLboolean, GLsizei, const void*)) {
+  const GLuint index = attrib_index(in);
+  const GLint size = in.integer(1, 4);
+  const GLenum type = in.enumeration({GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
+                                      GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
+  const GLboolean normalized = in.boolean();
+  const GLsizei stride = array_stride(in);
+  set(index, size, type, normalized, stride, array_pointer(in, memory));
+}
+
+void get_vertex_attrib_pointer(FuzzInput& in, void (*get)(GLuint, GLenum, void**)) {
+  void* pointer = nullptr;
+  get(attrib_index(in), in.enumeration({GL_VERTEX_ATTRIB_ARRAY_POINTER}), &pointer);
+}
+
 const GlCall kCalls[] = {
     {"glUniform1f", [](FuzzInput& in, ClientMemory&) { glUniform1f(location(in), in.real()); }},
     {"glUniform2f", [](FuzzInput& in, ClientMemory&) { glUniform2f(location(in), in.real(), in.real()); }},
@@ -94,18 +117,8 @@ const GlCall kCalls[] = {
     {"glUniformMatrix4x2fv", [](FuzzInput& in, ClientMemory& memory) { uniform_matrix(in, memory, glUniformMatrix4x2fv); }},
     {"glUniformMatrix3x4fv", [](FuzzInput& in, ClientMemory& memory) { uniform_matrix(in, memory, glUniformMatrix3x4fv); }},
     {"glUniformMatrix4x3fv", [](FuzzInput& in, ClientMemory& memory) { uniform_matrix(in, memory, glUniformMatrix4x3fv); }},
-    {"glGetUniformfv",
-     [](FuzzInput& in, ClientMemory&) {
-       std::vector<GLfloat> out(16);  // a mat4, the largest uniform
-       const GLuint program = in.name();
-       glGetUniformfv(program, location(in), out.data());
-     }},
-    {"glGetUniformiv",
-     [](FuzzInput& in, ClientMemory&) {
-       std::vector<GLint> out(16);
-       const GLuint program = in.name();
-       glGetUniformiv(program, location(in), out.data());
-     }},
+    {"glGetUniformfv", [](FuzzInput& in, ClientMemory&) { get_uniform(in, glGetUniformfv); }},
+    {"glGetUniformiv", [](FuzzInput& in, ClientMemory&) { get_uniform(in, glGetUniformiv); }},
     {"glVertexAttrib1f", [](FuzzInput& in, ClientMemory&) { glVertexAttrib1f(attrib_index(in), in.real()); }},
     {"glVertexAttrib4f",
      [](FuzzInput& in, ClientMemory&) {
@@ -116,24 +129,33 @@ const GlCall kCalls[] = {
        glVertexAttrib4fv(attrib_index(in), values<GLfloat>(memory) + in.offset(64));
      }},
     {"glVertexAttribPointer",
-     [](FuzzInput& in, ClientMemory& memory) {
-       const GLuint index = attrib_index(in);
-       const GLint size = in.integer(1, 4);
-       const GLenum type = in.enumeration({GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
-                                           GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE});
-       const GLboolean normalized = in.boolean();
-       const GLsizei stride = array_stride(in);
-       glVertexAttribPointer(index, size, type, normalized, stride, array_pointer(in, memory));
-     }},
+     [](FuzzInput& in, ClientMemory& memory) { vertex_attrib_pointer(in, memory, glVertexAttribPointer); }},
     {"glEnableVertexAttribArray", [](FuzzInput& in, ClientMemory&) { glEnableVertexAttribArray(attrib_index(in)); }},
     {"glDisableVertexAttribArray", [](FuzzInput& in, ClientMemory&) { glDisableVertexAttribArray(attrib_index(in)); }},
     {"glGetVertexAttribfv", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib(in, glGetVertexAttribfv); }},
     {"glGetVertexAttribiv", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib(in, glGetVertexAttribiv); }},
     {"glGetVertexAttribPointerv",
-     [](FuzzInput& in, ClientMemory&) {
-       void* pointer = nullptr;
-       glGetVertexAttribPointerv(attrib_index(in), in.enumeration({GL_VERTEX_ATTRIB_ARRAY_POINTER}), &pointer);
-     }},
+     [](FuzzInput& in, ClientMemory&) { get_vertex_attrib_pointer(in, glGetVertexAttribPointerv); }},
+    // The ARB_shader_objects and ARB_vertex_shader names of the same calls.
+    {"glUniform1fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform1fvARB); }},
+    {"glUniform2fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform2fvARB); }},
+    {"glUniform3fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform3fvARB); }},
+    {"glUniform4fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform4fvARB); }},
+    {"glUniform1ivARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform1ivARB); }},
+    {"glUniform2ivARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform2ivARB); }},
+    {"glUniform3ivARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform3ivARB); }},
+    {"glUniform4ivARB", [](FuzzInput& in, ClientMemory& memory) { uniform_vector(in, memory, glUniform4ivARB); }},
+    {"glUniformMatrix2fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_matrix(in, memory, glUniformMatrix2fvARB); }},
+    {"glUniformMatrix3fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_matrix(in, memory, glUniformMatrix3fvARB); }},
+    {"glUniformMatrix4fvARB", [](FuzzInput& in, ClientMemory& memory) { uniform_matrix(in, memory, glUniformMatrix4fvARB); }},
+    {"glGetUniformfvARB", [](FuzzInput& in, ClientMemory&) { get_uniform(in, glGetUniformfvARB); }},
+    {"glGetUniformivARB", [](FuzzInput& in, ClientMemory&) { get_uniform(in, glGetUniformivARB); }},
+    {"glGetVertexAttribdv", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib(in, glGetVertexAttribdv); }},
+    {"glGetVertexAttribdvARB", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib(in, glGetVertexAttribdvARB); }},
+    {"glGetVertexAttribfvARB", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib(in, glGetVertexAttribfvARB); }},
+    {"glGetVertexAttribivARB", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib(in, glGetVertexAttribivARB); }},
+    {"glVertexAttribPointerARB", [](FuzzInput& in, ClientMemory& memory) { vertex_attrib_pointer(in, memory, glVertexAttribPointerARB); }},
+    {"glGetVertexAttribPointervARB", [](FuzzInput& in, ClientMemory&) { get_vertex_attrib_pointer(in, glGetVertexAttribPointervARB); }},
 };
 
 }  // namespace

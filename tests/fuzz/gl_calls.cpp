@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tests/fuzz/client_arrays.h"
+#include "tests/fuzz/object_names.h"
 
 namespace pineda::fuzz {
 namespace {
@@ -177,6 +178,122 @@ void tex_image_3d(FuzzInput& in, ClientMemory& memory) {
   glTexImage3D(target, level, internal_format, w.value, h.value, d.value, border, format, type, pixels);
 }
 
+// The calls that have other names (ARB, EXT, ATI) take the call as a template argument.
+template <auto Call>
+void active_texture(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration({GL_TEXTURE0, GL_TEXTURE1, GL_TEXTURE3, GL_TEXTURE4}));
+}
+
+template <auto Call>
+void client_active_texture(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration({GL_TEXTURE0, GL_TEXTURE2, GL_TEXTURE5}));
+}
+
+template <auto Call>
+void array_element(FuzzInput& in, ClientMemory& memory) {
+  Call(std::min(in.integer(-1, kMaxVertexIndex), kMaxVertexIndex));
+}
+
+template <auto Call>
+void draw_arrays(FuzzInput& in, ClientMemory& memory) {
+  const GLenum mode = in.enumeration(kPrimitives);
+  const GLint first = std::min(in.integer(-1, 64), 64);
+  const GLsizei count = std::min(in.bounded_size(64), kMaxVertexIndex - 64);
+  Call(mode, first, count);
+}
+
+template <auto Call>
+void draw_range_elements(FuzzInput& in, ClientMemory& memory) {
+  const GLenum mode = in.enumeration(kPrimitives), type = in.enumeration(kIndexTypes);
+  const GLuint start = GLuint(in.integer(0, 100)), end = GLuint(in.integer(0, 1000));
+  const GLsizei count = in.bounded_size(64);
+  const std::vector<uint8_t> indices = index_bytes(in, type, count);
+  Call(mode, start, end, count, type, indices.data());
+}
+
+template <auto Call>
+void multi_draw_arrays(FuzzInput& in, ClientMemory& memory) {
+  const GLint first[3] = {in.integer(0, 64) & 63, in.integer(0, 64) & 63, in.integer(0, 64) & 63};
+  const GLsizei count[3] = {in.bounded_size(64), in.bounded_size(64), in.bounded_size(64)};
+  Call(in.enumeration(kPrimitives), first, count, std::min(in.bounded_size(3), 3));
+}
+
+template <auto Call>
+void blend_equation(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration({GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX}));
+}
+
+template <auto Call>
+void stencil_op_separate(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration(kFaces), in.enumeration(kStencilOps), in.enumeration(kStencilOps), in.enumeration(kStencilOps));
+}
+
+
+template <auto Call>
+void begin_query(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration({GL_SAMPLES_PASSED}), in.name());
+}
+
+template <auto Call>
+void end_query(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration({GL_SAMPLES_PASSED}));
+}
+
+template <auto Call>
+void get_query_objectuiv(FuzzInput& in, ClientMemory& memory) {
+  GLuint v = 0;
+  Call(in.name(), in.enumeration({GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE}), &v);
+}
+
+
+// Never GL_ELEMENT_ARRAY_BUFFER: its indices would come from buffer data, and client arrays
+// read at any index past what the application holds.
+template <auto Call>
+void bind_buffer(FuzzInput& in, ClientMemory& memory) {
+  memory.pixel_buffer_offset = uintptr_t(in.integer(0, 4096));
+  Call(in.enumeration(kBufferTargets), in.name());
+}
+
+template <auto Call>
+void buffer_data(FuzzInput& in, ClientMemory& memory) {
+  const GLsizeiptr size = in.bounded_size(4096);
+  Call(in.enumeration(kBufferTargets), size, in.boolean() ? memory.arrays.data() : nullptr,
+               in.enumeration(kBufferUsages));
+}
+
+template <auto Call>
+void buffer_sub_data(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration(kBufferTargets), in.integer(-1, 4096), in.bounded_size(4096), memory.arrays.data());
+}
+
+template <auto Call>
+void get_buffer_sub_data(FuzzInput& in, ClientMemory& memory) {
+  std::vector<uint8_t> out(4096);
+  Call(in.enumeration(kBufferTargets), in.integer(-1, 4096), in.bounded_size(4096), out.data());
+}
+
+template <auto Call>
+void map_buffer(FuzzInput& in, ClientMemory& memory) {
+  const GLenum target = in.enumeration(kBufferTargets);
+  void* p = Call(target, in.enumeration({GL_READ_ONLY, GL_WRITE_ONLY, GL_READ_WRITE}));
+  GLint size = 0;
+  glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
+  if (p && size > 0) static_cast<uint8_t*>(p)[size - 1] ^= 1;
+}
+
+template <auto Call>
+void unmap_buffer(FuzzInput& in, ClientMemory& memory) {
+  Call(in.enumeration(kBufferTargets));
+}
+
+template <auto Call>
+void delete_buffers(FuzzInput& in, ClientMemory& memory) {
+  GLuint names[2] = {in.name(), in.name()};
+  for (GLuint& name : names)
+    if (name != 0 && array_uses_buffer(name)) name = 0;  // 0 is skipped
+  Call(in.bounded_size(2), names);
+}
+
 const GlCall kCalls[] = {
     {"glEnable", [](FuzzInput& in, ClientMemory&) { glEnable(in.enumeration(kCapabilities)); }},
     {"glDisable", [](FuzzInput& in, ClientMemory&) { glDisable(in.enumeration(kCapabilities)); }},
@@ -227,10 +344,8 @@ const GlCall kCalls[] = {
      [](FuzzInput&, ClientMemory& memory) { glLoadMatrixf(reinterpret_cast<const GLfloat*>(memory.arrays.data())); }},
     {"glBlendFunc",
      [](FuzzInput& in, ClientMemory&) { glBlendFunc(in.enumeration(kBlendFactors), in.enumeration(kBlendFactors)); }},
-    {"glBlendEquation",
-     [](FuzzInput& in, ClientMemory&) {
-       glBlendEquation(in.enumeration({GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX}));
-     }},
+    {"glBlendEquation", blend_equation<glBlendEquation>},
+    {"glBlendEquationEXT", blend_equation<glBlendEquationEXT>},
     {"glDepthFunc", [](FuzzInput& in, ClientMemory&) { glDepthFunc(in.enumeration(kCompare)); }},
     {"glAlphaFunc", [](FuzzInput& in, ClientMemory&) { glAlphaFunc(in.enumeration(kCompare), in.unit()); }},
     {"glStencilFunc",
@@ -246,11 +361,8 @@ const GlCall kCalls[] = {
        glStencilFuncSeparate(in.enumeration(kFaces), in.enumeration(kCompare), in.integer(-2, 300),
                              GLuint(in.integer(0, 255)));
      }},
-    {"glStencilOpSeparate",
-     [](FuzzInput& in, ClientMemory&) {
-       glStencilOpSeparate(in.enumeration(kFaces), in.enumeration(kStencilOps), in.enumeration(kStencilOps),
-                           in.enumeration(kStencilOps));
-     }},
+    {"glStencilOpSeparate", stencil_op_separate<glStencilOpSeparate>},
+    {"glStencilOpSeparateATI", stencil_op_separate<glStencilOpSeparateATI>},
     {"glStencilMaskSeparate",
      [](FuzzInput& in, ClientMemory&) { glStencilMaskSeparate(in.enumeration(kFaces), GLuint(in.integer(0, 255))); }},
     {"glDrawBuffers",
@@ -382,10 +494,10 @@ const GlCall kCalls[] = {
        const GLuint names[2] = {in.name(), in.name()};
        glDeleteTextures(in.bounded_size(2), names);
      }},
-    {"glActiveTexture",
-     [](FuzzInput& in, ClientMemory&) { glActiveTexture(in.enumeration({GL_TEXTURE0, GL_TEXTURE1, GL_TEXTURE3, GL_TEXTURE4})); }},
-    {"glClientActiveTexture",
-     [](FuzzInput& in, ClientMemory&) { glClientActiveTexture(in.enumeration({GL_TEXTURE0, GL_TEXTURE2, GL_TEXTURE5})); }},
+    {"glActiveTexture", active_texture<glActiveTexture>},
+    {"glActiveTextureARB", active_texture<glActiveTextureARB>},
+    {"glClientActiveTexture", client_active_texture<glClientActiveTexture>},
+    {"glClientActiveTextureARB", client_active_texture<glClientActiveTextureARB>},
     {"glTexImage1D",
      [](FuzzInput& in, ClientMemory& memory) {
        const GLenum target = in.enumeration(kImage1DTargets);
@@ -529,14 +641,10 @@ const GlCall kCalls[] = {
      }},
     {"glEnableClientState", [](FuzzInput& in, ClientMemory&) { glEnableClientState(in.enumeration(kClientArrays)); }},
     {"glDisableClientState", [](FuzzInput& in, ClientMemory&) { glDisableClientState(in.enumeration(kClientArrays)); }},
-    {"glArrayElement", [](FuzzInput& in, ClientMemory&) { glArrayElement(std::min(in.integer(-1, kMaxVertexIndex), kMaxVertexIndex)); }},
-    {"glDrawArrays",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum mode = in.enumeration(kPrimitives);
-       const GLint first = std::min(in.integer(-1, 64), 64);
-       const GLsizei count = std::min(in.bounded_size(64), kMaxVertexIndex - 64);
-       glDrawArrays(mode, first, count);
-     }},
+    {"glArrayElement", array_element<glArrayElement>},
+    {"glArrayElementEXT", array_element<glArrayElementEXT>},
+    {"glDrawArrays", draw_arrays<glDrawArrays>},
+    {"glDrawArraysEXT", draw_arrays<glDrawArraysEXT>},
     {"glDrawElements",
      [](FuzzInput& in, ClientMemory&) {
        const GLenum mode = in.enumeration(kPrimitives), type = in.enumeration(kIndexTypes);
@@ -544,63 +652,26 @@ const GlCall kCalls[] = {
        const std::vector<uint8_t> indices = index_bytes(in, type, count);
        glDrawElements(mode, count, type, indices.data());
      }},
-    {"glDrawRangeElements",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum mode = in.enumeration(kPrimitives), type = in.enumeration(kIndexTypes);
-       const GLuint start = GLuint(in.integer(0, 100)), end = GLuint(in.integer(0, 1000));
-       const GLsizei count = in.bounded_size(64);
-       const std::vector<uint8_t> indices = index_bytes(in, type, count);
-       glDrawRangeElements(mode, start, end, count, type, indices.data());
-     }},
-    {"glMultiDrawArrays",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLint first[3] = {in.integer(0, 64) & 63, in.integer(0, 64) & 63, in.integer(0, 64) & 63};
-       const GLsizei count[3] = {in.bounded_size(64), in.bounded_size(64), in.bounded_size(64)};
-       glMultiDrawArrays(in.enumeration(kPrimitives), first, count, std::min(in.bounded_size(3), 3));
-     }},
-    {"glGenBuffers",
-     [](FuzzInput& in, ClientMemory&) {
-       GLuint names[8];
-       glGenBuffers(in.bounded_size(8), names);
-     }},
-    {"glBindBuffer",
-     // Never GL_ELEMENT_ARRAY_BUFFER: its indices would come from buffer data, and client arrays
-     // read at any index past what the application holds.
-     [](FuzzInput& in, ClientMemory& memory) {
-       memory.pixel_buffer_offset = uintptr_t(in.integer(0, 4096));
-       glBindBuffer(in.enumeration(kBufferTargets), in.name());
-     }},
-    {"glBufferData",
-     [](FuzzInput& in, ClientMemory& memory) {
-       const GLsizeiptr size = in.bounded_size(4096);
-       glBufferData(in.enumeration(kBufferTargets), size, in.boolean() ? memory.arrays.data() : nullptr,
-                    in.enumeration(kBufferUsages));
-     }},
-    {"glBufferSubData",
-     [](FuzzInput& in, ClientMemory& memory) {
-       glBufferSubData(in.enumeration(kBufferTargets), in.integer(-1, 4096), in.bounded_size(4096), memory.arrays.data());
-     }},
-    {"glGetBufferSubData",
-     [](FuzzInput& in, ClientMemory&) {
-       std::vector<uint8_t> out(4096);
-       glGetBufferSubData(in.enumeration(kBufferTargets), in.integer(-1, 4096), in.bounded_size(4096), out.data());
-     }},
-    {"glMapBuffer",
-     [](FuzzInput& in, ClientMemory&) {
-       const GLenum target = in.enumeration(kBufferTargets);
-       void* p = glMapBuffer(target, in.enumeration({GL_READ_ONLY, GL_WRITE_ONLY, GL_READ_WRITE}));
-       GLint size = 0;
-       glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
-       if (p && size > 0) static_cast<uint8_t*>(p)[size - 1] ^= 1;
-     }},
-    {"glUnmapBuffer", [](FuzzInput& in, ClientMemory&) { glUnmapBuffer(in.enumeration(kBufferTargets)); }},
-    {"glDeleteBuffers",
-     [](FuzzInput& in, ClientMemory&) {
-       GLuint names[2] = {in.name(), in.name()};
-       for (GLuint& name : names)
-         if (name != 0 && array_uses_buffer(name)) name = 0;  // 0 is skipped
-       glDeleteBuffers(in.bounded_size(2), names);
-     }},
+    {"glDrawRangeElements", draw_range_elements<glDrawRangeElements>},
+    {"glDrawRangeElementsEXT", draw_range_elements<glDrawRangeElementsEXT>},
+    {"glMultiDrawArrays", multi_draw_arrays<glMultiDrawArrays>},
+    {"glMultiDrawArraysEXT", multi_draw_arrays<glMultiDrawArraysEXT>},
+    {"glGenBuffers", gen_names<glGenBuffers, 8>},
+    {"glGenBuffersARB", gen_names<glGenBuffersARB, 8>},
+    {"glBindBuffer", bind_buffer<glBindBuffer>},
+    {"glBindBufferARB", bind_buffer<glBindBufferARB>},
+    {"glBufferData", buffer_data<glBufferData>},
+    {"glBufferDataARB", buffer_data<glBufferDataARB>},
+    {"glBufferSubData", buffer_sub_data<glBufferSubData>},
+    {"glBufferSubDataARB", buffer_sub_data<glBufferSubDataARB>},
+    {"glGetBufferSubData", get_buffer_sub_data<glGetBufferSubData>},
+    {"glGetBufferSubDataARB", get_buffer_sub_data<glGetBufferSubDataARB>},
+    {"glMapBuffer", map_buffer<glMapBuffer>},
+    {"glMapBufferARB", map_buffer<glMapBufferARB>},
+    {"glUnmapBuffer", unmap_buffer<glUnmapBuffer>},
+    {"glUnmapBufferARB", unmap_buffer<glUnmapBufferARB>},
+    {"glDeleteBuffers", delete_buffers<glDeleteBuffers>},
+    {"glDeleteBuffersARB", delete_buffers<glDeleteBuffersARB>},
     {"glMap1f",
      [](FuzzInput& in, ClientMemory& memory) {
        // stride * order floats are read: at most 40 * 31 of the 16384 floats there.
@@ -649,18 +720,14 @@ const GlCall kCalls[] = {
     {"glPopAttrib", [](FuzzInput&, ClientMemory&) { glPopAttrib(); }},
     {"glPushClientAttrib", [](FuzzInput&, ClientMemory&) { glPushClientAttrib(GL_CLIENT_ALL_ATTRIB_BITS); }},
     {"glPopClientAttrib", [](FuzzInput&, ClientMemory&) { glPopClientAttrib(); }},
-    {"glGenQueries",
-     [](FuzzInput& in, ClientMemory&) {
-       GLuint names[4];
-       glGenQueries(in.bounded_size(4), names);
-     }},
-    {"glBeginQuery", [](FuzzInput& in, ClientMemory&) { glBeginQuery(in.enumeration({GL_SAMPLES_PASSED}), in.name()); }},
-    {"glEndQuery", [](FuzzInput& in, ClientMemory&) { glEndQuery(in.enumeration({GL_SAMPLES_PASSED})); }},
-    {"glGetQueryObjectuiv",
-     [](FuzzInput& in, ClientMemory&) {
-       GLuint v = 0;
-       glGetQueryObjectuiv(in.name(), in.enumeration({GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE}), &v);
-     }},
+    {"glGenQueries", gen_names<glGenQueries, 4>},
+    {"glGenQueriesARB", gen_names<glGenQueriesARB, 4>},
+    {"glBeginQuery", begin_query<glBeginQuery>},
+    {"glBeginQueryARB", begin_query<glBeginQueryARB>},
+    {"glEndQuery", end_query<glEndQuery>},
+    {"glEndQueryARB", end_query<glEndQueryARB>},
+    {"glGetQueryObjectuiv", get_query_objectuiv<glGetQueryObjectuiv>},
+    {"glGetQueryObjectuivARB", get_query_objectuiv<glGetQueryObjectuivARB>},
     {"glGetFloatv",
      [](FuzzInput& in, ClientMemory&) {
        GLfloat out[64];
@@ -682,7 +749,9 @@ const GlCall kCalls[] = {
 std::span<const GlCall> gl_calls() {
   static const std::vector<GlCall> calls = [] {
     std::vector<GlCall> all(std::begin(kCalls), std::end(kCalls));
-    for (std::span<const GlCall> more : {program_calls(), uniform_calls(), framebuffer_calls(), query_calls()})
+    for (std::span<const GlCall> more :
+         {program_calls(), uniform_calls(), framebuffer_calls(), query_calls(), variant_calls(), es1_calls(),
+          get_calls(), texture_image_calls(), parameter_calls(), debug_calls(), robustness_calls(), vertex_array_ext_calls(), egl_calls()})
       all.insert(all.end(), more.begin(), more.end());
     return all;
   }();

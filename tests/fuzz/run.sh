@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs each fuzz target (clang, libFuzzer, ASan + UBSan) for SECONDS seconds from its committed
-# seed corpus (tests/fuzz/corpus/<target>/): api (GL 1.x and 2.1 calls, tests/fuzz/api_fuzzer.cpp) and glsl
+# seed corpus (tests/fuzz/corpus/<target>/): api (every exported GL entry point, OpenGL ES 1.1's
+# among them, and every EGL entry point, tests/fuzz/api_fuzzer.cpp and gl_calls.h) and glsl
 # (shaders compiled, linked and drawn with, tests/fuzz/glsl_fuzzer.cpp, with tests/fuzz/glsl.dict).
 # The build is PINEDA_FUZZ_BUILD when that is already configured with PINEDA_FUZZ=ON (scripts/test.sh
 # passes its sanitizer build), otherwise build-fuzz, configured here without the tests.

@@ -1,6 +1,7 @@
 // Integer queries of float state that GL stores as given, NaN among it: NaN reads as 0 and
 // values beyond GLint are clamped, never converted with undefined behaviour. The API fuzzer
 // found each of these (UBSan); its inputs are seeds in tests/fuzz/corpus/api/.
+#include <cmath>
 #include <limits>
 
 #include "tests/e2e/support/gl_test.h"
@@ -80,6 +81,30 @@ TEST_F(NanIntegerQueriesTest, TextureBorderColour) {
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, v);
   EXPECT_EQ(v[0], 0);
   EXPECT_EQ(v[1], 2147483647);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Found by reading the code after the fuzzer's new glGetPixelMapuiv/usv entries: an index map
+// holds its values as given, so a NaN index converted to GLuint or GLushort.
+TEST_F(NanIntegerQueriesTest, PixelMaps) {
+  const GLfloat indices[2] = {kNaN, 1e30f};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_I, 2, indices);
+  GLuint ui[2] = {1, 1};
+  glGetPixelMapuiv(GL_PIXEL_MAP_I_TO_I, ui);
+  EXPECT_EQ(ui[0], 0u);
+  EXPECT_EQ(ui[1], 4294967295u);
+  GLushort us[2] = {1, 1};
+  glGetPixelMapusv(GL_PIXEL_MAP_I_TO_I, us);
+  EXPECT_EQ(us[0], 0);
+  EXPECT_EQ(us[1], 65535);
+  GLfloat f[2] = {1, 1};
+  glGetPixelMapfv(GL_PIXEL_MAP_I_TO_I, f);
+  EXPECT_TRUE(std::isnan(f[0]));  // the float query returns the value as given
+  const GLfloat colours[2] = {kNaN, 0.5f};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 2, colours);
+  glGetPixelMapuiv(GL_PIXEL_MAP_I_TO_R, ui);
+  EXPECT_EQ(ui[0], 0u);
+  EXPECT_EQ(ui[1], 2147483648u);  // 0.5 of the range, rounded
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
