@@ -1,6 +1,10 @@
 #include "raster/renderer.h"
 
 #include <algorithm>
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#define PINEDA_HAS_MXCSR 1
+#endif
 
 #include "raster/clear.h"
 #include "raster/draw_record.h"
@@ -88,9 +92,21 @@ void Renderer::for_each_piece(size_t count, size_t grain, const std::function<vo
   // A few pieces per thread, so that a thread the system delays holds up little.
   const size_t pieces = std::min(grains, static_cast<size_t>(r.pool.threads()) * 4);
   const size_t piece = (grains + pieces - 1) / pieces * grain;
+#ifdef PINEDA_HAS_MXCSR
+  // Every piece computes under the caller's floating-point modes (rounding, flush to zero),
+  // as the caller alone would.
+  const unsigned caller_modes = _mm_getcsr();
+#endif
   r.pool.run(static_cast<int>((count + piece - 1) / piece), [&](int i) {
+#ifdef PINEDA_HAS_MXCSR
+    const unsigned own_modes = _mm_getcsr();
+    _mm_setcsr(caller_modes);
+#endif
     const size_t begin = static_cast<size_t>(i) * piece;
     fn(begin, std::min(count, begin + piece));
+#ifdef PINEDA_HAS_MXCSR
+    _mm_setcsr(own_modes);
+#endif
   });
 }
 

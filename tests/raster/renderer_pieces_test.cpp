@@ -1,11 +1,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <mutex>
+#include <set>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "raster/renderer.h"
+
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 namespace pineda::raster {
 namespace {
@@ -55,6 +62,29 @@ TEST(RendererPieces, CoverTheRangeOnceInWholeGrains) {
       }
   }
 }
+
+#if defined(__SSE__) || defined(__x86_64__)
+// The pieces compute as the caller would: under its floating-point modes, on every thread.
+TEST(RendererPieces, RunUnderTheCallersFloatingPointModes) {
+  Renderer renderer(2);
+  const unsigned saved = _mm_getcsr();
+  const unsigned modes = ((saved | 0x8040u) & ~0x6000u) | 0x2000u;  // flush to zero, denormals are zero, round down
+  _mm_setcsr(modes);
+  std::mutex mutex;
+  std::vector<unsigned> seen;
+  std::set<std::thread::id> threads;
+  renderer.for_each_piece(8192, 64, [&](size_t, size_t) {
+    const unsigned piece_modes = _mm_getcsr();
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // so that both threads take pieces
+    std::lock_guard lock(mutex);
+    seen.push_back(piece_modes);
+    threads.insert(std::this_thread::get_id());
+  });
+  _mm_setcsr(saved);
+  ASSERT_EQ(threads.size(), 2u);
+  for (const unsigned m : seen) EXPECT_EQ(m & ~0x3Fu, modes & ~0x3Fu);  // the exception flags aside
+}
+#endif
 
 }  // namespace
 }  // namespace pineda::raster
