@@ -59,6 +59,23 @@ void Scene::retain_textures(const DrawRecord& draw) {
   }
 }
 
+namespace {
+
+// The first `bytes` of `from` into `to`, in whole 16-byte pieces (sizeof(PrimSetup) is a
+// multiple of 16): vector moves, where a memcpy of a variable size became `rep movs` here, whose
+// start-up cost per primitive was most of add_prim's time.
+void copy_prim(PrimSetup& to, const PrimSetup& from, size_t bytes) {
+  static_assert(sizeof(PrimSetup) % 16 == 0);
+  const size_t n = std::min((bytes + 15) & ~size_t{15}, sizeof(PrimSetup));
+  auto* out = reinterpret_cast<unsigned char*>(&to);
+  const auto* in = reinterpret_cast<const unsigned char*>(&from);
+  size_t i = 0;
+  for (; i + 64 <= n; i += 64) std::memcpy(out + i, in + i, 64);
+  for (; i < n; i += 16) std::memcpy(out + i, in + i, 16);
+}
+
+}  // namespace
+
 void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int count) {
   const PixelRect r = intersect(prim.bounds, render_area());
   if (r.empty() || draws_.empty()) return;
@@ -80,8 +97,7 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
   if (!used) return;
   if (prim_count_ == prims_.size()) prims_.resize(prims_.size() + kMaxPrims);  // (full() stops binning before)
   PrimSetup& stored = prims_[prim_count_++];
-  const int planes = std::clamp(draws_.back()->planes, 0, kMaxPlanes);
-  std::memcpy(static_cast<void*>(&stored), &prim, used_bytes(planes));
+  copy_prim(stored, prim, used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes)));
   stored.draw = static_cast<uint32_t>(draws_.size() - 1);
   if (count <= 0) return;
   const size_t n = static_cast<size_t>(count);
