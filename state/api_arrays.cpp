@@ -6,7 +6,6 @@
 #include <span>
 
 #include "glapi/gl_entry_points.h"
-#include "raster/renderer.h"
 #include "state/buffer_draw.h"
 #include "state/color_material.h"
 #include "state/es1/es1_enums.h"
@@ -46,23 +45,12 @@ bool can_fetch(const Context& ctx) {
   return ctx.vertex_array.active() || ctx.programs.arrays[0].active() || (ctx.es2() && ctx.programs.active());
 }
 
-// ctx.fetched with room for n vertices: it only grows, since growing value-initializes the new
-// elements (fetch_vertex overwrites each one anyway), which cost a mesh drawn in two draw calls
-// of different sizes 2% of its frame when every draw resized it.
-std::span<raster::VertexInput> fetched_vertices(Context& ctx, size_t n) {
-  if (ctx.fetched.size() < n) ctx.fetched.resize(n);
-  return {ctx.fetched.data(), n};
-}
-
-// fetch_vertex of array element index_of(i) into vertices[i] for every i, in pieces on the
-// renderer's threads.
+// The vertices of array elements index_of(i), i < count.
 template <typename IndexOf>
-void fetch_in_pieces(Context& ctx, std::span<raster::VertexInput> vertices, IndexOf index_of) {
-  constexpr size_t kVerticesPerPiece = 2048;
-  const Context& arrays = ctx;
-  ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) fetch_vertex(arrays, index_of(i), vertices[i]);
-  });
+ArrayVertices array_elements(const Context& ctx, size_t count, IndexOf index_of) {
+  return {count, [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
+            for (size_t i = begin; i < end; ++i) fetch_vertex(ctx, index_of(i), out[i - begin]);
+          }};
 }
 
 template <typename Index>
@@ -74,19 +62,14 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
   }
   if (!arrays_ready(ctx, hi)) return;
   const size_t range = size_t(hi) - lo + 1;
-  std::vector<uint32_t> rebased;
-  std::span<raster::VertexInput> vertices;
   if (range <= size_t(count) * 4) {
     // Dense indices: transform each referenced vertex once and pass the indices along.
-    vertices = fetched_vertices(ctx, range);
-    fetch_in_pieces(ctx, vertices, [lo](size_t i) { return lo + i; });
-    rebased.resize(count);
+    std::vector<uint32_t> rebased(count);
     for (GLsizei i = 0; i < count; ++i) rebased[i] = uint32_t(indices[i] - lo);
+    draw_array_vertices(ctx, mode, array_elements(ctx, range, [lo](size_t i) { return lo + i; }), rebased);
   } else {
-    vertices = fetched_vertices(ctx, size_t(count));
-    fetch_in_pieces(ctx, vertices, [indices](size_t i) { return size_t(indices[i]); });
+    draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [indices](size_t i) { return size_t(indices[i]); }), {});
   }
-  draw_vertices(ctx, mode, vertices, rebased, {}, AttribSource::Arrays);
   take_current_index(ctx, indices[count - 1]);  // GL leaves it indeterminate: the last element's
 }
 
@@ -137,9 +120,7 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (first < 0) return ctx.record_error(GL_INVALID_VALUE, "first is negative");
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
-  const std::span<raster::VertexInput> vertices = fetched_vertices(ctx, size_t(count));
-  fetch_in_pieces(ctx, vertices, [first](size_t i) { return size_t(first) + i; });
-  draw_vertices(ctx, mode, vertices, {}, {}, AttribSource::Arrays);
+  draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [first](size_t i) { return size_t(first) + i; }), {});
   take_current_index(ctx, size_t(first) + count - 1);  // GL leaves it indeterminate: the last element's
 }
 

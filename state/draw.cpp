@@ -97,6 +97,36 @@ const raster::DrawState& fragment_snapshot(Context& ctx) {
   return ctx.draw_state;
 }
 
+namespace {
+
+// The draw after the program check: the fixed-function vertex stage (or a vertex-only
+// program's) into ctx.transformed by `transform_step(transform)` unless such a program ran,
+// then the primitives to the renderer (or feedback).
+template <typename TransformStep>
+void draw_fixed_function(Context& ctx, raster::Primitive primitive, std::span<const uint32_t> indices,
+                         const std::function<bool()>& run_vertex_program, TransformStep transform_step) {
+  // OpenGL ES 2.0 has no fixed function: without a program the results are undefined (ES 2.0
+  // 2.15); Pineda draws nothing.
+  if (ctx.es2()) return;
+  const int texture_units = snapshot_textures(ctx);
+  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
+  // Feedback reports unit 0's coordinates even when no texture is enabled.
+  const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
+  const bool program = ctx.programs.active() != nullptr;  // with one stage only (program_draw.h)
+  // A fragment shader may read every unit's coordinates (gl_TexCoord[i]).
+  raster::Transform transform = build_transform(
+      ctx, program ? raster::kMaxTextureUnits : feedback ? std::max(texture_units, 1) : texture_units);
+  if (!(program && run_vertex_program())) transform_step(transform);
+  raster::DrawState& state = ctx.draw_state;
+  state.viewport = ctx.viewport;
+  state.cull_face = ctx.enable_cull;
+  if (program && draw_fragment_program_only(ctx, primitive, ctx.transformed, indices)) return;
+  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
+}
+
+}  // namespace
+
 void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInput> vertices,
                    std::span<const uint32_t> indices, std::span<const Context::MaterialChange> materials,
                    AttribSource generic_source) {
@@ -115,22 +145,9 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   } restore{ctx, ctx.lighting.front, ctx.lighting.back, ctx.programs.active() && !materials.empty()};
   if (restore.swapped) ctx.lighting.front = materials[0].front, ctx.lighting.back = materials[0].back;
   if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
-  // OpenGL ES 2.0 has no fixed function: without a program the results are undefined (ES 2.0
-  // 2.15); Pineda draws nothing.
-  if (ctx.es2()) return;
-  const int texture_units = snapshot_textures(ctx);
-  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
-  // Feedback reports unit 0's coordinates even when no texture is enabled.
-  const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
-  const bool program = ctx.programs.active() != nullptr;  // with one stage only (program_draw.h)
-  // A fragment shader may read every unit's coordinates (gl_TexCoord[i]).
-  raster::Transform transform = build_transform(
-      ctx, program ? raster::kMaxTextureUnits : feedback ? std::max(texture_units, 1) : texture_units);
-  if (program && run_vertex_program_only(ctx, vertices, generic_source, ctx.transformed)) {
-    // the vertex shader replaced transform and lighting
-  } else if (materials.empty() || !ctx.lighting.enabled) {
-    transform_in_pieces(ctx, transform, vertices);
-  } else {
+  const auto run_vertex_program = [&] { return run_vertex_program_only(ctx, vertices, generic_source, ctx.transformed); };
+  draw_fixed_function(ctx, primitive, indices, run_vertex_program, [&](raster::Transform& transform) {
+    if (materials.empty() || !ctx.lighting.enabled) return transform_in_pieces(ctx, transform, vertices);
     // Each run of vertices is lit with the material in effect when they were specified.
     ctx.transformed.resize(vertices.size());
     std::vector<raster::ClipVertex> run_out;
@@ -143,13 +160,34 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
       raster::transform_vertices(transform, vertices.subspan(first, end - first), run_out);
       std::copy(run_out.begin(), run_out.end(), ctx.transformed.begin() + first);
     }
+  });
+}
+
+void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices) {
+  constexpr size_t kVerticesPerPiece = 1024;
+  if (!ctx.draw_drawable() || vertices.count == 0) return;
+  if (ctx.programs.active()) {  // every stage of a program reads the whole draw's vertices
+    if (ctx.fetched.size() < vertices.count) ctx.fetched.resize(vertices.count);  // only grows
+    const std::span<raster::VertexInput> all(ctx.fetched.data(), vertices.count);
+    ctx.renderer().for_each_piece(vertices.count, kVerticesPerPiece,
+                                  [&](size_t begin, size_t end) { vertices.fetch(begin, end, all.data() + begin); });
+    return draw_vertices(ctx, mode, all, indices, {}, AttribSource::Arrays);
   }
-  raster::DrawState& state = ctx.draw_state;
-  state.viewport = ctx.viewport;
-  state.cull_face = ctx.enable_cull;
-  if (program && draw_fragment_program_only(ctx, primitive, ctx.transformed, indices)) return;
-  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
-  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
+  raster::Primitive primitive;
+  if (!to_primitive(mode, primitive)) return;
+  draw_fixed_function(ctx, primitive, indices, [] { return false; }, [&](const raster::Transform& transform) {
+    constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
+    ctx.transformed.resize(vertices.count);
+    const std::span<raster::ClipVertex> out(ctx.transformed);
+    ctx.renderer().for_each_piece(vertices.count, kVerticesPerPiece, [&](size_t begin, size_t end) {
+      std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
+      for (size_t first = begin; first < end; first += kFetchRun) {
+        const size_t n = std::min(kFetchRun, end - first);
+        vertices.fetch(first, first + n, fetched.data());
+        raster::transform_vertices(transform, std::span(fetched.data(), n), out.subspan(first, n));
+      }
+    });
+  });
 }
 
 }  // namespace pineda

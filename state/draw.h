@@ -3,7 +3,9 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 
 #include "raster/vertex.h"
@@ -21,6 +23,17 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
                    std::span<const uint32_t> indices,
                    std::span<const Context::MaterialChange> materials = {},
                    AttribSource generic_source = AttribSource::Current);
+
+// A draw's vertices in the vertex arrays: fetch(begin, end, out) reads vertices [begin, end)
+// into out[0, end - begin); it may run on several threads at once.
+struct ArrayVertices {
+  size_t count = 0;
+  std::function<void(size_t begin, size_t end, raster::VertexInput* out)> fetch;
+};
+
+// As draw_vertices, from the arrays (AttribSource::Arrays, no materials): without a program
+// each piece of vertices is fetched and transformed at once, while it is in the cache.
+void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices);
 
 // One vertex through the vertex stage (transform, lighting, every unit's texture matrix):
 // the raster position's vertex.
