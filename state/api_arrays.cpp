@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <type_traits>
 
 #include "glapi/gl_entry_points.h"
 #include "state/buffer_draw.h"
@@ -64,9 +65,18 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
   const size_t range = size_t(hi) - lo + 1;
   if (range <= size_t(count) * 4) {
     // Dense indices: transform each referenced vertex once and pass the indices along.
-    std::vector<uint32_t> rebased(count);
-    for (GLsizei i = 0; i < count; ++i) rebased[i] = uint32_t(indices[i] - lo);
-    draw_array_vertices(ctx, mode, array_elements(ctx, range, [lo](size_t i) { return lo + i; }), rebased);
+    const ArrayVertices vertices = array_elements(ctx, range, [lo](size_t i) { return lo + i; });
+    std::vector<uint32_t> rebased;
+    std::span<const uint32_t> from_zero;
+    if constexpr (std::is_same_v<Index, uint32_t>) {
+      if (lo == 0) from_zero = std::span(indices, size_t(count));  // already based at the first vertex
+    }
+    if (from_zero.empty()) {
+      rebased.resize(count);
+      for (GLsizei i = 0; i < count; ++i) rebased[i] = uint32_t(indices[i] - lo);
+      from_zero = rebased;
+    }
+    draw_array_vertices(ctx, mode, vertices, from_zero);
   } else {
     draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [indices](size_t i) { return size_t(indices[i]); }), {});
   }
