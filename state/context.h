@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <span>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -201,17 +200,7 @@ class Context {
   GLenum begin_mode = GL_POINTS;
   std::vector<raster::VertexInput> immediate;
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
-  // The vertex stage's output for the current draw: make_transformed(n) makes room for n
-  // vertices, transformed_vertices() are they. The room only grows (growing value-initializes
-  // every new vertex, which cost meshes drawn in calls of different sizes 2% of their frame).
-  std::span<raster::ClipVertex> make_transformed(size_t n) {
-    if (transformed_room.size() < n) transformed_room.resize(n);
-    transformed_count = n;
-    return {transformed_room.data(), n};
-  }
-  std::span<raster::ClipVertex> transformed_vertices() { return {transformed_room.data(), transformed_count}; }
-  std::vector<raster::ClipVertex> transformed_room;
-  size_t transformed_count = 0;
+  std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
   // (empty when the material did not change inside the primitive); the first is the one in
   // effect at glBegin.

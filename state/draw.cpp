@@ -71,11 +71,12 @@ int snapshot_textures(Context& ctx) {
   return used;
 }
 
-// Transform and lighting of a draw's vertices into ctx.transformed_vertices(), in pieces on the
-// renderer's threads (each vertex alone: the pieces do not change a value).
+// Transform and lighting of a draw's vertices into ctx.transformed, in pieces on the renderer's
+// threads (each vertex alone: the pieces do not change a value).
 void transform_in_pieces(Context& ctx, const raster::Transform& transform, std::span<const raster::VertexInput> vertices) {
   constexpr size_t kVerticesPerPiece = 1024;
-  const std::span<raster::ClipVertex> out = ctx.make_transformed(vertices.size());
+  ctx.transformed.resize(vertices.size());
+  const std::span<raster::ClipVertex> out(ctx.transformed);
   ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
     raster::transform_vertices(transform, vertices.subspan(begin, end - begin), out.subspan(begin, end - begin));
   });
@@ -99,8 +100,8 @@ const raster::DrawState& fragment_snapshot(Context& ctx) {
 namespace {
 
 // The draw after the program check: the fixed-function vertex stage (or a vertex-only
-// program's) into ctx.transformed_vertices() by `transform_step(transform)` unless such a
-// program ran, then the primitives to the renderer (or feedback).
+// program's) into ctx.transformed by `transform_step(transform)` unless such a program ran,
+// then the primitives to the renderer (or feedback).
 template <typename TransformStep>
 void draw_fixed_function(Context& ctx, raster::Primitive primitive, std::span<const uint32_t> indices,
                          const std::function<bool()>& run_vertex_program, TransformStep transform_step) {
@@ -119,10 +120,9 @@ void draw_fixed_function(Context& ctx, raster::Primitive primitive, std::span<co
   raster::DrawState& state = ctx.draw_state;
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;
-  const std::span<const raster::ClipVertex> transformed = ctx.transformed_vertices();
-  if (program && draw_fragment_program_only(ctx, primitive, transformed, indices)) return;
-  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, transformed, indices);
-  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, transformed, indices); });
+  if (program && draw_fragment_program_only(ctx, primitive, ctx.transformed, indices)) return;
+  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
 }
 
 }  // namespace
@@ -145,11 +145,11 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   } restore{ctx, ctx.lighting.front, ctx.lighting.back, ctx.programs.active() && !materials.empty()};
   if (restore.swapped) ctx.lighting.front = materials[0].front, ctx.lighting.back = materials[0].back;
   if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
-  const auto run_vertex_program = [&] { return run_vertex_program_only(ctx, vertices, generic_source); };
+  const auto run_vertex_program = [&] { return run_vertex_program_only(ctx, vertices, generic_source, ctx.transformed); };
   draw_fixed_function(ctx, primitive, indices, run_vertex_program, [&](raster::Transform& transform) {
     if (materials.empty() || !ctx.lighting.enabled) return transform_in_pieces(ctx, transform, vertices);
     // Each run of vertices is lit with the material in effect when they were specified.
-    const std::span<raster::ClipVertex> out = ctx.make_transformed(vertices.size());
+    ctx.transformed.resize(vertices.size());
     std::vector<raster::ClipVertex> run_out;
     for (size_t i = 0; i < materials.size(); ++i) {
       const size_t first = std::min(materials[i].first, vertices.size());
@@ -158,7 +158,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
       transform.lighting.front = materials[i].front;
       transform.lighting.back = materials[i].back;
       raster::transform_vertices(transform, vertices.subspan(first, end - first), run_out);
-      std::copy(run_out.begin(), run_out.end(), out.begin() + first);
+      std::copy(run_out.begin(), run_out.end(), ctx.transformed.begin() + first);
     }
   });
 }
@@ -177,7 +177,8 @@ void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertice
   if (!to_primitive(mode, primitive)) return;
   draw_fixed_function(ctx, primitive, indices, [] { return false; }, [&](const raster::Transform& transform) {
     constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
-    const std::span<raster::ClipVertex> out = ctx.make_transformed(vertices.count);
+    ctx.transformed.resize(vertices.count);
+    const std::span<raster::ClipVertex> out(ctx.transformed);
     ctx.renderer().for_each_piece(vertices.count, kVerticesPerPiece, [&](size_t begin, size_t end) {
       std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
       for (size_t first = begin; first < end; first += kFetchRun) {

@@ -119,11 +119,10 @@ constexpr size_t kVerticesPerPiece = 1024;
 
 // Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
 // varyings into `varyings` (program.varying_floats() per vertex). Texture lookups read `units`.
-// `out` has room for every vertex.
 void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
                        const std::array<raster::TextureUnit, raster::kMaxTextureImageUnits>& units,
                        std::span<const raster::VertexInput> vertices, AttribSource source,
-                       bool point_size_from_shader, float fixed_point_size, std::span<raster::ClipVertex> out,
+                       bool point_size_from_shader, float fixed_point_size, std::vector<raster::ClipVertex>& out,
                        std::vector<float>& varyings) {
   const int slots = std::max(program.input_slots(), 1);
   const int nv = program.varying_floats();
@@ -132,6 +131,7 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   constexpr size_t kRunVertices = static_cast<size_t>(shader::kMaxBlocksPerRun) * kLanes;
   static_assert(kVerticesPerPiece % kRunVertices == 0);
   const size_t in_floats = static_cast<size_t>(slots) * 4 * kLanes, out_floats = static_cast<size_t>(outputs) * kLanes;
+  out.resize(vertices.size());
   varyings.resize(vertices.size() * static_cast<size_t>(nv));
   const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
@@ -272,22 +272,22 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
   // Vertex-shader texture lookups read the same (usable) images the fragments will.
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  const std::span<raster::ClipVertex> transformed = ctx.make_transformed(vertices.size());
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
-                    shader_size, ctx.draw_state.point_size, transformed, varyings);
+                    shader_size, ctx.draw_state.point_size, ctx.transformed, varyings);
   const raster::PointParameters& pp = state.point_params;
-  for (raster::ClipVertex& v : transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
-  draw_or_feed_back(ctx, state, primitive, transformed, indices, varyings.data());
+  for (raster::ClipVertex& v : ctx.transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
+  draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
   return true;
 }
 
-bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source) {
+bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
+                             std::vector<raster::ClipVertex>& out) {
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || !exec->vertex_shader || exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
   std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
   if (!shader_draw) {
-    ctx.make_transformed(0);
+    out.clear();
     return true;
   }
   raster::DrawState state = ctx.draw_state;
@@ -295,7 +295,6 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
   const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  const std::span<raster::ClipVertex> out = ctx.make_transformed(vertices.size());
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
                     shader_size, ctx.draw_state.point_size, out, varyings);
   const int nv = program.varying_floats();

@@ -20,9 +20,10 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
                        std::span<const uint32_t> indices, AttribSource source);
 
 // A program with a vertex shader only: the shader replaces transform and lighting. Its
-// gl_Position, gl_FrontColor, gl_TexCoord[i], ... become ctx.transformed_vertices() for the
-// fixed-function fragment stage. False when the program in use is not such a program.
-bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source);
+// gl_Position, gl_FrontColor, gl_TexCoord[i], ... become `out` for the fixed-function
+// fragment stage. False when the program in use is not such a program.
+bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
+                             std::vector<raster::ClipVertex>& out);
 
 // A program with a fragment shader only: the fixed-function vertex stage produced
 // `vertices`; their colours, texture coordinates and fog coordinate are the shader's inputs.
