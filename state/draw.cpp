@@ -74,10 +74,9 @@ int snapshot_textures(Context& ctx) {
 // Transform and lighting of a draw's vertices into ctx.transformed, in pieces on the renderer's
 // threads (each vertex alone: the pieces do not change a value).
 void transform_in_pieces(Context& ctx, const raster::Transform& transform, std::span<const raster::VertexInput> vertices) {
-  constexpr size_t kVerticesPerPiece = 1024;
   ctx.transformed.resize(vertices.size());
   const std::span<raster::ClipVertex> out(ctx.transformed);
-  ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
+  ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     raster::transform_vertices(transform, vertices.subspan(begin, end - begin), out.subspan(begin, end - begin));
   });
 }
@@ -164,12 +163,11 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
 }
 
 void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices) {
-  constexpr size_t kVerticesPerPiece = 1024;
   if (!ctx.draw_drawable() || vertices.count == 0) return;
   if (ctx.programs.active()) {  // every stage of a program reads the whole draw's vertices
     if (ctx.fetched.size() < vertices.count) ctx.fetched.resize(vertices.count);  // only grows
     const std::span<raster::VertexInput> all(ctx.fetched.data(), vertices.count);
-    ctx.renderer().for_each_piece(vertices.count, kVerticesPerPiece,
+    ctx.renderer().for_each_piece(vertices.count, raster::Renderer::kVerticesPerPiece,
                                   [&](size_t begin, size_t end) { vertices.fetch(begin, end, all.data() + begin); });
     return draw_vertices(ctx, mode, all, indices, {}, AttribSource::Arrays);
   }
@@ -179,7 +177,7 @@ void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertice
     constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
     ctx.transformed.resize(vertices.count);
     const std::span<raster::ClipVertex> out(ctx.transformed);
-    ctx.renderer().for_each_piece(vertices.count, kVerticesPerPiece, [&](size_t begin, size_t end) {
+    ctx.renderer().for_each_piece(vertices.count, raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
       std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
       for (size_t first = begin; first < end; first += kFetchRun) {
         const size_t n = std::min(kFetchRun, end - first);

@@ -112,11 +112,6 @@ std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program&
   return fetches;
 }
 
-// Vertices per piece of a draw's vertex stage on the renderer's threads: a multiple of the
-// vertices one executor run takes (Program::run_vertex_batches), big enough that a piece costs
-// far more than handing it to a thread.
-constexpr size_t kVerticesPerPiece = 1024;
-
 // Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
 // varyings into `varyings` (program.varying_floats() per vertex). Texture lookups read `units`.
 void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
@@ -129,14 +124,14 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const int outputs = shader::kOutFirstVarying + nv;
   // Up to kMaxBlocksPerRun batches of 16 vertices run together (Program::run_vertex_batches).
   constexpr size_t kRunVertices = static_cast<size_t>(shader::kMaxBlocksPerRun) * kLanes;
-  static_assert(kVerticesPerPiece % kRunVertices == 0);
+  static_assert(raster::Renderer::kVerticesPerPiece % kRunVertices == 0);
   const size_t in_floats = static_cast<size_t>(slots) * 4 * kLanes, out_floats = static_cast<size_t>(outputs) * kLanes;
   out.resize(vertices.size());
   varyings.resize(vertices.size() * static_cast<size_t>(nv));
   const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
   const Context& state = ctx;
-  ctx.renderer().for_each_piece(vertices.size(), kVerticesPerPiece, [&](size_t begin, size_t end) {
+  ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
     std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
     for (size_t first = begin; first < end; first += kRunVertices) {
