@@ -7,6 +7,7 @@
 
 #include "raster/simd_path.h"
 #include "shader/hoist.h"
+#include "shader/jit/compiled_stage.h"
 
 // The vector helpers pass 32- and 64-byte vectors but are always inlined into one copy.
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -62,6 +63,26 @@ bool writes_before_reads(const std::vector<ir::Inst>& insts, const std::vector<i
   return true;
 }
 
+// One block's texture lookup: samples the `used` lanes of `block_mask` (the others read 0) and
+// writes the lanes of `block_mask` of dst.
+void texture_lanes(const TextureAccess* textures, const ir::TextureLookup& t, const float* const coord[4],
+                   const float* sampler, const float* lod, LaneMask block_mask, LaneMask needed, float* const dst[4]) {
+  float coords[4][kLanes];
+  for (int c = 0; c < 4; ++c) std::memcpy(coords[c], coord[c], sizeof(float) * kLanes);
+  float out[4][kLanes] = {};
+  const LaneMask used = block_mask & needed;
+  if (textures && used) {
+    int first = 0;
+    while (!(used >> first & 1)) ++first;
+    const float unit_f = sampler[first];
+    const int unit = unit_f >= 0.0f && unit_f < 256.0f ? static_cast<int>(unit_f) : 0;
+    textures->sample(unit, t.kind, coords, t.mode, lod, used, out);
+  }
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < kLanes; ++l)
+      if (block_mask >> l & 1) dst[c][l] = out[c][l];
+}
+
 }  // namespace
 
 void StageCode::prepare() {
@@ -69,6 +90,8 @@ void StageCode::prepare() {
   exec = std::move(hoisted.insts);
   exec_textures = std::move(hoisted.textures);
   straight_line = writes_before_reads(exec, exec_textures, code.registers);
+  if (straight_line && jit::compiled_tier_enabled())
+    compiled = jit::CompiledStage::compile(exec, exec_textures, code.registers, hoisted.slots);
   uniform_ops = std::move(hoisted.uniform_ops);
   slots = hoisted.slots;
   for (ir::Inst& in : exec) {
@@ -154,7 +177,102 @@ Executors choose_executors() {
 
 }  // namespace
 
+namespace {
+
+// Whether the compiled code gives what the interpreter gives under this mask: every lane's
+// value depends only on its own lanes except for derivatives, which read the other lanes of
+// their quad (which the interpreter holds at zero when they do not run).
+bool compiled_code_fits(Stage kind, int blocks, RunMask mask) {
+  if (kind != Stage::Fragment) return true;
+  for (int k = 0; k < blocks; ++k) {
+    const LaneMask m = static_cast<LaneMask>(mask >> (k * kLanes));
+    for (int q = 0; q < 4; ++q) {
+      const unsigned quad = m >> (4 * q) & 0xFu;
+      if (quad != 0 && quad != 0xFu) return false;
+    }
+  }
+  return true;
+}
+
+void run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
+  const ir::FlushDenormals flush;
+  alignas(64) float stack_spill[kStackLaneFloats];
+  std::unique_ptr<float[]> heap_spill;
+  float* spill = stack_spill;
+  if (static_cast<size_t>(stage.code.registers) * kLanes > static_cast<size_t>(kStackLaneFloats)) {
+    heap_spill.reset(new float[static_cast<size_t>(stage.code.registers) * kLanes]);
+    spill = heap_spill.get();
+  }
+  const float* slots = io.slot_lanes;
+  std::unique_ptr<float[]> computed;
+  if (stage.slots && !slots) {
+    computed.reset(new float[static_cast<size_t>(stage.slots) * kLanes]);
+    stage.compute_uniform_ops(io.uniforms, computed.get());
+    slots = computed.get();
+  }
+  jit::Frame frame{spill, slots, stage.constant_lanes.data(), io.uniforms, nullptr, nullptr, &stage, io.textures, kind, 0, 0};
+  for (int k = 0; k < blocks; ++k) {
+    frame.mask = static_cast<LaneMask>(mask >> (k * kLanes));
+    if (!frame.mask) continue;
+    frame.needed = io.needed[k];
+    if (kind == Stage::Fragment) {
+      frame.block_or_outputs = io.blocks[k];
+      frame.lanes_in = io.blocks[k]->varyings;
+    } else {
+      frame.block_or_outputs = io.outputs[k];
+      frame.lanes_in = io.inputs[k];
+    }
+    stage.compiled->run(frame);
+  }
+}
+
+}  // namespace
+
+void jit::call_out(const Frame* frame, const ir::Inst* in) {
+  const StageCode& stage = *frame->stage;
+  const int registers = stage.code.registers;
+  static constexpr float kZeros[kLanes] = {};
+  auto lanes = [&](Operand o) -> float* {
+    if (o == ir::kNone) return const_cast<float*>(kZeros);
+    if (ir::is_const(o)) return const_cast<float*>(frame->constants) + ir::const_index(o) * kConstantStride;
+    if (o < registers) return frame->spill + o * kLanes;
+    return const_cast<float*>(frame->slots) + (o - registers) * kLanes;
+  };
+  switch (in->op) {
+    case Op::Texture: {
+      const ir::TextureLookup& t = stage.exec_textures[static_cast<size_t>(in->i0)];
+      const float* coord[4];
+      float* dst[4];
+      for (int c = 0; c < 4; ++c) {
+        coord[c] = lanes(t.coord[c]);
+        dst[c] = lanes(t.dst[c]);
+      }
+      texture_lanes(frame->textures, t, coord, lanes(t.sampler), t.lod == ir::kNone ? nullptr : lanes(t.lod),
+                    frame->mask, frame->needed, dst);
+      return;
+    }
+    case Op::GatherUniform: {
+      const float* A = lanes(in->a);
+      float* D = lanes(in->d);
+      for (int l = 0; l < kLanes; ++l) D[l] = frame->uniforms[in->i0 + clamp_index(A[l], in->i1)];
+      return;
+    }
+    case Op::LoadFrontFacing: {
+      const auto* block = static_cast<const FragmentBlock*>(frame->block_or_outputs);
+      float* D = lanes(in->d);
+      for (int l = 0; l < kLanes; ++l) D[l] = (block->front_facing >> l & 1) ? 1.0f : 0.0f;
+      return;
+    }
+    default:
+      exec_avx512::run_lanes(in->op, frame->kind, lanes(in->d), lanes(in->a), lanes(in->b), lanes(in->c));
+  }
+}
+
 RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
+  if (stage.compiled && compiled_code_fits(kind, blocks, mask)) {
+    run_compiled(stage, kind, blocks, mask, io);
+    return 0;  // straight-line code has no discard
+  }
   static const Executors run = choose_executors();
   if (blocks >= 4) return run.four(stage, kind, mask, io);
   return blocks == 2 ? run.two(stage, kind, mask, io) : run.one(stage, kind, mask, io);

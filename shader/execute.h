@@ -1,10 +1,16 @@
 // The lane executor: runs one stage's IR over the 16 lanes of up to four blocks at once, with
 // execution masks.
 #pragma once
+#include <memory>
+
 #include "shader/ir.h"
 #include "shader/program.h"
 
 namespace pineda::shader {
+
+namespace jit {
+class CompiledStage;
+}
 
 // A run executes one instruction over the lanes of several fragment blocks together
 // (kMaxBlocksPerRun, program.h), so that each dispatch does more work: lane l of block b is
@@ -25,6 +31,8 @@ struct StageCode {
   int slots = 0;                      // slot s is register code.registers + s
   int max_depth = 0;                  // deepest nesting of if/loop/function frames
   bool straight_line = false;         // no structure, every register written before it is read
+  // The compiled tier's code for straight-line stages (shader/jit/), when it is enabled.
+  std::shared_ptr<const jit::CompiledStage> compiled;
   void prepare();
   // The slots' values for these uniforms, each splatted over its kLanes floats.
   void compute_uniform_ops(const float* uniforms, float* slot_lanes) const;

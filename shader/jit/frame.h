@@ -1,0 +1,37 @@
+// What a compiled stage reads and writes for one block of 16 lanes (a fragment block or a
+// vertex batch), and the C++ side of the operations it calls out to.
+#pragma once
+#include <cstddef>
+
+#include "shader/ir.h"
+#include "shader/program.h"
+
+namespace pineda::shader {
+struct StageCode;
+}
+
+namespace pineda::shader::jit {
+
+struct Frame {
+  float* spill;               // [code.registers][kLanes]: registers' homes
+  const float* slots;         // [slot][kLanes]: the uniform-only operations' values
+  const float* constants;     // StageCode::constant_lanes: [constant][kMaxBlocksPerRun * kLanes]
+  const float* uniforms;
+  void* block_or_outputs;     // FragmentBlock* (fragment), or the batch's outputs (vertex)
+  const float* lanes_in;      // the block's varyings (fragment), or the batch's inputs (vertex)
+  const StageCode* stage;
+  const TextureAccess* textures;
+  Stage kind;
+  LaneMask mask;              // the lanes that run
+  LaneMask needed;            // the lanes whose results are used
+};
+
+// Register operands live at spill + r * kLanes, slots at slots + (r - registers) * kLanes,
+// constants at constants + index * kMaxBlocksPerRun * kLanes.
+constexpr int kConstantStride = kMaxBlocksPerRun * kLanes;
+
+// Runs `in` (IR operands) over the frame's lanes in memory, with the interpreter's values
+// for every operation; texture lookups as the interpreter does them.
+void call_out(const Frame* frame, const ir::Inst* in);
+
+}  // namespace pineda::shader::jit

@@ -1,0 +1,81 @@
+// The few x86-64 instructions the shader compiler emits, encoded into a byte buffer: AVX-512
+// (EVEX) operations on zmm registers with opmasks, the mask-register (VEX) logic, and the
+// general-purpose moves, pushes and calls of a function's frame. Memory operands are always
+// [base + disp32].
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace pineda::shader::jit {
+
+enum Gpr : uint8_t { rax, rcx, rdx, rbx, rsp, rbp, rsi, rdi, r8, r9, r10, r11, r12, r13, r14, r15 };
+
+struct Mem {
+  Gpr base;
+  int32_t disp;
+};
+
+// vcmpps predicates (imm8), the ones C's comparison operators on floats compile to.
+enum class Cmp : uint8_t { Eq = 0x00, Lt = 0x01, Le = 0x02, Unord = 0x03, Neq = 0x04, Ge = 0x0D, Gt = 0x0E };
+
+class X86Encoder {
+ public:
+  const std::vector<uint8_t>& bytes() const { return bytes_; }
+
+  // zmm forms: d = op(a, b); `mask` k1..k7 merges into d (zero: `zeroing`), 0 is none.
+  void vaddps(int d, int a, int b) { evex_rrr(0x58, 1, 0, d, a, b); }
+  void vsubps(int d, int a, int b, int mask = 0) { evex_rrr(0x5C, 1, 0, d, a, b, mask); }
+  void vmulps(int d, int a, int b) { evex_rrr(0x59, 1, 0, d, a, b); }
+  void vdivps(int d, int a, int b) { evex_rrr(0x5E, 1, 0, d, a, b); }
+  void vsqrtps(int d, int a) { evex_rrr(0x51, 1, 0, d, 0, a); }
+  void vpandd(int d, int a, int b) { evex_rrr(0xDB, 1, 1, d, a, b); }
+  void vpxord(int d, int a, int b) { evex_rrr(0xEF, 1, 1, d, a, b); }
+  void vcvttps2dq(int d, int a) { evex_rrr(0x5B, 1, 2, d, 0, a); }
+  void vcvtdq2ps(int d, int a) { evex_rrr(0x5B, 1, 0, d, 0, a); }
+  // imm8 0x09: floor, 0x0B: truncate (and no precision exception).
+  void vrndscaleps(int d, int a, uint8_t imm) {
+    evex_rrr(0x08, 3, 1, d, 0, a);
+    bytes_.push_back(imm);
+  }
+  // d = mask ? b : a.
+  void vblendmps(int d, int mask, int a, int b) { evex_rrr(0x65, 2, 1, d, a, b, mask); }
+  void vmovaps(int d, int a, int mask = 0, bool zeroing = false) { evex_rrr(0x28, 1, 0, d, 0, a, mask, zeroing); }
+  // k = cmp(a, b), within `mask` when not 0.
+  void vcmpps(int k, int a, int b, Cmp pred, int mask = 0);
+
+  void load(int d, Mem m) { evex_rm(0x10, 1, 0, d, m); }      // vmovups zmm, m512
+  void store(Mem m, int s) { evex_rm(0x11, 1, 0, s, m); }     // vmovups m512, zmm
+  void broadcast(int d, Mem m) { evex_rm(0x18, 2, 1, d, m); } // vbroadcastss zmm, m32
+
+  // Mask registers (VEX).
+  void kmovw_load(int k, Mem m);
+  void korw(int k, int a, int b) { vex_k(0x45, 1, k, a, b); }
+  void kxorw(int k, int a, int b) { vex_k(0x47, 1, k, a, b); }
+
+  // General-purpose.
+  void push(Gpr r);
+  void pop(Gpr r);
+  void mov_load(Gpr d, Mem m);   // mov r64, [m]
+  void mov_store(Mem m, Gpr s);  // mov [m], r64
+  void lea(Gpr d, Mem m);
+  void mov_imm(Gpr d, uint64_t value);
+  void add_rsp(int32_t value);   // add rsp, imm32 (negative: sub)
+  void call(Gpr target);
+  void vzeroupper() { emit({0xC5, 0xF8, 0x77}); }
+  void ret() { emit({0xC3}); }
+
+ private:
+  void emit(std::initializer_list<uint8_t> b) { bytes_.insert(bytes_.end(), b); }
+  void emit32(uint32_t v);
+  // map: 1 = 0F, 2 = 0F38, 3 = 0F3A; pp: 0 none, 1 = 66, 2 = F3. `reg` and `vvvv` are register numbers
+  // (0-31); rm a register (0-31).
+  void evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask = 0, bool zeroing = false);
+  void evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m);
+  void modrm_mem(int reg, Mem m);
+  void vex_k(uint8_t opcode, int l, int k, int a, int b);
+  void rex_w(int reg, Gpr base);
+
+  std::vector<uint8_t> bytes_;
+};
+
+}  // namespace pineda::shader::jit

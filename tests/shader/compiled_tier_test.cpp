@@ -1,0 +1,185 @@
+// The compiled tier (shader/jit/) gives exactly the interpreter's bits (NaNs: any NaN): every operation over
+// special values (signed zeros, denormals, NaNs, infinities, the 2^23 rounding edge), with
+// operands from registers, constants and uniform slots, under register pressure that spills,
+// and through call-outs (texture-free ones here; images cover texture lookups).
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "shader/execute.h"
+#include "shader/jit/compiled_stage.h"
+
+namespace pineda::shader::test {
+namespace {
+
+using ir::Op;
+using ir::Operand;
+
+constexpr uint32_t kSpecialBits[] = {
+    0x00000000, 0x80000000, 0x3F800000, 0xBF800000, 0x3F000000, 0xBF000000, 0x3FC00000, 0xBFC00000,
+    0x4B000000, 0xCB000000, 0x4AFFFFFF, 0xCAFFFFFF, 0x4B000001, 0x7149F2CA, 0xF149F2CA, 0x7F800000,
+    0xFF800000, 0x7FC00000, 0xFFC00000, 0x7FA00000, 0x00000001, 0x80000001, 0x00800000, 0x80800000,
+    0x40400000, 0x3DCCCCCD, 0x42C88000, 0xC0F80000, 0x3F7FFFFF, 0xBF7FFFFF, 0x40490FDB, 0xC2C80000};
+
+float special(std::mt19937& random) {
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(std::size(kSpecialBits)) * 2 - 1);
+  const int i = pick(random);
+  if (i < static_cast<int>(std::size(kSpecialBits))) return std::bit_cast<float>(kSpecialBits[i]);
+  return std::uniform_real_distribution<float>(-300.0f, 300.0f)(random);
+}
+
+struct Block {
+  std::vector<float> varyings = std::vector<float>(8 * kLanes);
+  FragmentBlock fragment{};
+};
+
+// Runs `stage` over `block` with the compiled code or the interpreter; returns colour 0's lanes
+// and the vertex outputs.
+std::vector<uint32_t> run(const StageCode& stage, Stage kind, Block block, const std::vector<float>& uniforms,
+                          bool compiled) {
+  StageCode copy = stage;
+  if (!compiled) copy.compiled = nullptr;
+  LaneIo io;
+  io.uniforms = uniforms.data();
+  std::vector<float> outputs(8 * kLanes, 0.0f);
+  block.fragment.varyings = block.varyings.data();
+  io.blocks[0] = &block.fragment;
+  io.inputs[0] = block.varyings.data();
+  io.outputs[0] = outputs.data();
+  std::vector<float> slots(static_cast<size_t>(stage.slots + 1) * kLanes);
+  stage.compute_uniform_ops(uniforms.data(), slots.data());
+  io.slot_lanes = slots.data();
+  execute(copy, kind, 1, 0xFFFF, io);
+  std::vector<uint32_t> bits;
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < kLanes; ++l) bits.push_back(std::bit_cast<uint32_t>(block.fragment.color[0][c][l]));
+  for (float v : outputs) bits.push_back(std::bit_cast<uint32_t>(v));
+  return bits;
+}
+
+Block random_block(std::mt19937& random) {
+  Block b;
+  for (float& v : b.varyings) v = special(random);
+  b.fragment.live = 0xFFFF;
+  b.fragment.front_facing = static_cast<LaneMask>(random());
+  for (int c = 0; c < 4; ++c)
+    for (int l = 0; l < kLanes; ++l) b.fragment.frag_coord[c][l] = special(random);
+  for (int c = 0; c < 2; ++c)
+    for (int l = 0; l < kLanes; ++l) b.fragment.point_coord[c][l] = special(random);
+  return b;
+}
+
+// A NaN's sign and payload depend on which operand x86 propagates, that is on the operand
+// order the compiler picked for a commutative operation; GLSL cannot observe them (every
+// comparison, conversion and write treats all NaNs alike), so any NaN matches any NaN.
+bool is_nan(uint32_t bits) { return (bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu) != 0; }
+
+// Both tiers over many random blocks of special values; the stage must have compiled.
+void expect_same_bits(ir::Code code, Stage kind, const std::vector<float>& uniforms, const char* what) {
+  StageCode stage;
+  stage.code = std::move(code);
+  stage.prepare();
+  ASSERT_NE(stage.compiled, nullptr) << what;
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Block block = random_block(random);
+    const std::vector<uint32_t> interpreted = run(stage, kind, block, uniforms, false);
+    const std::vector<uint32_t> compiled = run(stage, kind, block, uniforms, true);
+    for (size_t i = 0; i < interpreted.size(); ++i) {
+      if (is_nan(compiled[i]) && is_nan(interpreted[i])) continue;
+      ASSERT_EQ(compiled[i], interpreted[i]) << what << " trial " << trial << " value " << i;
+    }
+  }
+}
+
+class CompiledTier : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!jit::compiled_tier_enabled()) GTEST_SKIP() << "no AVX-512 or PINEDA_SHADER_JIT=0";
+  }
+};
+
+Operand load(ir::Code& code, Stage kind, int index) {
+  const Operand r = code.new_register();
+  code.insts.push_back(ir::Inst{kind == Stage::Fragment ? Op::LoadVarying : Op::LoadInput, r, ir::kNone, ir::kNone,
+                                ir::kNone, index, 0});
+  return r;
+}
+void store(ir::Code& code, Stage kind, Operand value, int index) {
+  code.insts.push_back(ir::Inst{kind == Stage::Fragment ? Op::StoreColor : Op::StoreOutput, ir::kNone, value,
+                                ir::kNone, ir::kNone, index, 0});
+}
+
+TEST_F(CompiledTier, EveryOperationGivesTheInterpretersBits) {
+  for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
+    for (int o = static_cast<int>(Op::Mov); o < static_cast<int>(Op::Count); ++o) {
+      const Op op = static_cast<Op>(o);
+      if (op != Op::Mov && op < Op::Neg) continue;
+      const int arity = op == Op::Mov ? 1 : ir::op_arity(op);
+      // Operands from registers, and with a constant second operand.
+      for (bool constant : {false, true}) {
+        if (constant && arity < 2) continue;
+        ir::Code code;
+        const Operand a = load(code, kind, 0);
+        const Operand b = arity >= 2 ? (constant ? code.constant(-1.5f) : load(code, kind, 1)) : ir::kNone;
+        const Operand c = arity >= 3 ? load(code, kind, 2) : ir::kNone;
+        const Operand d = code.new_register();
+        code.insts.push_back(ir::Inst{op, d, a, b, c, 0, 0});
+        store(code, kind, d, 0);
+        expect_same_bits(std::move(code), kind, {}, ir::op_name(op));
+      }
+    }
+  }
+}
+
+TEST_F(CompiledTier, LoadsAndStoresOfEveryKind) {
+  ir::Code code;
+  const Operand fc = code.new_register(), pc = code.new_register(), ff = code.new_register(), u = code.new_register(),
+                g = code.new_register(), i = load(code, Stage::Fragment, 3);
+  code.insts.push_back(ir::Inst{Op::LoadFragCoord, fc, ir::kNone, ir::kNone, ir::kNone, 2, 0});
+  code.insts.push_back(ir::Inst{Op::LoadPointCoord, pc, ir::kNone, ir::kNone, ir::kNone, 1, 0});
+  code.insts.push_back(ir::Inst{Op::LoadFrontFacing, ff, ir::kNone, ir::kNone, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::LoadUniform, u, ir::kNone, ir::kNone, ir::kNone, 5, 0});
+  code.insts.push_back(ir::Inst{Op::GatherUniform, g, i, ir::kNone, ir::kNone, 1, 6});
+  store(code, Stage::Fragment, fc, 0);
+  store(code, Stage::Fragment, pc, 1);
+  store(code, Stage::Fragment, ff, 2);
+  const Operand sum = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Add, sum, u, g, ir::kNone, 0, 0});
+  store(code, Stage::Fragment, sum, 3);
+  expect_same_bits(std::move(code), Stage::Fragment, {1, 2, 3, 4, 5, 6.5f, 7, 8, -9}, "loads");
+}
+
+// Sixty values live at once (more than the registers) and a call-out among them.
+TEST_F(CompiledTier, SpilledValuesAndCallOutsKeepTheirBits) {
+  ir::Code code;
+  const Operand a = load(code, Stage::Fragment, 0), b = load(code, Stage::Fragment, 1);
+  std::vector<Operand> values;
+  Operand previous = a;
+  for (int i = 0; i < 60; ++i) {
+    const Operand v = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Mad, v, previous, b, code.constant(0.25f * static_cast<float>(i)), 0, 0});
+    if (i == 30) {
+      const Operand s = code.new_register();
+      code.insts.push_back(ir::Inst{Op::Sin, s, v, ir::kNone, ir::kNone, 0, 0});
+      values.push_back(s);
+    }
+    values.push_back(v);
+    previous = v;
+  }
+  Operand sum = values.back();
+  for (size_t i = 0; i + 1 < values.size(); ++i) {
+    const Operand next = code.new_register();
+    code.insts.push_back(ir::Inst{i % 2 ? Op::Sub : Op::Add, next, sum, values[i], ir::kNone, 0, 0});
+    sum = next;
+  }
+  store(code, Stage::Fragment, sum, 0);
+  store(code, Stage::Fragment, values[5], 1);
+  expect_same_bits(std::move(code), Stage::Fragment, {}, "spills");
+}
+
+}  // namespace
+}  // namespace pineda::shader::test
