@@ -90,7 +90,7 @@ void StageCode::prepare() {
   exec = std::move(hoisted.insts);
   exec_textures = std::move(hoisted.textures);
   straight_line = writes_before_reads(exec, exec_textures, code.registers);
-  if (straight_line && jit::compiled_tier_enabled())
+  if (jit::compiled_tier_enabled())
     compiled = jit::CompiledStage::compile(exec, exec_textures, code.registers, hoisted.slots);
   uniform_ops = std::move(hoisted.uniform_ops);
   slots = hoisted.slots;
@@ -194,7 +194,7 @@ bool compiled_code_fits(Stage kind, int blocks, RunMask mask) {
   return true;
 }
 
-void run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
+RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
   const ir::FlushDenormals flush;
   alignas(64) float stack_spill[kStackLaneFloats];
   std::unique_ptr<float[]> heap_spill;
@@ -210,7 +210,8 @@ void run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask, 
     stage.compute_uniform_ops(io.uniforms, computed.get());
     slots = computed.get();
   }
-  jit::Frame frame{spill, slots, stage.constant_lanes.data(), io.uniforms, nullptr, nullptr, &stage, io.textures, kind, 0, 0};
+  jit::Frame frame{spill, slots, stage.constant_lanes.data(), io.uniforms, nullptr, nullptr, &stage, io.textures, kind, 0, 0, 0};
+  RunMask discarded = 0;
   for (int k = 0; k < blocks; ++k) {
     frame.mask = static_cast<LaneMask>(mask >> (k * kLanes));
     if (!frame.mask) continue;
@@ -222,8 +223,11 @@ void run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask, 
       frame.block_or_outputs = io.outputs[k];
       frame.lanes_in = io.inputs[k];
     }
+    frame.discarded = 0;
     stage.compiled->run(frame);
+    discarded |= static_cast<RunMask>(frame.discarded & frame.mask) << (k * kLanes);
   }
+  return discarded;
 }
 
 }  // namespace
@@ -269,10 +273,7 @@ void jit::call_out(const Frame* frame, const ir::Inst* in) {
 }
 
 RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
-  if (stage.compiled && compiled_code_fits(kind, blocks, mask)) {
-    run_compiled(stage, kind, blocks, mask, io);
-    return 0;  // straight-line code has no discard
-  }
+  if (stage.compiled && compiled_code_fits(kind, blocks, mask)) return run_compiled(stage, kind, blocks, mask, io);
   static const Executors run = choose_executors();
   if (blocks >= 4) return run.four(stage, kind, mask, io);
   return blocks == 2 ? run.two(stage, kind, mask, io) : run.one(stage, kind, mask, io);

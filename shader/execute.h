@@ -31,7 +31,7 @@ struct StageCode {
   int slots = 0;                      // slot s is register code.registers + s
   int max_depth = 0;                  // deepest nesting of if/loop/function frames
   bool straight_line = false;         // no structure, every register written before it is read
-  // The compiled tier's code for straight-line stages (shader/jit/), when it is enabled.
+  // The compiled tier's code (shader/jit/), when it is enabled and takes the stage.
   std::shared_ptr<const jit::CompiledStage> compiled;
   void prepare();
   // The slots' values for these uniforms, each splatted over its kLanes floats.

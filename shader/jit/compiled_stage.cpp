@@ -37,7 +37,8 @@ bool natively_emitted(Op op) {
     case Op::Abs: case Op::Floor: case Op::Fract: case Op::Trunc: case Op::Sqrt: case Op::Not: case Op::ToBool:
     case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Min: case Op::Max: case Op::Step:
     case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne: case Op::And: case Op::Or:
-    case Op::Xor: case Op::Clamp: case Op::Mix: case Op::Select: case Op::Mad:
+    case Op::Xor: case Op::Clamp: case Op::Mix: case Op::Select: case Op::Mad: case Op::GatherUniform:
+    case Op::Rsq: case Op::NormScale:
       return true;
     default:
       return false;
@@ -46,7 +47,7 @@ bool natively_emitted(Op op) {
 
 // The operations run by call_out: every value operation and the loads without a native form.
 bool called_out(Op op) {
-  return op == Op::Texture || op == Op::GatherUniform || op == Op::LoadFrontFacing ||
+  return op == Op::Texture || op == Op::LoadFrontFacing ||
          (op >= Op::Neg && op < Op::Count && !natively_emitted(op));
 }
 
@@ -59,6 +60,7 @@ class Generator {
     reads_.resize(static_cast<size_t>(values_));
     writes_.resize(static_cast<size_t>(values_));
     where_.assign(static_cast<size_t>(values_), -1);
+    zeroed_home_.assign(static_cast<size_t>(values_), false);
     dirty_.assign(static_cast<size_t>(values_), false);
     for (int i = 0; i < static_cast<int>(insts.size()); ++i) {
       for (Operand o : sources(insts[static_cast<size_t>(i)])) reads_[static_cast<size_t>(id(o))].push_back(i);
@@ -70,8 +72,22 @@ class Generator {
   // Null when an instruction has no compiled form (structure, dynamic indexing).
   bool generate(const ir::Inst* stable_insts) {
     prologue();
-    for (int i = 0; i < static_cast<int>(insts_.size()); ++i) {
+    const int n = static_cast<int>(insts_.size());
+    int last_neighbour_read = -1;  // the last derivative or texture lookup
+    for (int i = 0; i < n; ++i)
+      if (insts_[static_cast<size_t>(i)].op == Op::Ddx || insts_[static_cast<size_t>(i)].op == Op::Ddy ||
+          insts_[static_cast<size_t>(i)].op == Op::Texture)
+        last_neighbour_read = i;
+    for (int i = 0; i < n; ++i) {
       const ir::Inst& in = insts_[static_cast<size_t>(i)];
+      // if (a) discard;  The interpreter's later lanes differ where discarded lanes are not
+      // updated, which only derivatives and texture lookups (implicit LOD) could see.
+      if (in.op == Op::IfBegin && i + 2 < n && insts_[static_cast<size_t>(i) + 1].op == Op::Discard &&
+          insts_[static_cast<size_t>(i) + 2].op == Op::EndIf && last_neighbour_read < i) {
+        discard_if(i, in);
+        i += 2;
+        continue;
+      }
       if (in.op <= Op::Discard || in.op == Op::Gather || in.op == Op::Scatter) return false;
       if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
@@ -159,12 +175,23 @@ class Generator {
     release(best);
     return best;
   }
+  // A register read before anything wrote it holds zero, as in the interpreter's zeroed file.
+  bool unwritten(int value, int at) const {
+    if (value >= registers_) return false;
+    const auto& w = writes_[static_cast<size_t>(value)];
+    return w.empty() || w.front() >= at;
+  }
   int use(Operand o, int at, uint32_t& pinned) {
     const int v = id(o);
     int r = where_[static_cast<size_t>(v)];
     if (r < 0) {
       r = allocate(at, pinned);
-      x_.load(r, home(v));
+      if (unwritten(v, at)) {
+        x_.vmovaps(r, kZeroReg);
+        dirty_[static_cast<size_t>(v)] = true;
+      } else {
+        x_.load(r, home(v));
+      }
       holder_[static_cast<size_t>(r)] = v;
       where_[static_cast<size_t>(v)] = r;
     }
@@ -207,6 +234,11 @@ class Generator {
       if (dirty_[static_cast<size_t>(v)] && (next_read(v, at - 1) >= 0)) x_.store(home(v), r);
       release(r);
     }
+    for (Operand o : sources(*stable))
+      if (unwritten(id(o), at) && !zeroed_home_[static_cast<size_t>(id(o))]) {
+        x_.store(home(id(o)), kZeroReg);
+        zeroed_home_[static_cast<size_t>(id(o))] = true;
+      }
     x_.vzeroupper();
     x_.mov_load(rdi, {rsp, 0});
     x_.mov_imm(rsi, reinterpret_cast<uint64_t>(stable));
@@ -262,6 +294,17 @@ class Generator {
     return pinned;
   }
 
+  // The running lanes where a != 0 join the frame's discarded lanes.
+  void discard_if(int at, const ir::Inst& in) {
+    uint32_t pinned = resident_sources(in);
+    const int a = use(in.a, at, pinned);
+    x_.vcmpps(1, a, kZeroReg, Cmp::Neq);
+    x_.kmovw_to_gpr(rax, 1);
+    x_.mov_load(rdx, {rsp, 0});
+    x_.or_store32({rdx, static_cast<int32_t>(offsetof(Frame, discarded))}, rax);
+    finish_sources(at, in);
+  }
+
   // k1 = a < b or b is NaN (ir::lane_min's choice of a); `greater` for lane_max.
   void min_max(int d, int a, int b, bool greater) {
     x_.vcmpps(1, a, b, greater ? Cmp::Gt : Cmp::Lt);
@@ -301,6 +344,24 @@ class Generator {
         round_to(kScratch, a, kFloor);
         return x_.vsubps(d, a, kScratch);
       case Op::Sqrt: return x_.vsqrtps(d, a);
+      case Op::Rsq:  // 1 / sqrt(a)
+        x_.vsqrtps(kScratch, a);
+        return x_.vdivps(d, kOneReg, kScratch);
+      case Op::NormScale:  // a > 0 ? 1 / sqrt(a) : 0
+        x_.vsqrtps(kScratch, a);
+        x_.vdivps(kScratch, kOneReg, kScratch);
+        x_.vcmpps(1, a, kZeroReg, Cmp::Gt);
+        return x_.vmovaps(d, kScratch, 1, true);
+      case Op::GatherUniform: {  // uniforms[i0 + clamp_index(a, i1)]
+        x_.vcvttps2dq(kScratch, a);  // out of range: 0x80000000, which the unsigned min clamps
+        x_.vcmpps(1, a, kZeroReg, Cmp::Ge);
+        x_.vmovaps(kScratch, kScratch, 1, true);  // negative and NaN: 0
+        x_.mov_imm32(rax, static_cast<uint32_t>(in.i1));
+        x_.vpbroadcastd(kScratch2, rax);
+        x_.vpminud(kScratch, kScratch, kScratch2);
+        x_.kxnorw(3, 3, 3);
+        return x_.vgatherdps(d, 3, kUniforms, kScratch, in.i0 * 4);
+      }
       case Op::Not: return compare(d, a, kZeroReg, Cmp::Eq);
       case Op::ToBool: return compare(d, a, kZeroReg, Cmp::Neq);
       case Op::Add: return x_.vaddps(d, a, b);
@@ -354,6 +415,7 @@ class Generator {
   std::vector<std::vector<int>> reads_, writes_;
   std::vector<int> where_;
   std::vector<bool> dirty_;
+  std::vector<bool> zeroed_home_;  // unwritten registers whose home a call-out reads
   std::array<int, kValueRegisters> holder_;
   X86Encoder x_;
 };
@@ -389,7 +451,7 @@ bool compiled_tier_enabled() {
   static const bool enabled = [] {
     const char* v = std::getenv("PINEDA_SHADER_JIT");
     if (v && std::strcmp(v, "0") == 0) return false;
-    return raster::kCopiesHaveTheirTargets && raster::uses_avx512(raster::simd_path_from_environment());
+    return raster::uses_avx512(raster::simd_path_from_environment());
   }();
   return enabled;
 }

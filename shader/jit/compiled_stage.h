@@ -14,7 +14,8 @@ namespace pineda::shader::jit {
 
 class CompiledStage {
  public:
-  // Null when the code has structure or dynamic indexing, or executable memory is refused.
+  // Null when the code has structure (but for `if (c) discard;` with no derivative or texture
+  // lookup after it) or dynamic indexing, or executable memory is refused.
   // `insts` are IR operands with slots numbered from `registers` (HoistedCode::insts).
   static std::unique_ptr<CompiledStage> compile(const std::vector<ir::Inst>& insts,
                                                 const std::vector<ir::TextureLookup>& textures, int registers,
@@ -23,12 +24,12 @@ class CompiledStage {
   CompiledStage(const CompiledStage&) = delete;
   CompiledStage& operator=(const CompiledStage&) = delete;
 
-  void run(const Frame& frame) const { entry_(&frame); }
+  void run(Frame& frame) const { entry_(&frame); }
   size_t code_bytes() const { return size_; }
 
  private:
   CompiledStage() = default;
-  using Entry = void (*)(const Frame*);
+  using Entry = void (*)(Frame*);
   std::vector<ir::Inst> insts_;  // the call-outs' instructions: the code holds their addresses
   void* memory_ = nullptr;
   size_t size_ = 0;

@@ -24,6 +24,7 @@ struct Frame {
   Stage kind;
   LaneMask mask;              // the lanes that run
   LaneMask needed;            // the lanes whose results are used
+  uint32_t discarded;         // out: lanes that executed discard (the code ORs them in)
 };
 
 // Register operands live at spill + r * kLanes, slots at slots + (r - registers) * kLanes,

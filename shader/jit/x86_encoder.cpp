@@ -44,6 +44,16 @@ void X86Encoder::vex_k(uint8_t opcode, int l, int k, int a, int b) {
         static_cast<uint8_t>(0xC0 | (k & 7) << 3 | (b & 7))});
 }
 
+void X86Encoder::vgatherdps(int d, int mask, Gpr base, int index, int32_t disp) {
+  const uint8_t p0 = static_cast<uint8_t>(inverted_bit(d, 3) << 7 | inverted_bit(index, 3) << 6 | inverted_bit(base, 3) << 5 |
+                                          inverted_bit(d, 4) << 4 | 2);
+  const uint8_t p1 = static_cast<uint8_t>(15 << 3 | 1 << 2 | 1);
+  const uint8_t p2 = static_cast<uint8_t>(kLength512 | inverted_bit(index, 4) << 3 | (mask & 7));
+  emit({0x62, p0, p1, p2, 0x92, static_cast<uint8_t>(0x80 | (d & 7) << 3 | 4),
+        static_cast<uint8_t>(2 << 6 | (index & 7) << 3 | (base & 7))});
+  emit32(static_cast<uint32_t>(disp));
+}
+
 void X86Encoder::kmovw_load(int k, Mem m) {
   emit({0xC4, static_cast<uint8_t>(0xC0 | inverted_bit(m.base, 3) << 5 | 1), 0x78, 0x90});
   modrm_mem(k, m);
@@ -85,6 +95,18 @@ void X86Encoder::mov_imm(Gpr d, uint64_t value) {
   bytes_.push_back(static_cast<uint8_t>(0x48 | ((d >> 3) & 1)));
   bytes_.push_back(static_cast<uint8_t>(0xB8 + (d & 7)));
   for (int i = 0; i < 8; ++i) bytes_.push_back(static_cast<uint8_t>(value >> (8 * i)));
+}
+
+void X86Encoder::mov_imm32(Gpr d, uint32_t value) {
+  if (d >= 8) bytes_.push_back(0x41);
+  bytes_.push_back(static_cast<uint8_t>(0xB8 + (d & 7)));
+  emit32(value);
+}
+
+void X86Encoder::or_store32(Mem m, Gpr s) {
+  if (s >= 8 || m.base >= 8) bytes_.push_back(static_cast<uint8_t>(0x40 | ((s >> 3) & 1) << 2 | ((m.base >> 3) & 1)));
+  bytes_.push_back(0x09);
+  modrm_mem(s, m);
 }
 
 void X86Encoder::add_rsp(int32_t value) {

@@ -37,6 +37,10 @@ class X86Encoder {
     evex_rrr(0x08, 3, 1, d, 0, a);
     bytes_.push_back(imm);
   }
+  void vpminud(int d, int a, int b) { evex_rrr(0x3B, 2, 1, d, a, b); }
+  void vpbroadcastd(int d, Gpr s) { evex_rrr(0x7C, 2, 1, d, 0, s); }  // every lane = the low 32 bits of s
+  // d = base[index lane * 4 + disp] in every lane; clears mask k (1..7) which must be all ones.
+  void vgatherdps(int d, int mask, Gpr base, int index, int32_t disp);
   // d = mask ? b : a.
   void vblendmps(int d, int mask, int a, int b) { evex_rrr(0x65, 2, 1, d, a, b, mask); }
   void vmovaps(int d, int a, int mask = 0, bool zeroing = false) { evex_rrr(0x28, 1, 0, d, 0, a, mask, zeroing); }
@@ -51,6 +55,8 @@ class X86Encoder {
   void kmovw_load(int k, Mem m);
   void korw(int k, int a, int b) { vex_k(0x45, 1, k, a, b); }
   void kxorw(int k, int a, int b) { vex_k(0x47, 1, k, a, b); }
+  void kxnorw(int k, int a, int b) { vex_k(0x46, 1, k, a, b); }
+  void kmovw_to_gpr(Gpr d, int k) { vex_k(0x93, 0, d, 0, k); }  // zero-extended into d's 32 bits
 
   // General-purpose.
   void push(Gpr r);
@@ -59,6 +65,8 @@ class X86Encoder {
   void mov_store(Mem m, Gpr s);  // mov [m], r64
   void lea(Gpr d, Mem m);
   void mov_imm(Gpr d, uint64_t value);
+  void mov_imm32(Gpr d, uint32_t value);  // zero-extended
+  void or_store32(Mem m, Gpr s);          // or [m], s (32 bits)
   void add_rsp(int32_t value);   // add rsp, imm32 (negative: sub)
   void call(Gpr target);
   void vzeroupper() { emit({0xC5, 0xF8, 0x77}); }

@@ -1,7 +1,8 @@
 // The compiled tier (shader/jit/) gives exactly the interpreter's bits (NaNs: any NaN): every operation over
 // special values (signed zeros, denormals, NaNs, infinities, the 2^23 rounding edge), with
 // operands from registers, constants and uniform slots, under register pressure that spills,
-// and through call-outs (texture-free ones here; images cover texture lookups).
+// through call-outs (texture-free ones here; images cover texture lookups), and with
+// `if (c) discard;` (the discarded lanes too).
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -52,10 +53,12 @@ std::vector<uint32_t> run(const StageCode& stage, Stage kind, Block block, const
   std::vector<float> slots(static_cast<size_t>(stage.slots + 1) * kLanes);
   stage.compute_uniform_ops(uniforms.data(), slots.data());
   io.slot_lanes = slots.data();
-  execute(copy, kind, 1, 0xFFFF, io);
-  std::vector<uint32_t> bits;
+  const RunMask discarded = execute(copy, kind, 1, 0xFFFF, io);
+  std::vector<uint32_t> bits = {static_cast<uint32_t>(discarded)};
+  // A discarded lane's colour is never used: the interpreter stops computing it.
   for (int c = 0; c < 4; ++c)
-    for (int l = 0; l < kLanes; ++l) bits.push_back(std::bit_cast<uint32_t>(block.fragment.color[0][c][l]));
+    for (int l = 0; l < kLanes; ++l)
+      bits.push_back((discarded >> l & 1) ? 0u : std::bit_cast<uint32_t>(block.fragment.color[0][c][l]));
   for (float v : outputs) bits.push_back(std::bit_cast<uint32_t>(v));
   return bits;
 }
@@ -179,6 +182,24 @@ TEST_F(CompiledTier, SpilledValuesAndCallOutsKeepTheirBits) {
   store(code, Stage::Fragment, sum, 0);
   store(code, Stage::Fragment, values[5], 1);
   expect_same_bits(std::move(code), Stage::Fragment, {}, "spills");
+}
+
+TEST_F(CompiledTier, ConditionalDiscardAndUnwrittenRegisters) {
+  ir::Code code;
+  const Operand a = load(code, Stage::Fragment, 0);
+  const Operand never_written = code.new_register();
+  const Operand test = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Lt, test, a, code.constant(0.5f), ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::IfBegin, ir::kNone, test, ir::kNone, ir::kNone, 4, 0});
+  code.insts.push_back(ir::Inst{Op::Discard});
+  code.insts.push_back(ir::Inst{Op::EndIf});
+  const Operand sum = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Add, sum, a, never_written, ir::kNone, 0, 0});
+  const Operand s = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Sin, s, never_written, ir::kNone, ir::kNone, 0, 0});
+  store(code, Stage::Fragment, sum, 0);
+  store(code, Stage::Fragment, s, 1);
+  expect_same_bits(std::move(code), Stage::Fragment, {}, "discard");
 }
 
 }  // namespace
