@@ -63,26 +63,6 @@ bool writes_before_reads(const std::vector<ir::Inst>& insts, const std::vector<i
   return true;
 }
 
-// One block's texture lookup: samples the `used` lanes of `block_mask` (the others read 0) and
-// writes the lanes of `block_mask` of dst.
-void texture_lanes(const TextureAccess* textures, const ir::TextureLookup& t, const float* const coord[4],
-                   const float* sampler, const float* lod, LaneMask block_mask, LaneMask needed, float* const dst[4]) {
-  float coords[4][kLanes];
-  for (int c = 0; c < 4; ++c) std::memcpy(coords[c], coord[c], sizeof(float) * kLanes);
-  float out[4][kLanes] = {};
-  const LaneMask used = block_mask & needed;
-  if (textures && used) {
-    int first = 0;
-    while (!(used >> first & 1)) ++first;
-    const float unit_f = sampler[first];
-    const int unit = unit_f >= 0.0f && unit_f < 256.0f ? static_cast<int>(unit_f) : 0;
-    textures->sample(unit, t.kind, coords, t.mode, lod, used, out);
-  }
-  for (int c = 0; c < 4; ++c)
-    for (int l = 0; l < kLanes; ++l)
-      if (block_mask >> l & 1) dst[c][l] = out[c][l];
-}
-
 }  // namespace
 
 void StageCode::prepare() {
@@ -251,7 +231,7 @@ void jit::call_out(const Frame* frame, const ir::Inst* in) {
         coord[c] = lanes(t.coord[c]);
         dst[c] = lanes(t.dst[c]);
       }
-      texture_lanes(frame->textures, t, coord, lanes(t.sampler), t.lod == ir::kNone ? nullptr : lanes(t.lod),
+      exec_avx512::texture_lanes(frame->textures, t, coord, lanes(t.sampler), t.lod == ir::kNone ? nullptr : lanes(t.lod),
                     frame->mask, frame->needed, dst);
       return;
     }
