@@ -189,6 +189,21 @@ bool pass(ir::Code& code) {
                              in.op == Op::LoadVarying || in.op == Op::LoadInput || in.op == Op::LoadFragCoord ||
                              in.op == Op::LoadPointCoord || in.op == Op::LoadFrontFacing;
       if (!candidate || in.d < 0 || !an.promotable(in.d) || !stable(in.a) || !stable(in.b) || !stable(in.c)) continue;
+      // fract(x) after floor(x) is x - floor(x), the value Fract computes.
+      if (in.op == Op::Fract) {
+        const auto floor_key = std::make_tuple(static_cast<int>(Op::Floor), in.a, kNone, kNone, 0, 0);
+        const auto floors = seen.find(floor_key);
+        int floor_pc = -1;
+        if (floors != seen.end())
+          for (int e : floors->second)
+            if (an.inside(an.region[pc], an.region[e])) floor_pc = e;
+        if (floor_pc >= 0) {
+          in.op = Op::Sub;
+          in.b = code.insts[floor_pc].d;
+          changed = true;
+          continue;
+        }
+      }
       auto key = std::make_tuple(static_cast<int>(in.op), in.a, in.b, in.c, in.i0, in.i1);
       std::vector<int>& earlier = seen[key];
       int found = -1;

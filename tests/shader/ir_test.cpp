@@ -62,6 +62,16 @@ TEST(Ir, CopiesArePropagated) {
   EXPECT_EQ(count_ops(ir, "mov"), 0) << ir;
 }
 
+// fract(x) where floor(x) was computed becomes x - floor(x): one rounding sequence, not two.
+TEST(Ir, FractAfterFloorOfTheSameValueSubtracts) {
+  auto p = link_ok("", "varying vec2 v; void main() { gl_FragColor = vec4(floor(v), fract(v)); }");
+  ASSERT_NE(p, nullptr);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "floor"), 2) << ir;
+  EXPECT_EQ(count_ops(ir, "fract"), 0) << ir;
+  EXPECT_EQ(count_ops(ir, "sub"), 2) << ir;
+}
+
 TEST(Ir, DumpShowsStructuredControlFlow) {
   auto p = link_ok("", "varying float v;\nvoid main() { float s = 0.0; for (int i = 0; i < 4; i++) { if (v > float(i)) break; s += v; } gl_FragColor = vec4(s); }\n");
   ASSERT_TRUE(p);
