@@ -193,8 +193,9 @@ RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mas
   jit::Frame frame{spill, slots, stage.constant_lanes.data(), io.uniforms, nullptr, nullptr, &stage, io.textures, kind, 0, 0, 0};
   RunMask discarded = 0;
   for (int k = 0; k < blocks; ++k) {
-    frame.mask = static_cast<LaneMask>(mask >> (k * kLanes));
-    if (!frame.mask) continue;
+    const LaneMask running = static_cast<LaneMask>(mask >> (k * kLanes));
+    if (!running) continue;
+    frame.mask = running;  // the code narrows it in branches
     frame.needed = io.needed[k];
     if (kind == Stage::Fragment) {
       frame.block_or_outputs = io.blocks[k];
@@ -205,7 +206,7 @@ RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mas
     }
     frame.discarded = 0;
     stage.compiled->run(frame);
-    discarded |= static_cast<RunMask>(frame.discarded & frame.mask) << (k * kLanes);
+    discarded |= static_cast<RunMask>(frame.discarded & running) << (k * kLanes);
   }
   return discarded;
 }
@@ -235,20 +236,18 @@ void jit::call_out(const Frame* frame, const ir::Inst* in) {
                     frame->mask, frame->needed, dst);
       return;
     }
-    case Op::GatherUniform: {
-      const float* A = lanes(in->a);
-      float* D = lanes(in->d);
-      for (int l = 0; l < kLanes; ++l) D[l] = frame->uniforms[in->i0 + clamp_index(A[l], in->i1)];
-      return;
+    default: {
+      // The running lanes take the result; the others keep their values, as in the interpreter.
+      alignas(64) float T[kLanes];
+      if (in->op == Op::LoadFrontFacing) {
+        const auto* block = static_cast<const FragmentBlock*>(frame->block_or_outputs);
+        for (int l = 0; l < kLanes; ++l) T[l] = (block->front_facing >> l & 1) ? 1.0f : 0.0f;
+      } else {
+        exec_avx512::run_lanes(in->op, frame->kind, T, lanes(in->a), lanes(in->b), lanes(in->c));
+      }
+      if (frame->mask == 0xFFFF) std::memcpy(lanes(in->d), T, sizeof T);
+      else exec_avx512::blend_lanes(lanes(in->d), T, frame->mask, kLanes);
     }
-    case Op::LoadFrontFacing: {
-      const auto* block = static_cast<const FragmentBlock*>(frame->block_or_outputs);
-      float* D = lanes(in->d);
-      for (int l = 0; l < kLanes; ++l) D[l] = (block->front_facing >> l & 1) ? 1.0f : 0.0f;
-      return;
-    }
-    default:
-      exec_avx512::run_lanes(in->op, frame->kind, lanes(in->d), lanes(in->a), lanes(in->b), lanes(in->c));
   }
 }
 

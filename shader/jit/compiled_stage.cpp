@@ -22,9 +22,12 @@ alignas(64) constexpr uint32_t kPool[] = {0x3F800000u, 0x80000000u, 0x7FFFFFFFu}
 enum PoolEntry { kOne, kSignBit, kAbsBits };
 constexpr uint8_t kFloor = 0x09, kTruncate = 0x0B;  // vrndscaleps modes
 
-// zmm0-27 hold values; 28 and 29 are scratch; 30 holds 1.0 and 31 zero throughout.
-constexpr int kValueRegisters = 28;
-constexpr int kScratch = 28, kScratch2 = 29, kOneReg = 30, kZeroReg = 31;
+// zmm0-26 hold values; 27 takes a result that a mask then blends in; 28 and 29 are scratch; 30
+// holds 1.0 and 31 zero throughout. k7 holds the running lanes (kept in Frame::mask too: calls
+// clobber mask registers); operations use k1-k3.
+constexpr int kValueRegisters = 27;
+constexpr int kMaskedResult = 27, kScratch = 28, kScratch2 = 29, kOneReg = 30, kZeroReg = 31;
+constexpr int kMaskReg = 7;
 constexpr int kBytesPerValue = kLanes * 4;
 
 // Where the frame's pointers live while the code runs.
@@ -62,33 +65,79 @@ class Generator {
     where_.assign(static_cast<size_t>(values_), -1);
     zeroed_home_.assign(static_cast<size_t>(values_), false);
     dirty_.assign(static_cast<size_t>(values_), false);
-    for (int i = 0; i < static_cast<int>(insts.size()); ++i) {
-      for (Operand o : sources(insts[static_cast<size_t>(i)])) reads_[static_cast<size_t>(id(o))].push_back(i);
+    const int n = static_cast<int>(insts.size());
+    for (int i = 0; i < n; ++i) {
+      const Op op = insts[static_cast<size_t>(i)].op;
+      if (op == Op::Ddx || op == Op::Ddy || op == Op::Texture) last_neighbour_read_ = i;
+    }
+    masked_from_ = n;
+    for (int i = 0; i < n; ++i) {
+      if (discard_if_at(i)) i += 2;
+      else if (insts[static_cast<size_t>(i)].op <= Op::Discard) masked_from_ = std::min(masked_from_, i);
+    }
+    int depth = 0;
+    for (const ir::Inst& in : insts) {
+      if (in.op == Op::IfBegin || in.op == Op::FuncBegin) max_depth_ = std::max(max_depth_, ++depth);
+      if (in.op == Op::EndIf || in.op == Op::FuncEnd) --depth;
+    }
+    for (int i = 0; i < n; ++i) {
+      for (Operand o : sources(insts[static_cast<size_t>(i)], i)) reads_[static_cast<size_t>(id(o))].push_back(i);
       for (Operand o : destinations(insts[static_cast<size_t>(i)])) writes_[static_cast<size_t>(id(o))].push_back(i);
     }
     holder_.fill(-1);
   }
 
-  // Null when an instruction has no compiled form (structure, dynamic indexing).
+  // False when an instruction has no compiled form: loops, dynamic indexing, a return outside
+  // a function, an output stored inside a branch (the interpreter skips it when no lane runs).
   bool generate(const ir::Inst* stable_insts) {
     prologue();
     const int n = static_cast<int>(insts_.size());
-    int last_neighbour_read = -1;  // the last derivative or texture lookup
-    for (int i = 0; i < n; ++i)
-      if (insts_[static_cast<size_t>(i)].op == Op::Ddx || insts_[static_cast<size_t>(i)].op == Op::Ddy ||
-          insts_[static_cast<size_t>(i)].op == Op::Texture)
-        last_neighbour_read = i;
     for (int i = 0; i < n; ++i) {
       const ir::Inst& in = insts_[static_cast<size_t>(i)];
-      // if (a) discard;  The interpreter's later lanes differ where discarded lanes are not
-      // updated, which only derivatives and texture lookups (implicit LOD) could see.
-      if (in.op == Op::IfBegin && i + 2 < n && insts_[static_cast<size_t>(i) + 1].op == Op::Discard &&
-          insts_[static_cast<size_t>(i) + 2].op == Op::EndIf && last_neighbour_read < i) {
+      if (i < masked_from_ && discard_if_at(i)) {
         discard_if(i, in);
         i += 2;
         continue;
       }
-      if (in.op <= Op::Discard || in.op == Op::Gather || in.op == Op::Scatter) return false;
+      switch (in.op) {
+        case Op::IfBegin: if_begin(i, in); continue;
+        case Op::Else: {
+          const Mem entry = entry_slot(top()), cond = cond_slot(top());
+          x_.kmovw_load(1, entry);
+          x_.kmovw_load(2, cond);
+          x_.kandnw(1, 2, 1);
+          set_mask(1);
+          continue;
+        }
+        case Op::EndIf:
+        case Op::FuncEnd:
+          x_.kmovw_load(1, entry_slot(top()));
+          stack_.pop_back();
+          set_mask(1);
+          continue;
+        case Op::FuncBegin:
+          x_.kmovw_store(entry_slot(static_cast<int>(stack_.size())), kMaskReg);
+          stack_.push_back(Op::FuncBegin);
+          continue;
+        case Op::Return:
+          if (std::find(stack_.begin(), stack_.end(), Op::FuncBegin) == stack_.end()) return false;
+          remove_running_lanes(Op::FuncBegin);
+          continue;
+        case Op::Discard: {
+          x_.kmovw_to_gpr(rax, kMaskReg);
+          x_.mov_load(rdx, {rsp, 0});
+          x_.or_store32({rdx, static_cast<int32_t>(offsetof(Frame, discarded))}, rax);
+          remove_running_lanes(Op::Discard);
+          continue;
+        }
+        case Op::StoreOutput:
+        case Op::StoreColor:
+        case Op::StoreDepth:
+          if (!stack_.empty()) return false;
+          break;
+        default:
+          if (in.op <= Op::Discard || in.op == Op::Gather || in.op == Op::Scatter) return false;  // loops
+      }
       if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
     }
@@ -99,10 +148,53 @@ class Generator {
   const std::vector<uint8_t>& bytes() const { return x_.bytes(); }
 
  private:
+  // if (a) discard;  before any other structure and with no derivative or texture lookup
+  // after it, it only adds lanes to the discarded ones: the interpreter's later lanes differ
+  // where it stops updating discarded lanes, which only those could see.
+  bool discard_if_at(int i) const {
+    const size_t at = static_cast<size_t>(i);
+    return insts_[at].op == Op::IfBegin && at + 2 < insts_.size() && insts_[at + 1].op == Op::Discard &&
+           insts_[at + 2].op == Op::EndIf && last_neighbour_read_ < i;
+  }
+  // From the first structure on, a value is written only to the running lanes (k7).
+  bool masked(int at) const { return at >= masked_from_; }
+  int top() const { return static_cast<int>(stack_.size()) - 1; }
+  Mem entry_slot(int frame) const { return {rsp, 8 + 4 * frame}; }
+  Mem cond_slot(int frame) const { return {rsp, 10 + 4 * frame}; }
+  int32_t stack_bytes() const { return 8 + 16 * ((4 * max_depth_ + 15) / 16); }  // keeps rsp 16-byte aligned
+  void set_mask(int k) {
+    x_.kmovw(kMaskReg, k);
+    x_.mov_load(rdx, {rsp, 0});
+    x_.kmovw_store({rdx, static_cast<int32_t>(offsetof(Frame, mask))}, kMaskReg);
+  }
+  void if_begin(int at, const ir::Inst& in) {
+    uint32_t pinned = resident_sources(in, at);
+    const int a = use(in.a, at, pinned);
+    x_.vcmpps(1, a, kZeroReg, Cmp::Neq);
+    x_.kandw(1, 1, kMaskReg);
+    const int frame = static_cast<int>(stack_.size());
+    x_.kmovw_store(entry_slot(frame), kMaskReg);
+    x_.kmovw_store(cond_slot(frame), 1);
+    stack_.push_back(Op::IfBegin);
+    set_mask(1);
+    finish_sources(at, in);
+  }
+  // The running lanes leave every frame up to the innermost one of `stop` kind (all frames for
+  // Discard), and no lane runs until a frame ends.
+  void remove_running_lanes(Op stop) {
+    for (int f = top(); f >= 0 && stack_[static_cast<size_t>(f)] != stop; --f) {
+      x_.kmovw_load(1, entry_slot(f));
+      x_.kandnw(1, kMaskReg, 1);
+      x_.kmovw_store(entry_slot(f), 1);
+    }
+    x_.kxorw(1, 1, 1);
+    set_mask(1);
+  }
+
   int constant_count() const {
     int n = 0;
     for (const ir::Inst& in : insts_)
-      for (Operand o : sources(in))
+      for (Operand o : sources(in, -1))
         if (ir::is_const(o)) n = std::max(n, ir::const_index(o) + 1);
     return n;
   }
@@ -117,16 +209,20 @@ class Generator {
       return {};
     return {in.d};
   }
-  std::vector<Operand> sources(const ir::Inst& in) const {
+  // The values instruction `at` reads; under a mask, also the old values of its destinations,
+  // which the lanes that do not run keep.
+  std::vector<Operand> sources(const ir::Inst& in, int at) const {
     std::vector<Operand> s;
     if (in.op == Op::Texture) {
       const ir::TextureLookup& t = textures_[static_cast<size_t>(in.i0)];
       for (Operand o : {t.sampler, t.coord[0], t.coord[1], t.coord[2], t.coord[3], t.lod})
         if (o != ir::kNone) s.push_back(o);
-      return s;
+    } else {
+      for (Operand o : {in.a, in.b, in.c})
+        if (o != ir::kNone) s.push_back(o);
     }
-    for (Operand o : {in.a, in.b, in.c})
-      if (o != ir::kNone) s.push_back(o);
+    if (masked(at))
+      for (Operand d : destinations(in)) s.push_back(d);
     return s;
   }
   Mem home(int value) const {
@@ -209,8 +305,9 @@ class Generator {
 
   void prologue() {
     for (Gpr r : {rbx, rbp, r12, r13, r14, r15}) x_.push(r);
-    x_.add_rsp(-8);  // the stack 16-byte aligned for calls; the frame pointer kept in this slot
+    x_.add_rsp(-stack_bytes());  // [rsp]: the frame pointer; then the open frames' lane masks
     x_.mov_store({rsp, 0}, rdi);
+    x_.kmovw_load(kMaskReg, {rdi, static_cast<int32_t>(offsetof(Frame, mask))});
     x_.mov_load(kSpill, {rdi, static_cast<int32_t>(offsetof(Frame, spill))});
     x_.mov_load(kSlots, {rdi, static_cast<int32_t>(offsetof(Frame, slots))});
     x_.mov_load(kConstants, {rdi, static_cast<int32_t>(offsetof(Frame, constants))});
@@ -220,7 +317,7 @@ class Generator {
     fixed_registers();
   }
   void epilogue() {
-    x_.add_rsp(8);
+    x_.add_rsp(stack_bytes());
     for (Gpr r : {r15, r14, r13, r12, rbp, rbx}) x_.pop(r);
     x_.vzeroupper();
     x_.ret();
@@ -234,7 +331,7 @@ class Generator {
       if (dirty_[static_cast<size_t>(v)] && (next_read(v, at - 1) >= 0)) x_.store(home(v), r);
       release(r);
     }
-    for (Operand o : sources(*stable))
+    for (Operand o : sources(*stable, at))
       if (unwritten(id(o), at) && !zeroed_home_[static_cast<size_t>(id(o))]) {
         x_.store(home(id(o)), kZeroReg);
         zeroed_home_[static_cast<size_t>(id(o))] = true;
@@ -245,14 +342,17 @@ class Generator {
     x_.mov_imm(rax, reinterpret_cast<uint64_t>(&call_out));
     x_.call(rax);
     fixed_registers();
+    x_.mov_load(rdx, {rsp, 0});
+    x_.kmovw_load(kMaskReg, {rdx, static_cast<int32_t>(offsetof(Frame, mask))});
   }
 
   void native(int at, const ir::Inst& in) {
-    uint32_t pinned = resident_sources(in);  // a source's load must not evict another
-    int a = -1, b = -1, c = -1;
+    uint32_t pinned = resident_sources(in, at);  // a source's load must not evict another
+    int a = -1, b = -1, c = -1, old = -1;
     if (in.a != ir::kNone) a = use(in.a, at, pinned);
     if (in.b != ir::kNone) b = use(in.b, at, pinned);
     if (in.c != ir::kNone) c = use(in.c, at, pinned);
+    if (masked(at) && !destinations(in).empty()) old = use(in.d, at, pinned);
     switch (in.op) {
       case Op::StoreOutput: x_.store({kBlock, in.i0 * kBytesPerValue}, a); return finish_sources(at, in);
       case Op::StoreDepth: x_.store({kBlock, static_cast<int32_t>(offsetof(FragmentBlock, depth))}, a); return finish_sources(at, in);
@@ -271,8 +371,13 @@ class Generator {
     // The destination's old value ends here; the sequence below writes d last.
     const int dv = id(in.d);
     if (where_[static_cast<size_t>(dv)] >= 0) release(where_[static_cast<size_t>(dv)]);
-    const int d = allocate(at, resident_sources(in));
-    emit(in, d, a, b, c);
+    const int d = allocate(at, resident_sources(in, at));
+    if (old >= 0) {  // the running lanes take the result, the others keep the old value
+      emit(in, kMaskedResult, a, b, c);
+      x_.vblendmps(d, kMaskReg, old, kMaskedResult);
+    } else {
+      emit(in, d, a, b, c);
+    }
     holder_[static_cast<size_t>(d)] = dv;
     where_[static_cast<size_t>(dv)] = d;
     dirty_[static_cast<size_t>(dv)] = true;
@@ -280,14 +385,14 @@ class Generator {
   }
   // Sources read for the last time here free their registers (the destination may take one).
   void finish_sources(int at, const ir::Inst& in) {
-    for (Operand o : sources(in)) {
+    for (Operand o : sources(in, at)) {
       const int v = id(o);
       if (where_[static_cast<size_t>(v)] >= 0 && next_read(v, at) < 0) release(where_[static_cast<size_t>(v)]);
     }
   }
-  uint32_t resident_sources(const ir::Inst& in) const {
+  uint32_t resident_sources(const ir::Inst& in, int at) const {
     uint32_t pinned = 0;
-    for (Operand o : sources(in)) {
+    for (Operand o : sources(in, at)) {
       const int r = where_[static_cast<size_t>(id(o))];
       if (r >= 0) pinned |= 1u << r;
     }
@@ -296,7 +401,7 @@ class Generator {
 
   // The running lanes where a != 0 join the frame's discarded lanes.
   void discard_if(int at, const ir::Inst& in) {
-    uint32_t pinned = resident_sources(in);
+    uint32_t pinned = resident_sources(in, at);
     const int a = use(in.a, at, pinned);
     x_.vcmpps(1, a, kZeroReg, Cmp::Neq);
     x_.kmovw_to_gpr(rax, 1);
@@ -416,6 +521,10 @@ class Generator {
   std::vector<int> where_;
   std::vector<bool> dirty_;
   std::vector<bool> zeroed_home_;  // unwritten registers whose home a call-out reads
+  int last_neighbour_read_ = -1;   // the last derivative or texture lookup
+  int masked_from_ = 0;            // the first structure instruction (but discard_if_at's)
+  int max_depth_ = 0;
+  std::vector<Op> stack_;          // the open frames while generating: IfBegin or FuncBegin
   std::array<int, kValueRegisters> holder_;
   X86Encoder x_;
 };

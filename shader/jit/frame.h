@@ -22,7 +22,7 @@ struct Frame {
   const StageCode* stage;
   const TextureAccess* textures;
   Stage kind;
-  LaneMask mask;              // the lanes that run
+  LaneMask mask;              // the lanes that run (the code keeps it current in branches)
   LaneMask needed;            // the lanes whose results are used
   uint32_t discarded;         // out: lanes that executed discard (the code ORs them in)
 };

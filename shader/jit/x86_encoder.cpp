@@ -59,6 +59,11 @@ void X86Encoder::kmovw_load(int k, Mem m) {
   modrm_mem(k, m);
 }
 
+void X86Encoder::kmovw_store(Mem m, int k) {
+  emit({0xC4, static_cast<uint8_t>(0xC0 | inverted_bit(m.base, 3) << 5 | 1), 0x78, 0x91});
+  modrm_mem(k, m);
+}
+
 void X86Encoder::push(Gpr r) {
   if (r >= 8) bytes_.push_back(0x41);
   bytes_.push_back(static_cast<uint8_t>(0x50 + (r & 7)));

@@ -57,6 +57,10 @@ class X86Encoder {
   void kxorw(int k, int a, int b) { vex_k(0x47, 1, k, a, b); }
   void kxnorw(int k, int a, int b) { vex_k(0x46, 1, k, a, b); }
   void kmovw_to_gpr(Gpr d, int k) { vex_k(0x93, 0, d, 0, k); }  // zero-extended into d's 32 bits
+  void kmovw_store(Mem m, int k);
+  void kmovw(int k, int a) { vex_k(0x90, 0, k, 0, a); }
+  void kandw(int k, int a, int b) { vex_k(0x41, 1, k, a, b); }
+  void kandnw(int k, int a, int b) { vex_k(0x42, 1, k, a, b); }  // k = ~a & b
 
   // General-purpose.
   void push(Gpr r);
