@@ -28,6 +28,9 @@ constexpr uint8_t kFloor = 0x09, kTruncate = 0x0B;  // vrndscaleps modes
 constexpr int kValueRegisters = 27;
 constexpr int kMaskedResult = 27, kScratch = 28, kScratch2 = 29, kOneReg = 30, kZeroReg = 31;
 constexpr int kMaskReg = 7;
+// Loop iterations one invocation runs in all (as the interpreter's kIterationBudget, but per
+// block: only a shader that exhausts it can tell).
+constexpr uint32_t kIterationBudget = 1u << 18;
 constexpr int kBytesPerValue = kLanes * 4;
 
 // Where the frame's pointers live while the code runs.
@@ -75,15 +78,27 @@ class Generator {
       if (discard_if_at(i)) i += 2;
       else if (insts[static_cast<size_t>(i)].op <= Op::Discard) masked_from_ = std::min(masked_from_, i);
     }
-    int depth = 0;
-    for (const ir::Inst& in : insts) {
-      if (in.op == Op::IfBegin || in.op == Op::FuncBegin) max_depth_ = std::max(max_depth_, ++depth);
-      if (in.op == Op::EndIf || in.op == Op::FuncEnd) --depth;
+    std::vector<int> open;
+    for (int i = 0; i < n; ++i) {
+      const Op op = insts[static_cast<size_t>(i)].op;
+      if (op == Op::IfBegin || op == Op::FuncBegin || op == Op::LoopBegin) {
+        open.push_back(i);
+        max_depth_ = std::max(max_depth_, static_cast<int>(open.size()));
+      }
+      if ((op == Op::EndIf || op == Op::FuncEnd || op == Op::LoopEnd) && !open.empty()) {
+        if (op == Op::LoopEnd) loops_.push_back({open.back(), i});
+        open.pop_back();
+      }
     }
     for (int i = 0; i < n; ++i) {
       for (Operand o : sources(insts[static_cast<size_t>(i)], i)) reads_[static_cast<size_t>(id(o))].push_back(i);
       for (Operand o : destinations(insts[static_cast<size_t>(i)])) writes_[static_cast<size_t>(id(o))].push_back(i);
     }
+    // A value read in a loop is read again by the next iteration: it lives to the loop's end.
+    for (auto [begin, end] : loops_)
+      for (auto& r : reads_)
+        if (std::any_of(r.begin(), r.end(), [&](int at) { return at > begin && at < end; }))
+          r.insert(std::upper_bound(r.begin(), r.end(), end), end);
     holder_.fill(-1);
   }
 
@@ -121,22 +136,55 @@ class Generator {
           continue;
         case Op::Return:
           if (std::find(stack_.begin(), stack_.end(), Op::FuncBegin) == stack_.end()) return false;
-          remove_running_lanes(Op::FuncBegin);
+          x_.kmovw(1, kMaskReg);
+          remove_lanes(Op::FuncBegin);
+          stop_running();
           continue;
         case Op::Discard: {
           x_.kmovw_to_gpr(rax, kMaskReg);
           x_.mov_load(rdx, {rsp, 0});
           x_.or_store32({rdx, static_cast<int32_t>(offsetof(Frame, discarded))}, rax);
-          remove_running_lanes(Op::Discard);
+          x_.kmovw(1, kMaskReg);
+          remove_lanes(Op::Discard);
+          stop_running();
           continue;
         }
+        case Op::LoopBegin: loop_begin(i); continue;
+        case Op::ContinuePoint:
+          x_.kmovw_load(1, cond_slot(top()));  // the loop's running lanes
+          set_mask(1);
+          continue;
+        case Op::LoopEnd: loop_end(i); continue;
+        case Op::Break:
+          x_.kmovw(1, kMaskReg);
+          remove_lanes(Op::LoopBegin);
+          stop_running();
+          continue;
+        case Op::BreakIfNot: {  // the running lanes where a == 0 leave the loop
+          uint32_t pinned = resident_sources(in, i);
+          const int a = use(in.a, i, pinned);
+          x_.vcmpps(1, a, kZeroReg, Cmp::Eq);
+          x_.kandw(1, 1, kMaskReg);
+          finish_sources(i, in);
+          remove_lanes(Op::LoopBegin);
+          x_.kandnw(1, 1, kMaskReg);
+          set_mask(1);
+          continue;
+        }
+        case Op::Continue:  // the running lanes skip to the loop's continue point
+          for (int f = top(); f >= 0 && stack_[static_cast<size_t>(f)] != Op::LoopBegin; --f) {
+            x_.kmovw(1, kMaskReg);
+            and_not(entry_slot(f));
+          }
+          stop_running();
+          continue;
         case Op::StoreOutput:
         case Op::StoreColor:
         case Op::StoreDepth:
           if (!stack_.empty()) return false;
           break;
         default:
-          if (in.op <= Op::Discard || in.op == Op::Gather || in.op == Op::Scatter) return false;  // loops
+          if (in.op == Op::Gather || in.op == Op::Scatter) return false;
       }
       if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
@@ -160,8 +208,9 @@ class Generator {
   bool masked(int at) const { return at >= masked_from_; }
   int top() const { return static_cast<int>(stack_.size()) - 1; }
   Mem entry_slot(int frame) const { return {rsp, 8 + 4 * frame}; }
-  Mem cond_slot(int frame) const { return {rsp, 10 + 4 * frame}; }
-  int32_t stack_bytes() const { return 8 + 16 * ((4 * max_depth_ + 15) / 16); }  // keeps rsp 16-byte aligned
+  Mem cond_slot(int frame) const { return {rsp, 10 + 4 * frame}; }  // an if's condition, a loop's running lanes
+  Mem budget_slot() const { return {rsp, 8 + 4 * max_depth_}; }
+  int32_t stack_bytes() const { return 8 + 16 * ((4 * max_depth_ + 4 + 15) / 16); }  // keeps rsp 16-byte aligned
   void set_mask(int k) {
     x_.kmovw(kMaskReg, k);
     x_.mov_load(rdx, {rsp, 0});
@@ -179,15 +228,75 @@ class Generator {
     set_mask(1);
     finish_sources(at, in);
   }
-  // The running lanes leave every frame up to the innermost one of `stop` kind (all frames for
-  // Discard), and no lane runs until a frame ends.
-  void remove_running_lanes(Op stop) {
-    for (int f = top(); f >= 0 && stack_[static_cast<size_t>(f)] != stop; --f) {
-      x_.kmovw_load(1, entry_slot(f));
-      x_.kandnw(1, kMaskReg, 1);
-      x_.kmovw_store(entry_slot(f), 1);
+  // The lanes in k1 leave every frame above the innermost one of `stop` kind (all frames for
+  // Discard), and that loop's running lanes (the interpreter's remove_lanes).
+  void remove_lanes(Op stop) {
+    for (int f = top(); f >= 0; --f) {
+      const Op kind = stack_[static_cast<size_t>(f)];
+      if (kind == stop) {
+        if (stop == Op::LoopBegin) and_not(cond_slot(f));
+        return;
+      }
+      and_not(entry_slot(f));
+      if (kind == Op::LoopBegin) and_not(cond_slot(f));
     }
+  }
+  void and_not(Mem slot) {  // slot &= ~k1
+    x_.kmovw_load(2, slot);
+    x_.kandnw(2, 1, 2);
+    x_.kmovw_store(slot, 2);
+  }
+  void stop_running() {  // no lane runs until a frame ends
     x_.kxorw(1, 1, 1);
+    set_mask(1);
+  }
+  // Registers hold nothing at a loop's start and at its back edge, so that both agree; what
+  // a later instruction reads goes to its home.
+  void flush_registers(int at) {
+    for (int r = 0; r < kValueRegisters; ++r) {
+      const int v = holder_[static_cast<size_t>(r)];
+      if (v < 0) continue;
+      if (dirty_[static_cast<size_t>(v)] && next_read(v, at - 1) >= 0) x_.store(home(v), r);
+      release(r);
+    }
+  }
+  void loop_begin(int at) {
+    flush_registers(at);
+    int end = at;
+    for (auto [b, e] : loops_)
+      if (b == at) end = e;
+    // A register the loop reads before anything wrote it is zero in the first iteration only.
+    for (int v = 0; v < registers_; ++v) {
+      const auto& r = reads_[static_cast<size_t>(v)];
+      const bool read_inside = std::any_of(r.begin(), r.end(), [&](int q) { return q > at && q < end; });
+      if (read_inside && unwritten(v, at)) {
+        x_.store(home(v), kZeroReg);
+        zeroed_home_[static_cast<size_t>(v)] = true;
+      }
+    }
+    const int frame = static_cast<int>(stack_.size());
+    x_.kmovw_store(entry_slot(frame), kMaskReg);
+    x_.kmovw_store(cond_slot(frame), kMaskReg);  // a loop frame's running lanes
+    stack_.push_back(Op::LoopBegin);
+    loop_starts_.push_back(x_.size());
+  }
+  // Again while any lane runs and the invocation's iteration budget lasts; then the lanes that
+  // entered the loop go on.
+  void loop_end(int at) {
+    flush_registers(at);
+    const int frame = top();
+    x_.kmovw_load(1, cond_slot(frame));
+    x_.kortestw(1, 1);
+    const size_t none_running = x_.jump_if_zero();
+    x_.dec32(budget_slot());
+    const size_t budget_spent = x_.jump_if_not_greater();
+    set_mask(1);
+    x_.jump_back(loop_starts_.back());
+    x_.patch_jump(none_running);
+    x_.patch_jump(budget_spent);
+    loop_starts_.pop_back();
+    x_.kmovw_load(1, entry_slot(frame));
+    stack_.pop_back();
     set_mask(1);
   }
 
@@ -273,7 +382,7 @@ class Generator {
   }
   // A register read before anything wrote it holds zero, as in the interpreter's zeroed file.
   bool unwritten(int value, int at) const {
-    if (value >= registers_) return false;
+    if (value >= registers_ || zeroed_home_[static_cast<size_t>(value)]) return false;
     const auto& w = writes_[static_cast<size_t>(value)];
     return w.empty() || w.front() >= at;
   }
@@ -308,6 +417,7 @@ class Generator {
     x_.add_rsp(-stack_bytes());  // [rsp]: the frame pointer; then the open frames' lane masks
     x_.mov_store({rsp, 0}, rdi);
     x_.kmovw_load(kMaskReg, {rdi, static_cast<int32_t>(offsetof(Frame, mask))});
+    x_.mov_store_imm32(budget_slot(), kIterationBudget);
     x_.mov_load(kSpill, {rdi, static_cast<int32_t>(offsetof(Frame, spill))});
     x_.mov_load(kSlots, {rdi, static_cast<int32_t>(offsetof(Frame, slots))});
     x_.mov_load(kConstants, {rdi, static_cast<int32_t>(offsetof(Frame, constants))});
@@ -332,7 +442,7 @@ class Generator {
       release(r);
     }
     for (Operand o : sources(*stable, at))
-      if (unwritten(id(o), at) && !zeroed_home_[static_cast<size_t>(id(o))]) {
+      if (unwritten(id(o), at)) {
         x_.store(home(id(o)), kZeroReg);
         zeroed_home_[static_cast<size_t>(id(o))] = true;
       }
@@ -524,7 +634,9 @@ class Generator {
   int last_neighbour_read_ = -1;   // the last derivative or texture lookup
   int masked_from_ = 0;            // the first structure instruction (but discard_if_at's)
   int max_depth_ = 0;
-  std::vector<Op> stack_;          // the open frames while generating: IfBegin or FuncBegin
+  std::vector<Op> stack_;          // the open frames while generating: IfBegin, FuncBegin or LoopBegin
+  std::vector<std::pair<int, int>> loops_;  // each loop's LoopBegin and LoopEnd
+  std::vector<size_t> loop_starts_;         // the open loops' first instructions in the code
   std::array<int, kValueRegisters> holder_;
   X86Encoder x_;
 };

@@ -114,6 +114,41 @@ void X86Encoder::or_store32(Mem m, Gpr s) {
   modrm_mem(s, m);
 }
 
+void X86Encoder::mov_store_imm32(Mem m, uint32_t value) {
+  if (m.base >= 8) bytes_.push_back(0x41);
+  bytes_.push_back(0xC7);
+  modrm_mem(0, m);
+  emit32(value);
+}
+
+void X86Encoder::dec32(Mem m) {
+  if (m.base >= 8) bytes_.push_back(0x41);
+  bytes_.push_back(0xFF);
+  modrm_mem(1, m);
+}
+
+size_t X86Encoder::jump_if_zero() {
+  emit({0x0F, 0x84});
+  emit32(0);
+  return bytes_.size();
+}
+
+size_t X86Encoder::jump_if_not_greater() {
+  emit({0x0F, 0x8E});
+  emit32(0);
+  return bytes_.size();
+}
+
+void X86Encoder::jump_back(size_t target) {
+  bytes_.push_back(0xE9);
+  emit32(static_cast<uint32_t>(static_cast<int64_t>(target) - static_cast<int64_t>(bytes_.size() + 4)));
+}
+
+void X86Encoder::patch_jump(size_t site) {
+  const auto displacement = static_cast<uint32_t>(static_cast<int64_t>(bytes_.size()) - static_cast<int64_t>(site));
+  for (int i = 0; i < 4; ++i) bytes_[site - 4 + static_cast<size_t>(i)] = static_cast<uint8_t>(displacement >> (8 * i));
+}
+
 void X86Encoder::add_rsp(int32_t value) {
   emit({0x48, 0x81, 0xC4});
   emit32(static_cast<uint32_t>(value));

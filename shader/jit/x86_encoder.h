@@ -3,6 +3,7 @@
 // general-purpose moves, pushes and calls of a function's frame. Memory operands are always
 // [base + disp32].
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -73,6 +74,16 @@ class X86Encoder {
   void or_store32(Mem m, Gpr s);          // or [m], s (32 bits)
   void add_rsp(int32_t value);   // add rsp, imm32 (negative: sub)
   void call(Gpr target);
+  void mov_store_imm32(Mem m, uint32_t value);  // mov dword [m], imm32
+  void dec32(Mem m);                             // dec dword [m]
+  // Jumps with 32-bit displacements: the displacement is patched once the target is known
+  // (patch_jump), or given for a backward target (jump_back).
+  size_t jump_if_zero();           // jz
+  size_t jump_if_not_greater();    // jle
+  void jump_back(size_t target);   // jmp
+  void patch_jump(size_t site);    // the jump at `site` goes to the current end of the code
+  size_t size() const { return bytes_.size(); }
+  void kortestw(int a, int b) { vex_k(0x98, 0, a, 0, b); }  // ZF: a | b is zero
   void vzeroupper() { emit({0xC5, 0xF8, 0x77}); }
   void ret() { emit({0xC3}); }
 

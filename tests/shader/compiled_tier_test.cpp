@@ -203,15 +203,16 @@ TEST_F(CompiledTier, ConditionalDiscardAndUnwrittenRegisters) {
   expect_same_bits(std::move(code), Stage::Fragment, {}, "discard");
 }
 
-// Random programs with nested if/else, functions that return early and discards inside
-// branches: the compiled code's masked writes keep what the interpreter keeps.
+// Random programs with nested if/else, loops with data-dependent breaks and continues,
+// functions that return early and discards inside branches: the compiled code's masked writes
+// keep what the interpreter keeps.
 class RandomProgram {
  public:
   explicit RandomProgram(uint32_t seed) : random_(seed) {}
 
   ir::Code make() {
     for (int i = 0; i < 3; ++i) load(code_, Stage::Fragment, i);  // r0-r2; r3-r11 start unwritten
-    code_.registers = kRegisters;
+    code_.registers = kRegisters;  // loops' counters come after
     statements(0, false);
     for (int c = 0; c < 4; ++c) store(code_, Stage::Fragment, pick_register(), c);
     return std::move(code_);
@@ -227,31 +228,52 @@ class RandomProgram {
     return code_.insts.size() - 1;
   }
 
-  void statements(int depth, bool in_function) {
+  void statements(int depth, bool in_function, bool in_loop = false) {
     const int count = 2 + pick(5);
     for (int k = 0; k < count; ++k) {
-      const int kind = pick(10);
+      const int kind = pick(12);
       if (kind < 6 || depth >= 3) {
         value();
       } else if (kind < 8) {
         const size_t begin = emit(ir::Inst{Op::IfBegin, ir::kNone, pick_register()});
-        statements(depth + 1, in_function);
+        statements(depth + 1, in_function, in_loop);
         if (pick(2)) {
           const size_t otherwise = emit(ir::Inst{Op::Else});
           code_.insts[begin].i0 = static_cast<int32_t>(otherwise);
-          statements(depth + 1, in_function);
+          statements(depth + 1, in_function, in_loop);
           code_.insts[otherwise].i0 = static_cast<int32_t>(emit(ir::Inst{Op::EndIf}));
         } else {
           code_.insts[begin].i0 = static_cast<int32_t>(emit(ir::Inst{Op::EndIf}));
         }
       } else if (kind == 8 && !in_function) {
         emit(ir::Inst{Op::FuncBegin});
-        statements(depth + 1, true);
+        statements(depth + 1, true, in_loop);
         emit(ir::Inst{Op::FuncEnd});
+      } else if (kind == 9) {
+        loop(depth, in_function);
       } else if (depth > 0) {
-        emit(ir::Inst{in_function && pick(2) ? Op::Return : Op::Discard});
+        const int exit = pick(in_loop ? 4 : 2);
+        emit(ir::Inst{exit == 0 ? Op::Discard : exit == 1 ? (in_function ? Op::Return : Op::Discard)
+                                                          : exit == 2 ? Op::Break : Op::Continue});
       }
     }
+  }
+
+  // for (i = 0; i < n && data-dependent exits; ++i) { ... }, n in 0..4.
+  void loop(int depth, bool in_function) {
+    const Operand counter = code_.new_register(), test = code_.new_register();
+    emit(ir::Inst{Op::Mov, counter, code_.constant(0.0f)});
+    const size_t begin = emit(ir::Inst{Op::LoopBegin});
+    emit(ir::Inst{Op::Lt, test, counter, code_.constant(static_cast<float>(pick(5)))});
+    const size_t body = emit(ir::Inst{Op::BreakIfNot, ir::kNone, test});
+    if (pick(2)) emit(ir::Inst{Op::BreakIfNot, ir::kNone, pick_register()});
+    statements(depth + 1, in_function, true);
+    emit(ir::Inst{Op::ContinuePoint});
+    emit(ir::Inst{Op::Add, counter, counter, code_.constant(1.0f)});
+    const size_t end = emit(ir::Inst{Op::LoopEnd});
+    code_.insts[begin].i0 = static_cast<int32_t>(end);
+    code_.insts[end].i0 = static_cast<int32_t>(begin + 1);
+    (void)body;
   }
 
   void value() {
@@ -270,8 +292,8 @@ class RandomProgram {
   ir::Code code_;
 };
 
-TEST_F(CompiledTier, BranchesFunctionsAndDiscardsKeepTheInterpretersLanes) {
-  for (uint32_t seed = 1; seed <= 60; ++seed) {
+TEST_F(CompiledTier, BranchesLoopsFunctionsAndDiscardsKeepTheInterpretersLanes) {
+  for (uint32_t seed = 1; seed <= 100; ++seed) {
     RandomProgram program(seed);
     const std::string what = "random program " + std::to_string(seed);
     expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
