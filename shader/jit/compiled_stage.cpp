@@ -20,6 +20,7 @@ namespace {
 // Bit patterns the generated code broadcasts: 1.0, the sign bit, all but the sign.
 alignas(64) constexpr uint32_t kPool[] = {0x3F800000u, 0x80000000u, 0x7FFFFFFFu};
 enum PoolEntry { kOne, kSignBit, kAbsBits };
+alignas(64) constexpr int32_t kLaneIndex[kLanes] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 constexpr uint8_t kFloor = 0x09, kTruncate = 0x0B;  // vrndscaleps modes
 
 // zmm0-26 hold values; 27 takes a result that a mask then blends in; 28 and 29 are scratch; 30
@@ -44,7 +45,7 @@ bool natively_emitted(Op op) {
     case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Min: case Op::Max: case Op::Step:
     case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne: case Op::And: case Op::Or:
     case Op::Xor: case Op::Clamp: case Op::Mix: case Op::Select: case Op::Mad: case Op::GatherUniform:
-    case Op::Rsq: case Op::NormScale:
+    case Op::Rsq: case Op::NormScale: case Op::Gather: case Op::Scatter:
       return true;
     default:
       return false;
@@ -184,7 +185,7 @@ class Generator {
           if (!stack_.empty()) return false;
           break;
         default:
-          if (in.op == Op::Gather || in.op == Op::Scatter) return false;
+          break;
       }
       if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
@@ -329,11 +330,46 @@ class Generator {
     } else {
       for (Operand o : {in.a, in.b, in.c})
         if (o != ir::kNone) s.push_back(o);
+      if (in.op == Op::Gather || in.op == Op::Scatter)  // the indexed registers, all of them
+        for (int k = 0; k <= in.i1; ++k) s.push_back(in.i0 + k);
     }
     if (masked(at))
       for (Operand d : destinations(in)) s.push_back(d);
     return s;
   }
+  // The homes of the registers a gather or scatter indexes hold their values (zero for the
+  // unwritten); after a scatter (`written`), the homes alone do.
+  void sync_indexed_registers(int at, const ir::Inst& in, bool written) {
+    for (int v = in.i0; v <= in.i0 + in.i1; ++v) {
+      const int r = where_[static_cast<size_t>(v)];
+      if (r >= 0 && dirty_[static_cast<size_t>(v)]) {
+        x_.store(home(v), r);
+        dirty_[static_cast<size_t>(v)] = false;
+      }
+      if (r >= 0 && written) release(r);
+      if (unwritten(v, at)) x_.store(home(v), kZeroReg);
+      if (unwritten(v, at) || written) zeroed_home_[static_cast<size_t>(v)] = true;
+    }
+  }
+  // kScratch = the lanes' offsets (in floats, from the first indexed register's home) of
+  // register i0 + clamp_index(a, i1), as the interpreter's Gather and Scatter index.
+  void indexed_lane_offsets(int a, int32_t limit) {
+    clamped_index(a, limit);
+    x_.vpslld(kScratch, kScratch, 4);  // kLanes floats per register
+    x_.mov_imm(rax, reinterpret_cast<uint64_t>(kLaneIndex));
+    x_.load(kScratch2, {rax, 0});
+    x_.vpaddd(kScratch, kScratch, kScratch2);
+  }
+  // kScratch = clamp_index(a, limit) per lane: negative and NaN give 0, beyond the limit it.
+  void clamped_index(int a, int32_t limit) {
+    x_.vcvttps2dq(kScratch, a);  // out of range: 0x80000000, which the unsigned min clamps
+    x_.vcmpps(1, a, kZeroReg, Cmp::Ge);
+    x_.vmovaps(kScratch, kScratch, 1, true);
+    x_.mov_imm32(rax, static_cast<uint32_t>(limit));
+    x_.vpbroadcastd(kScratch2, rax);
+    x_.vpminud(kScratch, kScratch, kScratch2);
+  }
+
   Mem home(int value) const {
     if (value < registers_) return {kSpill, value * kBytesPerValue};
     if (value < registers_ + slots_) return {kSlots, (value - registers_) * kBytesPerValue};
@@ -356,9 +392,11 @@ class Generator {
     }
     holder_[static_cast<size_t>(reg)] = -1;
   }
+  // Before a new value of instruction `at` takes the register: a gather's or scatter's indexed
+  // registers are read at `at` itself, from their homes.
   void spill_if_needed(int reg, int at) {
     const int v = holder_[static_cast<size_t>(reg)];
-    if (v >= 0 && dirty_[static_cast<size_t>(v)] && next_read(v, at) >= 0) {
+    if (v >= 0 && dirty_[static_cast<size_t>(v)] && next_read(v, at - 1) >= 0) {
       x_.store(home(v), reg);
       dirty_[static_cast<size_t>(v)] = false;
     }
@@ -466,6 +504,12 @@ class Generator {
     switch (in.op) {
       case Op::StoreOutput: x_.store({kBlock, in.i0 * kBytesPerValue}, a); return finish_sources(at, in);
       case Op::StoreDepth: x_.store({kBlock, static_cast<int32_t>(offsetof(FragmentBlock, depth))}, a); return finish_sources(at, in);
+      case Op::Scatter:  // register i0 + clamp_index(a, i1) = b in the running lanes
+        sync_indexed_registers(at, in, true);
+        indexed_lane_offsets(a, in.i1);
+        x_.kmovw(3, kMaskReg);
+        x_.vscatterdps(kSpill, kScratch, in.i0 * kBytesPerValue, 3, b);
+        return finish_sources(at, in);
       case Op::StoreColor: {
         const int32_t color = static_cast<int32_t>(offsetof(FragmentBlock, color));
         for (int buffer = 0; buffer < kMaxDrawBuffers; ++buffer) {
@@ -477,6 +521,7 @@ class Generator {
       default:
         break;
     }
+    if (in.op == Op::Gather) sync_indexed_registers(at, in, false);
     finish_sources(at, in);
     // The destination's old value ends here; the sequence below writes d last.
     const int dv = id(in.d);
@@ -500,9 +545,14 @@ class Generator {
       if (where_[static_cast<size_t>(v)] >= 0 && next_read(v, at) < 0) release(where_[static_cast<size_t>(v)]);
     }
   }
+  // The registers holding operands the instruction reads from registers (a gather's or
+  // scatter's indexed registers are read from their homes): a new value must not take them.
   uint32_t resident_sources(const ir::Inst& in, int at) const {
     uint32_t pinned = 0;
-    for (Operand o : sources(in, at)) {
+    const std::vector<Operand> all = sources(in, at);
+    const bool indexed = in.op == Op::Gather || in.op == Op::Scatter;
+    for (Operand o : all) {
+      if (indexed && o >= in.i0 && o <= in.i0 + in.i1 && o != in.a && o != in.b && o != in.d) continue;
       const int r = where_[static_cast<size_t>(id(o))];
       if (r >= 0) pinned |= 1u << r;
     }
@@ -567,16 +617,14 @@ class Generator {
         x_.vdivps(kScratch, kOneReg, kScratch);
         x_.vcmpps(1, a, kZeroReg, Cmp::Gt);
         return x_.vmovaps(d, kScratch, 1, true);
-      case Op::GatherUniform: {  // uniforms[i0 + clamp_index(a, i1)]
-        x_.vcvttps2dq(kScratch, a);  // out of range: 0x80000000, which the unsigned min clamps
-        x_.vcmpps(1, a, kZeroReg, Cmp::Ge);
-        x_.vmovaps(kScratch, kScratch, 1, true);  // negative and NaN: 0
-        x_.mov_imm32(rax, static_cast<uint32_t>(in.i1));
-        x_.vpbroadcastd(kScratch2, rax);
-        x_.vpminud(kScratch, kScratch, kScratch2);
+      case Op::GatherUniform:  // uniforms[i0 + clamp_index(a, i1)]
+        clamped_index(a, in.i1);
         x_.kxnorw(3, 3, 3);
         return x_.vgatherdps(d, 3, kUniforms, kScratch, in.i0 * 4);
-      }
+      case Op::Gather:  // register i0 + clamp_index(a, i1), from its home
+        indexed_lane_offsets(a, in.i1);
+        x_.kxnorw(3, 3, 3);
+        return x_.vgatherdps(d, 3, kSpill, kScratch, in.i0 * kBytesPerValue);
       case Op::Not: return compare(d, a, kZeroReg, Cmp::Eq);
       case Op::ToBool: return compare(d, a, kZeroReg, Cmp::Neq);
       case Op::Add: return x_.vaddps(d, a, b);

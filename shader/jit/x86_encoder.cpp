@@ -44,13 +44,13 @@ void X86Encoder::vex_k(uint8_t opcode, int l, int k, int a, int b) {
         static_cast<uint8_t>(0xC0 | (k & 7) << 3 | (b & 7))});
 }
 
-void X86Encoder::vgatherdps(int d, int mask, Gpr base, int index, int32_t disp) {
-  const uint8_t p0 = static_cast<uint8_t>(inverted_bit(d, 3) << 7 | inverted_bit(index, 3) << 6 | inverted_bit(base, 3) << 5 |
-                                          inverted_bit(d, 4) << 4 | 2);
+void X86Encoder::vsib(uint8_t opcode, int reg, int mask, Gpr base, int index, int32_t disp) {
+  const uint8_t p0 = static_cast<uint8_t>(inverted_bit(reg, 3) << 7 | inverted_bit(index, 3) << 6 | inverted_bit(base, 3) << 5 |
+                                          inverted_bit(reg, 4) << 4 | 2);
   const uint8_t p1 = static_cast<uint8_t>(15 << 3 | 1 << 2 | 1);
   const uint8_t p2 = static_cast<uint8_t>(kLength512 | inverted_bit(index, 4) << 3 | (mask & 7));
-  emit({0x62, p0, p1, p2, 0x92, static_cast<uint8_t>(0x80 | (d & 7) << 3 | 4),
-        static_cast<uint8_t>(2 << 6 | (index & 7) << 3 | (base & 7))});
+  emit({0x62, p0, p1, p2, opcode, static_cast<uint8_t>(0x80 | (reg & 7) << 3 | 4),
+        static_cast<uint8_t>(2 << 6 | (index & 7) << 3 | (base & 7))});  // scale 4
   emit32(static_cast<uint32_t>(disp));
 }
 

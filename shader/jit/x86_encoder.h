@@ -40,8 +40,15 @@ class X86Encoder {
   }
   void vpminud(int d, int a, int b) { evex_rrr(0x3B, 2, 1, d, a, b); }
   void vpbroadcastd(int d, Gpr s) { evex_rrr(0x7C, 2, 1, d, 0, s); }  // every lane = the low 32 bits of s
-  // d = base[index lane * 4 + disp] in every lane; clears mask k (1..7) which must be all ones.
-  void vgatherdps(int d, int mask, Gpr base, int index, int32_t disp);
+  void vpaddd(int d, int a, int b) { evex_rrr(0xFE, 1, 1, d, a, b); }
+  void vpslld(int d, int a, uint8_t bits) {
+    evex_rrr(0x72, 1, 1, 6, d, a);
+    bytes_.push_back(bits);
+  }
+  // d = base[index lane * 4 + disp] in the lanes of mask k (1..7), which it clears.
+  void vgatherdps(int d, int mask, Gpr base, int index, int32_t disp) { vsib(0x92, d, mask, base, index, disp); }
+  // base[index lane * 4 + disp] = s in the lanes of mask k (1..7), which it clears.
+  void vscatterdps(Gpr base, int index, int32_t disp, int mask, int s) { vsib(0xA2, s, mask, base, index, disp); }
   // d = mask ? b : a.
   void vblendmps(int d, int mask, int a, int b) { evex_rrr(0x65, 2, 1, d, a, b, mask); }
   void vmovaps(int d, int a, int mask = 0, bool zeroing = false) { evex_rrr(0x28, 1, 0, d, 0, a, mask, zeroing); }
@@ -95,6 +102,7 @@ class X86Encoder {
   void evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask = 0, bool zeroing = false);
   void evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m);
   void modrm_mem(int reg, Mem m);
+  void vsib(uint8_t opcode, int reg, int mask, Gpr base, int index, int32_t disp);
   void vex_k(uint8_t opcode, int l, int k, int a, int b);
   void rex_w(int reg, Gpr base);
 

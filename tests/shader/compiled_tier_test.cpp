@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "shader/execute.h"
+#include "tests/shader/shader_test_util.h"
 #include "shader/jit/compiled_stage.h"
 
 namespace pineda::shader::test {
@@ -204,24 +205,25 @@ TEST_F(CompiledTier, ConditionalDiscardAndUnwrittenRegisters) {
 }
 
 // Random programs with nested if/else, loops with data-dependent breaks and continues,
+// registers indexed per lane,
 // functions that return early and discards inside branches: the compiled code's masked writes
 // keep what the interpreter keeps.
 class RandomProgram {
  public:
-  explicit RandomProgram(uint32_t seed) : random_(seed) {}
+  // `registers` values, of which `array` from r3 on form an array indexed per lane.
+  RandomProgram(uint32_t seed, int registers, int array) : registers_(registers), array_(array), random_(seed) {}
 
   ir::Code make() {
     for (int i = 0; i < 3; ++i) load(code_, Stage::Fragment, i);  // r0-r2; r3-r11 start unwritten
-    code_.registers = kRegisters;  // loops' counters come after
+    code_.registers = registers_;  // loops' counters come after
     statements(0, false);
     for (int c = 0; c < 4; ++c) store(code_, Stage::Fragment, pick_register(), c);
     return std::move(code_);
   }
 
  private:
-  static constexpr int kRegisters = 12;
   int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(random_); }
-  Operand pick_register() { return pick(kRegisters); }
+  Operand pick_register() { return pick(registers_); }
   Operand pick_operand() { return pick(4) == 0 ? code_.constant(static_cast<float>(pick(7)) * 0.5f - 1.0f) : pick_register(); }
   size_t emit(ir::Inst in) {
     code_.insts.push_back(in);
@@ -280,6 +282,11 @@ class RandomProgram {
     static constexpr Op kOps[] = {Op::Add, Op::Sub, Op::Mul, Op::Div, Op::Min, Op::Max, Op::Floor, Op::Fract,
                                   Op::Mad, Op::Mix, Op::Select, Op::Lt, Op::Ne, Op::Sin, Op::Sqrt, Op::Abs,
                                   Op::Neg, Op::Ddx, Op::Ddy, Op::Mov, Op::Clamp, Op::Step, Op::Pow, Op::Exp2};
+    if (pick(8) == 0) {
+      if (pick(2)) emit(ir::Inst{Op::Gather, pick_register(), pick_register(), ir::kNone, ir::kNone, 3, array_ - 1});
+      else emit(ir::Inst{Op::Scatter, ir::kNone, pick_register(), pick_operand(), ir::kNone, 3, array_ - 1});
+      return;
+    }
     const Op op = kOps[pick(static_cast<int>(std::size(kOps)))];
     const int arity = op == Op::Mov ? 1 : ir::op_arity(op);
     ir::Inst in{op, pick_register(), pick_register()};
@@ -288,16 +295,52 @@ class RandomProgram {
     emit(in);
   }
 
+  int registers_, array_;
   std::mt19937 random_;
   ir::Code code_;
 };
 
 TEST_F(CompiledTier, BranchesLoopsFunctionsAndDiscardsKeepTheInterpretersLanes) {
   for (uint32_t seed = 1; seed <= 100; ++seed) {
-    RandomProgram program(seed);
+    RandomProgram program(seed, 12, 4);
     const std::string what = "random program " + std::to_string(seed);
     expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
   }
+}
+
+// More values than registers, most of them an indexed array: indexed registers are evicted
+// and read from their homes.
+TEST_F(CompiledTier, RegisterPressureWithIndexedRegisters) {
+  for (uint32_t seed = 1; seed <= 40; ++seed) {
+    RandomProgram program(seed, 48, 40);
+    const std::string what = "random wide program " + std::to_string(seed);
+    expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
+  }
+}
+
+// piglit's variable-indexing tests: an element of a local array of matrices read by two
+// uniform indices (a register gather whose array the code wrote just before).
+TEST_F(CompiledTier, IndexedLocalMatrixArray) {
+  auto p = link_ok("", R"(uniform int index;
+uniform int row;
+uniform float expect;
+void main() {
+  mat4 m[3];
+  m[0] = mat4(1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0, 16.0);
+  m[1] = mat4(17.0, 18.0, 19.0, 20.0, 21.0, 22.0, 23.0, 24.0, 25.0, 26.0, 27.0, 28.0, 29.0, 30.0, 31.0, 32.0);
+  m[2] = mat4(33.0, 34.0, 35.0, 36.0, 37.0, 38.0, 39.0, 40.0, 41.0, 42.0, 43.0, 44.0, 45.0, 46.0, 47.0, 48.0);
+  gl_FragColor = (m[index][1][row] == expect) ? vec4(0.0, 1.0, 0.0, 1.0) : vec4(1.0, 0.0, 0.0, 1.0);
+})");
+  ASSERT_NE(p, nullptr);
+  for (int index = 0; index < 3; ++index)
+    for (int row = 0; row < 4; ++row) {
+      FragmentRun run(*p);
+      run.set_uniform(*p, "index", {static_cast<float>(index)});
+      run.set_uniform(*p, "row", {static_cast<float>(row)});
+      run.set_uniform(*p, "expect", {static_cast<float>(16 * index + 5 + row)});
+      run.run(*p);
+      EXPECT_EQ(run.block.color[0][1][0], 1.0f) << index << " " << row << "\n" << dump_ir(*p);
+    }
 }
 
 }  // namespace
