@@ -96,10 +96,12 @@ class Generator {
       for (Operand o : destinations(insts[static_cast<size_t>(i)])) writes_[static_cast<size_t>(id(o))].push_back(i);
     }
     // A value read in a loop is read again by the next iteration: it lives to the loop's end.
-    for (auto [begin, end] : loops_)
-      for (auto& r : reads_)
+    for (const auto& loop : loops_)
+      for (auto& r : reads_) {
+        const int begin = loop.first, end = loop.second;
         if (std::any_of(r.begin(), r.end(), [&](int at) { return at > begin && at < end; }))
           r.insert(std::upper_bound(r.begin(), r.end(), end), end);
+      }
     holder_.fill(-1);
   }
 
