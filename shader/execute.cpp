@@ -213,6 +213,11 @@ RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mas
 
 }  // namespace
 
+// Only compiled code calls it, which runs only where the CPU has AVX-512: its lane copies are
+// whole-register moves.
+#if !defined(__clang__)
+__attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
+#endif
 void jit::call_out(const Frame* frame, const ir::Inst* in) {
   const StageCode& stage = *frame->stage;
   const int registers = stage.code.registers;
