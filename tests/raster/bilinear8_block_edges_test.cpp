@@ -1,0 +1,64 @@
+// The block sampler where a lane's two texels along s are not neighbours in memory (the clamped
+// right edge, the repeat wrap, levels 1 texel wide) and where they end the texel array: the quad
+// sampler's texels exactly, on every path.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "raster/sampler_bilinear8.h"
+#include "raster/sampler_bilinear_block.h"
+
+namespace pineda::raster {
+namespace {
+
+// Coordinates along one axis of `size` texels: random ones (mode 0), ones between the first and
+// the last texel centre, where no lane wraps (1), and ones at and past the edges (2).
+float coordinate(std::mt19937& random, int size, int mode) {
+  const float n = static_cast<float>(size);
+  if (mode == 0) return static_cast<float>(std::uniform_int_distribution<int>(-1024, 2048)(random)) / 1024.f;
+  if (mode == 1) return std::uniform_real_distribution<float>(0.5f / n, (n - 0.5f) / n)(random);
+  const float edges[] = {0.f, -0.01f, 0.25f / n, 0.5f / n, (n - 0.5f) / n, (n - 0.25f) / n, 1.f, 1.01f, 1.5f, 3.f};
+  return edges[std::uniform_int_distribution<int>(0, 9)(random)];
+}
+
+TEST(Bilinear8BlockSampler, EdgesGiveTheQuadSamplersTexelsOnEveryPath) {
+  std::mt19937 random(12);
+  int quads = 0;
+  for (int w : {1, 2, 3, 5, 16})
+    for (int h : {1, 2, 3}) {
+      // One level: its texel array ends with the bottom right texel, which clamped lanes read.
+      TextureImage image;
+      std::vector<uint32_t> texels(static_cast<size_t>(w * h));
+      for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+      image.levels.push_back({w, h, std::move(texels)});
+      for (TexWrap ws : {TexWrap::Repeat, TexWrap::ClampToEdge})
+        for (TexWrap wt : {TexWrap::Repeat, TexWrap::ClampToEdge})
+          for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+            for (int trial = 0; trial < 60; ++trial) {
+              Sampler sampler;
+              sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
+              sampler.wrap_s = ws;
+              sampler.wrap_t = wt;
+              alignas(64) float s[kBlockLanes], t[kBlockLanes];
+              for (int i = 0; i < kBlockLanes; ++i) {
+                s[i] = coordinate(random, w, trial % 3);
+                t[i] = coordinate(random, h, (trial / 3) % 3);
+              }
+              alignas(64) float block[4][kBlockLanes];
+              select_bilinear8_block_sampler(sampler, path)(image, LevelChoice{}, s, t, block);
+              for (int q = 0; q < 4; ++q) {
+                F4 quad[4];
+                select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
+                for (int i = 0; i < 4; ++i)
+                  for (int c = 0; c < 4; ++c)
+                    ASSERT_EQ(block[c][4 * q + i], quad[c][i])
+                        << w << "x" << h << " s " << s[4 * q + i] << " t " << t[4 * q + i] << " channel " << c;
+                ++quads;
+              }
+            }
+    }
+  EXPECT_EQ(quads, 5 * 3 * 2 * 2 * 3 * 60 * 4);
+}
+
+}  // namespace
+}  // namespace pineda::raster
