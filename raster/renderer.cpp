@@ -1,13 +1,10 @@
 #include "raster/renderer.h"
 
 #include <algorithm>
-#if defined(__SSE__) || defined(__x86_64__)
-#include <xmmintrin.h>
-#define PINEDA_HAS_MXCSR 1
-#endif
 
 #include "raster/clear.h"
 #include "raster/draw_record.h"
+#include "raster/float_modes.h"
 #include "raster/fragment_pipeline.h"
 #include "raster/geometry.h"
 #include "raster/multisample.h"
@@ -82,26 +79,6 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   if (scene.full()) submit();
 }
 
-namespace {
-
-// The caller's floating-point modes (rounding, flush to zero) on the thread that runs a piece,
-// while it runs, so that every piece computes as the caller alone would.
-class CallerFloatModes {
- public:
-#ifdef PINEDA_HAS_MXCSR
-  explicit CallerFloatModes(unsigned caller) : own_(_mm_getcsr()) { _mm_setcsr(caller); }
-  ~CallerFloatModes() { _mm_setcsr(own_); }
-  static unsigned current() { return _mm_getcsr(); }
-
- private:
-  unsigned own_;
-#else
-  explicit CallerFloatModes(unsigned) {}
-  static unsigned current() { return 0; }
-#endif
-};
-
-}  // namespace
 
 void Renderer::for_each_piece(size_t count, size_t grain, const std::function<void(size_t, size_t)>& fn) {
   if (count == 0) return;
@@ -113,9 +90,10 @@ void Renderer::for_each_piece(size_t count, size_t grain, const std::function<vo
   // A few pieces per thread, so that a thread the system delays holds up little.
   const size_t pieces = std::min(grains, static_cast<size_t>(r.pool.threads()) * 4);
   const size_t piece = (grains + pieces - 1) / pieces * grain;
-  const unsigned caller_modes = CallerFloatModes::current();
+  // Every piece computes as the caller alone would: under the caller's rounding and flushing.
+  const unsigned caller_modes = ScopedFloatModes::current();
   r.pool.run(static_cast<int>((count + piece - 1) / piece), [&](int i) {
-    const CallerFloatModes modes(caller_modes);
+    const ScopedFloatModes modes(caller_modes);
     const size_t begin = static_cast<size_t>(i) * piece;
     fn(begin, std::min(count, begin + piece));
   });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "raster/float_modes.h"
 #include "raster/multisample.h"
 #include "raster/raster_limits.h"
 #include "raster/tile_raster.h"
@@ -132,6 +133,9 @@ bool Scene::full() const {
 }
 
 void Scene::run_tile(int tile) const {
+  // The application's modes on its own thread would make a tile it takes differ from one a
+  // worker takes: every tile computes under the default modes.
+  const ScopedFloatModes modes(kDefaultFloatModes);
   const int tx = tile % tiles_x_, ty = tile / tiles_x_;
   const PixelRect rect = intersect({tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize},
                                    render_area());

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/e2e/support/gl_program.h"
 #include "tests/e2e/support/gl_surface.h"
 #include "tests/stability/case_table.h"
 
@@ -59,22 +60,6 @@ const char* const kFragmentShader = R"(#version 110
 varying vec4 v_color;
 void main() { gl_FragColor = v_color; })";
 
-GLuint link_program() {
-  const GLuint program = glCreateProgram();
-  for (const auto& [type, source] : {std::pair{GL_VERTEX_SHADER, kVertexShader}, std::pair{GL_FRAGMENT_SHADER, kFragmentShader}}) {
-    const GLuint shader = glCreateShader(type);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    glAttachShader(program, shader);
-    glDeleteShader(shader);
-  }
-  glBindAttribLocation(program, 0, "position");
-  glBindAttribLocation(program, 1, "normal");
-  glBindAttribLocation(program, 2, "color");
-  glLinkProgram(program);
-  return program;
-}
-
 // The mesh drawn with fixed-function lighting (glDrawElements) on the left and through a
 // vertex shader (glDrawArrays of the unindexed triangles) on the right; the colour buffer.
 std::vector<uint8_t> render(const char* threads) {
@@ -116,7 +101,7 @@ std::vector<uint8_t> render(const char* threads) {
     colors.insert(colors.end(), &mesh.colors[4 * k], &mesh.colors[4 * k + 4]);
   }
   glViewport(kSize / 2, 0, kSize / 2, kSize);
-  const GLuint program = link_program();
+  const GLuint program = link_gl_program(kVertexShader, kFragmentShader, {{0, "position"}, {1, "normal"}, {2, "color"}});
   glUseProgram(program);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, positions.data());
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, normals.data());
