@@ -29,7 +29,7 @@ uint8_t stencil_ref(int ref) { return static_cast<uint8_t>(std::clamp(ref, 0, 25
 
 }  // namespace
 
-DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, SimdPath path) {
+DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, SimdPath path, bool fades_points) {
   DrawRecord d;
   d.state = draw_state;
   d.state.use_target_write(fb.color_index);
@@ -91,13 +91,16 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   // GL 1.5 4.1.3: with multisampling on for the draw, alpha becomes 1 after alpha to coverage.
   d.alpha_to_one = fb.samples > 1 && state.multisample.multisample && state.multisample.alpha_to_one;
   d.key.extras |= d.alpha_to_one;
+  d.fades_points = fades_points;
+  d.key.extras |= fades_points;
   d.routine = select_quad_routine(d.key, path);
   if (const QuadRoutine fill = select_fill_routine(d, fb, path)) d.routine = fill;
   if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
     d.planes = 0;
     d.secondary_plane = d.fog_plane = -1;
     d.modulate_in_lanes = d.sample_rows = false;
-    d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth || state.line_smooth;
+    d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth ||
+                   state.line_smooth || fades_points;
     d.routine = shade_program_quads;
   }
   if (fb.color_targets > 1) {

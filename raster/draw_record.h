@@ -68,12 +68,16 @@ struct DrawRecord {
   float coverage_alpha_min = 0.f;
   // GL_SAMPLE_ALPHA_TO_ONE on a multisampled draw: alpha is 1 after the alpha test (key.extras).
   bool alpha_to_one = false;
+  // Multisampled points of the draw may fade (SamplePoint::fade, applied with key.extras).
+  bool fades_points = false;
   // Several draw buffers (Framebuffer::color_targets > 1): one record per draw buffer, each
   // specialized for its colour buffer; `routine` then runs them all (draw_targets.h).
   std::shared_ptr<const std::vector<DrawRecord>> target_draws;
 };
 
-// `path`: which copy of the fragment routine and samplers runs.
-DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path = SimdPath::Best);
+// `path`: which copy of the fragment routine and samplers runs; `fades_points`: may_fade_points
+// (multisample.h).
+DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path = SimdPath::Best,
+                            bool fades_points = false);
 
 }  // namespace pineda::raster

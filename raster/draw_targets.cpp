@@ -77,7 +77,7 @@ uint32_t target_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer
 
 void prepare_target_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path) {
   auto records = std::make_shared<std::vector<DrawRecord>>();
-  for (int i = 0; i < fb.color_targets; ++i) records->push_back(make_draw_record(draw.state, fb.target(i), path));
+  for (int i = 0; i < fb.color_targets; ++i) records->push_back(make_draw_record(draw.state, fb.target(i), path, draw.fades_points));
   draw.target_draws = std::move(records);
   draw.routine = target_quads;
 }

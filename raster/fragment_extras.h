@@ -73,9 +73,10 @@ inline void apply_color_sum_and_fog(const DrawRecord& d, const PrimSetup& p, F4 
   for (int k = 0; k < 3; ++k) c[k] = f * c[k] + (splat(1.f) - f) * fog.color[k];
 }
 
-// GL 1.5 section 3.12: the coverage of an antialiased primitive multiplies the fragment's
-// alpha, after fog. `alpha` holds the quad at (x, y).
+// GL 1.5 section 3.12: the coverage of an antialiased primitive, and a multisampled point's
+// fade (section 3.3), multiply the fragment's alpha, after fog. `alpha` holds the quad at (x, y).
 inline void apply_coverage(const PrimSetup& p, int x, int y, F4& alpha) {
+  if (p.sample_point.fade != 1.f) alpha *= p.sample_point.fade;
   if (!(p.smooth.size > 0.0)) return;
   float coverage[4];
   smooth_quad_coverage(p, x, y, coverage);

@@ -68,6 +68,7 @@ class GeometryStage final : public PrimitiveSink {
   void draw_line(ClipVert a, ClipVert b, const Style& style);
   void draw_line_rectangle(const WinVert& a, const WinVert& b, const Style& style);
   void draw_point(const ClipVert& v, const Style& style, float size);
+  void draw_sample_point(const WinVert& v, const Style& style, float size);
   float point_size_of(const ClipVertex& v) const;  // derived, before rounding
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
   const WinVert* cached_window(const ClipVertex& v);
@@ -84,6 +85,7 @@ class GeometryStage final : public PrimitiveSink {
   double vp_x_ = 0, vp_y_ = 0, vp_half_w_ = 0, vp_half_h_ = 0, depth_near_ = 0, depth_far_ = 1;
   float line_width_ = 1.f, point_size_ = 1.f;  // as set (derived for points), before rounding
   bool line_smooth_ = false, point_smooth_ = false;
+  bool sample_points_ = false;    // multisampled points (draw_sample_point)
   bool rectangle_lines_ = false;  // multisampled lines (draw_line_rectangle)
   bool point_size_per_vertex_ = false;
   float stipple_count_ = 0.f;  // major-axis length of the strip's lines so far (line stipple)

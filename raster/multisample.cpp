@@ -33,6 +33,16 @@ const DrawRecord& sample_draw(const DrawRecord& draw, int sample) {
   return draw.sample_draws ? (*draw.sample_draws)[sample] : draw;
 }
 
+bool may_fade_points(const DrawState& state, Primitive mode) {
+  const bool polygons = mode >= Primitive::Triangles;
+  const bool points = mode == Primitive::Points ||
+                      (polygons && (state.polygon_front == PolygonMode::Point || state.polygon_back == PolygonMode::Point));
+  if (!points || !state.multisample.multisample) return false;
+  const PointParameters& p = state.point_params;
+  const float smallest = p.per_vertex() ? p.size_min : derived_point_size(p, state.point_size, 0.f);
+  return !(smallest >= p.fade_threshold);
+}
+
 namespace {
 
 // A sample's alpha-to-coverage threshold, on its record and on its draw buffers' records.
@@ -62,7 +72,7 @@ void prepare_sample_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path
       state.alpha_test = true;
       state.alpha_func = CompareFunc::Always;
     }
-    records->push_back(make_draw_record(state, fb, path));
+    records->push_back(make_draw_record(state, fb, path, draw.fades_points));
     records->back().sample_mask = draw.sample_mask;
     set_coverage_alpha(records->back(), (s + 0.5f) / static_cast<float>(fb.samples));
   }
@@ -75,8 +85,8 @@ void apply_clear_samples(const ClearRecord& clear, const Framebuffer& fb, const 
 
 uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
                                    const PixelRect& tile) {
-  const bool per_sample = prim.kind == CoverageKind::Triangle && prim.smooth.size == 0.0 &&
-                          draw.state.multisample.multisample;
+  const bool sample_shape = (prim.kind == CoverageKind::Triangle && prim.smooth.size == 0.0) || prim.sample_point.size > 0;
+  const bool per_sample = sample_shape && draw.state.multisample.multisample;
   uint64_t passed = 0;
   PrimSetup shifted;
   if (per_sample) shifted = prim;
@@ -84,12 +94,14 @@ uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw
     if (!((draw.sample_mask >> s) & 1)) continue;
     const Framebuffer plane = sample_plane(fb, s);
     const DrawRecord& d = sample_draw(draw, s);
-    if (!per_sample) {  // lines, points and GL_MULTISAMPLE off: the pixel centre's coverage
+    if (!per_sample) {  // stippled lines, pixel rectangles, GL_MULTISAMPLE off: pixel centres
       passed += rasterize_in_tile(prim, d, plane, tile);
       continue;
     }
     const SampleOffset o = kSampleOffsets4x[s];
     for (int e = 0; e < 3; ++e) shifted.edges[e].c = prim.edges[e].c + prim.edges[e].a * o.dx + prim.edges[e].b * o.dy;
+    shifted.sample_point.x = prim.sample_point.x - o.dx;  // the pixel centre then tests the sample
+    shifted.sample_point.y = prim.sample_point.y - o.dy;
     shifted.z0 = prim.z0 + (prim.dzdx * o.dx + prim.dzdy * o.dy) / kSubpixelOne;
     passed += rasterize_in_tile(shifted, d, plane, tile);
   }

@@ -23,6 +23,10 @@ struct SampleOffset {
 };
 constexpr SampleOffset kSampleOffsets4x[kMaxSamples] = {{-32, -96}, {96, -32}, {-96, 32}, {32, 96}};
 
+// Whether a draw of `mode` into a multisampled framebuffer may draw points under
+// POINT_FADE_THRESHOLD_SIZE (GL 1.4 section 3.3), whose fade its fragment routine then applies.
+bool may_fade_points(const DrawState& state, Primitive mode);
+
 // The view of one sample's plane: a single-sampled framebuffer.
 Framebuffer sample_plane(const Framebuffer& fb, int sample);
 

@@ -41,8 +41,13 @@ bool setup_point_sprite(const WinVert& v, float size, const PointSprite& sprite,
   out.z0 = v.z + params.depth_offset;
   out.dzdx = out.dzdy = 0.0;
 
+  replace_sprite_coords(static_cast<float>(static_cast<double>(side) / kSubpixelOne), sprite, draw, out);
+  return true;
+}
+
+void replace_sprite_coords(float size, const PointSprite& sprite, const DrawRecord& draw, PrimSetup& out) {
   Plane s, t;
-  sprite_coord_planes(static_cast<float>(static_cast<double>(side) / kSubpixelOne), sprite.origin_lower_left, s, t);
+  sprite_coord_planes(size, sprite.origin_lower_left, s, t);
   for (int k = 0; k < draw.num_units; ++k) {
     if (!(sprite.coord_replace >> draw.units[k] & 1u)) continue;
     Plane* tc = &out.planes[draw.tex_plane[k]];
@@ -51,7 +56,6 @@ bool setup_point_sprite(const WinVert& v, float size, const PointSprite& sprite,
     tc[2] = {1.f, 0.f, 0.f};  // q
     if (draw.r_plane[k] >= 0) out.planes[draw.r_plane[k]] = {0.f, 0.f, 0.f};
   }
-  return true;
 }
 
 }  // namespace pineda::raster

@@ -27,4 +27,8 @@ void sprite_coord_planes(float size, bool origin_lower_left, Plane& s, Plane& t)
 bool setup_point_sprite(const WinVert& v, float size, const PointSprite& sprite, const DrawRecord& draw,
                         const SetupParams& params, PrimSetup& out);
 
+// The replaced units' coordinates across a sprite of side `size` (pixels) whose planes are
+// about the point's exact window position.
+void replace_sprite_coords(float size, const PointSprite& sprite, const DrawRecord& draw, PrimSetup& out);
+
 }  // namespace pineda::raster

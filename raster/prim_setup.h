@@ -58,6 +58,15 @@ struct SmoothShape {
   double size = 0;                         // the point's diameter or the line's width; 0: aliased
 };
 
+// A multisampled point (GL 1.5 section 3.3.3): the samples inside the disc of diameter `size`
+// centred on (x, y) or, a sprite (`square`), those in [x - size/2, x + size/2) in x and in y;
+// sub-pixels. size 0: not such a point.
+struct SamplePoint {
+  int32_t x = 0, y = 0;
+  uint32_t size : 31 = 0, square : 1 = 0;  // 16 bytes in all: PrimSetup stays a multiple of 16
+  float fade = 1.f;  // point fade (GL 1.4 section 3.3): multiplies the fragment's alpha last
+};
+
 enum class CoverageKind : uint8_t { Triangle, Line, Point };
 
 struct PrimSetup {
@@ -70,6 +79,7 @@ struct PrimSetup {
   EdgeFunction edges[3];
   LineCoverage line;
   SmoothShape smooth;
+  SamplePoint sample_point;
 
   float ref_x = 0.f, ref_y = 0.f;
   double z0 = 0.0, dzdx = 0.0, dzdy = 0.0;  // window depth in depth-buffer units

@@ -39,6 +39,7 @@ uint32_t reference_plane_quads(const DrawRecord& d, const PrimSetup& p, const Fr
       const double w = p.perspective ? 1.0 / eval(p.inv_w, ox, oy) : 1.0;
       for (int a = 0; a < d.planes; ++a) q.attr[a][i] = eval(p.planes[a], ox, oy) * w;
       if (p.smooth.size > 0.0) q.coverage[i] = smooth_coverage(p, q.x + (i & 1), q.y + (i >> 1));
+      q.coverage[i] *= p.sample_point.fade;
     }
     passed += reference_shade_quad(d, p.back_facing, p.flat_color, fb, q);
   }

@@ -65,7 +65,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
                     std::span<const uint32_t> indices, const float* varyings) {
   Scene& scene = impl_->scene;
   if (scene.render_area().empty() || vertices.empty()) return;
-  DrawRecord record = make_draw_record(state, impl_->fb, impl_->simd);
+  DrawRecord record = make_draw_record(state, impl_->fb, impl_->simd, impl_->fb.samples > 1 && may_fade_points(state, mode));
   if (impl_->fb.samples > 1) prepare_sample_draws(record, impl_->fb, impl_->simd);
   if (impl_->reference && !state.shader) {
     flush();  // queued clears first: reference primitives are drawn into the framebuffer at once

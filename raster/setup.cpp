@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "raster/raster_limits.h"
+#include "raster/sample_point.h"
 #include "raster/smooth_coverage.h"
 
 namespace pineda::raster {
@@ -27,6 +28,17 @@ void constant_planes(const WinVert& v, const SetupParams& params, PrimSetup& out
   if (params.varyings > 0) out.inv_w = {static_cast<float>(v.inv_w), 0.f, 0.f};
   out.z0 = v.z + params.depth_offset;
   out.dzdx = out.dzdy = 0.0;
+}
+
+// A point, every value the vertex's, over the pixels of `box` inside the clip rectangle; false
+// when there are none.
+bool setup_point_in(const PixelRect& box, const WinVert& v, const SetupParams& params, PrimSetup& out) {
+  out.bounds = intersect(box, params.clip);
+  if (out.bounds.empty()) return false;
+  out.kind = CoverageKind::Point;
+  copy_common(params, out);
+  constant_planes(v, params, out);
+  return true;
 }
 
 // Planes through the values at two or three vertices; `gradient` maps the values at the
@@ -224,24 +236,21 @@ bool setup_point(const WinVert& v, int size, const SetupParams& params, PrimSetu
   const int64_t bottom = floor_div(v.y - (size - 1) * kSubpixelHalf, kSubpixelOne);
   const PixelRect box{static_cast<int>(left), static_cast<int>(bottom), static_cast<int>(left + size),
                       static_cast<int>(bottom + size)};
-  out.bounds = intersect(box, params.clip);
-  if (out.bounds.empty()) return false;
-  out.kind = CoverageKind::Point;
-  copy_common(params, out);
-  constant_planes(v, params, out);
-  return true;
+  return setup_point_in(box, v, params, out);
 }
 
+bool setup_sample_point(const WinVert& v, int64_t size, bool square, const SetupParams& params, PrimSetup& out) {
+  out.sample_point.x = static_cast<int32_t>(v.x);
+  out.sample_point.y = static_cast<int32_t>(v.y);
+  out.sample_point.size = static_cast<uint32_t>(size);
+  out.sample_point.square = square;
+  return setup_point_in(sample_point_bounds(out.sample_point), v, params, out);
+}
 
 bool setup_smooth_point(const WinVert& v, double size, const SetupParams& params, PrimSetup& out) {
   const double x = static_cast<double>(v.x) / kSubpixelOne, y = static_cast<double>(v.y) / kSubpixelOne;
   out.smooth = {x, y, x, y, size};
-  out.bounds = intersect(smooth_bounds(out.smooth), params.clip);
-  if (out.bounds.empty()) return false;
-  out.kind = CoverageKind::Point;
-  copy_common(params, out);
-  constant_planes(v, params, out);
-  return true;
+  return setup_point_in(smooth_bounds(out.smooth), v, params, out);
 }
 
 }  // namespace pineda::raster

@@ -45,6 +45,9 @@ bool setup_point(const WinVert& v, int size, const SetupParams& params, PrimSetu
 // Antialiased: a rectangle `width` wide between the ends, a disc of diameter `size` (pixels).
 bool setup_smooth_line(const WinVert& a, const WinVert& b, double width, const SetupParams& params, PrimSetup& out);
 bool setup_smooth_point(const WinVert& v, double size, const SetupParams& params, PrimSetup& out);
+// Multisampled (raster/sample_point.h): the samples inside a disc of diameter `size` or, `square`,
+// a square of side `size` (sub-pixels).
+bool setup_sample_point(const WinVert& v, int64_t size, bool square, const SetupParams& params, PrimSetup& out);
 
 // Floor division and its ceiling counterpart, for any signs (b > 0).
 inline int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }

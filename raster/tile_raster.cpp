@@ -6,6 +6,7 @@
 
 #include "raster/edge_row_bound.h"
 #include "raster/raster_limits.h"
+#include "raster/sample_point.h"
 #include "raster/setup.h"
 #include "raster/smooth_coverage.h"
 
@@ -254,6 +255,17 @@ void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const QuadSink&
   emit_mask(mask, sink);
 }
 
+// A multisampled point at one sample: the pixels whose centre it covers (multisample.cpp moves
+// the point by the sample's offset).
+void rasterize_sample_point(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+  TileMask mask{area};
+  for (int y = area.y0; y < area.y1; ++y)
+    for (int x = area.x0; x < area.x1; ++x)
+      if (sample_point_covers(p.sample_point, x * kSubpixelOne + kSubpixelHalf, y * kSubpixelOne + kSubpixelHalf))
+        mask.set(x, y);
+  emit_mask(mask, sink);
+}
+
 }  // namespace
 
 bool triangle_may_touch(const PrimSetup& prim, const PixelRect& rect) {
@@ -271,7 +283,10 @@ uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const 
   switch (prim.kind) {
     case CoverageKind::Triangle: rasterize_triangle(prim, area, sink); break;
     case CoverageKind::Line: rasterize_line(prim, area, sink); break;
-    case CoverageKind::Point: emit_full(area, area, sink); break;
+    case CoverageKind::Point:
+      if (prim.sample_point.size > 0) rasterize_sample_point(prim, area, sink);
+      else emit_full(area, area, sink);
+      break;
   }
   return sink.samples_passed;
 }

@@ -386,6 +386,109 @@ TEST_F(MultisampleTest, LinesCoverTheSamplesOfTheirRectangle) {
   EXPECT_EQ(resolved(14, 2), (Rgba{0, 0, 0, 0}));
 }
 
+void point(float x, float y) {
+  glBegin(GL_POINTS);
+  glVertex2f(x, y);
+  glEnd();
+}
+
+// GL 1.5 3.3.3: a multisampled point covers the samples inside the circle of its size centred
+// on it, whatever POINT_SMOOTH says. Samples lie 1/8 and 3/8 px from their pixel's centre.
+TEST_F(MultisampleTest, PointsCoverTheSamplesOfTheirCircle) {
+  glColor3f(1, 0, 0);
+  glPointSize(3.0f);
+  point(4.5f, 4.5f);  // radius 1.5 on pixel (4, 4)'s centre
+  // A corner pixel keeps its two samples 1.08 and 1.29 px from the centre, not the ones 1.63
+  // and 1.78 px away; the pixels beside the centre are covered whole.
+  EXPECT_EQ(resolved(4, 4), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(5, 4), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(4, 3), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(3, 3), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(5, 5), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(3, 5), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(6, 4), (Rgba{0, 0, 0, 0}));
+  // Off the pixel centre, at (11.25, 11.75): pixels with 1, 2 and 3 samples within 1.5 px.
+  glEnable(GL_POINT_SMOOTH);  // no effect on a multisampled point
+  point(11.25f, 11.75f);
+  glDisable(GL_POINT_SMOOTH);
+  EXPECT_EQ(resolved(11, 11), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(12, 11), (Rgba{191, 0, 0, 191}));  // all but (12.875, 11.375), 1.67 px away
+  EXPECT_EQ(resolved(9, 11), (Rgba{64, 0, 0, 64}));     // (9.875, 11.375) only
+  EXPECT_EQ(resolved(12, 12), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(10, 10), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(12, 10), (Rgba{64, 0, 0, 64}));
+  EXPECT_EQ(resolved(11, 13), (Rgba{64, 0, 0, 64}));
+  EXPECT_EQ(resolved(10, 13), (Rgba{0, 0, 0, 0}));
+}
+
+// A multisampled point sprite covers the samples of its square, [x - size/2, x + size/2) in x
+// and in y (llvmpipe's rule too: a sample on the left or bottom side is covered).
+TEST_F(MultisampleTest, PointSpritesCoverTheSamplesOfTheirSquare) {
+  glEnable(GL_POINT_SPRITE);
+  glColor3f(0, 1, 0);
+  glPointSize(3.0f);
+  point(4.5f, 4.5f);
+  EXPECT_EQ(resolved(3, 3), (Rgba{0, 255, 0, 255}));  // the square's corner, not the circle's
+  EXPECT_EQ(resolved(5, 5), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(resolved(6, 4), (Rgba{0, 0, 0, 0}));
+  glPointSize(2.0f);
+  point(11.375f, 11.125f);  // [10.375, 12.375) x [10.125, 12.125)
+  glDisable(GL_POINT_SPRITE);
+  EXPECT_EQ(resolved(10, 10), (Rgba{0, 191, 0, 191}));  // all but the sample at x + 1/8
+  EXPECT_EQ(resolved(10, 11), (Rgba{0, 191, 0, 191}));
+  EXPECT_EQ(resolved(11, 11), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(resolved(12, 10), (Rgba{0, 64, 0, 64}));  // the sample at x + 1/8 only
+  EXPECT_EQ(resolved(11, 12), (Rgba{0, 0, 0, 0}));  // its lowest sample (y + 1/8) lies on the top side
+}
+
+// A multisampled sprite's replaced texture coordinates run across its square as single-sampled:
+// each pixel's colour from its centre, its coverage from its samples.
+TEST_F(MultisampleTest, PointSpriteCoordinatesAcrossItsSquare) {
+  const GLuint tex = make_texture(GL_RGBA8, 2, 2);
+  const uint8_t texels[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_TRUE);
+  glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
+  glEnable(GL_TEXTURE_2D);
+  glEnable(GL_POINT_SPRITE);
+  glPointSize(4.0f);
+  point(8.25f, 8.0f);  // [6.25, 10.25) x [6, 10): s = 1/2 + (x + 1/2 - 8.25) / 4
+  glDisable(GL_POINT_SPRITE);
+  glDisable(GL_TEXTURE_2D);
+  glDeleteTextures(1, &tex);
+  EXPECT_EQ(resolved(6, 6), (Rgba{191, 0, 0, 191}));  // s 1/16, t 1/8; 3 samples right of 6.25
+  EXPECT_EQ(resolved(7, 9), (Rgba{0, 0, 255, 255}));  // s 5/16, t 7/8
+  EXPECT_EQ(resolved(9, 9), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(resolved(10, 7), (Rgba{0, 64, 0, 64}));  // s 17/16 (clamped), t 3/8; the sample at 10.125
+  EXPECT_EQ(resolved(8, 10), (Rgba{0, 0, 0, 0}));
+}
+
+// GL 1.4 3.3: with multisampling on, a point whose derived size is under
+// POINT_FADE_THRESHOLD_SIZE is drawn at the threshold size with its alpha multiplied by
+// (size / threshold)^2; with multisampling off it keeps its size and alpha.
+TEST_F(MultisampleTest, PointFadeUnderTheThresholdSize) {
+  glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, 2.0f);
+  glColor4f(1, 1, 1, 1);
+  glPointSize(1.0f);
+  point(4.5f, 4.5f);  // diameter 2, alpha 1/4 (64)
+  EXPECT_EQ(resolved(4, 4), (Rgba{255, 255, 255, 64}));
+  EXPECT_EQ(resolved(5, 4), (Rgba{128, 128, 128, 32}));  // 2 samples within 1 px
+  EXPECT_EQ(resolved(4, 3), (Rgba{128, 128, 128, 32}));
+  EXPECT_EQ(resolved(5, 5), (Rgba{0, 0, 0, 0}));
+  glPointSize(3.0f);
+  point(11.5f, 4.5f);  // above the threshold: no fade
+  EXPECT_EQ(resolved(11, 4), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(resolved(10, 3), (Rgba{128, 128, 128, 128}));
+  glPointSize(1.0f);
+  glDisable(GL_MULTISAMPLE);
+  point(4.5f, 11.5f);
+  glEnable(GL_MULTISAMPLE);
+  EXPECT_EQ(resolved(4, 11), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(resolved(5, 11), (Rgba{0, 0, 0, 0}));
+}
+
 // With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
 // SAMPLE_COVERAGE no longer applies.
 TEST_F(MultisampleTest, MultisampleDisabledUsesPixelCentres) {
