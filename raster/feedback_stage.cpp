@@ -32,7 +32,7 @@ class FeedbackStage final : public PrimitiveSink {
   }
 
   // Called by assembly (where it knows line stipple) before each strip or independent line.
-  void restart_line_stipple() { reset_ = true; }
+  void restart_line_stipple() override { reset_ = true; }
 
   void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags, const ClipVertex&) override {
     for (const ClipVertex* p : v)
