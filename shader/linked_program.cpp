@@ -97,8 +97,11 @@ std::string dump_ir(const Program& program) {
   const auto* p = dynamic_cast<const LinkedProgram*>(&program);
   if (!p) return {};
   std::string out;
-  if (p->vertex_) out += "; vertex shader\n" + ir::dump(p->vertex_->code);
-  if (p->fragment_) out += "; fragment shader\n" + ir::dump(p->fragment_->code);
+  auto tier = [](const StageCode& stage) {
+    return stage.compiled ? std::string("; runs compiled (AVX-512)\n") : std::string("; runs on the interpreter\n");
+  };
+  if (p->vertex_) out += "; vertex shader\n" + ir::dump(p->vertex_->code) + tier(*p->vertex_);
+  if (p->fragment_) out += "; fragment shader\n" + ir::dump(p->fragment_->code) + tier(*p->fragment_);
   return out;
 }
 

@@ -318,6 +318,17 @@ TEST_F(CompiledTier, RegisterPressureWithIndexedRegisters) {
   }
 }
 
+TEST_F(CompiledTier, DumpSaysWhichTierRunsEachStage) {
+  auto p = link_ok("varying float v; void main() { v = gl_Vertex.x; gl_Position = gl_Vertex; }",
+                   "varying float v; void main() { float s = 0.0; for (int i = 0; i < int(v); i++) s += 0.5; "
+                   "gl_FragColor = vec4(s); }");
+  ASSERT_NE(p, nullptr);
+  const std::string ir = dump_ir(*p);
+  size_t at = 0, count = 0;
+  while ((at = ir.find("; runs compiled (AVX-512)", at)) != std::string::npos) ++count, ++at;
+  EXPECT_EQ(count, 2u) << ir;
+}
+
 // piglit's variable-indexing tests: an element of a local array of matrices read by two
 // uniform indices (a register gather whose array the code wrote just before).
 TEST_F(CompiledTier, IndexedLocalMatrixArray) {
