@@ -329,6 +329,15 @@ TEST_F(CompiledTier, DumpSaysWhichTierRunsEachStage) {
   EXPECT_EQ(count, 2u) << ir;
 }
 
+// More registers than the 16 KiB stack buffer holds (256): the homes are on the heap.
+TEST_F(CompiledTier, HomesOnTheHeapForManyRegisters) {
+  for (uint32_t seed = 1; seed <= 10; ++seed) {
+    RandomProgram program(seed, 300, 40);
+    const std::string what = "random program of 300 registers " + std::to_string(seed);
+    expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
+  }
+}
+
 // piglit's variable-indexing tests: an element of a local array of matrices read by two
 // uniform indices (a register gather whose array the code wrote just before).
 TEST_F(CompiledTier, IndexedLocalMatrixArray) {
