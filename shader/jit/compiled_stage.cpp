@@ -253,8 +253,15 @@ class Generator {
     x_.kxorw(1, 1, 1);
     set_mask(1);
   }
-  // Registers hold nothing at a loop's start and at its back edge, so that both agree; what
-  // a later instruction reads goes to its home.
+  // A register read before anything wrote it holds zero: in its home, for what reads it there.
+  void zero_home_if_unwritten(int value, int at) {
+    if (!unwritten(value, at)) return;
+    x_.store(home(value), kZeroReg);
+    zeroed_home_[static_cast<size_t>(value)] = true;
+  }
+  // Registers hold nothing at a loop's start and at its back edge, so that both agree, nor
+  // after a call (which clobbers them all); what instruction `at` or a later one reads goes to
+  // its home.
   void flush_registers(int at) {
     for (int r = 0; r < kValueRegisters; ++r) {
       const int v = holder_[static_cast<size_t>(r)];
@@ -272,10 +279,7 @@ class Generator {
     for (int v = 0; v < registers_; ++v) {
       const auto& r = reads_[static_cast<size_t>(v)];
       const bool read_inside = std::any_of(r.begin(), r.end(), [&](int q) { return q > at && q < end; });
-      if (read_inside && unwritten(v, at)) {
-        x_.store(home(v), kZeroReg);
-        zeroed_home_[static_cast<size_t>(v)] = true;
-      }
+      if (read_inside) zero_home_if_unwritten(v, at);
     }
     const int frame = static_cast<int>(stack_.size());
     x_.kmovw_store(entry_slot(frame), kMaskReg);
@@ -349,8 +353,8 @@ class Generator {
         dirty_[static_cast<size_t>(v)] = false;
       }
       if (r >= 0 && written) release(r);
-      if (unwritten(v, at)) x_.store(home(v), kZeroReg);
-      if (unwritten(v, at) || written) zeroed_home_[static_cast<size_t>(v)] = true;
+      zero_home_if_unwritten(v, at);
+      if (written) zeroed_home_[static_cast<size_t>(v)] = true;
     }
   }
   // kScratch = the lanes' offsets (in floats, from the first indexed register's home) of
@@ -475,17 +479,8 @@ class Generator {
 
   // Everything the call-out reads or what outlives it goes to memory; no register survives.
   void call(int at, const ir::Inst* stable) {
-    for (int r = 0; r < kValueRegisters; ++r) {
-      const int v = holder_[static_cast<size_t>(r)];
-      if (v < 0) continue;
-      if (dirty_[static_cast<size_t>(v)] && (next_read(v, at - 1) >= 0)) x_.store(home(v), r);
-      release(r);
-    }
-    for (Operand o : sources(*stable, at))
-      if (unwritten(id(o), at)) {
-        x_.store(home(id(o)), kZeroReg);
-        zeroed_home_[static_cast<size_t>(id(o))] = true;
-      }
+    flush_registers(at);
+    for (Operand o : sources(*stable, at)) zero_home_if_unwritten(id(o), at);
     x_.vzeroupper();
     x_.mov_load(rdi, {rsp, 0});
     x_.mov_imm(rsi, reinterpret_cast<uint64_t>(stable));

@@ -1,5 +1,5 @@
-// The compiled tier: a stage's straight-line IR turned into x86-64 AVX-512 code that runs one
-// block of 16 lanes with its values in registers. Every operation computes what the
+// The compiled tier: a stage's IR turned into x86-64 AVX-512 code that runs one block of 16
+// lanes with its values in registers. Every operation computes what the
 // interpreter computes (the same IEEE operations in the same order; the rare ones call the
 // interpreter's own lane routines), so images do not depend on the tier.
 #pragma once
@@ -14,8 +14,8 @@ namespace pineda::shader::jit {
 
 class CompiledStage {
  public:
-  // Null when the code has structure (but for `if (c) discard;` with no derivative or texture
-  // lookup after it) or dynamic indexing, or executable memory is refused.
+  // Null when the code has what only the interpreter runs (a return outside a function, an
+  // output stored inside a branch), or executable memory is refused.
   // `insts` are IR operands with slots numbered from `registers` (HoistedCode::insts).
   static std::unique_ptr<CompiledStage> compile(const std::vector<ir::Inst>& insts,
                                                 const std::vector<ir::TextureLookup>& textures, int registers,

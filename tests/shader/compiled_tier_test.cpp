@@ -300,23 +300,22 @@ class RandomProgram {
   ir::Code code_;
 };
 
-TEST_F(CompiledTier, BranchesLoopsFunctionsAndDiscardsKeepTheInterpretersLanes) {
-  for (uint32_t seed = 1; seed <= 100; ++seed) {
-    RandomProgram program(seed, 12, 4);
-    const std::string what = "random program " + std::to_string(seed);
+// Random programs of seeds 1..count, each run by both tiers.
+void expect_random_programs_same_bits(uint32_t count, int registers, int array) {
+  for (uint32_t seed = 1; seed <= count; ++seed) {
+    RandomProgram program(seed, registers, array);
+    const std::string what = "random program (" + std::to_string(registers) + " registers) " + std::to_string(seed);
     expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
   }
 }
 
+TEST_F(CompiledTier, BranchesLoopsFunctionsAndDiscardsKeepTheInterpretersLanes) {
+  expect_random_programs_same_bits(100, 12, 4);
+}
+
 // More values than registers, most of them an indexed array: indexed registers are evicted
 // and read from their homes.
-TEST_F(CompiledTier, RegisterPressureWithIndexedRegisters) {
-  for (uint32_t seed = 1; seed <= 40; ++seed) {
-    RandomProgram program(seed, 48, 40);
-    const std::string what = "random wide program " + std::to_string(seed);
-    expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
-  }
-}
+TEST_F(CompiledTier, RegisterPressureWithIndexedRegisters) { expect_random_programs_same_bits(40, 48, 40); }
 
 TEST_F(CompiledTier, DumpSaysWhichTierRunsEachStage) {
   auto p = link_ok("varying float v; void main() { v = gl_Vertex.x; gl_Position = gl_Vertex; }",
@@ -330,13 +329,7 @@ TEST_F(CompiledTier, DumpSaysWhichTierRunsEachStage) {
 }
 
 // More registers than the 16 KiB stack buffer holds (256): the homes are on the heap.
-TEST_F(CompiledTier, HomesOnTheHeapForManyRegisters) {
-  for (uint32_t seed = 1; seed <= 10; ++seed) {
-    RandomProgram program(seed, 300, 40);
-    const std::string what = "random program of 300 registers " + std::to_string(seed);
-    expect_same_bits(program.make(), Stage::Fragment, {}, what.c_str());
-  }
-}
+TEST_F(CompiledTier, HomesOnTheHeapForManyRegisters) { expect_random_programs_same_bits(10, 300, 40); }
 
 // piglit's variable-indexing tests: an element of a local array of matrices read by two
 // uniform indices (a register gather whose array the code wrote just before).
