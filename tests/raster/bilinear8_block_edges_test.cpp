@@ -60,5 +60,51 @@ TEST(Bilinear8BlockSampler, EdgesGiveTheQuadSamplersTexelsOnEveryPath) {
   EXPECT_EQ(quads, 5 * 3 * 2 * 2 * 3 * 60 * 4);
 }
 
+// Blocks whose texels lie within 8 columns by 4 or 8 rows (magnified or slightly minified: the
+// AVX-512 copy reads them as rows and permutes them to the lanes) anywhere in levels of several
+// shapes, against the edges and the end of the texel array too, and some a little too wide or too
+// tall for that window: the quad sampler's texels exactly, on every path.
+TEST(Bilinear8BlockSampler, CompactBlocksGiveTheQuadSamplersTexelsOnEveryPath) {
+  std::mt19937 random(31);
+  int quads = 0;
+  for (auto [w, h] : {std::pair{37, 29}, {8, 8}, {9, 5}, {300, 3}, {7, 40}, {64, 64}}) {
+    TextureImage image;
+    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
+    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+    image.levels.push_back({w, h, std::move(texels)});
+    for (TexWrap wrap : {TexWrap::Repeat, TexWrap::ClampToEdge})
+      for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+        for (int trial = 0; trial < 200; ++trial) {
+          Sampler sampler;
+          sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
+          sampler.wrap_s = sampler.wrap_t = wrap;
+          // The block's corner anywhere from a texel before the level to one past it; steps of up
+          // to 2.2 texels per pixel (3 steps: up to 6.6 texels across, 7.6 with the second tap).
+          const float s0 = std::uniform_real_distribution<float>(-1.f, w + 1.f)(random) / w;
+          const float t0 = std::uniform_real_distribution<float>(-1.f, h + 1.f)(random) / h;
+          const float ds = std::uniform_real_distribution<float>(-2.2f, 2.2f)(random) / w;
+          const float dt = std::uniform_real_distribution<float>(trial % 2 ? -2.2f : -0.9f, trial % 2 ? 2.2f : 0.9f)(random) / h;
+          alignas(64) float s[kBlockLanes], t[kBlockLanes];
+          for (int i = 0; i < kBlockLanes; ++i) {
+            const int x = (i & 1) | ((i >> 1) & 2), y = ((i >> 1) & 1) | ((i >> 2) & 2);  // quads of 2x2
+            s[i] = s0 + ds * x;
+            t[i] = t0 + dt * y;
+          }
+          alignas(64) float block[4][kBlockLanes];
+          select_bilinear8_block_sampler(sampler, path)(image, LevelChoice{}, s, t, block);
+          for (int q = 0; q < 4; ++q) {
+            F4 quad[4];
+            select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
+            for (int i = 0; i < 4; ++i)
+              for (int c = 0; c < 4; ++c)
+                ASSERT_EQ(block[c][4 * q + i], quad[c][i])
+                    << w << "x" << h << " s " << s[4 * q + i] << " t " << t[4 * q + i] << " channel " << c;
+            ++quads;
+          }
+        }
+  }
+  EXPECT_EQ(quads, 6 * 2 * 3 * 200 * 4);
+}
+
 }  // namespace
 }  // namespace pineda::raster
