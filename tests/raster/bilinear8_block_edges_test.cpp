@@ -21,6 +21,22 @@ float coordinate(std::mt19937& random, int size, int mode) {
   return edges[std::uniform_int_distribution<int>(0, 9)(random)];
 }
 
+// The block sampler's lanes equal four calls of the quad sampler, bit for bit.
+void expect_quad_samplers_texels(const TextureImage& image, const Sampler& sampler, SimdPath path, const float* s,
+                                 const float* t) {
+  const TextureLevel& level = image.levels[0];
+  alignas(64) float block[4][kBlockLanes];
+  select_bilinear8_block_sampler(sampler, path)(image, LevelChoice{}, s, t, block);
+  for (int q = 0; q < 4; ++q) {
+    F4 quad[4];
+    select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 4; ++c)
+        ASSERT_EQ(block[c][4 * q + i], quad[c][i])
+            << level.width << "x" << level.height << " s " << s[4 * q + i] << " t " << t[4 * q + i] << " channel " << c;
+  }
+}
+
 TEST(Bilinear8BlockSampler, EdgesGiveTheQuadSamplersTexelsOnEveryPath) {
   std::mt19937 random(12);
   int quads = 0;
@@ -44,17 +60,8 @@ TEST(Bilinear8BlockSampler, EdgesGiveTheQuadSamplersTexelsOnEveryPath) {
                 s[i] = coordinate(random, w, trial % 3);
                 t[i] = coordinate(random, h, (trial / 3) % 3);
               }
-              alignas(64) float block[4][kBlockLanes];
-              select_bilinear8_block_sampler(sampler, path)(image, LevelChoice{}, s, t, block);
-              for (int q = 0; q < 4; ++q) {
-                F4 quad[4];
-                select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
-                for (int i = 0; i < 4; ++i)
-                  for (int c = 0; c < 4; ++c)
-                    ASSERT_EQ(block[c][4 * q + i], quad[c][i])
-                        << w << "x" << h << " s " << s[4 * q + i] << " t " << t[4 * q + i] << " channel " << c;
-                ++quads;
-              }
+              ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
+              quads += 4;
             }
     }
   EXPECT_EQ(quads, 5 * 3 * 2 * 2 * 3 * 60 * 4);
@@ -90,17 +97,8 @@ TEST(Bilinear8BlockSampler, CompactBlocksGiveTheQuadSamplersTexelsOnEveryPath) {
             s[i] = s0 + ds * x;
             t[i] = t0 + dt * y;
           }
-          alignas(64) float block[4][kBlockLanes];
-          select_bilinear8_block_sampler(sampler, path)(image, LevelChoice{}, s, t, block);
-          for (int q = 0; q < 4; ++q) {
-            F4 quad[4];
-            select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
-            for (int i = 0; i < 4; ++i)
-              for (int c = 0; c < 4; ++c)
-                ASSERT_EQ(block[c][4 * q + i], quad[c][i])
-                    << w << "x" << h << " s " << s[4 * q + i] << " t " << t[4 * q + i] << " channel " << c;
-            ++quads;
-          }
+          ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
+          quads += 4;
         }
   }
   EXPECT_EQ(quads, 6 * 2 * 3 * 200 * 4);
