@@ -167,6 +167,7 @@ SetupParams GeometryStage::params(const Style& style) const {
   p.back_facing = style.back_facing;
   p.depth_offset = style.depth_offset;
   if (shader_) {
+    p.programmable = true;
     p.varyings = varying_count_;
     p.varying_out = varying_planes_.data();
     varying_planes_.back() = Plane{};

@@ -12,9 +12,10 @@ namespace pineda::raster {
 
 constexpr int kBlockLanes = 16;
 
-// out[c][lane]: channel c (RGBA, as stored) of each lane, in [0, 1], read at `choice`.
+// out[c][lane]: channel c (RGBA, as stored) of each lane, in [0, 1], read at `choice`. Each
+// vector of lanes is read from s and t before it is written, so out may be s or t.
 using BlockSampler = void (*)(const TextureImage& image, const LevelChoice& choice, const float* s, const float* t,
-                              float (*out)[kBlockLanes]);
+                              float* const out[4]);
 
 // The block sampler for an image and sampler that select_bilinear8_sampler takes.
 BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);

@@ -25,7 +25,7 @@ void constant_planes(const WinVert& v, const SetupParams& params, PrimSetup& out
   out.inv_w = {1.f, 0.f, 0.f};
   for (int k = 0; k < params.planes; ++k) out.planes[k] = {v.attr[k], 0.f, 0.f};
   for (int k = 0; k < params.varyings; ++k) params.varying_out[k] = {v.varyings[k], 0.f, 0.f};
-  if (params.varyings > 0) out.inv_w = {static_cast<float>(v.inv_w), 0.f, 0.f};
+  if (params.programmable) out.inv_w = {static_cast<float>(v.inv_w), 0.f, 0.f};
   out.z0 = v.z + params.depth_offset;
   out.dzdx = out.dzdy = 0.0;
 }
@@ -71,7 +71,7 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
     for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->varyings[k] * v[i]->inv_w : v[i]->varyings[k];
     params.varying_out[k] = make_plane();
   }
-  if (params.varyings > 0 && !out.perspective) {  // gl_FragCoord.w: the primitive's common 1/w
+  if (params.programmable && !out.perspective) {  // gl_FragCoord.w: the primitive's common 1/w
     for (int i = 0; i < count; ++i) f[i] = v[i]->inv_w;
     out.inv_w = make_plane();
   }

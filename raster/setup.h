@@ -29,6 +29,7 @@ struct SetupParams {
   // varying_out (the scene stores them; PrimSetup::varying_planes points at them).
   int varyings = 0;
   Plane* varying_out = nullptr;
+  bool programmable = false;  // the inverse-w plane holds 1/w (gl_FragCoord.w) whatever the varyings
 };
 
 // Twice the signed area in sub-pixels squared; positive when counter-clockwise (y up).

@@ -51,9 +51,9 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
 // The fast sampler's lookups of a whole block at once when its live quads read the same level
 // or levels (the same per-quad choice, bias included, as the quad sampler's); false otherwise.
 // Only for an image and sampler that select_bilinear8_sampler takes.
-bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, const Sampler& sampler,
-                               const float (*coords)[kLanes], shader::LodMode mode, const float* lod,
-                               shader::LaneMask live, float (*out)[kLanes]) {
+bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, const Sampler& sampler, const float* s,
+                               const float* t, shader::LodMode mode, const float* lod, shader::LaneMask live,
+                               float* const out[4]) {
   LevelChoice choice;
   const bool level_zero = sampler.min_filter == TexFilter::Linear;  // for every quad: no mipmaps
   bool any = level_zero && live != 0;
@@ -66,13 +66,13 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
       biased.lod_bias += lod[first];
       quad = &biased;
     }
-    const LevelChoice c = bilinear8_quad_levels(image, *quad, load4(&coords[0][first]), load4(&coords[1][first]));
+    const LevelChoice c = bilinear8_quad_levels(image, *quad, load4(&s[first]), load4(&t[first]));
     if (any && (c.first != choice.first || c.two != choice.two || c.blend != choice.blend)) return false;
     choice = c;
     any = true;
   }
   if (!any) return false;
-  block(image, choice, coords[0], coords[1], out);
+  block(image, choice, s, t, out);
   for (int first = 0; first < kLanes; first += 4) {
     if (image.base_format == TexBaseFormat::RGBA && ((live >> first) & 0xf)) continue;  // as sampled
     F4 lanes[4];
@@ -89,6 +89,15 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
 }
 
 }  // namespace
+
+bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t, float* const out[4]) const {
+  const TextureUnit* tu = unit >= 0 && unit < kMaxTextureImageUnits ? &units_[unit] : nullptr;
+  const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
+  if (!image || !kind_matches(*image, SamplerKind::Tex2D)) return false;
+  const FastSamplers& f = fast_samplers(unit, *image);
+  return f.block && sample_block_at_one_level(f.block, *image, tu->sampler, s, t, shader::LodMode::Implicit, nullptr,
+                                              0xFFFF, out);
+}
 
 const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {
   FastSamplers& f = fast_[static_cast<size_t>(unit)];
@@ -114,7 +123,10 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   QuadSampler fast = nullptr;
   if (image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit) {
     const FastSamplers& f = fast_samplers(unit, *image);
-    if (f.block && sample_block_at_one_level(f.block, *image, tu->sampler, coords, mode, lod, live, out)) return;
+    float* const channels[4] = {out[0], out[1], out[2], out[3]};
+    if (f.block && sample_block_at_one_level(f.block, *image, tu->sampler, coords[0], coords[1], mode, lod, live, channels)) {
+      return;
+    }
     fast = f.quad;
   }
   for (int q = 0; q < kLanes / 4; ++q) {

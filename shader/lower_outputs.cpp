@@ -49,6 +49,12 @@ void Lowerer::route_outputs() {
     }
     std::string target = o.name;
     bool back = false;
+    // GL 2.0 section 2.14.7: the colours a vertex shader writes are clamped to [0, 1] (there is
+    // no ARB_color_buffer_float to turn that off).
+    auto clamped_colour = [&](int first_float, int n) {
+      for (int c = 0; c < n; ++c)
+        stores.emplace_back(kOutFirstVarying + first_float + c, emit(Op::Clamp, o.reg + c, k(0.0f), k(1.0f)));
+    };
     if (o.name == "gl_FrontColor") target = "gl_Color";
     else if (o.name == "gl_BackColor") target = "gl_Color", back = true;
     else if (o.name == "gl_FrontSecondaryColor") target = "gl_SecondaryColor";
@@ -65,14 +71,15 @@ void Lowerer::route_outputs() {
         v->back_offset = iface_.varying_floats;
         iface_.varying_floats += 4;
       }
-      store_range(v->back_offset, o.reg, 4);
+      clamped_colour(v->back_offset, 4);
       continue;
     }
     if (!starts_with_gl(target) && !(v->type == o.type))
       fail("error: vertex shader output `" + o.name + "' declared as type `" + type_name(o.type) +
            "', but fragment shader input declared as type `" + type_name(v->type) + "'\n");
     const int n = std::min(o.type.size(), v->type.size());
-    store_range(v->offset, o.reg, n);
+    if (target != o.name) clamped_colour(v->offset, n);  // gl_FrontColor, gl_FrontSecondaryColor
+    else store_range(v->offset, o.reg, n);
   }
   // GLSL 1.10 and 1.20 (as Mesa, which only warns for GLSL ES): the vertex shader writes it.
   if (position_reg == kNone && !es_) fail("error: vertex shader does not write to `gl_Position'\n");

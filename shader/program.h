@@ -117,6 +117,13 @@ class TextureAccess {
   // the shadow reference in r for Shadow*); out[c][lane]: RGBA after the texture's base format.
   virtual void sample(int unit, SamplerKind kind, const float (*coords)[kLanes], LodMode mode,
                       const float* lod, LaneMask live, float (*out)[kLanes]) const = 0;
+  // The same as sample(unit, Tex2D, {s, t}, Implicit, nullptr, every lane, out) by a shorter
+  // route where the unit's texture has one (out[c] may be s or t); false, with nothing written,
+  // where it has none.
+  virtual bool sample_2d_block(int unit, const float* s, const float* t, float* const out[4]) const {
+    (void)unit, (void)s, (void)t, (void)out;
+    return false;
+  }
 };
 
 // One 4x4 block of fragments (value-initialize it, FragmentBlock{}, for zeros: the arrays have

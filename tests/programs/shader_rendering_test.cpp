@@ -220,6 +220,26 @@ TEST_F(ShaderRenderingTest, BuiltinMatricesAndFtransform) {
   EXPECT_TRUE(near_rgba(pixel(4, 0), {0, 255, 0, 255}));
 }
 
+// gl_FragCoord.w is 1/w of the clip position, also where every vertex has the same w and the
+// program has no varyings (no perspective division to share it with): piglit's fragcoord_w.
+TEST_F(ShaderRenderingTest, FragCoordWIsOneOverClipWWithoutVaryings) {
+  use("void main() { gl_Position = vec4(gl_Vertex.xy * 2.0, 0.0, 2.0); }\n",
+      "void main() { gl_FragColor = vec4(1.0, gl_FragCoord.w, 1.0, 0.0); }\n");
+  full_screen();
+  EXPECT_EQ(pixel(3, 3), (std::array<int, 4>{255, 128, 255, 0}));
+  EXPECT_EQ(pixel(30, 30), (std::array<int, 4>{255, 128, 255, 0}));
+}
+
+// GL 2.0 2.14.7: the colours a vertex shader writes are clamped to [0, 1] before interpolation
+// (piglit's glsl-clamp-vertex-color): unclamped, (-2 + 2) / 2 would not be 0 but the sum below.
+TEST_F(ShaderRenderingTest, VertexShaderColoursAreClamped) {
+  use("void main() { gl_Position = gl_Vertex; gl_FrontColor = vec4(-2.0, -1.0, 0.5, 3.0);"
+      " gl_FrontSecondaryColor = vec4(2.0, 0.5, 1.5, -0.5); }\n",
+      "void main() { gl_FragColor = (gl_Color + gl_SecondaryColor) * 0.5; }\n");
+  full_screen();
+  EXPECT_EQ(pixel(5, 5), (std::array<int, 4>{128, 64, 191, 128}));
+}
+
 TEST_F(ShaderRenderingTest, ColourAttributeAndVarying) {
   use("void main() { gl_FrontColor = gl_Color; gl_Position = gl_Vertex; }\n",
       "void main() { gl_FragColor = gl_Color; }\n");

@@ -116,7 +116,8 @@ TEST(Bilinear8BlockSampler, SixteenLanesGiveTheQuadSamplersTexelsOnEveryPath) {
             if (trial == 0) s[5] = std::numeric_limits<float>::quiet_NaN(), t[9] = 1e30f;
             const LevelChoice choice = bilinear8_quad_levels(image, sampler, load4(s), load4(t));
             alignas(64) float block[4][kBlockLanes];
-            select_bilinear8_block_sampler(sampler, path)(image, choice, s, t, block);
+            float* const channels[4] = {block[0], block[1], block[2], block[3]};
+            select_bilinear8_block_sampler(sampler, path)(image, choice, s, t, channels);
             for (int q = 0; q < 4; ++q) {
               F4 quad[4];
               select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
