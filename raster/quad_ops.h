@@ -78,16 +78,22 @@ inline QuadColor blend_quad(const DrawRecord& d, const QuadColor& src, const Qua
   return out;
 }
 
+// The quad's pixels, put together in registers: a 16-byte load of the smaller stores that filled
+// a local array missed store forwarding (a quarter of copy_blur's blending routine waited there).
 inline U4 load_pixels(uint8_t* const px[4], unsigned mask) {
-  uint32_t v[4] = {0, 0, 0, 0};
   if (mask == 0xf) {
-    std::memcpy(&v[0], px[0], 8);
-    std::memcpy(&v[2], px[2], 8);
-  } else {
-    for (int i = 0; i < 4; ++i)
-      if (px[i]) std::memcpy(&v[i], px[i], 4);
+    typedef uint64_t Rows __attribute__((vector_size(16)));
+    uint64_t top, bottom;
+    std::memcpy(&top, px[0], 8);
+    std::memcpy(&bottom, px[2], 8);
+    return reinterpret_cast<U4>(Rows{top, bottom});
   }
-  return U4{v[0], v[1], v[2], v[3]};
+  auto pixel = [&](int i) {
+    uint32_t v = 0;
+    if (px[i]) std::memcpy(&v, px[i], 4);
+    return v;
+  };
+  return U4{pixel(0), pixel(1), pixel(2), pixel(3)};
 }
 
 // The destination pixels blending and logic op read, as the target's format holds them: a
