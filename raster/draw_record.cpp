@@ -6,6 +6,7 @@
 #include "raster/draw_targets.h"
 #include "raster/fill_rows.h"
 #include "raster/fragment_pipeline.h"
+#include "raster/sample_quads.h"
 #include "raster/shader_quads.h"
 
 namespace pineda::raster {
@@ -103,9 +104,13 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
                    state.line_smooth || fades_points;
     d.routine = shade_program_quads;
   }
+  if (fb.samples > 1) d.sample_routine = state.shader ? shade_program_sample_quads : select_sample_quad_routine(d.key, path);
   if (fb.color_targets > 1) {
     prepare_target_draws(d, fb, path);
-    if (state.shader) d.routine = shade_program_target_quads;
+    if (state.shader) {
+      d.routine = shade_program_target_quads;
+      if (fb.samples > 1) d.sample_routine = shade_program_target_sample_quads;
+    }
   }
   return d;
 }
