@@ -118,7 +118,9 @@ void prepare_target_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path
   for (int i = 0; i < fb.color_targets; ++i) records->push_back(make_draw_record(draw.state, fb.target(i), path, draw.fades_points));
   draw.target_draws = std::move(records);
   draw.routine = target_quads;
-  if (fb.samples > 1) draw.sample_routine = target_sample_quads;
+  const bool every_target_shades_once = std::all_of(draw.target_draws->begin(), draw.target_draws->end(),
+                                                    [](const DrawRecord& t) { return t.sample_routine; });
+  draw.sample_routine = fb.samples > 1 && every_target_shades_once ? target_sample_quads : nullptr;
 }
 
 }  // namespace pineda::raster

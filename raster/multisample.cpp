@@ -90,7 +90,7 @@ namespace {
 
 // A primitive moved to a sample: its edges, sample point and depth taken at the sample's offset
 // (the pixel centre then tests the sample), so that the pixel-centre rasterizer finds the
-// sample's coverage. The planes are not copied: colours are shaded at the pixel centre.
+// sample's coverage. Only the setup before the planes is written: `moved` keeps its own planes.
 void move_to_sample(const PrimSetup& prim, SampleOffset o, PrimSetup& moved) {
   std::memcpy(static_cast<void*>(&moved), &prim, offsetof(PrimSetup, planes));
   for (int e = 0; e < 3; ++e) moved.edges[e].c = prim.edges[e].c + prim.edges[e].a * o.dx + prim.edges[e].b * o.dy;
