@@ -540,9 +540,30 @@ TEST_F(MultisampleTest, ClearAndBlitBetweenSampleCounts) {
 // A multisampled draw shades each pixel once, at its centre, and then tests and writes each
 // sample on its own (raster/sample_targets.h). The tests below check the per-sample half.
 
+// Draws of a fragment shader shade once per pixel for all samples; plain fixed-function draws
+// (with a fill routine) run once per sample plane: the per-sample tests below take both.
+class MultisampleBothPathsTest : public MultisampleTest, public ::testing::WithParamInterface<bool> {
+ protected:
+  void SetUp() override {
+    MultisampleTest::SetUp();
+    if (GetParam()) {
+      program_ = fragment_program("void main() { gl_FragColor = gl_Color; }");
+      glUseProgram(program_);
+    }
+  }
+  void TearDown() override {
+    glUseProgram(0);
+    if (program_) glDeleteProgram(program_);
+    MultisampleTest::TearDown();
+  }
+  GLuint program_ = 0;
+};
+
+INSTANTIATE_TEST_SUITE_P(FixedFunctionAndShader, MultisampleBothPathsTest, ::testing::Bool());
+
 // Depth is interpolated at each sample, not at the pixel centre: the red plane is nearer than
 // the green one left of x = 8.4, which splits pixel 8's samples (x 8.125, 8.375 | 8.625, 8.875).
-TEST_F(MultisampleTest, DepthIsInterpolatedAtEachSample) {
+TEST_P(MultisampleBothPathsTest, DepthIsInterpolatedAtEachSample) {
   glEnable(GL_DEPTH_TEST);
   glColor3f(0, 1, 0);
   rect(0, 0, 16, 16, 0.f);
@@ -561,7 +582,7 @@ TEST_F(MultisampleTest, DepthIsInterpolatedAtEachSample) {
 
 // Stencil counts per sample: pixel 2's samples are covered 2, 0, 2 and 1 times by the two
 // rectangles (sample x 2.375, 2.875, 2.125, 2.625).
-TEST_F(MultisampleTest, StencilIsUpdatedPerSample) {
+TEST_P(MultisampleBothPathsTest, StencilIsUpdatedPerSample) {
   const GLuint ds = make_ms_renderbuffer(GL_DEPTH24_STENCIL8, 4);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ds);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, ds);
