@@ -6,6 +6,7 @@
 #include "raster/draw_targets.h"
 #include "raster/fill_rows.h"
 #include "raster/fragment_pipeline.h"
+#include "raster/sample_quads.h"
 #include "raster/shader_quads.h"
 
 namespace pineda::raster {
@@ -94,7 +95,8 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   d.fades_points = fades_points;
   d.key.extras |= fades_points;
   d.routine = select_quad_routine(d.key, path);
-  if (const QuadRoutine fill = select_fill_routine(d, fb, path)) d.routine = fill;
+  const QuadRoutine fill = select_fill_routine(d, fb, path);
+  if (fill) d.routine = fill;
   if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
     d.planes = 0;
     d.secondary_plane = d.fog_plane = -1;
@@ -103,9 +105,18 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
                    state.line_smooth || fades_points;
     d.routine = shade_program_quads;
   }
+  // Multisampled: a fill routine (fill_rows.h) on each sample plane outruns one shading per
+  // pixel followed by the generic quad operations per sample (2x2 quads, one lane per pixel), so
+  // draws that have one keep the per-plane path; alpha to coverage gives them none.
+  const bool alpha_to_coverage = state.multisample.multisample && state.multisample.alpha_to_coverage;
+  if (fb.samples > 1 && (state.shader || !fill || alpha_to_coverage))
+    d.sample_routine = state.shader ? shade_program_sample_quads : select_sample_quad_routine(d.key, path);
   if (fb.color_targets > 1) {
     prepare_target_draws(d, fb, path);
-    if (state.shader) d.routine = shade_program_target_quads;
+    if (state.shader) {
+      d.routine = shade_program_target_quads;
+      if (fb.samples > 1) d.sample_routine = shade_program_target_sample_quads;
+    }
   }
   return d;
 }

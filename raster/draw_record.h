@@ -9,6 +9,7 @@
 #include "raster/draw_state.h"
 #include "raster/framebuffer.h"
 #include "raster/prim_setup.h"
+#include "raster/sample_targets.h"
 #include "raster/sampler_bilinear8.h"
 
 namespace pineda::raster {
@@ -62,6 +63,9 @@ struct DrawRecord {
   // one record per sample when they differ (alpha to coverage), else null.
   uint32_t sample_mask = ~0u;
   std::shared_ptr<const std::vector<DrawRecord>> sample_draws;
+  // Multisampled framebuffers: shades each pixel once for all samples (null: the draw runs
+  // `routine` once per sample plane).
+  SampleQuadRoutine sample_routine = nullptr;
   // A sample's record under alpha to coverage: its sample is kept where alpha >= this too,
   // besides the application's alpha test (state.alpha_test is on, ALWAYS when GL's is off).
   bool alpha_to_coverage = false;

@@ -1,6 +1,9 @@
 #include "raster/multisample.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 #include "raster/color_reduction.h"
 #include "raster/raster_limits.h"
@@ -83,27 +86,76 @@ void apply_clear_samples(const ClearRecord& clear, const Framebuffer& fb, const 
   for (int s = 0; s < fb.samples; ++s) apply_clear(clear, sample_plane(fb, s), tile);
 }
 
-uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
-                                   const PixelRect& tile) {
+namespace {
+
+// A primitive moved to a sample: its edges, sample point and depth taken at the sample's offset
+// (the pixel centre then tests the sample), so that the pixel-centre rasterizer finds the
+// sample's coverage. Only the setup before the planes is written: `moved` keeps its own planes.
+void move_to_sample(const PrimSetup& prim, SampleOffset o, PrimSetup& moved) {
+  std::memcpy(static_cast<void*>(&moved), &prim, offsetof(PrimSetup, planes));
+  for (int e = 0; e < 3; ++e) moved.edges[e].c = prim.edges[e].c + prim.edges[e].a * o.dx + prim.edges[e].b * o.dy;
+  moved.sample_point.x = prim.sample_point.x - o.dx;
+  moved.sample_point.y = prim.sample_point.y - o.dy;
+  moved.z0 = prim.z0 + (prim.dzdx * o.dx + prim.dzdy * o.dy) / kSubpixelOne;
+}
+
+// Stippled lines, pixel rectangles and GL_MULTISAMPLE off cover a sample where they cover the
+// pixel centre; other primitives are moved to each sample.
+bool covers_samples(const PrimSetup& prim, const DrawRecord& draw) {
   const bool sample_shape = (prim.kind == CoverageKind::Triangle && prim.smooth.size == 0.0) || prim.sample_point.size > 0;
-  const bool per_sample = sample_shape && draw.state.multisample.multisample;
+  return sample_shape && draw.state.multisample.multisample;
+}
+
+// The draws whose routine shades each sample plane again (DrawRecord::sample_routine null).
+uint64_t rasterize_each_plane(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
+                              const PixelRect& tile) {
+  const bool per_sample = covers_samples(prim, draw);
   uint64_t passed = 0;
   PrimSetup shifted;
   if (per_sample) shifted = prim;
   for (int s = 0; s < fb.samples; ++s) {
     if (!((draw.sample_mask >> s) & 1)) continue;
-    const Framebuffer plane = sample_plane(fb, s);
-    const DrawRecord& d = sample_draw(draw, s);
-    if (!per_sample) {  // stippled lines, pixel rectangles, GL_MULTISAMPLE off: pixel centres
-      passed += rasterize_in_tile(prim, d, plane, tile);
-      continue;
+    if (per_sample) move_to_sample(prim, kSampleOffsets4x[s], shifted);
+    passed += rasterize_in_tile(per_sample ? shifted : prim, sample_draw(draw, s), sample_plane(fb, s), tile);
+  }
+  return passed;
+}
+
+}  // namespace
+
+uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
+                                   const PixelRect& tile) {
+  if (!draw.sample_routine) return rasterize_each_plane(prim, draw, fb, tile);
+  const PixelRect area = intersect(prim.bounds, tile);
+  if (area.empty()) return 0;
+  const bool per_sample = covers_samples(prim, draw);
+  TileSampleMasks masks;
+  masks.x0 = tile.x0 & ~1;
+  masks.y0 = tile.y0 & ~1;
+  const int q0 = (area.x0 - masks.x0) / 2, q1 = (area.x1 - 1 - masks.x0) / 2;
+  const int r0 = (area.y0 - masks.y0) / 2, r1 = (area.y1 - 1 - masks.y0) / 2;
+  for (int r = r0; r <= r1; ++r) std::fill(&masks.quads[r][q0], &masks.quads[r][q1] + 1, uint16_t{0});
+  SampleTargets targets;
+  PrimSetup moved[kMaxSamples];
+  for (int s = 0; s < fb.samples; ++s) {
+    if (!((draw.sample_mask >> s) & 1)) continue;
+    targets.draw[s] = &sample_draw(draw, s);
+    targets.plane[s] = sample_plane(fb, s);
+    targets.prim[s] = &prim;
+    if (per_sample) {
+      move_to_sample(prim, kSampleOffsets4x[s], moved[s]);
+      targets.prim[s] = &moved[s];
     }
-    const SampleOffset o = kSampleOffsets4x[s];
-    for (int e = 0; e < 3; ++e) shifted.edges[e].c = prim.edges[e].c + prim.edges[e].a * o.dx + prim.edges[e].b * o.dy;
-    shifted.sample_point.x = prim.sample_point.x - o.dx;  // the pixel centre then tests the sample
-    shifted.sample_point.y = prim.sample_point.y - o.dy;
-    shifted.z0 = prim.z0 + (prim.dzdx * o.dx + prim.dzdy * o.dy) / kSubpixelOne;
-    passed += rasterize_in_tile(shifted, d, plane, tile);
+    add_sample_masks(*targets.prim[s], area, s, masks);
+  }
+  uint64_t passed = 0;
+  for (int r = r0; r <= r1; ++r) {
+    int first = q0, last = q1;  // the row's covered quads
+    while (first <= last && !masks.quads[r][first]) ++first;
+    while (last >= first && !masks.quads[r][last]) --last;
+    if (first > last) continue;
+    passed += draw.sample_routine(draw, prim, targets, masks.x0 + 2 * first, masks.y0 + 2 * r, last - first + 1,
+                                  &masks.quads[r][first]);
   }
   return passed;
 }

@@ -1,7 +1,7 @@
 // Multisampled framebuffers (Framebuffer::samples > 1): each sample is a whole plane of every
-// buffer, and a draw is rasterized once per sample with its coverage (edge functions) and depth
-// taken at that sample's position. Colour and texture coordinates stay at the pixel centre, so
-// every sample of a pixel gets the same shaded colour: shading once per pixel, as GL 1.5
+// buffer. A primitive's coverage (edge functions) and depth are taken at each sample's position;
+// each pixel any sample covers is then shaded once, at its centre, and every covered sample
+// tested and written with that colour (sample_targets.h): shading once per pixel, as GL 1.5
 // section 3.2.1 allows. Single-sampled framebuffers never reach this code.
 #pragma once
 #include <cstdint>
@@ -12,8 +12,6 @@
 #include "raster/prim_setup.h"
 
 namespace pineda::raster {
-
-constexpr int kMaxSamples = 4;
 
 // The standard 4x pattern (D3D's, Gallium's and so llvmpipe's), as offsets from the pixel
 // centre in sub-pixels (1/256 px), y up: samples at (0.375, 0.125), (0.875, 0.375),
@@ -41,6 +39,8 @@ const DrawRecord& sample_draw(const DrawRecord& draw, int sample);
 void prepare_sample_draws(DrawRecord& draw, const Framebuffer& fb, SimdPath path);
 
 void apply_clear_samples(const ClearRecord& clear, const Framebuffer& fb, const PixelRect& tile);
+// The primitive's samples in `tile`: the draw's sample_routine on each quad row, or (without
+// one) its routine once per sample plane. Returns the samples that passed when counted.
 uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb,
                                    const PixelRect& tile);
 

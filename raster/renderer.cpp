@@ -70,6 +70,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   if (impl_->reference && !state.shader) {
     flush();  // queued clears first: reference primitives are drawn into the framebuffer at once
     record.routine = reference_plane_quads;
+    record.sample_routine = nullptr;  // multisampled: the reference routine on each sample plane
   }
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, [this] { submit(); }, impl_->reference);

@@ -104,24 +104,26 @@ bool early_tests(const DrawRecord& d, const shader::Program& program) {
   return (d.key.depth || d.key.stencil) && !program.writes_depth() && !program.uses_discard() && !d.state.alpha_test;
 }
 
-// Fills block k of `row` for up to four quads of row y (depth and stencil first when no
-// fragment can change them); returns false when no pixel is left to shade. Adds the samples
-// that passed an early depth test to `passed`.
+// Depth and stencil of the quad at (x, y) before shading (early_tests): its pixels that pass.
+// Adds them to `passed` when the draw counts samples.
+unsigned early_depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, const Quad& q,
+                             unsigned mask, uint32_t& passed) {
+  uint32_t plane_z[4];
+  plane_depths(d, p, q.ox, q.oy, plane_z);
+  mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, plane_z);
+  if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(mask));
+  return mask;
+}
+
+// Fills block k of `row` for up to four quads of row y (after any early tests); returns false
+// when no pixel is left to shade.
 bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, const float* uniform_values,
-                 RowBlocks& row, int k, uint32_t& passed) {
+                 RowBlocks& row, int k) {
   const ShaderDraw& sd = *d.state.shader;
   const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
   Quad* quads = row.quads[k];
   const int n = row.quad_count[k];
-  if (early_tests(d, program)) {
-    for (int q = 0; q < n; ++q) {
-      uint32_t plane_z[4];
-      plane_depths(d, p, quads[q].ox, quads[q].oy, plane_z);
-      quads[q].mask = depth_stencil_lanes(d, p, fb, quads[q].x, y, quads[q].mask, plane_z);
-      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quads[q].mask));
-    }
-  }
   shader::FragmentBlock& block = row.blocks[k];
   block.live = 0;
   for (int q = 0; q < n; ++q) block.live |= static_cast<shader::LaneMask>(quads[q].mask << (4 * q));
@@ -185,16 +187,17 @@ bool writes_block_lanes(const DrawRecord& d, const Framebuffer& fb, const RowBlo
          (!d.key.blend || (d.key.blend_over && !s.logic_op_enabled));
 }
 
-// After the run: alpha test, late depth and stencil, colour writes of block k; returns the
-// samples that passed a late depth test.
+// After the run: alpha test, late depth and stencil, colour writes of the `live` lanes of block
+// k (the block's own live lanes, or a sample's: shade_sample_quads); returns the samples that
+// passed a late depth test. `p` gives the depth; the colours are the block's.
 template <bool kTargets>
 uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y,
-                      const std::conditional_t<kTargets, TargetViews, NoTargets>& targets, RowBlocks& row, int k) {
+                      const std::conditional_t<kTargets, TargetViews, NoTargets>& targets, const RowBlocks& row, int k,
+                      shader::LaneMask live_lanes, bool early) {
   const ShaderDraw& sd = *d.state.shader;
   const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
   const shader::FragmentBlock& block = row.blocks[k];
-  const bool early = early_tests(d, program);
   const bool tests = d.key.depth || d.key.stencil;
   bool write_color = fb.color.base && d.color_write_any;
   if constexpr (kTargets) write_color = targets.count > 0;
@@ -203,7 +206,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
     if (writes_block_lanes(d, fb, row, k, early || !tests, write_color)) {
       static const BlockWriter write = select_block_writer(simd_path_from_environment());
       const Quad& q = row.quads[k][0];
-      const auto live = static_cast<uint16_t>(block.live & ((1u << (4 * row.quad_count[k])) - 1u));
+      const auto live = static_cast<uint16_t>(live_lanes & ((1u << (4 * row.quad_count[k])) - 1u));
       // The writer touches the live pixels alone; without any in the second row, that row may
       // lie past the buffer, and is not addressed.
       uint8_t* const row0 = color_address(fb, q.x, y);
@@ -214,7 +217,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
     }
   }
   for (int j = 0; j < row.quad_count[k]; ++j) {
-    unsigned mask = (block.live >> (4 * j)) & 0xfu;
+    unsigned mask = (live_lanes >> (4 * j)) & 0xfu;
     if (!mask) continue;
     const Quad& q = row.quads[k][j];
     QuadColor col;
@@ -260,14 +263,35 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
   return passed;
 }
 
+// The quads of a row that `keep(q, quad, n)` keeps (quad n of the block being filled; false:
+// no pixel of quad q to shade) in blocks of up to four: begin(k) fills block k (false: nothing
+// left in it to shade), run() shades the blocks so far and empties the row.
+template <class Keep, class Begin, class Run>
+[[gnu::always_inline]] inline void group_quads(RowBlocks& row, int x, F4 ox0, F4 oy, int count, const Keep& keep,
+                                               const Begin& begin, const Run& run) {
+  int n = 0;
+  for (int q = 0; q < count; ++q) {
+    Quad& quad = row.quads[row.count][n];
+    if (!keep(q, quad, n)) continue;
+    quad.x = x + 2 * q;
+    quad.ox = ox0 + splat(static_cast<float>(2 * q));
+    quad.oy = oy;
+    if (++n == 4 || q == count - 1) {
+      row.quad_count[row.count] = n;
+      if (begin(row.count)) ++row.count;
+      n = 0;
+      if (row.count == RowBlocks::kMax) run();
+    }
+  }
+  if (n) {
+    row.quad_count[row.count] = n;
+    if (begin(row.count)) ++row.count;
+  }
+  run();
+}
+
 template <bool kTargets>
-uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
-                     const uint8_t* masks) {
-  if (!d.state.shader || !d.state.shader->program) return 0;
-  const ShaderDraw& sd = *d.state.shader;
-  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
-  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
-  const float* uniform_values = sd.fragment_uniform_values();
+std::conditional_t<kTargets, TargetViews, NoTargets> target_views(const DrawRecord& d, const Framebuffer& fb) {
   std::conditional_t<kTargets, TargetViews, NoTargets> targets;
   if constexpr (kTargets) {
     for (int i = 0; i < fb.color_targets; ++i) {
@@ -278,41 +302,119 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
       targets.output[size_t(targets.count++)] = i;
     }
   }
+  return targets;
+}
+
+template <bool kTargets>
+uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                     const uint8_t* masks) {
+  if (!d.state.shader || !d.state.shader->program) return 0;
+  const ShaderDraw& sd = *d.state.shader;
+  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
+  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const float* uniform_values = sd.fragment_uniform_values();
+  const auto targets = target_views<kTargets>(d, fb);
   const UnitTextureAccess textures(d.state.texture_units);
   uint32_t passed = 0;
   RowBlocks row;
+  const bool early = early_tests(d, *sd.program);
+  auto begin = [&](int k) {
+    if (early)
+      for (int q = 0; q < row.quad_count[k]; ++q)
+        row.quads[k][q].mask = early_depth_stencil(d, p, fb, y, row.quads[k][q], row.quads[k][q].mask, passed);
+    return begin_block(d, p, fb, y, uniform_values, row, k);
+  };
   auto run = [&] {
     if (!row.count) return;
     sd.program->run_fragment_blocks(sd.uniforms.data(), &textures, row.blocks, row.count);
-    for (int k = 0; k < row.count; ++k) passed += finish_block<kTargets>(d, p, fb, y, targets, row, k);
+    for (int k = 0; k < row.count; ++k)
+      passed += finish_block<kTargets>(d, p, fb, y, targets, row, k, row.blocks[k].live, early);
     row.count = 0;
   };
-  int n = 0;
-  for (int q = 0; q < count; ++q) {
-    unsigned mask = masks[q];
-    if (d.key.extras) mask &= stipple_mask(d, p, x + 2 * q, y);
-    if (!mask) continue;
-    Quad& quad = row.quads[row.count][n];
-    quad.x = x + 2 * q;
-    quad.mask = mask;
-    quad.ox = ox0 + splat(static_cast<float>(2 * q));
-    quad.oy = oy;
-    if (++n == 4 || q == count - 1) {
-      row.quad_count[row.count] = n;
-      if (begin_block(d, p, fb, y, uniform_values, row, row.count, passed)) ++row.count;
-      n = 0;
-      if (row.count == RowBlocks::kMax) run();
+  auto keep = [&](int q, Quad& quad, int) {
+    quad.mask = masks[q];
+    if (d.key.extras) quad.mask &= stipple_mask(d, p, x + 2 * q, y);
+    return quad.mask != 0;
+  };
+  group_quads(row, x, ox0, oy, count, keep, begin, run);
+  return passed;
+}
+
+// A multisampled draw (sample_targets.h): each pixel any sample covers shaded once, then the
+// operations after shading for each sample with its coverage, record, depth and plane.
+template <bool kTargets>
+uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const SampleTargets& t, int x, int y, int count,
+                            const uint16_t* masks) {
+  if (!d.state.shader || !d.state.shader->program) return 0;
+  const ShaderDraw& sd = *d.state.shader;
+  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
+  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const float* uniform_values = sd.fragment_uniform_values();
+  int first = 0;  // a sample the draw writes: its plane has the framebuffer's draw buffers
+  while (first < kMaxSamples - 1 && !t.draw[first]) ++first;
+  std::array<std::conditional_t<kTargets, TargetViews, NoTargets>, kMaxSamples> targets;
+  for (int s = 0; s < kMaxSamples; ++s)
+    if (t.draw[s]) targets[size_t(s)] = target_views<kTargets>(*t.draw[s], t.plane[s]);
+  const UnitTextureAccess textures(d.state.texture_units);
+  // Alpha to coverage makes every sample's record alpha-test (multisample.cpp).
+  const bool early = early_tests(d, *sd.program) && !d.sample_draws;
+  uint32_t passed = 0;
+  RowBlocks row;
+  uint16_t sample_masks[RowBlocks::kMax][4];  // per quad of each block (sample_targets.h)
+  auto begin = [&](int k) {
+    for (int q = 0; q < row.quad_count[k]; ++q) {
+      uint16_t& m = sample_masks[k][q];
+      if (early) {
+        uint16_t kept = 0;
+        for (int s = 0; s < kMaxSamples; ++s) {
+          const unsigned mask = sample_quad_mask(m, s);
+          if (mask && t.draw[s])
+            kept |= static_cast<uint16_t>(
+                early_depth_stencil(*t.draw[s], *t.prim[s], t.plane[s], y, row.quads[k][q], mask, passed) << (4 * s));
+        }
+        m = kept;
+      }
+      row.quads[k][q].mask = any_sample_mask(m);
     }
-  }
-  if (n) {
-    row.quad_count[row.count] = n;
-    if (begin_block(d, p, fb, y, uniform_values, row, row.count, passed)) ++row.count;
-  }
-  run();
+    return begin_block(d, p, t.plane[first], y, uniform_values, row, k);
+  };
+  auto run = [&] {
+    if (!row.count) return;
+    sd.program->run_fragment_blocks(sd.uniforms.data(), &textures, row.blocks, row.count);
+    for (int k = 0; k < row.count; ++k)
+      for (int s = 0; s < kMaxSamples; ++s) {
+        if (!t.draw[s]) continue;
+        shader::LaneMask live = 0;
+        for (int q = 0; q < row.quad_count[k]; ++q)
+          live |= static_cast<shader::LaneMask>(sample_quad_mask(sample_masks[k][q], s) << (4 * q));
+        live &= row.blocks[k].live;  // less the discarded fragments
+        if (live)
+          passed += finish_block<kTargets>(*t.draw[s], *t.prim[s], t.plane[s], y, targets[size_t(s)], row, k, live,
+                                           early);
+      }
+    row.count = 0;
+  };
+  auto keep = [&](int q, Quad&, int n) {
+    uint16_t& m = sample_masks[row.count][n];
+    m = masks[q];
+    if (d.key.extras) m &= static_cast<uint16_t>(stipple_mask(d, p, x + 2 * q, y) * 0x1111u);
+    return any_sample_mask(m) != 0;
+  };
+  group_quads(row, x, ox0, oy, count, keep, begin, run);
   return passed;
 }
 
 }  // namespace
+
+uint32_t shade_program_sample_quads(const DrawRecord& d, const PrimSetup& p, const SampleTargets& t, int x, int y,
+                                    int count, const uint16_t* masks) {
+  return shade_sample_quads<false>(d, p, t, x, y, count, masks);
+}
+
+uint32_t shade_program_target_sample_quads(const DrawRecord& d, const PrimSetup& p, const SampleTargets& t, int x,
+                                           int y, int count, const uint16_t* masks) {
+  return shade_sample_quads<true>(d, p, t, x, y, count, masks);
+}
 
 uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                              const uint8_t* masks) {

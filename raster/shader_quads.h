@@ -16,4 +16,11 @@ uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Fram
 uint32_t shade_program_target_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y,
                                     int count, const uint8_t* masks);
 
+// The SampleQuadRoutines (sample_targets.h) of the two: the shader runs once per pixel of a
+// multisampled draw, and each sample's coverage and depth decide what it writes in its plane.
+uint32_t shade_program_sample_quads(const DrawRecord& d, const PrimSetup& p, const SampleTargets& t, int x, int y,
+                                    int count, const uint16_t* masks);
+uint32_t shade_program_target_sample_quads(const DrawRecord& d, const PrimSetup& p, const SampleTargets& t, int x,
+                                           int y, int count, const uint16_t* masks);
+
 }  // namespace pineda::raster

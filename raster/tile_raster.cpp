@@ -69,7 +69,8 @@ struct QuadSink {
 constexpr int kMaxQuadsPerRow = kTileSize / 2;
 
 // Every quad of `block`, clipped to `clip`.
-void emit_full(const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
+template <class Sink>
+void emit_full(const PixelRect& block, const PixelRect& clip, const Sink& sink) {
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
   // The masks of quad rows whose two pixel rows are inside clip: the same for every such row.
@@ -119,7 +120,8 @@ inline unsigned clip_mask(int x, int y, const PixelRect& r) {
   return x >= r.x0 && x + 1 < r.x1 && y >= r.y0 && y + 1 < r.y1 ? 0xfu : rect_mask(x, y, r);
 }
 
-void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const QuadSink& sink) {
+template <class Sink>
+void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const Sink& sink) {
   const int x0 = block.x0 & ~1;
   const int count = (block.x1 - x0 + 1) / 2;
   uint8_t masks[kMaxQuadsPerRow];
@@ -142,7 +144,8 @@ struct TileMask {
 };
 
 // Each quad row's quads from its first to its last covered one, their masks from two bit rows.
-void emit_mask(const TileMask& mask, const QuadSink& sink) {
+template <class Sink>
+void emit_mask(const TileMask& mask, const Sink& sink) {
   const PixelRect& area = mask.area;
   const int x0 = area.x0 & ~1;
   const int shift = area.x0 - x0;  // bit i of a shifted row is pixel x0 + i (an odd x0 leaves bit 63 free)
@@ -194,7 +197,8 @@ class SpanWalk {
   int64_t width_, den_, minor_, rest_, step_q_, step_r_;
 };
 
-void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+template <class Sink>
+void rasterize_line(const PrimSetup& p, const PixelRect& area, const Sink& sink) {
   const LineCoverage& l = p.line;
   TileMask mask{area};
   const int m_lo = std::max(l.major_min, l.x_major ? area.x0 : area.y0);
@@ -215,7 +219,8 @@ void rasterize_line(const PrimSetup& p, const PixelRect& area, const QuadSink& s
 
 // The triangle's pixels row by row: per row the columns between its edges' bounds, a span,
 // then quads from pairs of rows. A triangle covering the whole area skips the spans.
-void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+template <class Sink>
+void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const Sink& sink) {
   // A small triangle (most of a dense mesh's): its few quads edge-tested directly cost less
   // than setting up the row bounds (small_tris: 11% less CPU time than spans for every size).
   constexpr int kSmall = 16;
@@ -244,7 +249,8 @@ void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const QuadSin
 }
 
 // Antialiased points and lines: the pixels whose coverage is above zero.
-void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+template <class Sink>
+void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const Sink& sink) {
   TileMask mask{area};
   for (int y = area.y0; y < area.y1; ++y) {
     int x0 = area.x0, x1 = area.x1;
@@ -257,13 +263,41 @@ void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const QuadSink&
 
 // A multisampled point at one sample: the pixels whose centre it covers (multisample.cpp moves
 // the point by the sample's offset).
-void rasterize_sample_point(const PrimSetup& p, const PixelRect& area, const QuadSink& sink) {
+template <class Sink>
+void rasterize_sample_point(const PrimSetup& p, const PixelRect& area, const Sink& sink) {
   TileMask mask{area};
   for (int y = area.y0; y < area.y1; ++y)
     for (int x = area.x0; x < area.x1; ++x)
       if (sample_point_covers(p.sample_point, x * kSubpixelOne + kSubpixelHalf, y * kSubpixelOne + kSubpixelHalf))
         mask.set(x, y);
   emit_mask(mask, sink);
+}
+
+// Records a sample's quad masks as that sample's nibble of TileSampleMasks.
+struct SampleMaskSink {
+  TileSampleMasks& out;
+  int sample;
+  void row(int x, int y, int count, const uint8_t* masks) const {
+    uint16_t* quads = &out.quads[(y - out.y0) / 2][(x - out.x0) / 2];
+    for (int q = 0; q < count; ++q) quads[q] |= static_cast<uint16_t>(masks[q] << (4 * sample));
+  }
+};
+
+// The primitive's quads in `area` (inside one tile), row by row into the sink.
+template <class Sink>
+void rasterize_area(const PrimSetup& prim, const PixelRect& area, const Sink& sink) {
+  if (prim.smooth.size > 0.0) {
+    rasterize_smooth(prim, area, sink);
+    return;
+  }
+  switch (prim.kind) {
+    case CoverageKind::Triangle: rasterize_triangle(prim, area, sink); break;
+    case CoverageKind::Line: rasterize_line(prim, area, sink); break;
+    case CoverageKind::Point:
+      if (prim.sample_point.size > 0) rasterize_sample_point(prim, area, sink);
+      else emit_full(area, area, sink);
+      break;
+  }
 }
 
 }  // namespace
@@ -276,19 +310,12 @@ uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const 
   const PixelRect area = intersect(prim.bounds, tile);
   if (area.empty()) return 0;
   const QuadSink sink{prim, draw, fb};
-  if (prim.smooth.size > 0.0) {
-    rasterize_smooth(prim, area, sink);
-    return sink.samples_passed;
-  }
-  switch (prim.kind) {
-    case CoverageKind::Triangle: rasterize_triangle(prim, area, sink); break;
-    case CoverageKind::Line: rasterize_line(prim, area, sink); break;
-    case CoverageKind::Point:
-      if (prim.sample_point.size > 0) rasterize_sample_point(prim, area, sink);
-      else emit_full(area, area, sink);
-      break;
-  }
+  rasterize_area(prim, area, sink);
   return sink.samples_passed;
+}
+
+void add_sample_masks(const PrimSetup& prim, const PixelRect& area, int sample, TileSampleMasks& out) {
+  rasterize_area(prim, area, SampleMaskSink{out, sample});
 }
 
 }  // namespace pineda::raster

@@ -537,5 +537,142 @@ TEST_F(MultisampleTest, ClearAndBlitBetweenSampleCounts) {
   glDeleteRenderbuffers(1, &rb2);
 }
 
+// A multisampled draw shades each pixel once, at its centre, and then tests and writes each
+// sample on its own (raster/sample_targets.h). The tests below check the per-sample half.
+
+// Draws of a fragment shader shade once per pixel for all samples; plain fixed-function draws
+// (with a fill routine) run once per sample plane: the per-sample tests below take both.
+class MultisampleBothPathsTest : public MultisampleTest, public ::testing::WithParamInterface<bool> {
+ protected:
+  void SetUp() override {
+    MultisampleTest::SetUp();
+    if (GetParam()) {
+      program_ = fragment_program("void main() { gl_FragColor = gl_Color; }");
+      glUseProgram(program_);
+    }
+  }
+  void TearDown() override {
+    glUseProgram(0);
+    if (program_) glDeleteProgram(program_);
+    MultisampleTest::TearDown();
+  }
+  GLuint program_ = 0;
+};
+
+INSTANTIATE_TEST_SUITE_P(FixedFunctionAndShader, MultisampleBothPathsTest, ::testing::Bool());
+
+// Depth is interpolated at each sample, not at the pixel centre: the red plane is nearer than
+// the green one left of x = 8.4, which splits pixel 8's samples (x 8.125, 8.375 | 8.625, 8.875).
+TEST_P(MultisampleBothPathsTest, DepthIsInterpolatedAtEachSample) {
+  glEnable(GL_DEPTH_TEST);
+  glColor3f(0, 1, 0);
+  rect(0, 0, 16, 16, 0.f);
+  glColor3f(1, 0, 0);
+  glBegin(GL_QUADS);
+  glVertex3f(0, 0, 0.42f);
+  glVertex3f(16, 0, -0.38f);
+  glVertex3f(16, 16, -0.38f);
+  glVertex3f(0, 16, 0.42f);
+  glEnd();
+  glDisable(GL_DEPTH_TEST);
+  EXPECT_EQ(resolved(7, 8), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(8, 8), (Rgba{128, 128, 0, 255}));
+  EXPECT_EQ(resolved(9, 8), (Rgba{0, 255, 0, 255}));
+}
+
+// Stencil counts per sample: pixel 2's samples are covered 2, 0, 2 and 1 times by the two
+// rectangles (sample x 2.375, 2.875, 2.125, 2.625).
+TEST_P(MultisampleBothPathsTest, StencilIsUpdatedPerSample) {
+  const GLuint ds = make_ms_renderbuffer(GL_DEPTH24_STENCIL8, 4);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ds);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, ds);
+  ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 0, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  rect(0, 0, 2.5f, 8);
+  rect(0, 0, 2.75f, 8);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilFunc(GL_EQUAL, 2, 0xff);
+  glColor3f(1, 0, 0);
+  rect(0, 0, 16, 16);
+  glStencilFunc(GL_EQUAL, 1, 0xff);
+  glColor3f(0, 1, 0);
+  rect(0, 0, 16, 16);
+  glDisable(GL_STENCIL_TEST);
+  EXPECT_EQ(resolved(1, 4), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(resolved(2, 4), (Rgba{128, 64, 0, 191}));
+  EXPECT_EQ(resolved(3, 4), (Rgba{0, 0, 0, 0}));
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ms_depth_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, 0);
+  glDeleteRenderbuffers(1, &ds);
+}
+
+// gl_FragCoord is the pixel centre for a pixel partly covered (pixel 3: 2 of 4 samples), and a
+// discard drops every sample of the pixel.
+TEST_F(MultisampleTest, OneShadeAtThePixelCentreDecidesEverySample) {
+  const GLuint p = fragment_program(
+      "void main() { if (gl_FragCoord.x != 3.5 || gl_FragCoord.y == 5.5) discard;"
+      " gl_FragColor = vec4(1.0, 0.0, 0.0, 1.0); }");
+  glUseProgram(p);
+  rect(0, 0, 3.5f, 16);
+  glUseProgram(0);
+  glDeleteProgram(p);
+  EXPECT_EQ(resolved(3, 4), (Rgba{128, 0, 0, 128}));
+  EXPECT_EQ(resolved(3, 5), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(resolved(2, 4), (Rgba{0, 0, 0, 0}));
+}
+
+// gl_FragCoord.z is the depth at the pixel centre too (the one shading serves every sample):
+// window depth x / 16 here, 0.21875 at pixel 3's centre (red 56), where its two covered samples
+// (x 3.125, 3.375) would give 50 and 54.
+TEST_F(MultisampleTest, FragCoordDepthIsThePixelCentres) {
+  const GLuint p = fragment_program("void main() { gl_FragColor = vec4(gl_FragCoord.z, 0.0, 0.0, 1.0); }");
+  glUseProgram(p);
+  glBegin(GL_QUADS);
+  glVertex3f(0, 0, 1.f);
+  glVertex3f(3.5f, 0, 1.f - 3.5f / 8);
+  glVertex3f(3.5f, 16, 1.f - 3.5f / 8);
+  glVertex3f(0, 16, 1.f);
+  glEnd();
+  glUseProgram(0);
+  glDeleteProgram(p);
+  EXPECT_EQ(resolved(3, 8), (Rgba{28, 0, 0, 128}));  // (56 + 56 + 0 + 0 + 2) / 4
+}
+
+// A linearly filtered texture is sampled at the pixel centre, where texel 2 of a ramp lies
+// exactly (at a sample's position it would blend two texels): pixel 2's two covered samples
+// both take texel 2's red, 32.
+TEST_F(MultisampleTest, TexturesAreSampledAtThePixelCentre) {
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  uint8_t ramp[16 * 4];
+  for (int i = 0; i < 16; ++i) {
+    ramp[4 * i] = static_cast<uint8_t>(16 * i);
+    ramp[4 * i + 1] = ramp[4 * i + 2] = 0;
+    ramp[4 * i + 3] = 255;
+  }
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 16, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, ramp);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glBegin(GL_QUADS);
+  glTexCoord2f(0, 0.5f); glVertex2f(0, 0);
+  glTexCoord2f(2.5f / 16, 0.5f); glVertex2f(2.5f, 0);
+  glTexCoord2f(2.5f / 16, 0.5f); glVertex2f(2.5f, 16);
+  glTexCoord2f(0, 0.5f); glVertex2f(0, 16);
+  glEnd();
+  glDisable(GL_TEXTURE_2D);
+  glDeleteTextures(1, &tex);
+  EXPECT_EQ(resolved(1, 8), (Rgba{16, 0, 0, 255}));
+  EXPECT_EQ(resolved(2, 8), (Rgba{16, 0, 0, 128}));  // (32 + 32 + 0 + 0 + 2) / 4
+}
+
 }  // namespace
 }  // namespace pineda::test

@@ -43,5 +43,6 @@ std::unique_ptr<BenchScene> createGlslProcedural(int width, int height);
 std::unique_ptr<BenchScene> createGlslSprites(int width, int height);
 std::unique_ptr<BenchScene> createGlslRenderToTexture(int width, int height);
 std::unique_ptr<BenchScene> createGlslManyDraws(int width, int height);
+std::unique_ptr<BenchScene> createGlslMsaa(int width, int height);
 
 }  // namespace pineda::bench
