@@ -23,6 +23,7 @@ class LinkedProgram final : public Program {
   int draw_buffers_ = 0;
   std::set<std::string> reads_;
   bool reads_frag_coord_ = false;
+  bool reads_point_coord_ = false;
   std::optional<StageCode> vertex_;
   std::optional<StageCode> fragment_;
 
@@ -38,6 +39,7 @@ class LinkedProgram final : public Program {
   int draw_buffers_written() const override { return draw_buffers_; }
   bool reads(const char* builtin) const override { return reads_.count(builtin) != 0; }
   bool reads_frag_coord() const override { return reads_frag_coord_; }
+  bool reads_point_coord() const override { return reads_point_coord_; }
   void run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const override;
   void run_vertex_batches(const float* uniforms, const TextureAccess* textures, VertexBatch* batches,
                           int count) const override;

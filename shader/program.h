@@ -165,6 +165,7 @@ class Program {
   virtual int draw_buffers_written() const = 0;  // 1 for gl_FragColor, else highest gl_FragData + 1
   virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
   virtual bool reads_frag_coord() const = 0;          // reads("gl_FragCoord"), without the lookup
+  virtual bool reads_point_coord() const = 0;         // reads("gl_PointCoord"), without the lookup
 
   // `uniforms` has uniform_floats() values; `textures` may be null when no sampler is used.
   virtual void run_vertices(const float* uniforms, const TextureAccess* textures,

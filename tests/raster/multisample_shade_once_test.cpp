@@ -37,6 +37,7 @@ class CountingProgram final : public shader::Program {
   int draw_buffers_written() const override { return 1; }
   bool reads(const char*) const override { return false; }
   bool reads_frag_coord() const override { return false; }
+  bool reads_point_coord() const override { return false; }
   void run_vertices(const float*, const shader::TextureAccess*, shader::VertexBatch&) const override {}
   void run_vertex_batches(const float*, const shader::TextureAccess*, shader::VertexBatch*, int) const override {}
   void run_fragments(const float* u, const shader::TextureAccess* t, shader::FragmentBlock& block) const override {
