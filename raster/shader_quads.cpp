@@ -108,9 +108,13 @@ bool early_tests(const DrawRecord& d, const shader::Program& program) {
 // Adds them to `passed` when the draw counts samples.
 unsigned early_depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, const Quad& q,
                              unsigned mask, uint32_t& passed) {
-  uint32_t plane_z[4];
-  plane_depths(d, p, q.ox, q.oy, plane_z);
-  mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, plane_z);
+  if (!d.key.stencil) {  // the fixed-function routines' depth test: the same depths and results
+    mask = depth_only(d, p, fb, q.x, y, mask, q.ox, q.oy);
+  } else {
+    uint32_t plane_z[4];
+    plane_depths(d, p, q.ox, q.oy, plane_z);
+    mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, plane_z);
+  }
   if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(mask));
   return mask;
 }
