@@ -13,6 +13,15 @@ struct ClientArray;
 // disabled ones.
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out);
 
+// Vertex `index` as a draw whose vertex shader reads generic attributes alone needs it: its
+// element (the shader reads the generic arrays through `source`), its position (generic
+// attribute 0) and edge flag, the other values at their defaults.
+void fetch_vertex_source(const Context& ctx, size_t index, raster::VertexInput& out);
+
+// Whether the program in use has a vertex shader that reads no built-in attribute (gl_Vertex,
+// gl_Color, ...): its draws' vertices need only fetch_vertex_source.
+bool vertex_shader_reads_generic_attributes_only(const Context& ctx);
+
 // The colour index of element `index` of the index array, or the current index when that
 // array is disabled.
 float fetch_index(const Context& ctx, size_t index);

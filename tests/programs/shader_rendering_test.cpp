@@ -183,6 +183,32 @@ TEST_F(ShaderRenderingTest, GenericAttributeArraysFromABufferObject) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// Generic attribute 0 from client memory, with a vertex shader that reads no built-in
+// attribute (the vertices carry only their element, edge flag and attribute 0 then).
+TEST_F(ShaderRenderingTest, GenericAttributeZeroFromAClientArray) {
+  const GLuint p = use("attribute vec2 pos; attribute vec4 col; varying vec4 c;\n"
+                       "void main() { c = col; gl_Position = vec4(pos, 0.0, 1.0); }\n",
+                       "varying vec4 c; void main() { gl_FragColor = c; }\n");
+  glBindAttribLocation(p, 0, "pos");
+  glBindAttribLocation(p, 2, "col");
+  glLinkProgram(p);
+  glUseProgram(p);
+  const GLfloat pos[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  const GLfloat col[16] = {0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1};
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, pos);
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, 0, col);
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(2);
+  glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
+  EXPECT_EQ(count_pixels({0, 255, 0, 255}), width() * height());
+  clear_to(0, 0, 0, 0);
+  const GLushort indices[3] = {0, 1, 2};
+  glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, indices);
+  EXPECT_EQ(pixel(30, 1), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(pixel(1, 30), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(ShaderRenderingTest, ImmediateModeGenericAttributesAndAttributeZero) {
   const GLuint p = use("attribute vec4 shade; varying vec4 c; void main() { c = shade; gl_Position = gl_Vertex; }\n",
                        "varying vec4 c; void main() { gl_FragColor = c; }\n");
