@@ -24,13 +24,18 @@ struct SetupParams {
   bool flat = false;
   float flat_color[4] = {0, 0, 0, 0};
   bool back_facing = false;
+  // A programmable draw: the inverse-w plane holds 1/w (gl_FragCoord.w) whatever the varyings.
+  // (Beside the other flags: one more 8-byte word turned the struct's zeroing into rep stos.)
+  bool programmable = false;
   double depth_offset = 0.0;  // added to window depth (polygon offset), depth-buffer units
   // A programmable draw: planes of the `varyings` floats of WinVert::varyings, into
   // varying_out (the scene stores them; PrimSetup::varying_planes points at them).
   int varyings = 0;
   Plane* varying_out = nullptr;
-  bool programmable = false;  // the inverse-w plane holds 1/w (gl_FragCoord.w) whatever the varyings
 };
+// Made once per primitive: GCC 12 zeroes a larger one with `rep stos`, whose start-up cost was
+// a tenth of small_tris's setup.
+static_assert(sizeof(SetupParams) <= 80);
 
 // Twice the signed area in sub-pixels squared; positive when counter-clockwise (y up).
 int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c);
