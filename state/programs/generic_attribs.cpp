@@ -50,16 +50,6 @@ bool float_array_view(const Context& ctx, AttribSource source, int index, FloatA
   return true;
 }
 
-void FloatArrayView::read(size_t index, float out[4]) const {
-  if (index >= count) {
-    std::copy(current, current + 4, out);
-    return;
-  }
-  out[0] = out[1] = out[2] = 0.f;
-  out[3] = 1.f;
-  std::memcpy(out, base + stride * index, sizeof(float) * size_t(size));
-}
-
 bool read_generic_position(const Context& ctx, size_t index, float out[4]) {
   const GenericArray& a = ctx.programs.arrays[0];
   if (!a.active()) return false;

@@ -3,6 +3,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "raster/vertex.h"
 
@@ -31,7 +32,23 @@ struct FloatArrayView {
   size_t count = 0;               // elements inside the buffer object (SIZE_MAX in client memory)
   int size = 4;
   const float* current = nullptr;  // the attribute's current value, for elements outside the buffer
-  void read(size_t index, float out[4]) const;
+  // Inline, with a copy of constant size per case: the vertex shader's input loop calls it per
+  // vertex and attribute (a variable-size memcpy became a library call).
+  void read(size_t index, float out[4]) const {
+    if (index >= count) {
+      std::memcpy(out, current, sizeof(float) * 4);
+      return;
+    }
+    const uint8_t* element = base + stride * index;
+    out[0] = out[1] = out[2] = 0.f;
+    out[3] = 1.f;
+    switch (size) {
+      case 4: std::memcpy(out, element, sizeof(float) * 4); break;
+      case 3: std::memcpy(out, element, sizeof(float) * 3); break;
+      case 2: std::memcpy(out, element, sizeof(float) * 2); break;
+      default: std::memcpy(out, element, sizeof(float)); break;
+    }
+  }
 };
 
 // Whether generic attribute `index` (> 0) of a draw from `source` is read from a GL_FLOAT array;
