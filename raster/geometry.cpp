@@ -105,12 +105,16 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   }
 }
 
-void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
+void GeometryStage::clip_position(const ClipVertex& v, ClipVert& c) {
   for (int i = 0; i < 4; ++i) c.pos[i] = v.clip[i];
+  for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
+}
+
+void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
+  clip_position(v, c);
   if (shader_) {
     const float* in = varyings_ + (&v - vertex_base_) * varying_count_;
     std::copy(in, in + varying_count_, c.attr);
-    for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
     return;
   }
   for (int i = 0; i < 4; ++i) {
@@ -124,7 +128,6 @@ void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
     c.attr[kClipSecondaryAttrs + 3 + i] = v.back_secondary[i];
   }
   c.attr[kClipFogAttr] = v.fog;
-  for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
 }
 
 void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
@@ -337,7 +340,10 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
     slot.index = index;
     slot.usable = false;
     if (finite_position(v)) {
-      to_clip(v, cache_clip_);
+      // A programmable vertex's varyings stay in the draw's array (below): only its position
+      // and clip distances are needed here.
+      if (shader_) clip_position(v, cache_clip_);
+      else to_clip(v, cache_clip_);
       if (clip_outcode(cache_clip_, volume_) == 0) {
         to_window(cache_clip_, false, slot.window);
         // A programmable draw's varyings, as to_clip copies them, stay put in the draw's array.

@@ -51,6 +51,8 @@ class GeometryStage final : public PrimitiveSink {
 
   // Into `c` (a ClipVert is large: polygons fill theirs in place).
   void to_clip(const ClipVertex& v, ClipVert& c) const;
+  // The clip position and user clip distances alone.
+  static void clip_position(const ClipVertex& v, ClipVert& c);
   ClipVert to_clip(const ClipVertex& v) const {
     ClipVert c;
     to_clip(v, c);
