@@ -22,8 +22,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
 [[gnu::always_inline]] inline uint32_t shade_quads_body(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
-  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
-  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   const bool write_color = fb.color.base && d.color_write_any;
   // Without an alpha test no stage before depth and stencil reads the colour, so they run first
   // and only the surviving quads are coloured (the colour has no side effects).

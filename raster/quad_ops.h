@@ -78,16 +78,32 @@ inline QuadColor blend_quad(const DrawRecord& d, const QuadColor& src, const Qua
   return out;
 }
 
-// The quad's pixels, put together in registers: a 16-byte load of the smaller stores that filled
-// a local array missed store forwarding (a quarter of copy_blur's blending routine waited there).
+// The pixel centres of the first quad of a row of quads at (x, y), relative to the primitive's
+// reference point (exact while the primitive stays near the framebuffer); quad q's x offsets
+// are those plus 2q.
+inline F4 quad_row_ox0(const PrimSetup& p, int x) { return splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f}; }
+inline F4 quad_row_oy(const PrimSetup& p, int y) { return splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f}; }
+
+// A quad's two rows of two 32-bit values (colour or depth) in and out of a register as 8-byte
+// halves: a 16-byte load of a local array filled by 8-byte copies misses store forwarding (a
+// quarter of copy_blur's blending routine waited there).
+typedef uint64_t QuadRows __attribute__((vector_size(16)));
+inline U4 load_quad_rows(const void* row0, const void* row1) {
+  uint64_t top, bottom;
+  std::memcpy(&top, row0, 8);
+  std::memcpy(&bottom, row1, 8);
+  return reinterpret_cast<U4>(QuadRows{top, bottom});
+}
+inline void store_quad_rows(void* row0, void* row1, U4 v) {
+  const QuadRows rows = reinterpret_cast<QuadRows>(v);
+  const uint64_t top = rows[0], bottom = rows[1];
+  std::memcpy(row0, &top, 8);
+  std::memcpy(row1, &bottom, 8);
+}
+
+// The quad's pixels, put together in registers (as load_quad_rows).
 inline U4 load_pixels(uint8_t* const px[4], unsigned mask) {
-  if (mask == 0xf) {
-    typedef uint64_t Rows __attribute__((vector_size(16)));
-    uint64_t top, bottom;
-    std::memcpy(&top, px[0], 8);
-    std::memcpy(&bottom, px[2], 8);
-    return reinterpret_cast<U4>(Rows{top, bottom});
-  }
+  if (mask == 0xf) return load_quad_rows(px[0], px[2]);
   auto pixel = [&](int i) {
     uint32_t v = 0;
     if (px[i]) std::memcpy(&v, px[i], 4);
@@ -246,22 +262,12 @@ inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
   uint32_t* const row0 = fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x;
   const U4 zi = quad_depth(d, p, ox, oy);
   if (mask == 0xf) {
-    // The two rows in and out of a register as 8-byte halves (a 16-byte load of a local array
-    // filled by 8-byte copies misses store forwarding).
-    typedef uint64_t Rows __attribute__((vector_size(16)));
     uint32_t* const row1 = row0 + fb.depth.stride;
-    uint64_t top, bottom;
-    std::memcpy(&top, row0, 8);
-    std::memcpy(&bottom, row1, 8);
-    const U4 stored = reinterpret_cast<U4>(Rows{top, bottom});
+    const U4 stored = load_quad_rows(row0, row1);
     const unsigned pass = depth_pass(d.state.depth_func, zi, stored);
     if (pass && d.state.depth_write) {
       const I4 passed = (I4{1, 2, 4, 8} & static_cast<int>(pass)) != 0;
-      const Rows out = reinterpret_cast<Rows>(passed ? zi : stored);
-      top = out[0];
-      bottom = out[1];
-      std::memcpy(row0, &top, 8);
-      std::memcpy(row1, &bottom, 8);
+      store_quad_rows(row0, row1, passed ? zi : stored);
     }
     return pass;
   }

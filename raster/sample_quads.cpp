@@ -37,8 +37,7 @@ template <bool kTex, bool kFlat, bool kExtras>
 [[gnu::always_inline]] inline uint32_t shade_sample_quads_body(const DrawRecord& d, const PrimSetup& p,
                                                                const SampleTargets& t, int x, int y, int count,
                                                                const uint16_t* masks) {
-  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
-  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   // Alpha to coverage makes every sample's record alpha-test (multisample.cpp).
   const bool early_tests = !d.state.alpha_test && !d.sample_draws;
   uint32_t passed = 0;

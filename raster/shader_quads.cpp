@@ -317,8 +317,7 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
                      const uint8_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return 0;
   const ShaderDraw& sd = *d.state.shader;
-  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
-  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   const float* uniform_values = sd.fragment_uniform_values();
   const auto targets = target_views<kTargets>(d, fb);
   const UnitTextureAccess textures(d.state.texture_units);
@@ -354,8 +353,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
                             const uint16_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return 0;
   const ShaderDraw& sd = *d.state.shader;
-  const F4 oy = splat(static_cast<float>(y) + 0.5f - p.ref_y) + F4{0.f, 0.f, 1.f, 1.f};
-  const F4 ox0 = splat(static_cast<float>(x) + 0.5f - p.ref_x) + F4{0.f, 1.f, 0.f, 1.f};
+  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   const float* uniform_values = sd.fragment_uniform_values();
   int first = 0;  // a sample the draw writes: its plane has the framebuffer's draw buffers
   while (first < kMaxSamples - 1 && !t.draw[first]) ++first;

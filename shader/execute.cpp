@@ -233,10 +233,9 @@ void jit::call_out(const Frame* frame, const ir::Inst* in) {
       const ir::TextureLookup& t = stage.exec_textures[static_cast<size_t>(in->i0)];
       const float* coord[4];
       float* dst[4];
-      alignas(64) float unused[kLanes];
       for (int c = 0; c < 4; ++c) {
         coord[c] = lanes(t.coord[c]);
-        dst[c] = t.dst[c] == ir::kNone ? unused : lanes(t.dst[c]);
+        dst[c] = lanes(t.dst[c]);
       }
       exec_avx512::texture_lanes(frame->textures, t, coord, lanes(t.sampler), t.lod == ir::kNone ? nullptr : lanes(t.lod),
                     frame->mask, frame->needed, dst);
