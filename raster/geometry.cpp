@@ -182,6 +182,7 @@ GeometryStage::Style GeometryStage::style_for(const ClipVertex& provoking, bool 
   Style st;
   st.back_facing = back_facing;
   st.flat = scene_.current_draw().state.flat_shading;
+  if (shader_) return st;  // varyings in their own array: the fixed-function colours are not set
   const float* c = back_facing ? provoking.back_color : provoking.color;
   for (int i = 0; i < 4; ++i) st.flat_color[i] = clamp01(c[i]);
   return st;

@@ -49,14 +49,21 @@ bool can_fetch(const Context& ctx) {
 // The vertices of array elements index_of(i), i < count.
 template <typename IndexOf>
 ArrayVertices array_elements(const Context& ctx, size_t count, IndexOf index_of) {
+  const auto elements = [index_of](size_t begin, size_t end, uint32_t* out) {
+    for (size_t i = begin; i < end; ++i) out[i - begin] = static_cast<uint32_t>(std::min<size_t>(index_of(i), UINT32_MAX - 1));
+  };
   if (vertex_shader_reads_generic_attributes_only(ctx)) {
-    return {count, [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
+    return {count,
+            [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
               for (size_t i = begin; i < end; ++i) fetch_vertex_source(ctx, index_of(i), out[i - begin]);
-            }};
+            },
+            elements};
   }
-  return {count, [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
+  return {count,
+          [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
             for (size_t i = begin; i < end; ++i) fetch_vertex(ctx, index_of(i), out[i - begin]);
-          }};
+          },
+          elements};
 }
 
 template <typename Index>

@@ -10,6 +10,7 @@
 #include "state/programs/program_draw.h"
 #include "state/point_parameters.h"
 #include "state/select_feedback.h"
+#include "state/vertex_fetch.h"
 #include "state/vertex_extras_snapshot.h"
 
 namespace pineda {
@@ -143,7 +144,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
     }
   } restore{ctx, ctx.lighting.front, ctx.lighting.back, ctx.programs.active() && !materials.empty()};
   if (restore.swapped) ctx.lighting.front = materials[0].front, ctx.lighting.back = materials[0].back;
-  if (ctx.programs.active() && draw_with_program(ctx, primitive, vertices, indices, generic_source)) return;
+  if (ctx.programs.active() && draw_with_program(ctx, primitive, {vertices, {}}, indices, generic_source)) return;
   const auto run_vertex_program = [&] { return run_vertex_program_only(ctx, vertices, generic_source, ctx.transformed); };
   draw_fixed_function(ctx, primitive, indices, run_vertex_program, [&](raster::Transform& transform) {
     if (materials.empty() || !ctx.lighting.enabled) return transform_in_pieces(ctx, transform, vertices);
@@ -164,6 +165,15 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
 
 void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices) {
   if (!ctx.draw_drawable() || vertices.count == 0) return;
+  if (ctx.programs.active() && vertex_shader_reads_generic_attributes_only(ctx)) {
+    // The shader reads each input straight from its array: no vertex is fetched before.
+    raster::Primitive primitive;
+    if (!to_primitive(mode, primitive)) return;
+    std::vector<uint32_t>& elements = ctx.fetched_elements;
+    elements.resize(vertices.count);
+    vertices.elements(0, vertices.count, elements.data());
+    if (draw_with_program(ctx, primitive, {{}, elements}, indices, AttribSource::Arrays)) return;
+  }
   if (ctx.programs.active()) {  // every stage of a program reads the whole draw's vertices
     if (ctx.fetched.size() < vertices.count) ctx.fetched.resize(vertices.count);  // only grows
     const std::span<raster::VertexInput> all(ctx.fetched.data(), vertices.count);

@@ -29,6 +29,8 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
 struct ArrayVertices {
   size_t count = 0;
   std::function<void(size_t begin, size_t end, raster::VertexInput* out)> fetch;
+  // The array element of each vertex of [begin, end) into out[0, end - begin).
+  std::function<void(size_t begin, size_t end, uint32_t* out)> elements;
 };
 
 // As draw_vertices, from the arrays (AttribSource::Arrays, no materials): without a program

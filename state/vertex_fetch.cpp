@@ -68,10 +68,8 @@ void take_current_index(Context& ctx, size_t index) {
   if (ctx.index_array.active()) ctx.color_index.current_index = fetch_index(ctx, index);
 }
 
-namespace {
-
 // The position, which is also generic attribute 0 (fetch_generic reads it here).
-void fetch_position(const Context& ctx, size_t index, float position[4]) {
+void fetch_array_position(const Context& ctx, size_t index, float position[4]) {
   if (read_generic_position(ctx, index, position)) return;
   if (ctx.vertex_array.active())
     read_array(ctx.vertex_array, index, position, false);
@@ -79,18 +77,16 @@ void fetch_position(const Context& ctx, size_t index, float position[4]) {
     std::copy(ctx.programs.current_attrib[0].begin(), ctx.programs.current_attrib[0].end(), position);
 }
 
-bool edge_flag_of(const Context& ctx, size_t index) {
+bool array_edge_flag(const Context& ctx, size_t index) {
   if (!ctx.edge_flag_array.active()) return ctx.current_edge_flag;
   const uint8_t* p = array_element(ctx.edge_flag_array, index, sizeof(GLboolean));
   return p ? *p != GL_FALSE : ctx.current_edge_flag;
 }
 
-}  // namespace
-
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
   out.source = static_cast<uint32_t>(std::min<size_t>(index, UINT32_MAX - 1));
-  fetch_position(ctx, index, out.position);
+  fetch_array_position(ctx, index, out.position);
   if (ctx.color_array.active()) {
     read_array(ctx.color_array, index, out.color, true);
   } else {
@@ -118,14 +114,14 @@ void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
     read_array(ctx.fog_coord_array, index, &out.fog_coord, false);
   else
     out.fog_coord = ctx.extras.current_fog_coord;
-  out.edge_flag = edge_flag_of(ctx, index);
+  out.edge_flag = array_edge_flag(ctx, index);
 }
 
 void fetch_vertex_source(const Context& ctx, size_t index, raster::VertexInput& out) {
   out = raster::VertexInput{};
   out.source = static_cast<uint32_t>(std::min<size_t>(index, UINT32_MAX - 1));
-  fetch_position(ctx, index, out.position);
-  out.edge_flag = edge_flag_of(ctx, index);
+  fetch_array_position(ctx, index, out.position);
+  out.edge_flag = array_edge_flag(ctx, index);
 }
 
 bool vertex_shader_reads_generic_attributes_only(const Context& ctx) {

@@ -18,6 +18,14 @@ void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out);
 // attribute 0) and edge flag, the other values at their defaults.
 void fetch_vertex_source(const Context& ctx, size_t index, raster::VertexInput& out);
 
+// The position of array element `index` as fetch_vertex reads it (generic array 0, else the
+// vertex array, else in OpenGL ES 2.0 the current value of attribute 0); `position` keeps its
+// values where none of them gives one.
+void fetch_array_position(const Context& ctx, size_t index, float position[4]);
+
+// The edge flag of array element `index`: the edge flag array's, else the current one.
+bool array_edge_flag(const Context& ctx, size_t index);
+
 // Whether the program in use has a vertex shader that reads no built-in attribute (gl_Vertex,
 // gl_Color, ...): its draws' vertices need only fetch_vertex_source.
 bool vertex_shader_reads_generic_attributes_only(const Context& ctx);

@@ -30,14 +30,27 @@ const uint8_t* generic_element(const GenericArray& a, size_t index) {
   return buffer_range(*a.buffer, reinterpret_cast<uintptr_t>(a.pointer) + stride * index, bytes);
 }
 
+void fetch_generic_element(const Context& ctx, int index, size_t element, float out[4]) {
+  if (index == 0) {
+    const float position[4] = {0.f, 0.f, 0.f, 1.f};
+    std::copy(position, position + 4, out);
+    return fetch_array_position(ctx, element, out);
+  }
+  const ProgramState& ps = ctx.programs;
+  std::copy(ps.current_attrib[index].begin(), ps.current_attrib[index].end(), out);
+  if (ps.arrays[index].active()) read_generic_array(ps.arrays[index], element, out);
+}
+
 bool float_array_view(const Context& ctx, AttribSource source, int index, FloatArrayView& out) {
-  if (source != AttribSource::Arrays || index <= 0 || index >= kMaxVertexAttribs) return false;
+  if (source != AttribSource::Arrays || index < 0 || index >= kMaxVertexAttribs) return false;
   const GenericArray& a = ctx.programs.arrays[index];
   if (!a.active() || a.type != GL_FLOAT) return false;
   const size_t bytes = sizeof(float) * size_t(a.size);
   out.stride = a.stride ? size_t(a.stride) : bytes;
   out.size = a.size;
-  out.current = ctx.programs.current_attrib[index].data();
+  // The position (array 0) of an element outside the buffer is a fetched vertex's default.
+  static constexpr float kDefaultPosition[4] = {0.f, 0.f, 0.f, 1.f};
+  out.current = index == 0 ? kDefaultPosition : ctx.programs.current_attrib[index].data();
   if (!a.buffer) {
     out.base = static_cast<const uint8_t*>(a.pointer);
     out.count = SIZE_MAX;
@@ -89,9 +102,7 @@ void fetch_generic(const Context& ctx, AttribSource source, const raster::Vertex
   }
   std::copy(ps.current_attrib[index].begin(), ps.current_attrib[index].end(), out);
   switch (source) {
-    case AttribSource::Arrays:
-      if (ps.arrays[index].active()) read_generic_array(ps.arrays[index], v.source, out);
-      return;
+    case AttribSource::Arrays: return fetch_generic_element(ctx, index, v.source, out);
     case AttribSource::Immediate: {
       const size_t at = (size_t(v.source) * kMaxVertexAttribs + size_t(index)) * 4;
       if (v.source != UINT32_MAX && at + 4 <= ps.immediate_generic.size())

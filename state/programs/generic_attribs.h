@@ -24,6 +24,10 @@ void capture_immediate_generics(Context& ctx, raster::VertexInput& v, const size
 // Generic attribute `index` of `v` (index 0 is the position).
 void fetch_generic(const Context& ctx, AttribSource source, const raster::VertexInput& v, int index, float out[4]);
 
+// Generic attribute `index` of array element `element` (AttribSource::Arrays): what
+// fetch_generic gives for the vertex fetched from that element.
+void fetch_generic_element(const Context& ctx, int index, size_t element, float out[4]);
+
 // An enabled GL_FLOAT generic array, resolved once per draw so that each element is read
 // straight from memory: the same values fetch_generic gives.
 struct FloatArrayView {
@@ -51,8 +55,8 @@ struct FloatArrayView {
   }
 };
 
-// Whether generic attribute `index` (> 0) of a draw from `source` is read from a GL_FLOAT array;
-// if so, `out` is its view.
+// Whether generic attribute `index` of a draw from `source` is read from a GL_FLOAT array; if
+// so, `out` is its view.
 bool float_array_view(const Context& ctx, AttribSource source, int index, FloatArrayView& out);
 
 // The bytes of element `index` of a generic array, null outside its buffer object.

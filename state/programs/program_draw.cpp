@@ -14,6 +14,7 @@
 #include "state/programs/program_link.h"
 #include "state/select_feedback.h"
 #include "state/texture_target.h"
+#include "state/vertex_fetch.h"
 
 namespace pineda {
 namespace {
@@ -113,12 +114,14 @@ std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program&
   return fetches;
 }
 
-// Runs the vertex shader over `vertices`: clip positions and point sizes into `out`, the
-// varyings into `varyings` (program.varying_floats() per vertex). Texture lookups read `units`.
+// Runs the vertex shader over `vertices`: clip positions, clip distances, point sizes and edge
+// flags into `out`, the varyings into `varyings` (program.varying_floats() per vertex); with
+// `conventional_outputs` the other (fixed-function) fields of `out` start at zero, else they
+// are left as they were. Texture lookups read `units`.
 void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
                        const std::array<raster::TextureUnit, raster::kMaxTextureImageUnits>& units,
-                       std::span<const raster::VertexInput> vertices, AttribSource source,
-                       bool point_size_from_shader, float fixed_point_size, std::vector<raster::ClipVertex>& out,
+                       const ShaderVertices& vertices, AttribSource source, bool point_size_from_shader,
+                       float fixed_point_size, bool conventional_outputs, std::vector<raster::ClipVertex>& out,
                        std::vector<float>& varyings) {
   const int slots = std::max(program.input_slots(), 1);
   const int nv = program.varying_floats();
@@ -139,16 +142,29 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
       const size_t count = std::min(kRunVertices, end - first);
       const int batch_count = static_cast<int>((count + kLanes - 1) / kLanes);
       if (count % kLanes != 0) std::fill(in.begin(), in.end(), 0.f);
-      for (size_t i = 0; i < count; ++i) {
-        const raster::VertexInput& v = vertices[first + i];
-        float* batch_in = in.data() + (i / kLanes) * in_floats;
-        const size_t lane = i % kLanes;
-        for (const InputFetch& f : fetches) {
-          float value[4];
-          if (f.builtin != shader::BuiltinAttribute::None) builtin_input(v, f.builtin, value);
-          else if (f.from_view) f.view.read(v.source, value);
-          else fetch_generic(state, source, v, f.location, value);
-          for (int c = 0; c < 4; ++c) batch_in[(static_cast<size_t>(f.slot) * 4 + c) * kLanes + lane] = value[c];
+      // Vertex i's component c of input slot `slot`.
+      const auto input = [&](size_t i, int slot, int c) -> float& {
+        return in[(i / kLanes) * in_floats + (static_cast<size_t>(slot) * 4 + c) * kLanes + i % kLanes];
+      };
+      if (vertices.inputs.empty()) {  // array elements: each input read straight from its array
+        for (const InputFetch& f : fetches)
+          for (size_t i = 0; i < count; ++i) {
+            const size_t element = vertices.elements[first + i];
+            float value[4];
+            if (f.from_view) f.view.read(element, value);
+            else fetch_generic_element(state, f.location, element, value);
+            for (int c = 0; c < 4; ++c) input(i, f.slot, c) = value[c];
+          }
+      } else {
+        for (size_t i = 0; i < count; ++i) {
+          const raster::VertexInput& v = vertices.inputs[first + i];
+          for (const InputFetch& f : fetches) {
+            float value[4];
+            if (f.builtin != shader::BuiltinAttribute::None) builtin_input(v, f.builtin, value);
+            else if (f.from_view) f.view.read(v.source, value);
+            else fetch_generic(state, source, v, f.location, value);
+            for (int c = 0; c < 4; ++c) input(i, f.slot, c) = value[c];
+          }
         }
       }
       std::fill(result.begin(), result.end(), 0.f);
@@ -166,8 +182,9 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         // A copy of a zero vertex: vector moves (assigning ClipVertex{} became `rep stos`, whose
         // start-up cost per vertex was a quarter of this function's time).
         static constexpr raster::ClipVertex kZero{};
-        std::memcpy(&c, &kZero, sizeof c);
+        if (conventional_outputs) std::memcpy(&c, &kZero, sizeof c);
         for (int k = 0; k < 4; ++k) c.clip[k] = r[static_cast<size_t>(shader::kOutPosition + k) * kLanes + lane];
+        std::fill(std::begin(c.clip_distance), std::end(c.clip_distance), 0.f);
         const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
                                      r[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
                                      r[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
@@ -176,7 +193,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
           const int p = __builtin_ctz(left);
           c.clip_distance[p] = static_cast<float>(glm::dot(state.extras.clip_planes[p], clip_vertex));
         }
-        c.edge_flag = vertices[first + i].edge_flag;
+        c.edge_flag = vertices.inputs.empty() ? array_edge_flag(state, vertices.elements[first + i])
+                                              : vertices.inputs[first + i].edge_flag;
         const float size = point_size_from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
                                                   : fixed_point_size;
         c.point_size = std::isfinite(size) ? size : 1.f;
@@ -247,7 +265,7 @@ void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Pri
 
 }  // namespace
 
-bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<const raster::VertexInput> vertices,
+bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVertices& vertices,
                        std::span<const uint32_t> indices, AttribSource source) {
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || !exec->vertex_shader || !exec->fragment_shader) return false;
@@ -271,8 +289,10 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<cons
   // Vertex-shader texture lookups read the same (usable) images the fragments will.
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
   std::vector<float>& varyings = ctx.programs.draw_varyings;
+  // Feedback reports the fixed-function colours and coordinates: zero (the varyings are not mapped back).
+  const bool conventional_outputs = ctx.render_mode.mode != GL_RENDER;
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
-                    shader_size, ctx.draw_state.point_size, ctx.transformed, varyings);
+                    shader_size, ctx.draw_state.point_size, conventional_outputs, ctx.transformed, varyings);
   const raster::PointParameters& pp = state.point_params;
   for (raster::ClipVertex& v : ctx.transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
   draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
@@ -294,8 +314,8 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
   const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
-                    shader_size, ctx.draw_state.point_size, out, varyings);
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, {vertices, {}},
+                    source, shader_size, ctx.draw_state.point_size, true, out, varyings);
   const int nv = program.varying_floats();
   const raster::PointParameters& pp = ctx.draw_state.point_params;
   for (size_t i = 0; i < out.size(); ++i) {

@@ -14,9 +14,18 @@ namespace pineda {
 
 class Context;
 
+// A draw's vertices as the vertex shader reads them: the vertices as fetched (`inputs`), or,
+// when they are empty, the array element of each vertex (a shader reading generic attributes
+// alone takes them straight from the arrays, AttribSource::Arrays).
+struct ShaderVertices {
+  std::span<const raster::VertexInput> inputs;
+  std::span<const uint32_t> elements;
+  size_t size() const { return inputs.empty() ? elements.size() : inputs.size(); }
+};
+
 // Draws with a program that has both stages; false when the program in use lacks one, so
 // that the fixed-function path draws with the hooks below.
-bool draw_with_program(Context& ctx, raster::Primitive primitive, std::span<const raster::VertexInput> vertices,
+bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVertices& vertices,
                        std::span<const uint32_t> indices, AttribSource source);
 
 // A program with a vertex shader only: the shader replaces transform and lighting. Its
