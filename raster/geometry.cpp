@@ -46,7 +46,7 @@ int64_t snap(double window) {
 
 // Clipping keeps w >= 1e-30, but cancellation in an intersection can still produce w = 0;
 // such a vertex has no window position and drops its primitive.
-bool has_window_position(const WinVert& v) { return std::isfinite(v.inv_w) && std::isfinite(v.fx) && std::isfinite(v.fy); }
+bool has_window_position(const WinPosition& v) { return std::isfinite(v.inv_w) && std::isfinite(v.fx) && std::isfinite(v.fy); }
 
 // glPolygonOffset's r, the smallest resolvable difference, in depth-buffer steps. One step is not
 // always resolvable: positions are floats, and near the near plane (eye distance just above 1) a
@@ -59,6 +59,7 @@ constexpr double kResolvableDepthSteps = 2.0;
 GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool reference)
     : scene_(scene), on_full_(std::move(on_full)), reference_(reference) {
   const DrawState& s = scene_.current_draw().state;
+  depth_max_ = scene_.current_draw().depth_max;
   const Viewport& vp = s.viewport;
   if (vp.width <= 0 || vp.height <= 0) return;
   PixelRect rect{vp.x, vp.y, clamp_to_int(int64_t{vp.x} + vp.width), clamp_to_int(int64_t{vp.y} + vp.height)};
@@ -130,8 +131,7 @@ void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
   c.attr[kClipFogAttr] = v.fog;
 }
 
-void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
-  const DrawRecord& d = scene_.current_draw();
+void GeometryStage::window_position(const ClipVert& v, WinPosition& w) const {
   w.inv_w = 1.0 / v.pos[3];
   w.fx = std::clamp<double>((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
   w.fy = std::clamp<double>((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
@@ -139,12 +139,17 @@ void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) co
   w.y = snap(w.fy);
   double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
   z = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
-  w.z = z * d.depth_max;
+  w.z = z * depth_max_;
+}
+
+void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
+  window_position(v, w);
   if (shader_) {
     w.varyings = v.attr;
     return;
   }
   w.varyings = nullptr;
+  const DrawRecord& d = scene_.current_draw();
   const int color = back_color ? 4 : 0;
   for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
   for (int k = 0; k < d.num_units; ++k) {
@@ -332,6 +337,21 @@ double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool en
   return std::isfinite(offset) ? offset : 0.0;
 }
 
+void GeometryStage::window_positions(size_t begin, size_t end, PreparedWindow* out) const {
+  ClipVert clip;  // position and clip distances only
+  for (size_t i = begin; i < end; ++i) {
+    PreparedWindow& w = out[i - begin];
+    const ClipVertex& v = vertex_base_[i];
+    w.usable = false;
+    if (!finite_position(v)) continue;
+    clip_position(v, clip);
+    if (clip_outcode(clip, volume_) != 0) continue;
+    window_position(clip, w.position);
+    w.position.varyings = varyings_ + i * static_cast<size_t>(varying_count_);
+    w.usable = has_window_position(w.position);
+  }
+}
+
 const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
   const size_t index = static_cast<size_t>(&v - vertex_base_);
   if (index >= vertex_count_) return nullptr;
@@ -359,9 +379,24 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
 // polygon() for a triangle of cached vertices that is culled or filled front facing without
 // an offset; false leaves the triangle to polygon()'s general path (the same result).
 bool GeometryStage::fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking) {
+  if (prepared_) {
+    const WinPosition* w[3];
+    for (int i = 0; i < 3; ++i) {
+      const size_t index = static_cast<size_t>(v[i] - vertex_base_);
+      if (index >= vertex_count_ || !prepared_[index].usable) return false;
+      const PreparedWindow& p = prepared_[index];
+      w[i] = &p.position;
+    }
+    return fill_window_triangle(w, provoking);
+  }
   const WinVert* w[3];
   for (int i = 0; i < 3; ++i)
     if (!(w[i] = cached_window(*v[i]))) return false;
+  return fill_window_triangle(w, provoking);
+}
+
+template <typename Vertex>
+bool GeometryStage::fill_window_triangle(const Vertex* const (&w)[3], const ClipVertex& provoking) {
   const int64_t area = signed_area2(*w[0], *w[1], *w[2]);
   const DrawState& s = scene_.current_draw().state;
   const bool front = s.front_ccw ? area > 0 : area < 0;

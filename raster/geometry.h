@@ -41,6 +41,18 @@ class GeometryStage final : public PrimitiveSink {
     varyings_ = varyings;
   }
 
+  // A programmable draw's vertex to the window ahead of assembly: usable when it lies inside
+  // the clip volume (the window position the cache below would give it).
+  struct PreparedWindow {
+    WinPosition position;
+    bool usable = false;
+  };
+  // Vertices [begin, end) of the draw (after set_varyings) into out[0, end - begin); may run
+  // on several threads at once.
+  void window_positions(size_t begin, size_t end, PreparedWindow* out) const;
+  // Triangles of the draw take their vertices' window positions from `windows` (one per vertex).
+  void use_window_positions(const PreparedWindow* windows) { prepared_ = windows; }
+
  private:
   struct Style {  // how a polygon's facing shapes its lines and points
     bool back_facing = false;
@@ -58,6 +70,7 @@ class GeometryStage final : public PrimitiveSink {
     to_clip(v, c);
     return c;
   }
+  void window_position(const ClipVert& v, WinPosition& w) const;
   void to_window(const ClipVert& v, bool back_color, WinVert& w) const;  // into w: as to_clip
   WinVert to_window(const ClipVert& v, bool back_color) const {
     WinVert w;
@@ -75,6 +88,8 @@ class GeometryStage final : public PrimitiveSink {
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
   const WinVert* cached_window(const ClipVertex& v);
   bool fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking);
+  template <typename Vertex>
+  bool fill_window_triangle(const Vertex* const (&w)[3], const ClipVertex& provoking);
   void use_back_varyings(ClipVert& v) const;
   void flatten_varyings(ClipVert& v, const ClipVertex& provoking) const;
 
@@ -85,6 +100,7 @@ class GeometryStage final : public PrimitiveSink {
   ClipVolume volume_;
   PixelRect clip_rect_;
   double vp_x_ = 0, vp_y_ = 0, vp_half_w_ = 0, vp_half_h_ = 0, depth_near_ = 0, depth_far_ = 1;
+  double depth_max_ = 0;  // the draw's DrawRecord::depth_max
   float line_width_ = 1.f, point_size_ = 1.f;  // as set (derived for points), before rounding
   bool line_smooth_ = false, point_smooth_ = false;
   bool sample_points_ = false;    // multisampled points (draw_sample_point)
@@ -115,6 +131,7 @@ class GeometryStage final : public PrimitiveSink {
   const ClipVertex* vertex_base_ = nullptr;
   const float* varyings_ = nullptr;
   int varying_count_ = 0;
+  const PreparedWindow* prepared_ = nullptr;
   // GL_FLAT: the colour varyings (offset, count) that take the provoking vertex's values.
   std::vector<std::pair<int, int>> flat_ranges_;
   // The primitive being set up: its varying planes, then one record {x, y, size} of a point

@@ -35,6 +35,7 @@ struct Renderer::Impl {
   Scene scene;    // binning
   Scene running;  // executed by the pool's threads while `scene` bins the next commands
   bool running_started = false;
+  std::vector<GeometryStage::PreparedWindow> windows;  // room for a programmable draw's vertices; only grows
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
@@ -75,7 +76,17 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, [this] { submit(); }, impl_->reference);
   geometry.set_vertices(vertices);
-  if (state.shader) geometry.set_varyings(vertices.data(), varyings);
+  if (state.shader) {
+    geometry.set_varyings(vertices.data(), varyings);
+    // A large draw's window positions, ahead of assembly and on every thread.
+    if (geometry.active() && vertices.size() >= kVerticesPerPiece) {
+      impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
+      GeometryStage::PreparedWindow* windows = impl_->windows.data();
+      for_each_piece(vertices.size(), kVerticesPerPiece,
+                     [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin); });
+      geometry.use_window_positions(windows);
+    }
+  }
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
   if (scene.full()) submit();
 }

@@ -1,8 +1,10 @@
 #include "raster/setup.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdlib>
+#include <type_traits>
 #include <utility>
 
 #include "raster/raster_limits.h"
@@ -43,8 +45,8 @@ bool setup_point_in(const PixelRect& box, const WinVert& v, const SetupParams& p
 
 // Planes through the values at two or three vertices; `gradient` maps the values at the
 // vertices to the per-pixel slopes.
-template <typename Gradient>
-void interpolation_planes(const WinVert* const* v, int count, const SetupParams& params, Gradient gradient,
+template <typename Vertex, typename Gradient>
+void interpolation_planes(const Vertex* const* v, int count, const SetupParams& params, Gradient gradient,
                           PrimSetup& out) {
   bool same_w = true;
   for (int i = 1; i < count; ++i) same_w &= v[i]->inv_w == v[0]->inv_w;
@@ -63,9 +65,13 @@ void interpolation_planes(const WinVert* const* v, int count, const SetupParams&
   };
   for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->inv_w : 1.0;
   out.inv_w = make_plane();
-  for (int k = 0; k < params.planes; ++k) {
-    for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->attr[k] * v[i]->inv_w : v[i]->attr[k];
-    out.planes[k] = make_plane();
+  if constexpr (std::is_same_v<Vertex, WinVert>) {
+    for (int k = 0; k < params.planes; ++k) {
+      for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->attr[k] * v[i]->inv_w : v[i]->attr[k];
+      out.planes[k] = make_plane();
+    }
+  } else {
+    assert(params.planes == 0);
   }
   for (int k = 0; k < params.varyings; ++k) {
     for (int i = 0; i < count; ++i) f[i] = out.perspective ? v[i]->varyings[k] * v[i]->inv_w : v[i]->varyings[k];
@@ -107,7 +113,7 @@ void line_planes(const WinVert& a, const WinVert& b, bool x_major, const SetupPa
 
 }  // namespace
 
-int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c) {
+int64_t signed_area2(const WinPosition& a, const WinPosition& b, const WinPosition& c) {
   return (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
 }
 
@@ -121,11 +127,11 @@ bool depth_slopes(const WinVert& a, const WinVert& b, const WinVert& c, double& 
   return true;
 }
 
-bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const SetupParams& params,
-                    PrimSetup& out) {
+template <typename Vertex>
+bool setup_triangle(const Vertex& a, const Vertex& b, const Vertex& c, const SetupParams& params, PrimSetup& out) {
   const int64_t area = signed_area2(a, b, c);
   if (area == 0) return false;
-  const WinVert* v[3] = {&a, &b, &c};
+  const Vertex* v[3] = {&a, &b, &c};
   if (area < 0) std::swap(v[1], v[2]);  // edges below assume counter-clockwise order
 
   const int64_t min_x = std::min({a.x, b.x, c.x}), max_x = std::max({a.x, b.x, c.x});
@@ -144,8 +150,8 @@ bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const 
   out.kind = CoverageKind::Triangle;
   copy_common(params, out);
   for (int i = 0; i < 3; ++i) {
-    const WinVert& p = *v[i];
-    const WinVert& q = *v[(i + 1) % 3];
+    const WinPosition& p = *v[i];
+    const WinPosition& q = *v[(i + 1) % 3];
     const int64_t dx = q.x - p.x, dy = q.y - p.y;
     EdgeFunction& e = out.edges[i];
     e.a = -dy;
@@ -175,6 +181,9 @@ bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const 
       out);
   return true;
 }
+
+template bool setup_triangle(const WinVert&, const WinVert&, const WinVert&, const SetupParams&, PrimSetup&);
+template bool setup_triangle(const WinPosition&, const WinPosition&, const WinPosition&, const SetupParams&, PrimSetup&);
 
 bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams& params, PrimSetup& out) {
   const int64_t dx = b.x - a.x, dy = b.y - a.y;

@@ -6,14 +6,18 @@
 
 namespace pineda::raster {
 
-// A vertex in window space, snapped to sub-pixels; attributes in PrimSetup plane order.
-struct WinVert {
+// A vertex in window space, snapped to sub-pixels: all a programmable draw's setup reads.
+struct WinPosition {
   int64_t x = 0, y = 0;  // sub-pixels: decide coverage
   double fx = 0, fy = 0;  // pixels, before snapping: anchor the interpolation planes
   double z = 0.0;        // window depth in depth-buffer units
   double inv_w = 1.0;
-  float attr[kMaxPlanes] = {};
   const float* varyings = nullptr;  // a programmable draw's SetupParams::varyings values
+};
+
+// With the fixed-function attributes, in PrimSetup plane order.
+struct WinVert : WinPosition {
+  float attr[kMaxPlanes] = {};
 };
 
 struct SetupParams {
@@ -38,14 +42,18 @@ struct SetupParams {
 static_assert(sizeof(SetupParams) <= 80);
 
 // Twice the signed area in sub-pixels squared; positive when counter-clockwise (y up).
-int64_t signed_area2(const WinVert& a, const WinVert& b, const WinVert& c);
+int64_t signed_area2(const WinPosition& a, const WinPosition& b, const WinPosition& c);
 
 // Depth slopes of the triangle's plane, per pixel, for polygon offset.
 bool depth_slopes(const WinVert& a, const WinVert& b, const WinVert& c, double& dzdx, double& dzdy);
 
-// false when the primitive covers no pixel.
-bool setup_triangle(const WinVert& a, const WinVert& b, const WinVert& c, const SetupParams& params,
-                    PrimSetup& out);
+// false when the primitive covers no pixel. `Vertex`: WinVert, or WinPosition for a draw
+// without fixed-function planes (SetupParams::planes 0: a programmable draw).
+template <typename Vertex>
+bool setup_triangle(const Vertex& a, const Vertex& b, const Vertex& c, const SetupParams& params, PrimSetup& out);
+extern template bool setup_triangle(const WinVert&, const WinVert&, const WinVert&, const SetupParams&, PrimSetup&);
+extern template bool setup_triangle(const WinPosition&, const WinPosition&, const WinPosition&, const SetupParams&,
+                                    PrimSetup&);
 bool setup_line(const WinVert& a, const WinVert& b, int width, const SetupParams& params, PrimSetup& out);
 bool setup_point(const WinVert& v, int size, const SetupParams& params, PrimSetup& out);
 // Antialiased: a rectangle `width` wide between the ends, a disc of diameter `size` (pixels).

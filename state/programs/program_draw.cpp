@@ -114,14 +114,27 @@ std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program&
   return fetches;
 }
 
+// Each vertex's point size: the shader's (`from_shader`) or glPointSize's, clamped to the point
+// parameters' range.
+struct PointSizes {
+  bool from_shader = false;
+  float fixed = 1.f, min = 0.f, max = 1.f;
+};
+
+PointSizes point_sizes(const Context& ctx, const shader::Program& program) {
+  const raster::PointParameters& pp = ctx.draw_state.point_params;
+  return {ctx.programs.point_size_from_shader && program.writes_point_size(), ctx.draw_state.point_size, pp.size_min,
+          pp.size_max};
+}
+
 // Runs the vertex shader over `vertices`: clip positions, clip distances, point sizes and edge
 // flags into `out`, the varyings into `varyings` (program.varying_floats() per vertex); with
 // `conventional_outputs` the other (fixed-function) fields of `out` start at zero, else they
 // are left as they were. Texture lookups read `units`.
 void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
                        const std::array<raster::TextureUnit, raster::kMaxTextureImageUnits>& units,
-                       const ShaderVertices& vertices, AttribSource source, bool point_size_from_shader,
-                       float fixed_point_size, bool conventional_outputs, std::vector<raster::ClipVertex>& out,
+                       const ShaderVertices& vertices, AttribSource source, const PointSizes& sizes,
+                       bool conventional_outputs, std::vector<raster::ClipVertex>& out,
                        std::vector<float>& varyings) {
   const int slots = std::max(program.input_slots(), 1);
   const int nv = program.varying_floats();
@@ -195,9 +208,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         }
         c.edge_flag = vertices.inputs.empty() ? array_edge_flag(state, vertices.elements[first + i])
                                               : vertices.inputs[first + i].edge_flag;
-        const float size = point_size_from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane]
-                                                  : fixed_point_size;
-        c.point_size = std::isfinite(size) ? size : 1.f;
+        const float size = sizes.from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane] : sizes.fixed;
+        c.point_size = std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max);
         float* dst = varyings.data() + (first + i) * static_cast<size_t>(nv);
         for (int k = 0; k < nv; ++k) dst[k] = r[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
       }
@@ -277,7 +289,6 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;
-  const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
   // Each vertex brings its size: the shader's, or glPointSize (no distance attenuation
   // without eye coordinates), clamped to the point parameters' range.
   state.point_params.size_per_vertex = true;
@@ -292,9 +303,7 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   // Feedback reports the fixed-function colours and coordinates: zero (the varyings are not mapped back).
   const bool conventional_outputs = ctx.render_mode.mode != GL_RENDER;
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
-                    shader_size, ctx.draw_state.point_size, conventional_outputs, ctx.transformed, varyings);
-  const raster::PointParameters& pp = state.point_params;
-  for (raster::ClipVertex& v : ctx.transformed) v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
+                    point_sizes(ctx, program), conventional_outputs, ctx.transformed, varyings);
   draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
   return true;
 }
@@ -312,12 +321,10 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   raster::DrawState state = ctx.draw_state;
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
-  const bool shader_size = ctx.programs.point_size_from_shader && program.writes_point_size();
   std::vector<float>& varyings = ctx.programs.draw_varyings;
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, {vertices, {}},
-                    source, shader_size, ctx.draw_state.point_size, true, out, varyings);
+                    source, point_sizes(ctx, program), true, out, varyings);
   const int nv = program.varying_floats();
-  const raster::PointParameters& pp = ctx.draw_state.point_params;
   for (size_t i = 0; i < out.size(); ++i) {
     raster::ClipVertex& v = out[i];
     const float* in = varyings.data() + i * static_cast<size_t>(nv);
@@ -335,7 +342,6 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
     for (float* c : {v.secondary, v.back_secondary}) std::transform(c, c + 3, c, [](float x) { return std::clamp(x, 0.f, 1.f); });
     if (!has_back_color || !ctx.programs.two_side) std::copy(v.color, v.color + 4, v.back_color);
     if (!has_back_secondary || !ctx.programs.two_side) std::copy(v.secondary, v.secondary + 3, v.back_secondary);
-    v.point_size = std::clamp(v.point_size, pp.size_min, pp.size_max);
   }
   ctx.draw_state.point_params.size_per_vertex = true;  // the sizes are the shader's or glPointSize
   return true;
