@@ -15,16 +15,10 @@ class ArrayElementInputsTest : public ProgramTest {
   void SetUp() override {
     ProgramTest::SetUp();
     clear_to(0, 0, 0, 0);
-    program_ = link("attribute vec4 pos; attribute vec4 col; varying vec4 c;\n"
-                    "void main() { c = col; gl_Position = pos; }\n",
-                    "varying vec4 c; void main() { gl_FragColor = c; }\n");
-    glBindAttribLocation(program_, 0, "pos");
-    glBindAttribLocation(program_, 3, "col");
-    glLinkProgram(program_);
-    ASSERT_EQ(program_int(program_, GL_LINK_STATUS), GL_TRUE) << program_log(program_);
-    glUseProgram(program_);
+    link_in_use("attribute vec4 pos; attribute vec4 col; varying vec4 c;\n"
+                "void main() { c = col; gl_Position = pos; }\n",
+                "varying vec4 c; void main() { gl_FragColor = c; }\n", {{0, "pos"}, {3, "col"}});
   }
-  GLuint program_ = 0;
   const GLfloat quad_[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
 };
 

@@ -14,14 +14,9 @@ class PreparedWindowsTest : public ProgramTest {
  protected:
   void SetUp() override {
     ProgramTest::SetUp();
-    const GLuint p = link("attribute vec4 pos; attribute vec3 col; varying vec3 c;\n"
-                          "void main() { c = col; gl_Position = pos; }\n",
-                          "varying vec3 c; void main() { gl_FragColor = vec4(c, 1.0); }\n");
-    glBindAttribLocation(p, 0, "pos");
-    glBindAttribLocation(p, 1, "col");
-    glLinkProgram(p);
-    ASSERT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
-    glUseProgram(p);
+    link_in_use("attribute vec4 pos; attribute vec3 col; varying vec3 c;\n"
+                "void main() { c = col; gl_Position = pos; }\n",
+                "varying vec3 c; void main() { gl_FragColor = vec4(c, 1.0); }\n", {{0, "pos"}, {1, "col"}});
     glEnable(GL_DEPTH_TEST);
     // A grid of 50x40 cells (2091 vertices), jittered; some vertices beyond the guard band,
     // behind the eye (w < 0) or on the w = 0 plane; every third cell turned around.

@@ -4,7 +4,9 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 #include "tests/e2e/support/gl_test.h"
 
@@ -39,6 +41,17 @@ class ProgramTest : public GlTest {
     if (vs) glAttachShader(p, compile(GL_VERTEX_SHADER, vs));
     if (fs) glAttachShader(p, compile(GL_FRAGMENT_SHADER, fs));
     glLinkProgram(p);
+    return p;
+  }
+  // As link, with attribute locations bound first; in use when it links.
+  GLuint link_in_use(const char* vs, const char* fs, std::initializer_list<std::pair<GLuint, const char*>> locations) {
+    const GLuint p = glCreateProgram();
+    glAttachShader(p, compile(GL_VERTEX_SHADER, vs));
+    glAttachShader(p, compile(GL_FRAGMENT_SHADER, fs));
+    for (const auto& [location, name] : locations) glBindAttribLocation(p, location, name);
+    glLinkProgram(p);
+    EXPECT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
+    glUseProgram(p);
     return p;
   }
 };

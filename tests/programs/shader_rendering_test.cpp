@@ -186,13 +186,9 @@ TEST_F(ShaderRenderingTest, GenericAttributeArraysFromABufferObject) {
 // Generic attribute 0 from client memory, with a vertex shader that reads no built-in
 // attribute (the vertices carry only their element, edge flag and attribute 0 then).
 TEST_F(ShaderRenderingTest, GenericAttributeZeroFromAClientArray) {
-  const GLuint p = use("attribute vec2 pos; attribute vec4 col; varying vec4 c;\n"
-                       "void main() { c = col; gl_Position = vec4(pos, 0.0, 1.0); }\n",
-                       "varying vec4 c; void main() { gl_FragColor = c; }\n");
-  glBindAttribLocation(p, 0, "pos");
-  glBindAttribLocation(p, 2, "col");
-  glLinkProgram(p);
-  glUseProgram(p);
+  link_in_use("attribute vec2 pos; attribute vec4 col; varying vec4 c;\n"
+              "void main() { c = col; gl_Position = vec4(pos, 0.0, 1.0); }\n",
+              "varying vec4 c; void main() { gl_FragColor = c; }\n", {{0, "pos"}, {2, "col"}});
   const GLfloat pos[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
   const GLfloat col[16] = {0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1};
   glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, pos);
