@@ -407,6 +407,11 @@ bool GeometryStage::fill_window_triangle(const Vertex* const (&w)[3], const Clip
   return true;
 }
 
+bool GeometryStage::reads_edge_flags() const {
+  const DrawState& s = scene_.current_draw().state;
+  return s.polygon_front != PolygonMode::Fill || s.polygon_back != PolygonMode::Fill;
+}
+
 void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
                             const ClipVertex& provoking) {
   if (!active_) return;

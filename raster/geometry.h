@@ -23,6 +23,8 @@ class GeometryStage final : public PrimitiveSink {
   void restart_line_stipple() override { stipple_count_ = 0.f; }
   void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
                const ClipVertex& provoking) override;
+  // Only the line and point polygon modes draw by edge flags.
+  bool reads_edge_flags() const override;
 
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
   bool active() const { return active_; }

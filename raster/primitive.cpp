@@ -8,18 +8,21 @@ namespace {
 
 class VertexSource {
  public:
-  VertexSource(std::span<const ClipVertex> vertices, std::span<const uint32_t> indices)
-      : vertices_(vertices), indices_(indices) {}
+  VertexSource(std::span<const ClipVertex> vertices, std::span<const uint32_t> indices, bool edge_flags)
+      : vertices_(vertices), indices_(indices), edge_flags_(edge_flags) {}
   size_t count() const { return indices_.empty() ? vertices_.size() : indices_.size(); }
   // Null when the index points past the vertex array.
   const ClipVertex* at(size_t i) const {
     const size_t v = indices_.empty() ? i : indices_[i];
     return v < vertices_.size() ? &vertices_[v] : nullptr;
   }
+  // v's edge flag, when the sink reads them (else true, without reading the vertex).
+  bool edge(const ClipVertex* v) const { return !edge_flags_ || v->edge_flag; }
 
  private:
   std::span<const ClipVertex> vertices_;
   std::span<const uint32_t> indices_;
+  bool edge_flags_;
 };
 
 bool inside_view_volume(const ClipVertex& v) {
@@ -56,11 +59,11 @@ void assemble_quads(const VertexSource& src, bool clipping, PrimitiveSink& sink)
     const ClipVertex *q0 = src.at(i), *q1 = src.at(i + 1), *q2 = src.at(i + 2), *q3 = src.at(i + 3);
     if (!q0 || !q1 || !q2 || !q3) continue;
     if (clipping) {
-      triangle(sink, q0, q1, q3, q0->edge_flag, false, q3->edge_flag, q3);
-      triangle(sink, q1, q2, q3, q1->edge_flag, q2->edge_flag, false, q3);
+      triangle(sink, q0, q1, q3, src.edge(q0), false, src.edge(q3), q3);
+      triangle(sink, q1, q2, q3, src.edge(q1), src.edge(q2), false, q3);
     } else {
-      triangle(sink, q0, q1, q2, q0->edge_flag, q1->edge_flag, false, q3);
-      triangle(sink, q0, q2, q3, false, q2->edge_flag, q3->edge_flag, q3);
+      triangle(sink, q0, q1, q2, src.edge(q0), src.edge(q1), false, q3);
+      triangle(sink, q0, q2, q3, false, src.edge(q2), src.edge(q3), q3);
     }
   }
 }
@@ -89,7 +92,7 @@ void assemble_polygon(const VertexSource& src, PrimitiveSink& sink) {
   const ClipVertex* v0 = src.at(0);
   for (size_t i = 1; i + 1 < n; ++i) {
     const ClipVertex *a = src.at(i), *b = src.at(i + 1);
-    triangle(sink, v0, a, b, i == 1 && v0->edge_flag, a->edge_flag, i + 2 == n && b->edge_flag, v0);
+    triangle(sink, v0, a, b, i == 1 && src.edge(v0), src.edge(a), i + 2 == n && src.edge(b), v0);
   }
 }
 
@@ -97,7 +100,7 @@ void assemble_polygon(const VertexSource& src, PrimitiveSink& sink) {
 
 void assemble_primitives(Primitive mode, std::span<const ClipVertex> vertices,
                          std::span<const uint32_t> indices, PrimitiveSink& sink) {
-  const VertexSource src(vertices, indices);
+  const VertexSource src(vertices, indices, sink.reads_edge_flags());
   const size_t n = src.count();
   switch (mode) {
     case Primitive::Points:
@@ -120,7 +123,7 @@ void assemble_primitives(Primitive mode, std::span<const ClipVertex> vertices,
     case Primitive::Triangles:
       for (size_t i = 0; i + 2 < n; i += 3) {
         const ClipVertex *a = src.at(i), *b = src.at(i + 1), *c = src.at(i + 2);
-        if (a && b && c) triangle(sink, a, b, c, a->edge_flag, b->edge_flag, c->edge_flag, c);
+        if (a && b && c) triangle(sink, a, b, c, src.edge(a), src.edge(b), src.edge(c), c);
       }
       break;
     case Primitive::TriangleStrip:

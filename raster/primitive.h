@@ -20,6 +20,8 @@ class PrimitiveSink {
   // to v[i + 1] as a boundary edge for the line and point polygon modes.
   virtual void polygon(std::span<const ClipVertex* const> v, std::span<const bool> edge_flags,
                        const ClipVertex& provoking) = 0;
+  // False when polygon() ignores the edge flags (then all true): assembly does not read them.
+  virtual bool reads_edge_flags() const { return true; }
 };
 
 // Indices >= vertices.size() drop the primitives that use them.
