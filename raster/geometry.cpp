@@ -37,11 +37,10 @@ int64_t snap(double window) {
   const double v = std::clamp(window, -4.0 * kGuardBand, 4.0 * kGuardBand) * kSubpixelOne;
   // std::llround (halves away from zero) without its library call: |v| < 2^26, so the
   // truncation and the remainder are exact.
-  int64_t r = static_cast<int64_t>(v);
+  const int64_t r = static_cast<int64_t>(v);
   const double rest = v - static_cast<double>(r);
-  if (rest >= 0.5) ++r;
-  else if (rest <= -0.5) --r;
-  return r;
+  // Without branches: which way a position rounds is as random as the positions are.
+  return r + static_cast<int64_t>(rest >= 0.5) - static_cast<int64_t>(rest <= -0.5);
 }
 
 // Clipping keeps w >= 1e-30, but cancellation in an intersection can still produce w = 0;

@@ -1,6 +1,7 @@
 #include "state/vertex_fetch.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "state/context.h"
 #include "state/programs/generic_attribs.h"
@@ -36,6 +37,15 @@ void read_array(const ClientArray& array, size_t index, float* dst, bool normali
   const int component = gl_type_size(array.type);
   const uint8_t* p = array_element(array, index, size_t(component) * array.size);
   if (!p) return;
+  if (array.type == GL_FLOAT) {  // the common case, without a conversion per component (copies of constant size)
+    switch (array.size) {
+      case 4: std::memcpy(dst, p, sizeof(float) * 4); return;
+      case 3: std::memcpy(dst, p, sizeof(float) * 3); return;
+      case 2: std::memcpy(dst, p, sizeof(float) * 2); return;
+      case 1: std::memcpy(dst, p, sizeof(float)); return;
+      default: break;
+    }
+  }
   for (int c = 0; c < array.size; ++c) dst[c] = read_vertex_component(p + c * component, array.type, normalize);
 }
 
