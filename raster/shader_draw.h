@@ -1,6 +1,7 @@
 // The programmable part of a draw snapshot: the linked program and a copy of its uniform
 // values (the draw runs later on worker threads while the application changes them).
 #pragma once
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -18,9 +19,13 @@ struct ShaderDraw {
   // program->fragment_uniform_values(uniforms), computed by the first block that asks (on any
   // worker thread); null when the fragment shader has none.
   const float* fragment_uniform_values() const {
-    std::call_once(uniform_values_.once, [this] {
-      if (program) uniform_values_.values = program->fragment_uniform_values(uniforms.data());
-    });
+    // Once computed, without std::call_once's thread-local bookkeeping (every quad row asks).
+    if (!uniform_values_.ready.load(std::memory_order_acquire)) {
+      std::call_once(uniform_values_.once, [this] {
+        if (program) uniform_values_.values = program->fragment_uniform_values(uniforms.data());
+        uniform_values_.ready.store(true, std::memory_order_release);
+      });
+    }
     return uniform_values_.values.empty() ? nullptr : uniform_values_.values.data();
   }
 
@@ -28,6 +33,7 @@ struct ShaderDraw {
   // A copy (a draw that changes some uniforms) starts without values.
   struct UniformValues {
     std::once_flag once;
+    std::atomic<bool> ready{false};
     std::vector<float> values;
     UniformValues() = default;
     UniformValues(const UniformValues&) {}

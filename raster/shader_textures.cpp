@@ -101,12 +101,12 @@ bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t
 
 const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {
   FastSamplers& f = fast_[static_cast<size_t>(unit)];
-  if (!f.chosen) {
+  if (!(chosen_ & (1u << unit))) {
     static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
     const Sampler& sampler = units_[static_cast<size_t>(unit)].sampler;
     f.quad = select_bilinear8_sampler(image, sampler);
     f.block = f.quad ? select_bilinear8_block_sampler(sampler, path) : nullptr;
-    f.chosen = true;
+    chosen_ |= 1u << unit;
   }
   return f;
 }

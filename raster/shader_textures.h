@@ -2,6 +2,7 @@
 // draw's texture units, 16 lanes at a time, level of detail from each 2x2 quad of lanes.
 #pragma once
 #include <array>
+#include <cstdint>
 
 #include "raster/sampler_bilinear8.h"
 #include "raster/sampler_bilinear_block.h"
@@ -23,14 +24,16 @@ class UnitTextureAccess final : public shader::TextureAccess {
  private:
   // The fast quad and block samplers of a unit's image for 2D lookups (null: none fits).
   struct FastSamplers {
-    bool chosen = false;
-    QuadSampler quad = nullptr;
-    BlockSampler block = nullptr;
+    QuadSampler quad;
+    BlockSampler block;
   };
   const FastSamplers& fast_samplers(int unit, const TextureImage& image) const;
 
   const std::array<TextureUnit, kMaxTextureImageUnits>& units_;
-  mutable std::array<FastSamplers, kMaxTextureImageUnits> fast_{};
+  // Entry i is set when bit i of `chosen_` is: made for each row of quads, the object is not
+  // zeroed whole (GCC's rep stos for it was a tenth of shading a small triangle's row).
+  mutable uint32_t chosen_ = 0;
+  mutable std::array<FastSamplers, kMaxTextureImageUnits> fast_;
 };
 
 }  // namespace pineda::raster
