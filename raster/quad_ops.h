@@ -261,10 +261,12 @@ inline unsigned depth_pass(CompareFunc f, U4 z, U4 stored) {
                     F4 ox, F4 oy) {
   uint32_t* const row0 = fb.depth.base + static_cast<ptrdiff_t>(y) * fb.depth.stride + x;
   const U4 zi = quad_depth(d, p, ox, oy);
-  if (mask == 0xf) {
+  // A partly covered quad inside the buffer too, without a branch per pixel: its other pixels
+  // are written back as they were (a quad lies in one tile, which one thread owns).
+  if (mask == 0xf || (x + 1 < fb.width && y + 1 < fb.height)) {
     uint32_t* const row1 = row0 + fb.depth.stride;
     const U4 stored = load_quad_rows(row0, row1);
-    const unsigned pass = depth_pass(d.state.depth_func, zi, stored);
+    const unsigned pass = depth_pass(d.state.depth_func, zi, stored) & mask;
     if (pass && d.state.depth_write) {
       const I4 passed = (I4{1, 2, 4, 8} & static_cast<int>(pass)) != 0;
       store_quad_rows(row0, row1, passed ? zi : stored);
