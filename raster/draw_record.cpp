@@ -109,8 +109,10 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   // pixel followed by the generic quad operations per sample (2x2 quads, one lane per pixel), so
   // draws that have one keep the per-plane path; alpha to coverage gives them none.
   const bool alpha_to_coverage = state.multisample.multisample && state.multisample.alpha_to_coverage;
-  if (fb.samples > 1 && (state.shader || !fill || alpha_to_coverage))
+  if (fb.samples > 1 && (state.shader || !fill || alpha_to_coverage)) {
     d.sample_routine = state.shader ? shade_program_sample_quads : select_sample_quad_routine(d.key, path);
+    d.sample_tests = select_sample_quad_tests(d.key, path);
+  }
   if (fb.color_targets > 1) {
     prepare_target_draws(d, fb, path);
     if (state.shader) {

@@ -9,6 +9,7 @@
 #include "raster/draw_state.h"
 #include "raster/framebuffer.h"
 #include "raster/prim_setup.h"
+#include "raster/sample_quad_tests.h"
 #include "raster/sample_targets.h"
 #include "raster/sampler_bilinear8.h"
 
@@ -66,6 +67,9 @@ struct DrawRecord {
   // Multisampled framebuffers: shades each pixel once for all samples (null: the draw runs
   // `routine` once per sample plane).
   SampleQuadRoutine sample_routine = nullptr;
+  // With a sample_routine: its stencil and depth tests over every sample of a quad (null
+  // without either test).
+  SampleQuadTests sample_tests = nullptr;
   // A sample's record under alpha to coverage: its sample is kept where alpha >= this too,
   // besides the application's alpha test (state.alpha_test is on, ALWAYS when GL's is off).
   bool alpha_to_coverage = false;

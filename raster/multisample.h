@@ -46,6 +46,8 @@ uint64_t rasterize_samples_in_tile(const PrimSetup& prim, const DrawRecord& draw
 
 // Averages the samples of pixel (x, y) into RGBA bytes: (sum + samples / 2) / samples.
 void resolve_rgba8(const Framebuffer& fb, int x, int y, uint8_t out[4]);
+// resolve_rgba8 of the n pixels from (x, y) rightwards, into out[4 * i] for pixel i.
+void resolve_rgba8_row(const Framebuffer& fb, int x, int y, int n, uint8_t* out);
 // Resolves every pixel of fb's colour planes into `out`, a single-sampled buffer of the same
 // size and byte order (a multisampled window's back buffer, for swaps and reads).
 void resolve_color(const Framebuffer& fb, const ColorBuffer& out);

@@ -13,16 +13,6 @@ namespace {
 
 using namespace quad_ops;
 
-// Stencil and depth of one sample, as the single-sampled routine of the key runs them.
-[[gnu::always_inline]] inline unsigned sample_tests(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
-                                                    int x, int y, unsigned mask, F4 ox, F4 oy) {
-  if (!mask) return 0;
-  if (d.key.stencil) return d.key.depth ? depth_stencil<true, true>(d, p, fb, x, y, mask, ox, oy)
-                                        : depth_stencil<false, true>(d, p, fb, x, y, mask, ox, oy);
-  if (d.key.depth) return depth_only(d, p, fb, x, y, mask, ox, oy);
-  return mask;
-}
-
 // The write of the single-sampled routine of the key (those with extras leave out the
 // SRC_ALPHA-over path: fragment_pipeline.cpp).
 template <bool kExtras>
@@ -47,26 +37,25 @@ template <bool kTex, bool kFlat, bool kExtras>
     if constexpr (kExtras) cover &= static_cast<uint16_t>(stipple_mask(d, p, qx, y) * 0x1111u);
     if (!any_sample_mask(cover)) continue;
     const F4 ox = ox0 + splat(static_cast<float>(2 * q));
-    unsigned live[kMaxSamples] = {};
-    auto tests = [&](int s) {
-      live[s] = sample_tests(*t.draw[s], *t.prim[s], t.plane[s], qx, y, live[s], ox, oy);
-      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(live[s]));
+    uint16_t live = 0;  // lane 4s + i: sample s's pixel i (sample_targets.h)
+    // Stencil and depth of every sample at once, as the single-sampled routines run them.
+    auto tests = [&] {
+      if (d.sample_tests) live = d.sample_tests(d, p, t, qx, y, ox, oy, live, nullptr);
+      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(live));
     };
     auto writes = [&](const QuadColor& col) {
-      for (int s = 0; s < kMaxSamples; ++s)
-        if (live[s] && t.plane[s].color.base && d.color_write_any)
-          sample_write<kExtras>(*t.draw[s], t.plane[s], qx, y, live[s], col);
+      for (int s = 0; s < kMaxSamples; ++s) {
+        const unsigned mask = sample_quad_mask(live, s);
+        if (mask && t.plane[s].color.base && d.color_write_any)
+          sample_write<kExtras>(*t.draw[s], t.plane[s], qx, y, mask, col);
+      }
     };
     QuadColor col;
     if (early_tests) {  // as the single-sampled routines: no stage before the tests reads colour
-      unsigned any = 0;
-      for (int s = 0; s < kMaxSamples; ++s) {
-        if (!t.draw[s]) continue;
-        live[s] = sample_quad_mask(cover, s);
-        tests(s);
-        any |= live[s];
-      }
-      if (!any) continue;
+      for (int s = 0; s < kMaxSamples; ++s)
+        if (t.draw[s]) live |= static_cast<uint16_t>(cover & (0xfu << (4 * s)));
+      tests();
+      if (!live) continue;
       col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
       if constexpr (kExtras) {
         apply_coverage(p, qx, y, col.c[3]);
@@ -79,15 +68,15 @@ template <bool kTex, bool kFlat, bool kExtras>
     if constexpr (kExtras) apply_coverage(p, qx, y, col.c[3]);
     for (int s = 0; s < kMaxSamples; ++s) {
       if (!t.draw[s]) continue;
-      live[s] = sample_quad_mask(cover, s);
+      unsigned mask = sample_quad_mask(cover, s);
       for (int i = 0; i < 4; ++i)
-        if (!alpha_passes(*t.draw[s], col.c[3][i])) live[s] &= ~(1u << i);
+        if (!alpha_passes(*t.draw[s], col.c[3][i])) mask &= ~(1u << i);
+      live |= static_cast<uint16_t>(mask << (4 * s));
     }
     if constexpr (kExtras) {
       if (d.alpha_to_one) col.c[3] = splat(1.f);
     }
-    for (int s = 0; s < kMaxSamples; ++s)
-      if (t.draw[s]) tests(s);
+    tests();
     writes(col);
   }
   return passed;

@@ -1,7 +1,8 @@
 // The fixed-function SampleQuadRoutine (sample_targets.h): a multisampled draw's quads shaded
 // once at their pixel centres (quad_colors.h), then alpha (to coverage), stencil, depth, blending
 // and the write for each covered sample in its own plane, with the operations of the
-// single-sampled routines (quad_ops.h). Fragment shaders have theirs in shader_quads.h.
+// single-sampled routines (quad_ops.h; stencil and depth of all samples at once:
+// sample_quad_tests.h). Fragment shaders have theirs in shader_quads.h.
 #pragma once
 
 #include "raster/draw_record.h"

@@ -182,6 +182,25 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   return true;
 }
 
+// The alpha test of quad j of a shaded block (state.alpha_test on): its pixels of `mask` that
+// pass. The alpha of colour 0 decides for every draw buffer (as in Mesa; GL 3.0 4.1.4).
+unsigned alpha_test_quad(const DrawRecord& d, const PrimSetup& p, const shader::FragmentBlock& block, int j, int x,
+                         int y, unsigned mask) {
+  F4 alpha = load4(&block.color[0][3][4 * j]);
+  if (d.key.extras) apply_coverage(p, x, y, alpha);
+  for (int i = 0; i < 4; ++i)
+    if (!alpha_passes(d, clamp01(alpha[i]))) mask &= ~(1u << i);
+  return mask;
+}
+
+// gl_FragDepth of quad j of a shaded block in depth-buffer units.
+void shader_depths(const DrawRecord& d, const shader::FragmentBlock& block, int j, uint32_t z[4]) {
+  for (int i = 0; i < 4; ++i) {
+    const float v = clamp01(block.depth[4 * j + i]);
+    z[i] = static_cast<uint32_t>(static_cast<double>(v) * d.depth_max + 0.5);
+  }
+}
+
 // Whether block k of the row is adjacent quads whose live pixels all get written, each wholly
 // and in the same way (block_write.h): nothing but the colour and coverage is left to decide.
 bool writes_block_lanes(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
@@ -230,27 +249,12 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
     QuadColor col;
     for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * j]);
     if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
-    if (s.alpha_test) {
-      // The alpha of colour 0 decides for every draw buffer (as in Mesa; GL 3.0 4.1.4).
-      F4 alpha = col.c[3];
-      if (sd.color_output != 0) {
-        alpha = load4(&block.color[0][3][4 * j]);
-        if (d.key.extras) apply_coverage(p, q.x, y, alpha);
-      }
-      for (int i = 0; i < 4; ++i)
-        if (!alpha_passes(d, clamp01(alpha[i]))) mask &= ~(1u << i);
-    }
+    if (s.alpha_test) mask = alpha_test_quad(d, p, block, j, q.x, y, mask);
     if (d.alpha_to_one) col.c[3] = splat(1.f);  // after alpha to coverage (the alpha test above)
     if (!early && tests) {
       uint32_t z[4];
-      if (program.writes_depth()) {
-        for (int i = 0; i < 4; ++i) {
-          const float v = clamp01(block.depth[4 * j + i]);
-          z[i] = static_cast<uint32_t>(static_cast<double>(v) * d.depth_max + 0.5);
-        }
-      } else {
-        plane_depths(d, p, q.ox, q.oy, z);
-      }
+      if (program.writes_depth()) shader_depths(d, block, j, z);
+      else plane_depths(d, p, q.ox, q.oy, z);
       mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, z);
     }
     if (d.key.count_samples && !early) passed += static_cast<uint32_t>(__builtin_popcount(mask));
@@ -369,34 +373,54 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
   auto begin = [&](int k) {
     for (int q = 0; q < row.quad_count[k]; ++q) {
       uint16_t& m = sample_masks[k][q];
-      if (early) {
-        uint16_t kept = 0;
-        for (int s = 0; s < kMaxSamples; ++s) {
-          const unsigned mask = sample_quad_mask(m, s);
-          if (mask && t.draw[s])
-            kept |= static_cast<uint16_t>(
-                early_depth_stencil(*t.draw[s], *t.prim[s], t.plane[s], y, row.quads[k][q], mask, passed) << (4 * s));
-        }
-        m = kept;
+      if (early) {  // every sample's stencil and depth at once
+        const Quad& quad = row.quads[k][q];
+        m = d.sample_tests(d, p, t, quad.x, y, quad.ox, quad.oy, m, nullptr);
+        if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(m));
       }
       row.quads[k][q].mask = any_sample_mask(m);
     }
     return begin_block(d, p, t.plane[first], y, uniform_values, row, k);
   };
+  // After shading, without early tests: each sample's alpha test (its own threshold under alpha
+  // to coverage), then every sample's stencil and depth at once; what passes is left to write.
+  const bool late = !early && (d.key.depth || d.key.stencil);
+  auto late_tests = [&](int k) {
+    const shader::FragmentBlock& block = row.blocks[k];
+    for (int q = 0; q < row.quad_count[k]; ++q) {
+      const Quad& quad = row.quads[k][q];
+      const unsigned shaded = (block.live >> (4 * q)) & 0xfu;  // less the discarded fragments
+      uint16_t m = static_cast<uint16_t>(sample_masks[k][q] & (shaded * 0x1111u));
+      if (!m) continue;
+      for (int s = 0; s < kMaxSamples; ++s)
+        if (const unsigned mask = sample_quad_mask(m, s); mask && t.draw[s] && t.draw[s]->state.alpha_test) {
+          const unsigned kept = alpha_test_quad(*t.draw[s], *t.prim[s], block, q, quad.x, y, mask);
+          m = static_cast<uint16_t>(m & ~((mask & ~kept) << (4 * s)));
+        }
+      uint32_t z[4];
+      if (sd.program->writes_depth()) shader_depths(d, block, q, z);
+      m = d.sample_tests(d, p, t, quad.x, y, quad.ox, quad.oy, m, sd.program->writes_depth() ? z : nullptr);
+      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(m));
+      sample_masks[k][q] = m;
+    }
+  };
   auto run = [&] {
     if (!row.count) return;
     sd.program->run_fragment_blocks(sd.uniforms.data(), &textures, row.blocks, row.count);
-    for (int k = 0; k < row.count; ++k)
+    for (int k = 0; k < row.count; ++k) {
+      if (late) late_tests(k);
       for (int s = 0; s < kMaxSamples; ++s) {
         if (!t.draw[s]) continue;
         shader::LaneMask live = 0;
         for (int q = 0; q < row.quad_count[k]; ++q)
           live |= static_cast<shader::LaneMask>(sample_quad_mask(sample_masks[k][q], s) << (4 * q));
         live &= row.blocks[k].live;  // less the discarded fragments
+        // The tests are done (early or late): finish_block writes (its alpha test passes again).
         if (live)
           passed += finish_block<kTargets>(*t.draw[s], *t.prim[s], t.plane[s], y, targets[size_t(s)], row, k, live,
-                                           early);
+                                           early || late);
       }
+    }
     row.count = 0;
   };
   auto keep = [&](int q, Quad&, int n) {

@@ -35,19 +35,22 @@ SourceImage read_source(const raster::Framebuffer& fb, bool opaque, GLint sx0, G
   if (color) img.color.resize(4 * n);
   if (depth) img.depth.resize(n);
   if (stencil) img.stencil.resize(n);
-  for (int j = 0; j < img.height; ++j)
+  for (int j = 0; j < img.height; ++j) {
+    const int y = img.y0 + j;
+    if (color && fb.samples > 1)  // depth and stencil: sample 0's
+      raster::resolve_rgba8_row(fb, img.x0, y, img.width, &img.color[4 * size_t(j) * img.width]);
     for (int i = 0; i < img.width; ++i) {
-      const int x = img.x0 + i, y = img.y0 + j;
+      const int x = img.x0 + i;
       const size_t k = size_t(j) * img.width + i;
       if (color) {
         uint8_t* o = &img.color[4 * k];
-        if (fb.samples > 1) raster::resolve_rgba8(fb, x, y, o);  // depth and stencil: sample 0's
-        else raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * y + 4 * x, o);
+        if (fb.samples == 1) raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * y + 4 * x, o);
         if (opaque) o[3] = 255;
       }
       if (depth) img.depth[k] = fb.depth.base[fb.depth.stride * y + x];
       if (stencil) img.stencil[k] = fb.stencil.base[fb.stencil.stride * y + x];
     }
+  }
   return img;
 }
 
@@ -67,6 +70,23 @@ void write_color(const raster::ColorBuffer& cb, int x, int y, const uint8_t sour
   p[1] = rgba[1];
   p[bgra ? 0 : 2] = rgba[2];
   p[3] = rgba[3];
+}
+
+// write_color of n pixels from (x, y) rightwards; source[4 * i]: pixel i.
+void write_color_row(const raster::ColorBuffer& cb, int x, int y, int n, const uint8_t* source) {
+  uint8_t* p = cb.base + cb.stride * y + 4 * x;
+  if (cb.reduction.active) {
+    for (int i = 0; i < n; ++i) write_color(cb, x + i, y, source + 4 * i);
+  } else if (cb.format == raster::ColorFormat::BGRA8) {
+    for (int i = 0; i < n; ++i) {
+      p[4 * i] = source[4 * i + 2];
+      p[4 * i + 1] = source[4 * i + 1];
+      p[4 * i + 2] = source[4 * i];
+      p[4 * i + 3] = source[4 * i + 3];
+    }
+  } else {
+    std::copy_n(source, 4 * n, p);
+  }
 }
 
 }  // namespace
@@ -131,14 +151,28 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
       x1 = int(std::min<int64_t>(x1, int64_t{s.scissor.x} + std::max(s.scissor.width, 0)));
       y1 = int(std::min<int64_t>(y1, int64_t{s.scissor.y} + std::max(s.scissor.height, 0)));
     }
+    // A copy of the same size and orientation without filtering: the source pixel of
+    // destination x is x + shift, and the colour is copied a row at a time.
+    const bool copy_rows = color && !linear && ax.scale == 1.0 && ay.scale == 1.0;
+    const int64_t shift = int64_t{srcX0} - dstX0;
     for (int y = y0; y < y1; ++y) {
       const double v = ay.source(y);
+      if (copy_rows && v >= img.y0 && v < img.y0 + img.height) {
+        const int first = int(std::max<int64_t>(x0, img.x0 - shift));
+        const int last = int(std::min<int64_t>(x1, img.x0 + img.width - shift));
+        const int sj = int(std::floor(v)) - img.y0;
+        const uint8_t* row = &img.color[4 * (size_t(sj) * img.width + size_t(first + shift - img.x0))];
+        if (first < last)
+          for (int t = 0; t < fb.color_targets; ++t)
+            if (fb.target_color(t).base) write_color_row(fb.target_color(t), first, y, last - first, row);
+      }
+      if (copy_rows && !depth && !stencil) continue;
       for (int x = x0; x < x1; ++x) {
         const double u = ax.source(x);
         if (!inside(u, v)) continue;
         const int si = int(std::floor(u)) - img.x0, sj = int(std::floor(v)) - img.y0;
         const size_t k = size_t(sj) * img.width + si;
-        if (color) {
+        if (color && !copy_rows) {
           uint8_t rgba[4];
           if (!linear) {
             std::copy_n(&img.color[4 * k], 4, rgba);

@@ -3,9 +3,12 @@
 // the covered samples, while every sample still gets its own coverage, depth and write.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "raster/renderer.h"
@@ -22,7 +25,9 @@ using test::window_vertex;
 // count is the program's own: draws of other programs do not touch it).
 class CountingProgram final : public shader::Program {
  public:
-  explicit CountingProgram(float alpha) : alpha_(alpha) {}
+  // writes_depth: gl_FragDepth a different value per lane; discards: lanes 5 and 10 discard.
+  explicit CountingProgram(float alpha, bool writes_depth = false, bool discards = false)
+      : alpha_(alpha), writes_depth_(writes_depth), discards_(discards) {}
   mutable std::atomic<uint64_t> shaded{0};
 
   const std::vector<shader::Attribute>& attributes() const override { return attributes_; }
@@ -32,8 +37,8 @@ class CountingProgram final : public shader::Program {
   int varying_floats() const override { return 0; }
   int uniform_floats() const override { return 0; }
   bool writes_point_size() const override { return false; }
-  bool writes_depth() const override { return false; }
-  bool uses_discard() const override { return false; }
+  bool writes_depth() const override { return writes_depth_; }
+  bool uses_discard() const override { return discards_; }
   int draw_buffers_written() const override { return 1; }
   bool reads(const char*) const override { return false; }
   bool reads_frag_coord() const override { return false; }
@@ -50,12 +55,15 @@ class CountingProgram final : public shader::Program {
       const float rgba[4] = {1.f, 0.f, 0.f, alpha_};
       for (int c = 0; c < 4; ++c)
         for (int l = 0; l < shader::kLanes; ++l) blocks[k].color[0][c][l] = rgba[c];
+      for (int l = 0; l < shader::kLanes; ++l) blocks[k].depth[l] = 0.2f + 0.04f * float(l);
+      if (discards_) blocks[k].live &= static_cast<shader::LaneMask>(~((1u << 5) | (1u << 10)));
     }
   }
   std::vector<float> fragment_uniform_values(const float*) const override { return {}; }
 
  private:
   float alpha_;
+  bool writes_depth_, discards_;
   std::vector<shader::Attribute> attributes_;
   std::vector<shader::Uniform> uniforms_;
   std::vector<shader::Varying> varyings_;
@@ -177,6 +185,68 @@ TEST(MultisampleShadeOnce, AlphaToCoverageAndSampleCoverageShadeOnce) {
     for (int smp = 0; smp < 4; ++smp)
       EXPECT_EQ(target.red(smp, 5, 5), smp == 1 || (smp == 0 && !coverage)) << coverage << " " << smp;
   }
+}
+
+// Every sample's depth, stencil and colour after random multisampled draws (partial coverage,
+// every depth and stencil function and op, both faces, alpha to coverage, the sample coverage
+// mask, the alpha test, a shader's discard and depth; early and late tests): the same on every
+// SIMD path and thread count.
+TEST(MultisampleShadeOnce, EveryPathAndThreadCountLeavesTheSameSamples) {
+  auto render = [](const char* simd, int threads) {
+    setenv("PINEDA_SIMD", simd, 1);
+    SampledFramebuffer target;
+    Renderer r(threads);
+    unsetenv("PINEDA_SIMD");
+    r.set_framebuffer(target.fb);
+    std::mt19937 random(3);
+    auto pick = [&](int n) { return static_cast<int>(random() % unsigned(n)); };
+    auto coordinate = [&] { return -4.0 + 40.0 * (random() % 10000) / 10000.0; };
+    for (int draw = 0; draw < 120; ++draw) {
+      const int kind = draw % 4;  // fixed function; shader; shader writing depth; shader discarding
+      auto program = std::make_shared<CountingProgram>(0.1f + 0.2f * float(pick(5)), kind == 2, kind == 3);
+      DrawState s = kind ? shader_state(program) : state_for(kSize, kSize);
+      s.depth_test = pick(4) != 0;
+      s.depth_func = static_cast<CompareFunc>(pick(8));
+      s.depth_write = pick(3) != 0;
+      s.stencil_test = pick(2) != 0;
+      for (StencilFace* face : {&s.stencil_front, &s.stencil_back}) {
+        face->func = static_cast<CompareFunc>(pick(8));
+        face->ref = pick(4);
+        face->value_mask = pick(2) ? 0xff : 0x3;
+        face->write_mask = pick(2) ? 0xff : 0x5;
+        face->fail = static_cast<StencilOp>(pick(8));
+        face->depth_fail = static_cast<StencilOp>(pick(8));
+        face->depth_pass = static_cast<StencilOp>(pick(8));
+      }
+      s.multisample.alpha_to_coverage = pick(3) == 0;
+      s.multisample.sample_coverage = pick(4) == 0;
+      s.multisample.coverage_value = 0.25f * float(pick(5));
+      s.multisample.coverage_invert = pick(2) != 0;
+      s.alpha_test = pick(4) == 0;
+      s.alpha_func = CompareFunc::GreaterEqual;
+      s.alpha_ref = 0.4f;
+      ClipVertex v[3];
+      for (ClipVertex& vertex : v) {
+        vertex = window_vertex(coordinate(), coordinate(), kSize, kSize, -1.f + 0.02f * float(pick(100)));
+        for (int c = 0; c < 4; ++c) vertex.color[c] = vertex.back_color[c] = 0.1f * float(pick(11));
+      }
+      r.draw(s, Primitive::Triangles, v);
+    }
+    r.flush();
+    return target;
+  };
+  const SampledFramebuffer expected = render("baseline", 1);
+  for (const char* simd : {"baseline", "avx2", "best"})
+    for (int threads : {1, 2}) {
+      const SampledFramebuffer got = render(simd, threads);
+      EXPECT_EQ(got.color, expected.color) << simd << " " << threads;
+      EXPECT_EQ(got.depth, expected.depth) << simd << " " << threads;
+      EXPECT_EQ(got.stencil, expected.stencil) << simd << " " << threads;
+    }
+  // The draws did test and write: samples of every kind of value differ from the cleared ones.
+  EXPECT_GT(expected.samples(), 100);
+  EXPECT_NE(std::count(expected.depth.begin(), expected.depth.end(), 0xffffffu), std::ptrdiff_t(expected.depth.size()));
+  EXPECT_NE(std::count(expected.stencil.begin(), expected.stencil.end(), 0), std::ptrdiff_t(expected.stencil.size()));
 }
 
 }  // namespace
