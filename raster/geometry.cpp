@@ -141,18 +141,16 @@ void GeometryStage::window_position(const ClipVert& v, WinPosition& w) const {
   w.z = z * depth_max_;
 }
 
-void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
-  window_position(v, w);
-  if (shader_) {
-    w.varyings = v.attr;
-    return;
-  }
-  w.varyings = nullptr;
-  const DrawRecord& d = scene_.current_draw();
-  const int color = back_color ? 4 : 0;
-  for (int i = 0; i < 4; ++i) w.attr[i] = v.attr[color + i];
+namespace {
+
+// The fixed-function attributes of a vertex into its window vertex's planes (DrawRecord plane
+// order): colour(), texcoord(unit), secondary() and fog() give where they are.
+template <typename Source>
+void plane_attributes(const DrawRecord& d, const Source& src, WinVert& w) {
+  const float* color = src.color();
+  for (int i = 0; i < 4; ++i) w.attr[i] = color[i];
   for (int k = 0; k < d.num_units; ++k) {
-    const float* tc = &v.attr[kClipTexAttrs + 4 * d.units[k]];
+    const float* tc = src.texcoord(d.units[k]);
     float* out = &w.attr[d.tex_plane[k]];
     out[0] = tc[0];
     out[1] = tc[1];
@@ -160,8 +158,39 @@ void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) co
     if (d.r_plane[k] >= 0) w.attr[d.r_plane[k]] = tc[2];
   }
   if (d.secondary_plane >= 0)
-    for (int i = 0; i < 3; ++i) w.attr[d.secondary_plane + i] = v.attr[kClipSecondaryAttrs + (back_color ? 3 : 0) + i];
-  if (d.fog_plane >= 0) w.attr[d.fog_plane] = v.attr[kClipFogAttr];
+    for (int i = 0; i < 3; ++i) w.attr[d.secondary_plane + i] = src.secondary()[i];
+  if (d.fog_plane >= 0) w.attr[d.fog_plane] = src.fog();
+}
+
+// A clipped vertex's attributes, front or back.
+struct ClipVertAttributes {
+  const ClipVert& v;
+  bool back;
+  const float* color() const { return &v.attr[back ? 4 : 0]; }
+  const float* texcoord(int unit) const { return &v.attr[kClipTexAttrs + 4 * unit]; }
+  const float* secondary() const { return &v.attr[kClipSecondaryAttrs + (back ? 3 : 0)]; }
+  float fog() const { return v.attr[kClipFogAttr]; }
+};
+
+// A transformed vertex's front attributes, read where they are (no ClipVert copy first).
+struct FrontAttributes {
+  const ClipVertex& v;
+  const float* color() const { return v.color; }
+  const float* texcoord(int unit) const { return v.texcoord[unit]; }
+  const float* secondary() const { return v.secondary; }
+  float fog() const { return v.fog; }
+};
+
+}  // namespace
+
+void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
+  window_position(v, w);
+  if (shader_) {
+    w.varyings = v.attr;
+    return;
+  }
+  w.varyings = nullptr;
+  plane_attributes(scene_.current_draw(), ClipVertAttributes{v, back_color}, w);
 }
 
 SetupParams GeometryStage::params(const Style& style) const {
@@ -360,14 +389,17 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
     slot.index = index;
     slot.usable = false;
     if (finite_position(v)) {
-      // A programmable vertex's varyings stay in the draw's array (below): only its position
-      // and clip distances are needed here.
-      if (shader_) clip_position(v, cache_clip_);
-      else to_clip(v, cache_clip_);
+      // Only the position and clip distances are clipped: the attributes are read where they
+      // are (a programmable vertex's varyings stay in the draw's array).
+      clip_position(v, cache_clip_);
       if (clip_outcode(cache_clip_, volume_) == 0) {
-        to_window(cache_clip_, false, slot.window);
-        // A programmable draw's varyings, as to_clip copies them, stay put in the draw's array.
-        if (shader_) slot.window.varyings = varyings_ + index * static_cast<size_t>(varying_count_);
+        window_position(cache_clip_, slot.window);
+        if (shader_) {
+          slot.window.varyings = varyings_ + index * static_cast<size_t>(varying_count_);
+        } else {
+          slot.window.varyings = nullptr;
+          plane_attributes(scene_.current_draw(), FrontAttributes{v}, slot.window);
+        }
         slot.usable = has_window_position(slot.window);
       }
     }
