@@ -6,6 +6,7 @@
 #include "raster/sampler.h"
 #include "raster/sampler_bilinear8.h"
 #include "raster/sampler_bilinear_block.h"
+#include "raster/sampler_nearest8.h"
 
 namespace pineda::raster {
 namespace {
@@ -106,6 +107,7 @@ const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit
     const Sampler& sampler = units_[static_cast<size_t>(unit)].sampler;
     f.quad = select_bilinear8_sampler(image, sampler);
     f.block = f.quad ? select_bilinear8_block_sampler(sampler, path) : nullptr;
+    if (!f.quad) f.quad = select_nearest8_sampler(image, sampler);
     chosen_ |= 1u << unit;
   }
   return f;
@@ -119,7 +121,8 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   const bool one_d = kind == SamplerKind::Tex1D || kind == SamplerKind::Shadow1D;
   const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D;
   // 2D lookups of RGBA8 images with linear filters take the fixed-function unit's fast sampler
-  // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler.
+  // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler; nearest ones the
+  // general sampler's texels without its level-of-detail work (sampler_nearest8.h).
   QuadSampler fast = nullptr;
   if (image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit) {
     const FastSamplers& f = fast_samplers(unit, *image);

@@ -1,0 +1,16 @@
+// Nearest sampling of RGBA8 Planar images for the four pixels of a quad: the texels the
+// general sampler (sampler.h) picks, without its level-of-detail and border work. Selected
+// once per draw; the general sampler takes the other keys.
+#pragma once
+
+#include "raster/sampler_bilinear8.h"
+#include "raster/texture.h"
+
+namespace pineda::raster {
+
+// The specialized sampler, or null: only colour Planar images without sRGB decoding, NEAREST
+// magnification and minification (level 0 whatever the level of detail), and REPEAT, CLAMP,
+// CLAMP_TO_EDGE or MIRRORED_REPEAT on s and t qualify.
+QuadSampler select_nearest8_sampler(const TextureImage& image, const Sampler& sampler);
+
+}  // namespace pineda::raster

@@ -1,0 +1,90 @@
+// The RGBA8 nearest quad sampler: which samplers it takes, and the general sampler's texels
+// (sample_quad) for any coordinates, wrap modes and level sizes.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "raster/sampler.h"
+#include "raster/sampler_nearest8.h"
+
+namespace pineda::raster {
+namespace {
+
+TextureImage random_level(int w, int h, std::mt19937& rng) {
+  TextureImage image;
+  std::vector<uint32_t> texels(static_cast<size_t>(w) * h);
+  for (uint32_t& t : texels) t = rng();
+  image.levels.push_back({w, h, std::move(texels)});
+  return image;
+}
+
+Sampler nearest(TexWrap s, TexWrap t) {
+  Sampler out;
+  out.min_filter = out.mag_filter = TexFilter::Nearest;
+  out.wrap_s = s;
+  out.wrap_t = t;
+  return out;
+}
+
+TEST(Nearest8Sampler, TakesOnlyNearestPlanarColourImagesWithoutTheBorder) {
+  std::mt19937 rng(1);
+  const TextureImage image = random_level(3, 2, rng);
+  for (TexWrap w : {TexWrap::Repeat, TexWrap::Clamp, TexWrap::ClampToEdge, TexWrap::MirroredRepeat})
+    EXPECT_NE(select_nearest8_sampler(image, nearest(w, TexWrap::Repeat)), nullptr);
+  EXPECT_EQ(select_nearest8_sampler(image, nearest(TexWrap::ClampToBorder, TexWrap::Repeat)), nullptr);
+  EXPECT_EQ(select_nearest8_sampler(image, nearest(TexWrap::Repeat, TexWrap::ClampToBorder)), nullptr);
+  Sampler mipmapped = nearest(TexWrap::Repeat, TexWrap::Repeat);
+  mipmapped.min_filter = TexFilter::NearestMipmapNearest;
+  EXPECT_EQ(select_nearest8_sampler(image, mipmapped), nullptr);
+  Sampler linear_mag = nearest(TexWrap::Repeat, TexWrap::Repeat);
+  linear_mag.mag_filter = TexFilter::Linear;
+  EXPECT_EQ(select_nearest8_sampler(image, linear_mag), nullptr);
+  TextureImage srgb = image;
+  srgb.levels[0].srgb = true;
+  EXPECT_EQ(select_nearest8_sampler(srgb, nearest(TexWrap::Repeat, TexWrap::Repeat)), nullptr);
+  TextureImage depth = image;
+  depth.depth = true;
+  EXPECT_EQ(select_nearest8_sampler(depth, nearest(TexWrap::Repeat, TexWrap::Repeat)), nullptr);
+}
+
+// Coordinates inside, outside, on texel edges, huge, infinite and NaN, in every wrap pair.
+TEST(Nearest8Sampler, GivesTheGeneralSamplersTexels) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> near(-2.5f, 3.5f);
+  const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+  const float special[] = {0.f, 1.f, -1.f, 0.5f, 1e7f, -1e7f, inf, -inf, nan, 1.f / 3.f, 2.f / 3.f, -0.f};
+  const TexWrap wraps[] = {TexWrap::Repeat, TexWrap::Clamp, TexWrap::ClampToEdge, TexWrap::MirroredRepeat};
+  int compared = 0;
+  for (const auto& [w, h] : {std::pair{1, 1}, {3, 5}, {16, 16}, {97, 2}, {1, 64}})
+    for (TexWrap ws : wraps)
+      for (TexWrap wt : wraps) {
+        const TextureImage image = random_level(w, h, rng);
+        const Sampler sampler = nearest(ws, wt);
+        const QuadSampler sample = select_nearest8_sampler(image, sampler);
+        ASSERT_NE(sample, nullptr);
+        for (int n = 0; n < 200; ++n) {
+          float s[4], t[4];
+          for (int i = 0; i < 4; ++i) {
+            s[i] = n % 4 == 0 ? special[rng() % std::size(special)] : near(rng);
+            t[i] = n % 5 == 0 ? special[rng() % std::size(special)] : near(rng);
+            if (n % 3 == 0) s[i] = std::floor(s[i] * w) / w;  // on texel edges
+          }
+          float expected[4][4];
+          sample_quad(image, sampler, s, t, expected);
+          F4 out[4];
+          sample(image, sampler, F4{s[0], s[1], s[2], s[3]}, F4{t[0], t[1], t[2], t[3]}, out);
+          for (int i = 0; i < 4; ++i)
+            for (int c = 0; c < 4; ++c) {
+              ASSERT_EQ(out[c][i], expected[i][c]) << w << "x" << h << " wrap " << int(ws) << "/" << int(wt) << " s " << s[i]
+                                                    << " t " << t[i];
+              ++compared;
+            }
+        }
+      }
+  EXPECT_EQ(compared, 5 * 16 * 200 * 16);
+}
+
+}  // namespace
+}  // namespace pineda::raster
