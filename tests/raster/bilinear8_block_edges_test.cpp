@@ -3,6 +3,8 @@
 // sampler's texels exactly, on every path.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 #include "raster/sampler_bilinear8.h"
@@ -103,6 +105,51 @@ TEST(Bilinear8BlockSampler, CompactBlocksGiveTheQuadSamplersTexelsOnEveryPath) {
         }
   }
   EXPECT_EQ(quads, 6 * 2 * 3 * 200 * 4);
+}
+
+// Coordinates the sampler must make sane or that sit on its roundings' edges (NaN, infinities,
+// values past +-1e6, zeros of either sign, subnormals, the float just below 1), mixed with
+// ordinary ones in blocks whose other lanes lie close together, so that the AVX-512 copy's window
+// and its gathers both see them: the quad sampler's texels exactly, on every path.
+TEST(Bilinear8BlockSampler, UnusualCoordinatesGiveTheQuadSamplersTexelsOnEveryPath) {
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  const float unusual[] = {std::numeric_limits<float>::quiet_NaN(), kInf, -kInf, 1e6f, -1e6f, 1.5e6f, -3e7f, 3e38f,
+                           -0.f, 0.f, 1e-40f, -1e-40f, std::nextafter(1.f, 0.f), std::nextafter(0.f, 1.f), -1.f, 1.f, 2.f};
+  constexpr int kUnusual = sizeof unusual / sizeof unusual[0];
+  std::mt19937 random(53);
+  int blocks = 0;
+  for (auto [w, h] : {std::pair{1, 1}, {3, 2}, {8, 8}, {37, 29}, {512, 256}}) {
+    TextureImage image;
+    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
+    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+    image.levels.push_back({w, h, std::move(texels)});
+    for (TexWrap ws : {TexWrap::Repeat, TexWrap::ClampToEdge})
+      for (TexWrap wt : {TexWrap::Repeat, TexWrap::ClampToEdge})
+        for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+          for (int trial = 0; trial < 40; ++trial) {
+            Sampler sampler;
+            sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
+            sampler.wrap_s = ws;
+            sampler.wrap_t = wt;
+            const float s0 = std::uniform_real_distribution<float>(-0.1f, 1.1f)(random);
+            const float t0 = std::uniform_real_distribution<float>(-0.1f, 1.1f)(random);
+            alignas(64) float s[kBlockLanes], t[kBlockLanes];
+            for (int i = 0; i < kBlockLanes; ++i) {
+              s[i] = s0 + static_cast<float>(i & 3) * 0.5f / w;
+              t[i] = t0 + static_cast<float>(i >> 2) * 0.5f / h;
+            }
+            // One to four unusual lanes, or (trial 0) all of them.
+            const int count = trial == 0 ? kBlockLanes : 1 + trial % 4;
+            for (int k = 0; k < count; ++k) {
+              const int lane = trial == 0 ? k : std::uniform_int_distribution<int>(0, kBlockLanes - 1)(random);
+              (k % 2 ? t : s)[lane] = unusual[std::uniform_int_distribution<int>(0, kUnusual - 1)(random)];
+              if (trial % 3 == 0) (k % 2 ? s : t)[lane] = unusual[(trial + k) % kUnusual];
+            }
+            ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
+            ++blocks;
+          }
+  }
+  EXPECT_EQ(blocks, 5 * 2 * 2 * 3 * 40);
 }
 
 }  // namespace
