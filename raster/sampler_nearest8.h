@@ -4,6 +4,8 @@
 #pragma once
 
 #include "raster/sampler_bilinear8.h"
+#include "raster/sampler_bilinear_block.h"
+#include "raster/simd_path.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -12,5 +14,9 @@ namespace pineda::raster {
 // magnification and minification (level 0 whatever the level of detail), and REPEAT, CLAMP,
 // CLAMP_TO_EDGE or MIRRORED_REPEAT on s and t qualify.
 QuadSampler select_nearest8_sampler(const TextureImage& image, const Sampler& sampler);
+
+// Its 16-lane form (shader_block_lanes.cpp) for an image and sampler it takes, or null
+// (MIRRORED_REPEAT). The LevelChoice argument is not read: the level is 0.
+BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

@@ -7,6 +7,7 @@
 
 #include "raster/block_write.h"
 #include "raster/sampler_bilinear_block.h"
+#include "raster/sampler_nearest8.h"
 #include "raster/varying_lanes.h"
 
 // The copies pass vectors wider than the baseline's registers but only within one function.
@@ -18,6 +19,7 @@ constexpr int kGatherBytes = 0;
 #include "raster/block_lanes_types.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
+#include "raster/sampler_nearest_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 }  // namespace pineda::raster::block_lanes_sse2
 
@@ -29,6 +31,7 @@ constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 #include "raster/block_lanes_types.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
+#include "raster/sampler_nearest_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 }  // namespace pineda::raster::block_lanes_avx2
 #pragma GCC pop_options
@@ -41,6 +44,7 @@ constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;
 #include "raster/block_lanes_types.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
+#include "raster/sampler_nearest_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 }  // namespace pineda::raster::block_lanes_avx512
 #pragma GCC pop_options
@@ -66,6 +70,23 @@ BlockSampler block_sampler_for_wrap_t(TexWrap t, SimdPath path) {
 BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path) {
   return sampler.wrap_s == TexWrap::Repeat ? block_sampler_for_wrap_t<TexWrap::Repeat>(sampler.wrap_t, path)
                                            : block_sampler_for_wrap_t<TexWrap::ClampToEdge>(sampler.wrap_t, path);
+}
+
+BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path) {
+  const auto for_path = [path]<TexWrap kWrapS, TexWrap kWrapT>() -> BlockSampler {
+    if (uses_avx512(path)) return &block_lanes_avx512::sample_nearest_block<kWrapS, kWrapT>;
+    if (uses_avx2(path)) return &block_lanes_avx2::sample_nearest_block<kWrapS, kWrapT>;
+    return &block_lanes_sse2::sample_nearest_block<kWrapS, kWrapT>;
+  };
+  // CLAMP picks the texels CLAMP_TO_EDGE does (nearest_index); MIRRORED_REPEAT keeps the quad sampler.
+  const auto edge = [](TexWrap w) { return w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
+  const TexWrap s = edge(sampler.wrap_s), t = edge(sampler.wrap_t);
+  constexpr TexWrap kRepeat = TexWrap::Repeat, kEdge = TexWrap::ClampToEdge;
+  if (s == kRepeat && t == kRepeat) return for_path.template operator()<kRepeat, kRepeat>();
+  if (s == kRepeat && t == kEdge) return for_path.template operator()<kRepeat, kEdge>();
+  if (s == kEdge && t == kRepeat) return for_path.template operator()<kEdge, kRepeat>();
+  if (s == kEdge && t == kEdge) return for_path.template operator()<kEdge, kEdge>();
+  return nullptr;
 }
 
 VaryingInterpolator select_varying_interpolator(SimdPath path) {

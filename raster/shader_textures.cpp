@@ -51,12 +51,13 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
 
 // The fast sampler's lookups of a whole block at once when its live quads read the same level
 // or levels (the same per-quad choice, bias included, as the quad sampler's); false otherwise.
-// Only for an image and sampler that select_bilinear8_sampler takes.
+// Only for an image and sampler that select_bilinear8_sampler or select_nearest8_sampler takes.
 bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, const Sampler& sampler, const float* s,
                                const float* t, shader::LodMode mode, const float* lod, shader::LaneMask live,
                                float* const out[4]) {
   LevelChoice choice;
-  const bool level_zero = sampler.min_filter == TexFilter::Linear;  // for every quad: no mipmaps
+  // For every quad: no mipmaps (the nearest sampler's magnification and minification are alike).
+  const bool level_zero = sampler.min_filter == TexFilter::Linear || sampler.min_filter == TexFilter::Nearest;
   bool any = level_zero && live != 0;
   for (int first = 0; first < kLanes && !level_zero; first += 4) {
     if (!((live >> first) & 0xf)) continue;
@@ -107,7 +108,10 @@ const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit
     const Sampler& sampler = units_[static_cast<size_t>(unit)].sampler;
     f.quad = select_bilinear8_sampler(image, sampler);
     f.block = f.quad ? select_bilinear8_block_sampler(sampler, path) : nullptr;
-    if (!f.quad) f.quad = select_nearest8_sampler(image, sampler);
+    if (!f.quad) {
+      f.quad = select_nearest8_sampler(image, sampler);
+      f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
+    }
     chosen_ |= 1u << unit;
   }
   return f;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "raster/quad_vector.h"
 #include "raster/sampler.h"
 #include "raster/sampler_nearest8.h"
 
@@ -84,6 +85,47 @@ TEST(Nearest8Sampler, GivesTheGeneralSamplersTexels) {
         }
       }
   EXPECT_EQ(compared, 5 * 16 * 200 * 16);
+}
+
+// The 16-lane form on every instruction-set path: the quad sampler's texels.
+TEST(Nearest8Sampler, BlocksGiveTheQuadSamplersTexelsOnEveryPath) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> near(-2.5f, 3.5f);
+  const float special[] = {0.f, 1.f, -1.f, 1e7f, -1e7f, std::numeric_limits<float>::infinity(),
+                           std::numeric_limits<float>::quiet_NaN(), 1.f / 3.f};
+  const TexWrap wraps[] = {TexWrap::Repeat, TexWrap::Clamp, TexWrap::ClampToEdge};
+  int blocks = 0;
+  for (const auto& [w, h] : {std::pair{1, 1}, {5, 3}, {64, 64}, {300, 7}})
+    for (TexWrap ws : wraps)
+      for (TexWrap wt : wraps) {
+        const TextureImage image = random_level(w, h, rng);
+        const Sampler sampler = nearest(ws, wt);
+        const QuadSampler quad = select_nearest8_sampler(image, sampler);
+        for (int n = 0; n < 50; ++n) {
+          alignas(64) float s[16], t[16];
+          for (int i = 0; i < 16; ++i) {
+            s[i] = n % 4 == 0 ? special[rng() % std::size(special)] : near(rng);
+            t[i] = n % 3 == 0 ? special[rng() % std::size(special)] : near(rng);
+          }
+          for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
+            const BlockSampler block = select_nearest8_block_sampler(sampler, path);
+            ASSERT_NE(block, nullptr);
+            alignas(64) float out[4][16];
+            float* const channels[4] = {out[0], out[1], out[2], out[3]};
+            block(image, LevelChoice{}, s, t, channels);
+            for (int q = 0; q < 4; ++q) {
+              F4 expected[4];
+              quad(image, sampler, load4(&s[4 * q]), load4(&t[4 * q]), expected);
+              for (int c = 0; c < 4; ++c)
+                for (int i = 0; i < 4; ++i)
+                  ASSERT_EQ(out[c][4 * q + i], expected[c][i]) << "path " << int(path) << " lane " << 4 * q + i;
+            }
+            ++blocks;
+          }
+        }
+      }
+  EXPECT_EQ(blocks, 4 * 9 * 50 * 3);
+  EXPECT_EQ(select_nearest8_block_sampler(nearest(TexWrap::MirroredRepeat, TexWrap::Repeat)), nullptr);
 }
 
 }  // namespace
