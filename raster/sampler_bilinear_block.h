@@ -12,9 +12,18 @@ namespace pineda::raster {
 
 constexpr int kBlockLanes = 16;
 
-// out[c][lane]: channel c (RGBA, as stored) of each lane, in [0, 1], read at `choice`. Each
+// The level, or pair of levels, every quad of a block reads, and each quad's weight of the
+// second level of a pair (its LevelChoice::blend: neighbouring quads mostly share the levels,
+// not the weight).
+struct BlockLevels {
+  int first = 0;
+  bool two = false;
+  float blend[4] = {0.f, 0.f, 0.f, 0.f};  // quad q: lanes 4q to 4q + 3
+};
+
+// out[c][lane]: channel c (RGBA, as stored) of each lane, in [0, 1], read at `levels`. Each
 // vector of lanes is read from s and t before it is written, so out may be s or t.
-using BlockSampler = void (*)(const TextureImage& image, const LevelChoice& choice, const float* s, const float* t,
+using BlockSampler = void (*)(const TextureImage& image, const BlockLevels& levels, const float* s, const float* t,
                               float* const out[4]);
 
 // The block sampler for an image and sampler that select_bilinear8_sampler takes.

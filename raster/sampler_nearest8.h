@@ -16,7 +16,7 @@ namespace pineda::raster {
 QuadSampler select_nearest8_sampler(const TextureImage& image, const Sampler& sampler);
 
 // Its 16-lane form (shader_block_lanes.cpp) for an image and sampler it takes, or null
-// (MIRRORED_REPEAT). The LevelChoice argument is not read: the level is 0.
+// (MIRRORED_REPEAT). The BlockLevels argument is not read: the level is 0.
 BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

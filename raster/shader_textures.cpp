@@ -50,12 +50,13 @@ void apply_base_format(TexBaseFormat format, float t[4]) {
 }
 
 // The fast sampler's lookups of a whole block at once when its live quads read the same level
-// or levels (the same per-quad choice, bias included, as the quad sampler's); false otherwise.
-// Only for an image and sampler that select_bilinear8_sampler or select_nearest8_sampler takes.
+// or pair of levels, each with its own weight between the pair (the same per-quad choice, bias
+// included, as the quad sampler's); false otherwise. Only for an image and sampler that
+// select_bilinear8_sampler or select_nearest8_sampler takes.
 bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, const Sampler& sampler, const float* s,
                                const float* t, shader::LodMode mode, const float* lod, shader::LaneMask live,
                                float* const out[4]) {
-  LevelChoice choice;
+  BlockLevels levels;
   // For every quad: no mipmaps (the nearest sampler's magnification and minification are alike).
   const bool level_zero = sampler.min_filter == TexFilter::Linear || sampler.min_filter == TexFilter::Nearest;
   bool any = level_zero && live != 0;
@@ -69,12 +70,14 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
       quad = &biased;
     }
     const LevelChoice c = bilinear8_quad_levels(image, *quad, load4(&s[first]), load4(&t[first]));
-    if (any && (c.first != choice.first || c.two != choice.two || c.blend != choice.blend)) return false;
-    choice = c;
+    if (any && (c.first != levels.first || c.two != levels.two)) return false;
+    levels.first = c.first;
+    levels.two = c.two;
+    levels.blend[first / 4] = c.blend;
     any = true;
   }
   if (!any) return false;
-  block(image, choice, s, t, out);
+  block(image, levels, s, t, out);
   for (int first = 0; first < kLanes; first += 4) {
     if (image.base_format == TexBaseFormat::RGBA && ((live >> first) & 0xf)) continue;  // as sampled
     F4 lanes[4];

@@ -29,7 +29,7 @@ void expect_quad_samplers_texels(const TextureImage& image, const Sampler& sampl
   const TextureLevel& level = image.levels[0];
   alignas(64) float block[4][kBlockLanes];
   float* const channels[4] = {block[0], block[1], block[2], block[3]};
-  select_bilinear8_block_sampler(sampler, path)(image, LevelChoice{}, s, t, channels);
+  select_bilinear8_block_sampler(sampler, path)(image, BlockLevels{}, s, t, channels);
   for (int q = 0; q < 4; ++q) {
     F4 quad[4];
     select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);

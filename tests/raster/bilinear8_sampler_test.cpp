@@ -82,6 +82,24 @@ TEST(Bilinear8Sampler, MipmapBlendUsesLambdaInOne256th) {
 
 }  // namespace
 
+// Bit q set when quad q of the block sampler's lanes holds what the quad sampler gives it.
+unsigned quads_matching(const TextureImage& image, const Sampler& sampler, SimdPath path, const BlockLevels& levels,
+                        const float* s, const float* t) {
+  alignas(64) float block[4][kBlockLanes];
+  float* const channels[4] = {block[0], block[1], block[2], block[3]};
+  select_bilinear8_block_sampler(sampler, path)(image, levels, s, t, channels);
+  unsigned matching = 0;
+  for (int q = 0; q < 4; ++q) {
+    F4 quad[4];
+    select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
+    bool same = true;
+    for (int i = 0; i < 4; ++i)
+      for (int c = 0; c < 4; ++c) same &= block[c][4 * q + i] == quad[c][i];
+    matching |= same ? 1u << q : 0u;
+  }
+  return matching;
+}
+
 TEST(Bilinear8BlockSampler, SixteenLanesGiveTheQuadSamplersTexelsOnEveryPath) {
   // A 16x8 image with three more levels; coordinates from a few texels to many per pixel, and
   // ones the sampler must make sane (NaN, huge).
@@ -115,16 +133,13 @@ TEST(Bilinear8BlockSampler, SixteenLanesGiveTheQuadSamplersTexelsOnEveryPath) {
             }
             if (trial == 0) s[5] = std::numeric_limits<float>::quiet_NaN(), t[9] = 1e30f;
             const LevelChoice choice = bilinear8_quad_levels(image, sampler, load4(s), load4(t));
-            alignas(64) float block[4][kBlockLanes];
-            float* const channels[4] = {block[0], block[1], block[2], block[3]};
-            select_bilinear8_block_sampler(sampler, path)(image, choice, s, t, channels);
+            BlockLevels levels{choice.first, choice.two, {}};
+            for (int q = 0; q < 4; ++q) levels.blend[q] = bilinear8_quad_levels(image, sampler, load4(s + 4 * q), load4(t + 4 * q)).blend;
+            const unsigned matching = quads_matching(image, sampler, path, levels, s, t);
             for (int q = 0; q < 4; ++q) {
-              F4 quad[4];
-              select_bilinear8_sampler(image, sampler, path)(image, sampler, load4(s + 4 * q), load4(t + 4 * q), quad);
               const LevelChoice own = bilinear8_quad_levels(image, sampler, load4(s + 4 * q), load4(t + 4 * q));
-              if (own.first != choice.first || own.two != choice.two || own.blend != choice.blend) continue;
-              for (int i = 0; i < 4; ++i)
-                for (int c = 0; c < 4; ++c) ASSERT_EQ(block[c][4 * q + i], quad[c][i]) << q << " " << i << " " << c;
+              if (own.first != choice.first || own.two != choice.two) continue;  // each quad's own weight
+              ASSERT_TRUE((matching >> q) & 1u) << "quad " << q;
               ++quads_compared;
             }
             ++blocks;
@@ -132,6 +147,44 @@ TEST(Bilinear8BlockSampler, SixteenLanesGiveTheQuadSamplersTexelsOnEveryPath) {
   EXPECT_EQ(blocks, 2 * 2 * 3 * 3 * 200);
   // Only a quad with a NaN or huge coordinate (trial 0) may read other levels than quad 0.
   EXPECT_GE(quads_compared, 4 * blocks - 2 * 2 * 3 * 3 * 2);
+}
+
+// Quads between the same two levels at different levels of detail: each keeps its own weight
+// between them, as the quad sampler gives it.
+TEST(Bilinear8BlockSampler, QuadsBetweenTheSameLevelsKeepTheirOwnWeights) {
+  TextureImage image;
+  std::mt19937 random(5);
+  for (int w = 16; w >= 1; w /= 2) {
+    std::vector<uint32_t> texels(static_cast<size_t>(w * w));
+    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+    image.levels.push_back({w, w, std::move(texels)});
+  }
+  std::uniform_real_distribution<float> corner(-1.f, 2.f), texels_per_pixel(2.1f, 3.9f);  // lambda in (1, 2)
+  int blocks = 0, weights_differ = 0;
+  for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+    for (int trial = 0; trial < 100; ++trial) {
+      const Sampler sampler = linear(trial % 2 ? TexWrap::Repeat : TexWrap::ClampToEdge, TexFilter::LinearMipmapLinear);
+      alignas(64) float s[kBlockLanes], t[kBlockLanes];
+      BlockLevels levels;
+      for (int q = 0; q < 4; ++q) {
+        const float s0 = corner(random), t0 = corner(random), ds = texels_per_pixel(random) / 16.f;
+        for (int i = 0; i < 4; ++i) {
+          s[4 * q + i] = s0 + ((i & 1) ? ds : 0.f);
+          t[4 * q + i] = t0 + ((i & 2) ? ds / 4.f : 0.f);
+        }
+        const LevelChoice own = bilinear8_quad_levels(image, sampler, load4(s + 4 * q), load4(t + 4 * q));
+        ASSERT_TRUE(own.two);
+        ASSERT_EQ(own.first, 1);
+        levels.first = own.first;
+        levels.two = own.two;
+        levels.blend[q] = own.blend;
+      }
+      weights_differ += levels.blend[0] != levels.blend[1];
+      ASSERT_EQ(quads_matching(image, sampler, path, levels, s, t), 0xFu) << "path " << int(path);
+      ++blocks;
+    }
+  EXPECT_EQ(blocks, 3 * 100);
+  EXPECT_GT(weights_differ, 250);
 }
 
 }  // namespace pineda::raster

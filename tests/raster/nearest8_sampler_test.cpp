@@ -112,7 +112,7 @@ TEST(Nearest8Sampler, BlocksGiveTheQuadSamplersTexelsOnEveryPath) {
             ASSERT_NE(block, nullptr);
             alignas(64) float out[4][16];
             float* const channels[4] = {out[0], out[1], out[2], out[3]};
-            block(image, LevelChoice{}, s, t, channels);
+            block(image, BlockLevels{}, s, t, channels);
             for (int q = 0; q < 4; ++q) {
               F4 expected[4];
               quad(image, sampler, load4(&s[4 * q]), load4(&t[4 * q]), expected);
