@@ -366,10 +366,13 @@ double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool en
 }
 
 void GeometryStage::window_positions(size_t begin, size_t end, PreparedWindow* out) const {
+  constexpr size_t kPrefetchAhead = 16;
   ClipVert clip;  // position and clip distances only
   for (size_t i = begin; i < end; ++i) {
     PreparedWindow& w = out[i - begin];
     const ClipVertex& v = vertex_base_[i];
+    // The vertex shader's pass over the whole draw left the first vertices out of the cache.
+    if (i + kPrefetchAhead < end) __builtin_prefetch(&vertex_base_[i + kPrefetchAhead]);
     w.usable = false;
     if (!finite_position(v)) continue;
     clip_position(v, clip);
