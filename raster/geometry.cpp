@@ -14,9 +14,6 @@
 namespace pineda::raster {
 namespace {
 
-bool finite_position(const ClipVertex& v) {
-  return std::isfinite(v.clip[0]) && std::isfinite(v.clip[1]) && std::isfinite(v.clip[2]) && std::isfinite(v.clip[3]);
-}
 
 int rounded_size(float size, int max) {
   if (!(size >= 1.5f)) return 1;
@@ -31,21 +28,7 @@ double smooth_size(float size, int max) {
 
 int clamp_to_int(int64_t v) { return static_cast<int>(std::clamp<int64_t>(v, INT32_MIN, INT32_MAX)); }
 
-int64_t snap(double window) {
-  // Beyond the guard band only by clipping's rounding; the clamp keeps llround defined.
-  if (std::isnan(window)) return 0;
-  const double v = std::clamp(window, -4.0 * kGuardBand, 4.0 * kGuardBand) * kSubpixelOne;
-  // std::llround (halves away from zero) without its library call: |v| < 2^26, so the
-  // truncation and the remainder are exact.
-  const int64_t r = static_cast<int64_t>(v);
-  const double rest = v - static_cast<double>(r);
-  // Without branches: which way a position rounds is as random as the positions are.
-  return r + static_cast<int64_t>(rest >= 0.5) - static_cast<int64_t>(rest <= -0.5);
-}
 
-// Clipping keeps w >= 1e-30, but cancellation in an intersection can still produce w = 0;
-// such a vertex has no window position and drops its primitive.
-bool has_window_position(const WinPosition& v) { return std::isfinite(v.inv_w) && std::isfinite(v.fx) && std::isfinite(v.fy); }
 
 // glPolygonOffset's r, the smallest resolvable difference, in depth-buffer steps. One step is not
 // always resolvable: positions are floats, and near the near plane (eye distance just above 1) a
@@ -58,7 +41,6 @@ constexpr double kResolvableDepthSteps = 2.0;
 GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool reference)
     : scene_(scene), on_full_(std::move(on_full)), reference_(reference) {
   const DrawState& s = scene_.current_draw().state;
-  depth_max_ = scene_.current_draw().depth_max;
   const Viewport& vp = s.viewport;
   if (vp.width <= 0 || vp.height <= 0) return;
   PixelRect rect{vp.x, vp.y, clamp_to_int(int64_t{vp.x} + vp.width), clamp_to_int(int64_t{vp.y} + vp.height)};
@@ -70,18 +52,8 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   if (clip_rect_.empty()) return;
   active_ = true;
 
-  vp_half_w_ = vp.width * 0.5;
-  vp_half_h_ = vp.height * 0.5;
-  vp_x_ = vp.x;
-  vp_y_ = vp.y;
-  depth_near_ = std::clamp(vp.near_z, 0.0, 1.0);
-  depth_far_ = std::clamp(vp.far_z, 0.0, 1.0);
-  // The guard band in window pixels, as NDC multiples of w.
-  volume_.x_min = (-kGuardBand - vp_x_) / vp_half_w_ - 1.0;
-  volume_.x_max = (kGuardBand - vp_x_) / vp_half_w_ - 1.0;
-  volume_.y_min = (-kGuardBand - vp_y_) / vp_half_h_ - 1.0;
-  volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
-  volume_.user_planes = s.clip_planes & ((1u << kMaxClipPlanes) - 1);
+  transform_ = WindowTransform(vp, s.clip_planes, scene_.current_draw().depth_max);
+  volume_ = transform_.volume();
   line_width_ = s.line_width;
   point_size_ = derived_point_size(s.point_params, s.point_size, 0.f);
   line_smooth_ = s.line_smooth;
@@ -105,11 +77,6 @@ GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool r
   }
 }
 
-void GeometryStage::clip_position(const ClipVertex& v, ClipVert& c) {
-  for (int i = 0; i < 4; ++i) c.pos[i] = v.clip[i];
-  for (int i = 0; i < kMaxClipPlanes; ++i) c.user[i] = v.clip_distance[i];
-}
-
 void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
   clip_position(v, c);
   if (shader_) {
@@ -128,17 +95,6 @@ void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
     c.attr[kClipSecondaryAttrs + 3 + i] = v.back_secondary[i];
   }
   c.attr[kClipFogAttr] = v.fog;
-}
-
-void GeometryStage::window_position(const ClipVert& v, WinPosition& w) const {
-  w.inv_w = 1.0 / v.pos[3];
-  w.fx = std::clamp<double>((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
-  w.fy = std::clamp<double>((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
-  w.x = snap(w.fx);
-  w.y = snap(w.fy);
-  double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
-  z = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
-  w.z = z * depth_max_;
 }
 
 namespace {
@@ -184,7 +140,7 @@ struct FrontAttributes {
 }  // namespace
 
 void GeometryStage::to_window(const ClipVert& v, bool back_color, WinVert& w) const {
-  window_position(v, w);
+  transform_.position(v, w);
   if (shader_) {
     w.varyings = v.attr;
     return;
@@ -367,19 +323,10 @@ double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool en
 
 void GeometryStage::window_positions(size_t begin, size_t end, PreparedWindow* out) const {
   constexpr size_t kPrefetchAhead = 16;
-  ClipVert clip;  // position and clip distances only
   for (size_t i = begin; i < end; ++i) {
-    PreparedWindow& w = out[i - begin];
-    const ClipVertex& v = vertex_base_[i];
     // The vertex shader's pass over the whole draw left the first vertices out of the cache.
     if (i + kPrefetchAhead < end) __builtin_prefetch(&vertex_base_[i + kPrefetchAhead]);
-    w.usable = false;
-    if (!finite_position(v)) continue;
-    clip_position(v, clip);
-    if (clip_outcode(clip, volume_) != 0) continue;
-    window_position(clip, w.position);
-    w.position.varyings = varyings_ + i * static_cast<size_t>(varying_count_);
-    w.usable = has_window_position(w.position);
+    transform_.prepare(vertex_base_[i], varyings_ + i * static_cast<size_t>(varying_count_), out[i - begin]);
   }
 }
 
@@ -396,7 +343,7 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
       // are (a programmable vertex's varyings stay in the draw's array).
       clip_position(v, cache_clip_);
       if (clip_outcode(cache_clip_, volume_) == 0) {
-        window_position(cache_clip_, slot.window);
+        transform_.position(cache_clip_, slot.window);
         if (shader_) {
           slot.window.varyings = varyings_ + index * static_cast<size_t>(varying_count_);
         } else {

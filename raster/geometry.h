@@ -9,6 +9,7 @@
 #include "raster/primitive.h"
 #include "raster/scene.h"
 #include "raster/setup.h"
+#include "raster/window_transform.h"
 
 namespace pineda::raster {
 
@@ -43,12 +44,6 @@ class GeometryStage final : public PrimitiveSink {
     varyings_ = varyings;
   }
 
-  // A programmable draw's vertex to the window ahead of assembly: usable when it lies inside
-  // the clip volume (the window position the cache below would give it).
-  struct PreparedWindow {
-    WinPosition position;
-    bool usable = false;
-  };
   // Vertices [begin, end) of the draw (after set_varyings) into out[0, end - begin); may run
   // on several threads at once.
   void window_positions(size_t begin, size_t end, PreparedWindow* out) const;
@@ -65,14 +60,11 @@ class GeometryStage final : public PrimitiveSink {
 
   // Into `c` (a ClipVert is large: polygons fill theirs in place).
   void to_clip(const ClipVertex& v, ClipVert& c) const;
-  // The clip position and user clip distances alone.
-  static void clip_position(const ClipVertex& v, ClipVert& c);
   ClipVert to_clip(const ClipVertex& v) const {
     ClipVert c;
     to_clip(v, c);
     return c;
   }
-  void window_position(const ClipVert& v, WinPosition& w) const;
   void to_window(const ClipVert& v, bool back_color, WinVert& w) const;  // into w: as to_clip
   WinVert to_window(const ClipVert& v, bool back_color) const {
     WinVert w;
@@ -101,8 +93,7 @@ class GeometryStage final : public PrimitiveSink {
   bool active_ = false;
   ClipVolume volume_;
   PixelRect clip_rect_;
-  double vp_x_ = 0, vp_y_ = 0, vp_half_w_ = 0, vp_half_h_ = 0, depth_near_ = 0, depth_far_ = 1;
-  double depth_max_ = 0;  // the draw's DrawRecord::depth_max
+  WindowTransform transform_;
   float line_width_ = 1.f, point_size_ = 1.f;  // as set (derived for points), before rounding
   bool line_smooth_ = false, point_smooth_ = false;
   bool sample_points_ = false;    // multisampled points (draw_sample_point)

@@ -35,7 +35,7 @@ struct Renderer::Impl {
   Scene scene;    // binning
   Scene running;  // executed by the pool's threads while `scene` bins the next commands
   bool running_started = false;
-  std::vector<GeometryStage::PreparedWindow> windows;  // room for a programmable draw's vertices; only grows
+  std::vector<PreparedWindow> windows;  // room for a programmable draw's vertices; only grows
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
@@ -81,7 +81,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     // A large draw's window positions, ahead of assembly and on every thread.
     if (geometry.active() && vertices.size() >= kVerticesPerPiece) {
       impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
-      GeometryStage::PreparedWindow* windows = impl_->windows.data();
+      PreparedWindow* windows = impl_->windows.data();
       for_each_piece(vertices.size(), kVerticesPerPiece,
                      [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin); });
       geometry.use_window_positions(windows);
