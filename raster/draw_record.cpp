@@ -7,6 +7,7 @@
 #include "raster/fill_rows.h"
 #include "raster/fragment_pipeline.h"
 #include "raster/sample_quads.h"
+#include "raster/sampler_nearest8.h"
 #include "raster/shader_quads.h"
 
 namespace pineda::raster {
@@ -43,11 +44,14 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
     }
     d.units[d.num_units++] = static_cast<uint8_t>(u);
   }
+  bool bilinear_first = false;  // unit 0 samples with select_bilinear8_sampler
   d.planes = kColorPlanes;
   for (int k = 0; k < d.num_units; ++k) {
     d.tex_plane[k] = static_cast<uint8_t>(d.planes);
     const TextureUnit& unit = d.state.texture_units[d.units[k]];
     d.fast_sampler[k] = select_bilinear8_sampler(*unit.image, unit.sampler, path);
+    if (k == 0) bilinear_first = d.fast_sampler[0] != nullptr;
+    if (!d.fast_sampler[k]) d.fast_sampler[k] = select_nearest8_sampler(*unit.image, unit.sampler);
     d.planes += kTexPlanesPerUnit;
     if (!d.state.texture_units[d.units[k]].reads_r()) continue;
     d.r_plane[k] = static_cast<int8_t>(d.planes);
@@ -56,7 +60,8 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   if (d.num_units == 1) {
     const TextureUnit& unit = d.state.texture_units[d.units[0]];
     const TexBaseFormat format = unit.image->base_format;
-    d.modulate_in_lanes = d.fast_sampler[0] && unit.env_mode == TexEnvMode::Modulate &&
+    // (The fill routines' row samplers filter bilinearly.)
+    d.modulate_in_lanes = bilinear_first && unit.env_mode == TexEnvMode::Modulate &&
                           (format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB);
     d.sample_rows = d.modulate_in_lanes && unit.sampler.min_filter == TexFilter::Linear;
   }
