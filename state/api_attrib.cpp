@@ -343,18 +343,10 @@ void PushClientAttrib(Context& ctx, GLbitfield mask) {
   f.mask = mask;
   f.pack = ctx.pack;
   f.unpack = ctx.unpack;
-  f.vertex_array = ctx.vertex_array;
-  f.color_array = ctx.color_array;
-  f.normal_array = ctx.normal_array;
-  for (int u = 0; u < raster::kMaxTextureUnits; ++u) f.texcoord_arrays[u] = ctx.texture_units[u].texcoord_array;
-  f.index_array = ctx.index_array;
+  f.vertex_array_binding = ctx.vertex_array_objects.bound;
+  f.arrays = save_vertex_array_group(ctx);
   f.array_buffer = ctx.buffers.array;
-  f.element_array_buffer = ctx.buffers.element_array;
-  f.edge_flag_array = ctx.edge_flag_array;
-  f.fog_coord_array = ctx.fog_coord_array;
-  f.secondary_color_array = ctx.secondary_color_array;
   f.client_active_texture = ctx.client_active_texture;
-  f.generic_arrays = ctx.programs.arrays;
   ctx.client_attrib_stack.push_back(f);
 }
 
@@ -368,18 +360,14 @@ void PopClientAttrib(Context& ctx) {
     ctx.unpack = f.unpack;
   }
   if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
-    ctx.vertex_array = f.vertex_array;
-    ctx.color_array = f.color_array;
-    ctx.normal_array = f.normal_array;
-    for (int u = 0; u < raster::kMaxTextureUnits; ++u) ctx.texture_units[u].texcoord_array = f.texcoord_arrays[u];
-    ctx.index_array = f.index_array;
+    // The vertex array object bound at the push is bound again and given the saved arrays; one
+    // deleted since is not brought back, and nothing of the group is restored (as Mesa does).
+    const GLuint vao = f.vertex_array_binding;
+    if (vao != 0 && !ctx.vertex_array_objects.names.generated(vao)) return;
+    bind_vertex_array_object(ctx, vao);
+    load_vertex_array_group(ctx, f.arrays);
     ctx.buffers.array = f.array_buffer;
-    ctx.buffers.element_array = f.element_array_buffer;
-    ctx.edge_flag_array = f.edge_flag_array;
-    ctx.fog_coord_array = f.fog_coord_array;
-    ctx.secondary_color_array = f.secondary_color_array;
     ctx.client_active_texture = f.client_active_texture;
-    ctx.programs.arrays = f.generic_arrays;
   }
 }
 

@@ -109,6 +109,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_ACTIVE_TEXTURE: out = enums({double(GL_TEXTURE0 + ctx.active_texture)}); return true;
     case GL_CLIENT_ACTIVE_TEXTURE: out = enums({double(GL_TEXTURE0 + ctx.client_active_texture)}); return true;
     case GL_MAX_CLIP_PLANES: out = ints({6}); return true;
+    case GL_VERTEX_ARRAY_BINDING:  // GL_ARB_vertex_array_object (GL_VERTEX_ARRAY_BINDING_OES in ES 2.0)
+      if (ctx.es1()) return false;
+      out = ints({double(ctx.vertex_array_objects.bound)});
+      return true;
     case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({double(kMaxAttribStackDepth)}); return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(kMaxClientAttribStackDepth)}); return true;
     case GL_ATTRIB_STACK_DEPTH: out = ints({double(ctx.attrib_stack.size())}); return true;
@@ -322,7 +326,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_framebuffer_object GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample "
       "GL_EXT_packed_depth_stencil "
       "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 "
-      "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object "
+      "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object GL_ARB_vertex_array_object "
       "GL_EXT_texture_sRGB GL_ARB_robustness GL_KHR_robustness GL_ARB_ES2_compatibility ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());

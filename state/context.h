@@ -40,6 +40,7 @@
 #include "state/tex_env_state.h"
 #include "state/texture_object.h"
 #include "state/vertex_extras_state.h"
+#include "state/vertex_arrays/vertex_array_object.h"
 
 namespace pineda {
 
@@ -61,24 +62,6 @@ struct MatrixStack {
   const glm::dmat4& top() const { return stack.back(); }
 };
 
-struct ClientArray {
-  bool enabled = false;
-  GLint size = 4;
-  GLenum type = GL_FLOAT;
-  GLsizei stride = 0;
-  const void* pointer = nullptr;  // an offset into `buffer` when one was bound
-  std::shared_ptr<BufferObject> buffer;  // GL_ARRAY_BUFFER when the pointer was set
-  bool active() const { return enabled && (pointer || buffer); }
-};
-
-// A disabled array's initial state with `size` components of `type` (GL's tables 6.6-6.8).
-inline ClientArray initial_array(GLint size, GLenum type = GL_FLOAT) {
-  ClientArray a;
-  a.size = size;
-  a.type = type;
-  return a;
-}
-
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
   GLint image_height = 0, skip_images = 0;  // 3D images only
@@ -92,14 +75,12 @@ struct PixelStore {
 struct ClientAttribFrame {
   GLbitfield mask = 0;
   PixelStore pack, unpack;
-  ClientArray vertex_array, color_array, normal_array;
-  std::array<ClientArray, raster::kMaxTextureUnits> texcoord_arrays;
-  ClientArray edge_flag_array = initial_array(1, GL_UNSIGNED_BYTE);
-  ClientArray fog_coord_array = initial_array(1), secondary_color_array = initial_array(3);
-  ClientArray index_array = initial_array(1);
-  std::shared_ptr<BufferObject> array_buffer, element_array_buffer;
+  // The vertex-array group: the bound vertex array object (as Mesa saves it), its arrays, and
+  // the two bindings a vertex array object does not hold.
+  GLuint vertex_array_binding = 0;
+  VertexArrayGroup arrays;
+  std::shared_ptr<BufferObject> array_buffer;
   GLuint client_active_texture = 0;
-  std::array<GenericArray, kMaxVertexAttribs> generic_arrays;  // GL 2.0 table 6.7: vertex-array group
 };
 
 struct TextureUnitState {
@@ -290,6 +271,9 @@ class Context {
   ProgramState programs{share_group_->programs};  // GL 2.0 shader and program objects, generic attributes (state/programs/)
 
   FramebufferState framebuffers;  // framebuffer and renderbuffer objects (state/framebuffers/)
+  // Vertex array objects (GL_ARB_vertex_array_object, state/vertex_arrays/): the arrays above
+  // are the bound object's; the others keep theirs there.
+  VertexArrayObjects vertex_array_objects;
 
   // Display lists
   DisplayLists& lists;  // the share group's

@@ -35,6 +35,8 @@ class ObjectNames {
     reserved_.erase(name);
   }
   bool exists(GLuint name) const { return objects_.count(name) != 0; }
+  // Generated and not deleted since (created or not yet).
+  bool generated(GLuint name) const { return name != 0 && (objects_.count(name) || reserved_.count(name)); }
 
  private:
   bool used(GLuint name) const { return name == 0 || objects_.count(name) || reserved_.count(name); }

@@ -21,6 +21,7 @@ Lookup find_object(Context& ctx, GLenum identifier, GLuint name) {
     case GL_SHADER: exists = ctx.programs.objects.shader(name) != nullptr; break;
     case GL_PROGRAM: exists = ctx.programs.objects.program(name) != nullptr; break;
     // A generated name that was never bound counts as an object here.
+    case GL_VERTEX_ARRAY: exists = ctx.vertex_array_objects.names.generated(name); break;
     case GL_RENDERBUFFER: exists = name && ctx.framebuffers.renderbuffers.count(name); break;
     case GL_FRAMEBUFFER:
       exists = name && (ctx.framebuffers.framebuffers.count(name) || ctx.framebuffers.generated_framebuffers.count(name));

@@ -58,7 +58,7 @@ TEST_F(Es2Egl, ClientVersion2IsES20) {
             "GL_EXT_blend_minmax GL_EXT_discard_framebuffer GL_EXT_draw_buffers GL_EXT_robustness "
             "GL_EXT_texture_format_BGRA8888 GL_KHR_debug GL_KHR_robustness GL_OES_depth24 GL_OES_depth_texture "
             "GL_OES_element_index_uint GL_OES_fbo_render_mipmap GL_OES_mapbuffer GL_OES_packed_depth_stencil "
-            "GL_OES_rgb8_rgba8 GL_OES_standard_derivatives GL_OES_texture_npot ");
+            "GL_OES_rgb8_rgba8 GL_OES_standard_derivatives GL_OES_texture_npot GL_OES_vertex_array_object ");
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
