@@ -119,7 +119,8 @@ constexpr GLenum kGetNames[] = {
     GL_LIST_MODE,         GL_TEXTURE_BINDING_2D,      GL_PIXEL_MAP_I_TO_R_SIZE, GL_UNPACK_SKIP_IMAGES,
     GL_COMPRESSED_TEXTURE_FORMATS, GL_FOG_COLOR,      GL_LIGHT_MODEL_AMBIENT, GL_POLYGON_MODE,
     GL_ARRAY_BUFFER_BINDING, GL_VERTEX_ARRAY_POINTER, GL_FEEDBACK_BUFFER_SIZE, GL_MAP2_GRID_DOMAIN,
-    GL_ACCUM_CLEAR_VALUE, GL_DEPTH_RANGE,             GL_SCISSOR_BOX,      GL_COLOR_WRITEMASK};
+    GL_ACCUM_CLEAR_VALUE, GL_DEPTH_RANGE,             GL_SCISSOR_BOX,      GL_COLOR_WRITEMASK,
+    GL_VERTEX_ARRAY_BINDING};
 // No element array buffer: see glBindBuffer. Pixel calls take offsets into pixel buffers (image_source).
 constexpr GLenum kBufferTargets[] = {GL_ARRAY_BUFFER, GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER};
 constexpr GLenum kBufferUsages[] = {GL_STATIC_DRAW, GL_DYNAMIC_DRAW, GL_STREAM_READ};
@@ -672,6 +673,11 @@ const GlCall kCalls[] = {
     {"glUnmapBufferARB", unmap_buffer<glUnmapBufferARB>},
     {"glDeleteBuffers", delete_buffers<glDeleteBuffers>},
     {"glDeleteBuffersARB", delete_buffers<glDeleteBuffersARB>},
+    // A vertex array object's arrays start disabled with null pointers (GL reads none of them);
+    // the fuzzer's pointers go into whichever object is bound.
+    {"glGenVertexArrays", gen_names<glGenVertexArrays, 4>},
+    {"glBindVertexArray", [](FuzzInput& in, ClientMemory&) { glBindVertexArray(in.name()); }},
+    {"glDeleteVertexArrays", delete_names<glDeleteVertexArrays>},
     {"glMap1f",
      [](FuzzInput& in, ClientMemory& memory) {
        // stride * order floats are read: at most 40 * 31 of the 16384 floats there.

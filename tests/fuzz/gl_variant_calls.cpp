@@ -86,6 +86,7 @@ const GlCall kCalls[] = {
     PINEDA_TYPED_CALL(glIsQueryARB),
     PINEDA_TYPED_CALL(glIsRenderbufferEXT),
     PINEDA_TYPED_CALL(glIsTexture),
+    PINEDA_TYPED_CALL(glIsVertexArray),
     PINEDA_TYPED_CALL(glLoadMatrixd),
     PINEDA_TYPED_CALL(glLoadName),
     PINEDA_TYPED_CALL(glLoadTransposeMatrixd),
