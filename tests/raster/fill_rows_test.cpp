@@ -26,6 +26,7 @@ struct Config {
   bool depth_write = true;
   bool blend = false;
   bool flat = false;
+  bool one_color = false;  // smooth shading, every vertex of a triangle the same colour
   bool perspective = false;
   bool mask_alpha = false;  // colour mask without alpha
   bool count = false;
@@ -82,6 +83,8 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
       for (int k = 4; k < 6; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 5.0 - 2.0);
       vert.attr[6] = static_cast<float>(0.5 + unit(rng));
     }
+    if (c.one_color)
+      for (int k = 0; k < 4; ++k) v[1].attr[k] = v[2].attr[k] = v[0].attr[k];
     for (int k = 0; k < 4; ++k) params.flat_color[k] = v[2].attr[k];
     params.back_facing = prims.size() % 2 == 1;
     PrimSetup prim;
@@ -182,6 +185,16 @@ TEST(FillRows, ColoursMatchTheGenericRoutine) {
   c.format = ColorFormat::BGRA8;
   c.mask_alpha = true;
   expect_same_as_generic(c, "BGRA, alpha masked");
+  // The colour made once per triangle (with values past 0 and 1 to clamp).
+  c = {};
+  c.one_color = true;
+  expect_same_as_generic(c, "one colour");
+  c.blend = true;
+  c.format = ColorFormat::BGRA8;
+  c.mask_alpha = true;
+  expect_same_as_generic(c, "one colour, blend, BGRA, alpha masked");
+  c.perspective = true;
+  expect_same_as_generic(c, "one colour, perspective");
 }
 
 TEST(FillRows, BlendOverMatchesTheGenericRoutine) {
