@@ -211,49 +211,55 @@ RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mas
   return discarded;
 }
 
+// The lanes of an operand of compiled code in its frame.
+float* frame_lanes(const jit::Frame& frame, jit::FrameOperand o) {
+  static constexpr float kZeros[kLanes] = {};
+  float* const bases[4] = {const_cast<float*>(kZeros), const_cast<float*>(frame.constants), frame.spill,
+                           const_cast<float*>(frame.slots)};
+  return bases[o.base] + o.offset;
+}
+
 }  // namespace
 
-// Only compiled code calls it, which runs only where the CPU has AVX-512: its lane copies are
-// whole-register moves.
+// Only compiled code calls it (and call_texture), which runs only where the CPU has AVX-512:
+// its lane copies are whole-register moves.
 #if !defined(__clang__)
 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
 #endif
-void jit::call_out(const Frame* frame, const ir::Inst* in) {
-  const StageCode& stage = *frame->stage;
-  const int registers = stage.code.registers;
-  static constexpr float kZeros[kLanes] = {};
-  auto lanes = [&](Operand o) -> float* {
-    if (o == ir::kNone) return const_cast<float*>(kZeros);
-    if (ir::is_const(o)) return const_cast<float*>(frame->constants) + ir::const_index(o) * kConstantStride;
-    if (o < registers) return frame->spill + o * kLanes;
-    return const_cast<float*>(frame->slots) + (o - registers) * kLanes;
-  };
-  switch (in->op) {
-    case Op::Texture: {
-      const ir::TextureLookup& t = stage.exec_textures[static_cast<size_t>(in->i0)];
-      const float* coord[4];
-      float* dst[4];
-      for (int c = 0; c < 4; ++c) {
-        coord[c] = lanes(t.coord[c]);
-        dst[c] = lanes(t.dst[c]);
-      }
-      exec_avx512::texture_lanes(frame->textures, t, coord, lanes(t.sampler), t.lod == ir::kNone ? nullptr : lanes(t.lod),
-                    frame->mask, frame->needed, dst);
-      return;
-    }
-    default: {
-      // The running lanes take the result; the others keep their values, as in the interpreter.
-      alignas(64) float T[kLanes];
-      if (in->op == Op::LoadFrontFacing) {
-        const auto* block = static_cast<const FragmentBlock*>(frame->block_or_outputs);
-        for (int l = 0; l < kLanes; ++l) T[l] = (block->front_facing >> l & 1) ? 1.0f : 0.0f;
-      } else {
-        exec_avx512::run_lanes(in->op, frame->kind, T, lanes(in->a), lanes(in->b), lanes(in->c));
-      }
-      if (frame->mask == 0xFFFF) std::memcpy(lanes(in->d), T, sizeof T);
-      else exec_avx512::blend_lanes(lanes(in->d), T, frame->mask, kLanes);
-    }
+void jit::call_out(const Frame* frame, const FrameCall* in) {
+  auto lanes = [&](FrameOperand o) { return frame_lanes(*frame, o); };
+  // The running lanes take the result; the others keep their values, as in the interpreter.
+  alignas(64) float T[kLanes];
+  if (in->op == Op::LoadFrontFacing) {
+    const auto* block = static_cast<const FragmentBlock*>(frame->block_or_outputs);
+    for (int l = 0; l < kLanes; ++l) T[l] = (block->front_facing >> l & 1) ? 1.0f : 0.0f;
+  } else {
+    exec_avx512::run_lanes(in->op, frame->kind, T, lanes(in->a), lanes(in->b), lanes(in->c));
   }
+  if (frame->mask == 0xFFFF) std::memcpy(lanes(in->d), T, sizeof T);
+  else exec_avx512::blend_lanes(lanes(in->d), T, frame->mask, kLanes);
+}
+
+jit::FrameOperand jit::frame_operand(ir::Operand o, int registers) {
+  if (o == ir::kNone) return {0, 0};
+  if (ir::is_const(o)) return {1, static_cast<uint32_t>(ir::const_index(o) * kConstantStride)};
+  if (o < registers) return {2, static_cast<uint32_t>(o * kLanes)};
+  return {3, static_cast<uint32_t>((o - registers) * kLanes)};
+}
+
+#if !defined(__clang__)
+__attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
+#endif
+void jit::call_texture(const Frame* frame, const FrameTextureLookup* t) {
+  auto lanes = [&](FrameOperand o) { return frame_lanes(*frame, o); };
+  const float* coord[4];
+  float* dst[4];
+  for (int c = 0; c < 4; ++c) {
+    coord[c] = lanes(t->coord[c]);
+    dst[c] = lanes(t->dst[c]);
+  }
+  exec_avx512::texture_lanes(frame->textures, t->lookup, coord, lanes(t->sampler),
+                             t->lookup.lod == ir::kNone ? nullptr : lanes(t->lod), frame->mask, frame->needed, dst);
 }
 
 RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {

@@ -60,8 +60,9 @@ bool called_out(Op op) {
 
 class Generator {
  public:
-  Generator(const std::vector<ir::Inst>& insts, const std::vector<ir::TextureLookup>& textures, int registers, int slots)
-      : insts_(insts), textures_(textures), registers_(registers), slots_(slots) {
+  Generator(const std::vector<ir::Inst>& insts, const std::vector<ir::TextureLookup>& textures, int registers, int slots,
+            const FrameCall* calls, const FrameTextureLookup* lookups)
+      : insts_(insts), textures_(textures), calls_(calls), lookups_(lookups), registers_(registers), slots_(slots) {
     const int constants = constant_count();
     values_ = registers + slots + constants;
     reads_.resize(static_cast<size_t>(values_));
@@ -483,8 +484,13 @@ class Generator {
     for (Operand o : sources(*stable, at)) zero_home_if_unwritten(id(o), at);
     x_.vzeroupper();
     x_.mov_load(rdi, {rsp, 0});
-    x_.mov_imm(rsi, reinterpret_cast<uint64_t>(stable));
-    x_.mov_imm(rax, reinterpret_cast<uint64_t>(&call_out));
+    if (stable->op == Op::Texture) {
+      x_.mov_imm(rsi, reinterpret_cast<uint64_t>(&lookups_[stable->i0]));
+      x_.mov_imm(rax, reinterpret_cast<uint64_t>(&call_texture));
+    } else {
+      x_.mov_imm(rsi, reinterpret_cast<uint64_t>(&calls_[at]));
+      x_.mov_imm(rax, reinterpret_cast<uint64_t>(&call_out));
+    }
     x_.call(rax);
     fixed_registers();
     x_.mov_load(rdx, {rsp, 0});
@@ -671,6 +677,8 @@ class Generator {
 
   const std::vector<ir::Inst>& insts_;
   const std::vector<ir::TextureLookup>& textures_;
+  const FrameCall* calls_;             // insts_' operands found, at addresses that stay
+  const FrameTextureLookup* lookups_;  // textures_' likewise
   int registers_, slots_, values_ = 0;
   std::vector<std::vector<int>> reads_, writes_;
   std::vector<int> where_;
@@ -692,9 +700,22 @@ std::unique_ptr<CompiledStage> CompiledStage::compile(const std::vector<ir::Inst
                                                       const std::vector<ir::TextureLookup>& textures, int registers,
                                                       int slots) {
   std::unique_ptr<CompiledStage> stage(new CompiledStage);
-  stage->insts_ = insts;  // never resized again: the code holds the addresses of its elements
-  Generator generator(stage->insts_, textures, registers, slots);
-  if (!generator.generate(stage->insts_.data())) return nullptr;
+  // Never resized again: the code holds the addresses of their elements.
+  for (const ir::Inst& in : insts)
+    stage->calls_.push_back({in.op, frame_operand(in.d, registers), frame_operand(in.a, registers),
+                             frame_operand(in.b, registers), frame_operand(in.c, registers)});
+  for (const ir::TextureLookup& t : textures) {
+    FrameTextureLookup& f = stage->lookups_.emplace_back();
+    f.lookup = t;
+    for (int c = 0; c < 4; ++c) {
+      f.coord[c] = frame_operand(t.coord[c], registers);
+      f.dst[c] = frame_operand(t.dst[c], registers);
+    }
+    f.sampler = frame_operand(t.sampler, registers);
+    f.lod = frame_operand(t.lod, registers);
+  }
+  Generator generator(insts, textures, registers, slots, stage->calls_.data(), stage->lookups_.data());
+  if (!generator.generate(insts.data())) return nullptr;
   const std::vector<uint8_t>& bytes = generator.bytes();
   void* memory = mmap(nullptr, bytes.size(), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (memory == MAP_FAILED) return nullptr;

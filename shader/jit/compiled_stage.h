@@ -30,7 +30,8 @@ class CompiledStage {
  private:
   CompiledStage() = default;
   using Entry = void (*)(Frame*);
-  std::vector<ir::Inst> insts_;  // the call-outs' instructions: the code holds their addresses
+  std::vector<FrameCall> calls_;               // the call-outs, by instruction: the code holds their addresses
+  std::vector<FrameTextureLookup> lookups_;  // likewise, by TextureLookup index
   void* memory_ = nullptr;
   size_t size_ = 0;
   Entry entry_ = nullptr;

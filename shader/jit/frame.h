@@ -31,8 +31,31 @@ struct Frame {
 // constants at constants + index * kMaxBlocksPerRun * kLanes.
 constexpr int kConstantStride = kMaxBlocksPerRun * kLanes;
 
-// Runs `in` (IR operands) over the frame's lanes in memory, with the interpreter's values
-// for every operation; texture lookups as the interpreter does them.
-void call_out(const Frame* frame, const ir::Inst* in);
+// Where an IR operand's lanes lie in a frame, found once when the stage is compiled: `offset`
+// floats from the frame's pointer `base`.
+struct FrameOperand {
+  uint32_t base = 0;  // 0: zeros (kNone), 1: constants, 2: spill (registers), 3: slots
+  uint32_t offset = 0;
+};
+FrameOperand frame_operand(ir::Operand o, int registers);
+
+// An operation the compiled code leaves to the interpreter's routines, its operands found.
+struct FrameCall {
+  ir::Op op = ir::Op::Mov;
+  FrameOperand d, a, b, c;
+};
+
+// Runs `in` over the frame's lanes in memory, with the interpreter's values for every
+// operation.
+void call_out(const Frame* frame, const FrameCall* in);
+
+// A texture lookup with its operands found (call_texture).
+struct FrameTextureLookup {
+  ir::TextureLookup lookup;  // kind and mode
+  FrameOperand coord[4], dst[4], sampler, lod;
+};
+
+// A texture lookup of the compiled code, as the interpreter does it.
+void call_texture(const Frame* frame, const FrameTextureLookup* t);
 
 }  // namespace pineda::shader::jit
