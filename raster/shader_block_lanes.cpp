@@ -1,10 +1,11 @@
-// The shader block's lane helpers (varying_lanes.h, block_write.h, sampler_bilinear_block.h) in
-// three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather instructions) and AVX-512 (16),
-// the same operations per lane in each, so the same values.
+// The shader block's lane helpers (varying_lanes.h, block_depth.h, block_write.h,
+// sampler_bilinear_block.h) in three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather
+// instructions) and AVX-512 (16), the same operations per lane in each, so the same values.
 #include <immintrin.h>
 
 #include <cstring>
 
+#include "raster/block_depth.h"
 #include "raster/block_write.h"
 #include "raster/sampler_bilinear_block.h"
 #include "raster/sampler_nearest8.h"
@@ -17,6 +18,7 @@ namespace pineda::raster::block_lanes_sse2 {
 using VF = float __attribute__((vector_size(16)));
 constexpr int kGatherBytes = 0;
 #include "raster/block_lanes_types.inc"
+#include "raster/block_depth_body.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
@@ -29,6 +31,7 @@ namespace pineda::raster::block_lanes_avx2 {
 using VF = float __attribute__((vector_size(32)));
 constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 #include "raster/block_lanes_types.inc"
+#include "raster/block_depth_body.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
@@ -42,6 +45,7 @@ namespace pineda::raster::block_lanes_avx512 {
 using VF = float __attribute__((vector_size(64)));
 constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;
 #include "raster/block_lanes_types.inc"
+#include "raster/block_depth_body.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
@@ -92,6 +96,11 @@ BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path
 VaryingInterpolator select_varying_interpolator(SimdPath path) {
   if (uses_avx512(path)) return &block_lanes_avx512::interpolate;
   return uses_avx2(path) ? &block_lanes_avx2::interpolate : &block_lanes_sse2::interpolate;
+}
+
+BlockDepthTest select_block_depth_test(SimdPath path) {
+  if (uses_avx512(path)) return &block_lanes_avx512::depth_test_block;
+  return uses_avx2(path) ? &block_lanes_avx2::depth_test_block : &block_lanes_sse2::depth_test_block;
 }
 
 BlockWriter select_block_writer(SimdPath path) {

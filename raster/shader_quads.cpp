@@ -4,10 +4,12 @@
 #include <array>
 #include <type_traits>
 
+#include "raster/block_depth.h"
 #include "raster/block_write.h"
 #include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
 #include "raster/quad_ops.h"
+#include "raster/raster_limits.h"
 #include "raster/shader_draw.h"
 #include "raster/shader_textures.h"
 #include "raster/varying_lanes.h"
@@ -117,6 +119,34 @@ unsigned early_depth_stencil(const DrawRecord& d, const PrimSetup& p, const Fram
   }
   if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(mask));
   return mask;
+}
+
+// The early tests of block k of `row` (early_tests): four adjacent quads inside the buffer and
+// one tile without stencil at once (block_depth.h), others quad by quad.
+void early_tests_of_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, RowBlocks& row, int k,
+                          uint32_t& passed) {
+  Quad* quads = row.quads[k];
+  const int n = row.quad_count[k];
+  const int x = quads[0].x;
+  const bool adjacent = n == 4 && quads[1].x == x + 2 && quads[2].x == x + 4 && quads[3].x == x + 6;
+  if (!d.key.stencil && adjacent && x >= 0 && x + 8 <= fb.width && y >= 0 && y + 2 <= fb.height &&
+      (x & (kTileSize - 1)) + 8 <= kTileSize) {
+    static const BlockDepthTest test = select_block_depth_test(simd_path_from_environment());
+    alignas(64) float ox[kLanes], oy[kLanes];
+    unsigned masks[4];
+    for (int j = 0; j < 4; ++j) {
+      store4(&ox[4 * j], quads[j].ox);
+      store4(&oy[4 * j], quads[j].oy);
+      masks[j] = quads[j].mask;
+    }
+    test(d, p, fb, x, y, ox, oy, masks);
+    for (int j = 0; j < 4; ++j) {
+      quads[j].mask = masks[j];
+      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(masks[j]));
+    }
+    return;
+  }
+  for (int q = 0; q < n; ++q) quads[q].mask = early_depth_stencil(d, p, fb, y, quads[q], quads[q].mask, passed);
 }
 
 // Fills block k of `row` for up to four quads of row y (after any early tests); returns false
@@ -329,9 +359,7 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   RowBlocks row;
   const bool early = early_tests(d, *sd.program);
   auto begin = [&](int k) {
-    if (early)
-      for (int q = 0; q < row.quad_count[k]; ++q)
-        row.quads[k][q].mask = early_depth_stencil(d, p, fb, y, row.quads[k][q], row.quads[k][q].mask, passed);
+    if (early) early_tests_of_block(d, p, fb, y, row, k, passed);
     return begin_block(d, p, fb, y, uniform_values, row, k);
   };
   auto run = [&] {

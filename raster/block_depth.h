@@ -1,0 +1,22 @@
+// The early depth test of a shader block without stencil: four adjacent quads (8x2 pixels)
+// that lie inside the framebuffer and one tile, tested and written as quad_ops::depth_only
+// tests each quad (the same window depths, comparison and writes), 16 lanes at a time.
+#pragma once
+#include <cstdint>
+
+#include "raster/draw_record.h"
+#include "raster/framebuffer.h"
+#include "raster/prim_setup.h"
+#include "raster/simd_path.h"
+
+namespace pineda::raster {
+
+// (x, y): the first quad's lower left pixel; ox, oy: each lane's offset from the primitive's
+// reference point (lane 4j + i: quad j's pixel (i & 1, i >> 1)); masks: the quads' pixels to
+// test in, those that pass out.
+using BlockDepthTest = void (*)(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y,
+                                const float* ox, const float* oy, unsigned masks[4]);
+
+BlockDepthTest select_block_depth_test(SimdPath path);
+
+}  // namespace pineda::raster
