@@ -173,6 +173,26 @@ TEST_F(BufferObjectTest, DrawArraysReadsOffsetsIntoTheBuffer) {
   EXPECT_EQ(get_int(GL_VERTEX_ARRAY_BUFFER_BINDING), 0);
 }
 
+// GL 2.1 2.9: a deleted buffer's bindings in the current context revert to zero, in every array
+// (the colour index and generic attribute arrays too), not only the one drawn from.
+TEST_F(BufferObjectTest, DeletingABufferUnbindsItFromEveryArray) {
+  const uint8_t bytes[64] = {};
+  const GLuint b = make_buffer(GL_ARRAY_BUFFER, bytes, sizeof bytes);
+  glIndexPointer(GL_FLOAT, 0, reinterpret_cast<const void*>(8));
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<const void*>(16));
+  glFogCoordPointer(GL_FLOAT, 0, reinterpret_cast<const void*>(4));
+  EXPECT_EQ(get_int(GL_INDEX_ARRAY_BUFFER_BINDING), GLint(b));
+  GLint attrib = -1;
+  glGetVertexAttribiv(3, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &attrib);
+  EXPECT_EQ(attrib, GLint(b));
+  glDeleteBuffers(1, &b);
+  EXPECT_EQ(get_int(GL_INDEX_ARRAY_BUFFER_BINDING), 0);
+  EXPECT_EQ(get_int(GL_FOG_COORD_ARRAY_BUFFER_BINDING), 0);
+  glGetVertexAttribiv(3, GL_VERTEX_ATTRIB_ARRAY_BUFFER_BINDING, &attrib);
+  EXPECT_EQ(attrib, 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(BufferObjectTest, DrawElementsReadsIndicesFromTheElementBuffer) {
   make_buffer(GL_ARRAY_BUFFER, kQuads, sizeof kQuads);
   glVertexPointer(2, GL_FLOAT, 0, nullptr);
