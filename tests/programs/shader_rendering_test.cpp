@@ -1,6 +1,7 @@
 // Rendering with a vertex and a fragment shader: uniforms, varyings, textures, discard,
 // gl_FragCoord, generic attribute arrays in buffer objects, built-in uniforms and the
 // per-fragment operations after the shader. Expected pixels are exact.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -122,6 +123,41 @@ TEST_F(ShaderRenderingTest, LuminanceTextureReadsAsLLL1) {
   use(kPassVs, "uniform sampler2D tex; void main() { gl_FragColor = texture2D(tex, vec2(0.5)); }\n");
   full_screen();
   EXPECT_TRUE(near_rgba(pixel(10, 10), {51, 51, 51, 255}));
+}
+
+// GL 2.0 table 3.20 for every base format, nearest and linear, over whole blocks and the edges'
+// partial ones: what each format gives a shader in every pixel.
+TEST_F(ShaderRenderingTest, EveryBaseFormatReadsAsTable320InEveryPixel) {
+  struct Case {
+    GLenum format;
+    GLubyte texel[4];
+    Rgba expected;
+  };
+  const Case cases[] = {{GL_ALPHA, {100}, {0, 0, 0, 100}},
+                        {GL_LUMINANCE, {51}, {51, 51, 51, 255}},
+                        {GL_LUMINANCE_ALPHA, {51, 100}, {51, 51, 51, 100}},
+                        {GL_INTENSITY, {77}, {77, 77, 77, 77}},
+                        {GL_RGB, {10, 20, 30}, {10, 20, 30, 255}},
+                        {GL_RGBA, {10, 20, 30, 40}, {10, 20, 30, 40}}};
+  glBindTexture(GL_TEXTURE_2D, 2);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  use("varying vec2 uv; void main() { uv = gl_Vertex.xy * 0.7 + 0.5; gl_Position = gl_Vertex; }\n",
+      "uniform sampler2D tex; varying vec2 uv; void main() { gl_FragColor = texture2D(tex, uv); }\n");
+  for (const Case& c : cases) {
+    const int channels = c.format == GL_RGBA ? 4 : c.format == GL_RGB ? 3 : c.format == GL_LUMINANCE_ALPHA ? 2 : 1;
+    GLubyte texels[4 * 4];
+    for (int i = 0; i < 4; ++i) std::copy(c.texel, c.texel + channels, texels + i * channels);
+    const GLenum external = c.format == GL_INTENSITY ? GL_LUMINANCE : c.format;
+    glTexImage2D(GL_TEXTURE_2D, 0, c.format, 2, 2, 0, external, GL_UNSIGNED_BYTE, texels);
+    for (GLenum filter : {GL_NEAREST, GL_LINEAR}) {
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+      glClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      full_screen();
+      EXPECT_EQ(count_pixels(c.expected), width() * height()) << "format 0x" << std::hex << c.format << " filter 0x" << filter;
+    }
+  }
 }
 
 TEST_F(ShaderRenderingTest, DiscardKeepsTheFramebuffer) {
