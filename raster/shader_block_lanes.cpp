@@ -18,11 +18,11 @@ namespace pineda::raster::block_lanes_sse2 {
 using VF = float __attribute__((vector_size(16)));
 constexpr int kGatherBytes = 0;
 #include "raster/block_lanes_types.inc"
-#include "raster/block_depth_body.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
 #include "raster/varying_lanes_body.inc"
+#include "raster/block_depth_body.inc"
 }  // namespace pineda::raster::block_lanes_sse2
 
 #pragma GCC push_options
@@ -31,11 +31,11 @@ namespace pineda::raster::block_lanes_avx2 {
 using VF = float __attribute__((vector_size(32)));
 constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 #include "raster/block_lanes_types.inc"
-#include "raster/block_depth_body.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
 #include "raster/varying_lanes_body.inc"
+#include "raster/block_depth_body.inc"
 }  // namespace pineda::raster::block_lanes_avx2
 #pragma GCC pop_options
 
@@ -45,11 +45,11 @@ namespace pineda::raster::block_lanes_avx512 {
 using VF = float __attribute__((vector_size(64)));
 constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;
 #include "raster/block_lanes_types.inc"
-#include "raster/block_depth_body.inc"
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
 #include "raster/varying_lanes_body.inc"
+#include "raster/block_depth_body.inc"
 }  // namespace pineda::raster::block_lanes_avx512
 #pragma GCC pop_options
 
