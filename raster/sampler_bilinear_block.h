@@ -21,8 +21,9 @@ struct BlockLevels {
   float blend[4] = {0.f, 0.f, 0.f, 0.f};  // quad q: lanes 4q to 4q + 3
 };
 
-// out[c][lane]: channel c (RGBA, as stored) of each lane, in [0, 1], read at `levels`. Each
-// vector of lanes is read from s and t before it is written, so out may be s or t.
+// out[c][lane]: channel c of each lane, in [0, 1], read at `levels`, as a shader reads it (GL
+// 2.0 table 3.20: the image's base format applied to the stored RGBA). Each vector of lanes is
+// read from s and t before it is written, so out may be s or t.
 using BlockSampler = void (*)(const TextureImage& image, const BlockLevels& levels, const float* s, const float* t,
                               float* const out[4]);
 

@@ -37,21 +37,6 @@ void apply_base_format4(TexBaseFormat format, F4 t[4]) {
   }
 }
 
-// apply_base_format4 over a block's 16 lanes at once, channel by channel (quad by quad, the
-// loads of what the block sampler had just stored waited for those stores).
-void apply_base_format_block(TexBaseFormat format, float* const out[4]) {
-  const auto fill = [&](int c, float v) { std::fill_n(out[c], kLanes, v); };
-  const auto copy_red = [&](int c) { std::copy_n(out[0], kLanes, out[c]); };
-  switch (format) {
-    case TexBaseFormat::Alpha: fill(0, 0.f); fill(1, 0.f); fill(2, 0.f); break;
-    case TexBaseFormat::Luminance: copy_red(1); copy_red(2); fill(3, 1.f); break;
-    case TexBaseFormat::LuminanceAlpha: copy_red(1); copy_red(2); break;
-    case TexBaseFormat::Intensity: copy_red(1); copy_red(2); copy_red(3); break;
-    case TexBaseFormat::RGB: fill(3, 1.f); break;
-    case TexBaseFormat::RGBA: break;
-  }
-}
-
 // GL 2.0 table 3.20: what a shader reads of each base format.
 void apply_base_format(TexBaseFormat format, float t[4]) {
   switch (format) {
@@ -92,22 +77,11 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
     any = true;
   }
   if (!any) return false;
-  block(image, levels, s, t, out);
-  if (live == 0xFFFF) {
-    apply_base_format_block(image.base_format, out);
-    return true;
-  }
+  block(image, levels, s, t, out);  // with the base format applied
+  // The quads without a live lane read (0, 0, 0, 1), as the general sampler gives them.
   for (int first = 0; first < kLanes; first += 4) {
-    if (image.base_format == TexBaseFormat::RGBA && ((live >> first) & 0xf)) continue;  // as sampled
-    F4 lanes[4];
-    if (!((live >> first) & 0xf)) {
-      lanes[0] = lanes[1] = lanes[2] = splat(0.f);
-      lanes[3] = splat(1.f);
-    } else {
-      for (int c = 0; c < 4; ++c) lanes[c] = load4(&out[c][first]);
-      apply_base_format4(image.base_format, lanes);
-    }
-    for (int c = 0; c < 4; ++c) store4(&out[c][first], lanes[c]);
+    if ((live >> first) & 0xf) continue;
+    for (int c = 0; c < 4; ++c) store4(&out[c][first], splat(c == 3 ? 1.f : 0.f));
   }
   return true;
 }
