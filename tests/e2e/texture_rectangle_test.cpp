@@ -1,6 +1,8 @@
 // Rectangle textures (ARB_texture_rectangle) through the fixed-function pipeline: coordinates
 // in texels ([0, width] x [0, height]), nearest and linear filtering, the clamping wrap modes,
 // depth comparison, and the target's place between cube maps and 3D textures.
+#include <vector>
+
 #include "tests/e2e/support/gl_test.h"
 #include "tests/e2e/support/texel_images.h"
 #include "tests/e2e/support/window_quad.h"
@@ -122,6 +124,34 @@ TEST_F(TextureRectangleTest, DepthComparison) {
   EXPECT_EQ(compared(0.5f, 0.5f, 1), (Rgba{0, 0, 0, 255}));  // 0.5 <= 0.25 fails
   EXPECT_EQ(compared(1.5f, 0.5f, 2), (Rgba{255, 255, 255, 255}));  // 0.5 <= 0.75 passes
   EXPECT_EQ(compared(0.5f, 0.f, 3), (Rgba{255, 255, 255, 255}));
+}
+
+TEST_F(TextureRectangleTest, GetTexImageAndCopyTexSubImage) {
+  std::vector<uint8_t> out(size_t(kWidth) * kHeight * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTexImage(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  for (int j = 0; j < kHeight; ++j)
+    for (int i = 0; i < kWidth; ++i)
+      for (int c = 0; c < 4; ++c) EXPECT_EQ(out[4 * (j * kWidth + i) + c], texel(i, j)[c]) << i << "," << j;
+  // Window pixels (3, 2) and (4, 2) into texels (1, 1) and (2, 1).
+  glDisable(GL_TEXTURE_RECTANGLE_ARB);
+  glColor4ub(7, 77, 177, 255);
+  draw_rect(3, 2, 5, 3);
+  glCopyTexSubImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, 1, 1, 3, 2, 2, 1);
+  glGetTexImage(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  for (int i = 0; i < kWidth; ++i) {
+    const Rgba want = i == 1 || i == 2 ? Rgba{7, 77, 177, 255} : texel(i, 1);
+    for (int c = 0; c < 4; ++c) EXPECT_EQ(out[4 * (kWidth + i) + c], want[c]) << i;
+  }
+  glCopyTexImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA8, 3, 2, 7, 1, 0);
+  GLint width = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_RECTANGLE_ARB, 0, GL_TEXTURE_WIDTH, &width);
+  EXPECT_EQ(width, 7);
+  glGetTexImage(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  // Texels 0 and 1 are window pixels (3, 2) and (4, 2), drawn; texel 2 is (5, 2), cleared.
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(out[c], (Rgba{7, 77, 177, 255})[c]);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(out[4 + c], (Rgba{7, 77, 177, 255})[c]);
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(out[8 + c], 0);
 }
 
 TEST_F(TextureRectangleTest, TargetPriorityBetweenCubeMapAnd3D) {
