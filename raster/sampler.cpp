@@ -36,13 +36,14 @@ F4 texel_or_border(const TextureLevel& level, const Sampler& sampler, int i, int
   i1 = i1 >= size ? i1 - size : i1;
 }
 
-// kRepeat: both wrap modes are REPEAT, so no index can select the border colour.
-template <bool kRepeat>
+// kRepeat: both wrap modes are REPEAT, so no index can select the border colour. kTexels: s and t
+// are in texels (a rectangle texture: texel_addressing.h).
+template <bool kRepeat, bool kTexels = false>
 [[gnu::always_inline]] inline F4 sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s,
                                               float t) {
   if (!linear) {
-    const int i = nearest_index(sampler.wrap_s, s, level.width);
-    const int j = nearest_index(sampler.wrap_t, t, level.height);
+    const int i = nearest_index<kTexels>(sampler.wrap_s, s, level.width);
+    const int j = nearest_index<kTexels>(sampler.wrap_t, t, level.height);
     return texel_or_border(level, sampler, i, j);
   }
   int i0, i1, j0, j1;
@@ -59,8 +60,8 @@ template <bool kRepeat>
     t01 = unpack(row1[i0]);
     t11 = unpack(row1[i1]);
   } else {
-    linear_indices(sampler.wrap_s, s, level.width, i0, i1, a);
-    linear_indices(sampler.wrap_t, t, level.height, j0, j1, b);
+    linear_indices<kTexels>(sampler.wrap_s, s, level.width, i0, i1, a);
+    linear_indices<kTexels>(sampler.wrap_t, t, level.height, j0, j1, b);
     t00 = texel_or_border(level, sampler, i0, j0);
     t10 = texel_or_border(level, sampler, i1, j0);
     t01 = texel_or_border(level, sampler, i0, j1);
@@ -69,15 +70,18 @@ template <bool kRepeat>
   return splat((1 - a) * (1 - b)) * t00 + splat(a * (1 - b)) * t10 + splat((1 - a) * b) * t01 + splat(a * b) * t11;
 }
 
-template <bool kRepeat>
+template <bool kRepeat, bool kTexels>
 void sample_level(const TextureLevel& level, const Sampler& sampler, bool linear, float s, float t, float out[4]) {
-  store4(out, sample_level<kRepeat>(level, sampler, linear, s, t));
+  store4(out, sample_level<kRepeat, kTexels>(level, sampler, linear, s, t));
 }
 
 }  // namespace
 
 float quad_lambda(const TextureLevel& base, const float s[4], const float t[4]) {
-  const float w = static_cast<float>(base.width), h = static_cast<float>(base.height);
+  return quad_lambda(static_cast<float>(base.width), static_cast<float>(base.height), s, t);
+}
+
+float quad_lambda(float w, float h, const float s[4], const float t[4]) {
   const float dudx = (s[1] - s[0]) * w, dvdx = (t[1] - t[0]) * h;
   const float dudy = (s[2] - s[0]) * w, dvdy = (t[2] - t[0]) * h;
   return lambda_from_rho2(std::max(dudx * dudx + dvdx * dvdx, dudy * dudy + dvdy * dvdy));
@@ -117,7 +121,7 @@ void bilinear_repeat_quad(const TextureLevel& level, F4 s, F4 t, F4 out[4]) {
   }
 }
 
-template <bool kRepeat>
+template <bool kRepeat, bool kTexels = false>
 void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],
                          float out[4][4]) {
   float s[4], t[4];
@@ -126,10 +130,12 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
     t[i] = sane(t_in[i]);
   }
   const int max_level = static_cast<int>(image.levels.size()) - 1;
-  const LevelChoice choice = choose_levels(sampler, quad_lambda(image.levels[0], s, t), max_level);
+  const float lambda = kTexels ? quad_lambda(1.f, 1.f, s, t) : quad_lambda(image.levels[0], s, t);
+  const LevelChoice choice = choose_levels(sampler, lambda, max_level);
   const bool linear = choice.linear;
   if (!choice.two) {
-    for (int i = 0; i < 4; ++i) sample_level<kRepeat>(image.levels[choice.first], sampler, linear, s[i], t[i], out[i]);
+    for (int i = 0; i < 4; ++i)
+      sample_level<kRepeat, kTexels>(image.levels[choice.first], sampler, linear, s[i], t[i], out[i]);
     return;
   }
   const int d1 = choice.first;
@@ -142,8 +148,8 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
     return;
   }
   for (int i = 0; i < 4; ++i) {
-    const F4 a = sample_level<kRepeat>(image.levels[d1], sampler, linear, s[i], t[i]);
-    const F4 b = sample_level<kRepeat>(image.levels[d1 + 1], sampler, linear, s[i], t[i]);
+    const F4 a = sample_level<kRepeat, kTexels>(image.levels[d1], sampler, linear, s[i], t[i]);
+    const F4 b = sample_level<kRepeat, kTexels>(image.levels[d1 + 1], sampler, linear, s[i], t[i]);
     store4(out[i], splat(1 - f) * a + splat(f) * b);
   }
 }
@@ -153,6 +159,7 @@ void sample_quad_wrapped(const TextureImage& image, const Sampler& sampler, cons
 void sample_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
                  float out[4][4]) {
   if (image.depth) return sample_depth_quad(image, sampler, s, t, nullptr, out);
+  if (image.kind == TexKind::Rect) return sample_quad_wrapped<false, true>(image, sampler, s, t, out);
   // sRGB images take the general path, whose one texel fetch decodes them.
   if (sampler.wrap_s == TexWrap::Repeat && sampler.wrap_t == TexWrap::Repeat && !image.levels[0].srgb)
     sample_quad_wrapped<true>(image, sampler, s, t, out);
@@ -164,6 +171,7 @@ void sample_quad(const TextureImage& image, const Sampler& sampler, const float 
                  const float r[4], float out[4][4]) {
   switch (image.kind) {
     case TexKind::Planar:
+    case TexKind::Rect:
       return image.depth ? sample_depth_quad(image, sampler, s, t, r, out) : sample_quad(image, sampler, s, t, out);
     case TexKind::Volume: return sample_volume_quad(image, sampler, s, t, r, out);
     case TexKind::Cube: return sample_cube_quad(image, sampler, s, t, r, out);

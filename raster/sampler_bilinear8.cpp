@@ -70,7 +70,10 @@ bool wrap_supported(TexWrap w) { return w == TexWrap::Repeat || w == TexWrap::Cl
 }  // namespace
 
 QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {
-  if (image.depth || image.kind != TexKind::Planar || image.levels.empty() || image.levels[0].srgb) return nullptr;
+  const bool rect = image.kind == TexKind::Rect;  // clamped to the edge only (axis_lanes)
+  if (image.depth || !(image.kind == TexKind::Planar || rect) || image.levels.empty() || image.levels[0].srgb)
+    return nullptr;
+  if (rect && (sampler.wrap_s != TexWrap::ClampToEdge || sampler.wrap_t != TexWrap::ClampToEdge)) return nullptr;
   const TexFilter min = sampler.min_filter;
   if (sampler.mag_filter != TexFilter::Linear ||
       !(min == TexFilter::Linear || min == TexFilter::LinearMipmapNearest || min == TexFilter::LinearMipmapLinear))

@@ -15,7 +15,7 @@ namespace pineda::raster {
 using QuadSampler = void (*)(const TextureImage& image, const Sampler& sampler, F4 s, F4 t, F4 out[4]);
 
 // The specialized sampler for this image and sampler, or null when they need the general one:
-// only colour Planar images whose filters are linear within a level (LINEAR magnification;
+// only colour Planar images (and Rect ones clamped to the edge) whose filters are linear within a level (LINEAR magnification;
 // LINEAR, LINEAR_MIPMAP_NEAREST or LINEAR_MIPMAP_LINEAR minification) with REPEAT or
 // CLAMP_TO_EDGE on s and t qualify.
 QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler,

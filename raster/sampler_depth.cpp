@@ -12,7 +12,9 @@
 namespace pineda::raster {
 namespace {
 
-// What one texel contributes: its depth, or 0/1 from the comparison with `ref`.
+// What one texel contributes: its depth, or 0/1 from the comparison with `ref`. kTexels: s and
+// t are in texels (a rectangle texture: texel_addressing.h).
+template <bool kTexels>
 struct DepthLookup {
   const Sampler& sampler;
   bool compare;
@@ -26,11 +28,12 @@ struct DepthLookup {
 
   float level_value(const TextureLevel& level, bool linear, float s, float t) const {
     if (!linear)
-      return texel(level, nearest_index(sampler.wrap_s, s, level.width), nearest_index(sampler.wrap_t, t, level.height));
+      return texel(level, nearest_index<kTexels>(sampler.wrap_s, s, level.width),
+                   nearest_index<kTexels>(sampler.wrap_t, t, level.height));
     int i0, i1, j0, j1;
     float a, b;
-    linear_indices(sampler.wrap_s, s, level.width, i0, i1, a);
-    linear_indices(sampler.wrap_t, t, level.height, j0, j1, b);
+    linear_indices<kTexels>(sampler.wrap_s, s, level.width, i0, i1, a);
+    linear_indices<kTexels>(sampler.wrap_t, t, level.height, j0, j1, b);
     return (1 - a) * (1 - b) * texel(level, i0, j0) + a * (1 - b) * texel(level, i1, j0) +
            (1 - a) * b * texel(level, i0, j1) + a * b * texel(level, i1, j1);
   }
@@ -44,21 +47,21 @@ void expand(float v, TexBaseFormat base, float out[4]) {
   }
 }
 
-}  // namespace
-
-void sample_depth_quad(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],
-                       const float r[4], float out[4][4]) {
+template <bool kTexels>
+void sample_depth_quad_in(const TextureImage& image, const Sampler& sampler, const float s_in[4], const float t_in[4],
+                          const float r[4], float out[4][4]) {
   float s[4], t[4];
   for (int i = 0; i < 4; ++i) {
     s[i] = sane(s_in[i]);
     t[i] = sane(t_in[i]);
   }
   const int max_level = static_cast<int>(image.levels.size()) - 1;
-  const LevelChoice choice = choose_levels(sampler, quad_lambda(image.levels[0], s, t), max_level);
+  const float lambda = kTexels ? quad_lambda(1.f, 1.f, s, t) : quad_lambda(image.levels[0], s, t);
+  const LevelChoice choice = choose_levels(sampler, lambda, max_level);
   const bool compare = sampler.compare && r;
   for (int i = 0; i < 4; ++i) {
     const float ref = compare ? std::clamp(r[i], 0.f, 1.f) : 0.f;  // NaN stays NaN: every test but != fails
-    const DepthLookup lookup{sampler, compare, ref};
+    const DepthLookup<kTexels> lookup{sampler, compare, ref};
     float v = lookup.level_value(image.levels[choice.first], choice.linear, s[i], t[i]);
     if (choice.two) {
       const float v1 = lookup.level_value(image.levels[choice.first + 1], choice.linear, s[i], t[i]);
@@ -66,6 +69,14 @@ void sample_depth_quad(const TextureImage& image, const Sampler& sampler, const 
     }
     expand(v, image.base_format, out[i]);
   }
+}
+
+}  // namespace
+
+void sample_depth_quad(const TextureImage& image, const Sampler& sampler, const float s[4], const float t[4],
+                       const float r[4], float out[4][4]) {
+  if (image.kind == TexKind::Rect) return sample_depth_quad_in<true>(image, sampler, s, t, r, out);
+  sample_depth_quad_in<false>(image, sampler, s, t, r, out);
 }
 
 }  // namespace pineda::raster

@@ -5,7 +5,7 @@
 
 namespace pineda::raster {
 
-// As sample_quad for a Planar depth image. With the sampler's compare mode each texel read is
+// As sample_quad for a Planar or Rect depth image. With the sampler's compare mode each texel read is
 // compared with r[i] clamped to [0, 1] (r / q of the fragment) before filtering, as Mesa does;
 // r may be null when the mode is off. The value v lands where the base format puts it:
 // (v, v, v, 1) for Luminance, (v, v, v, v) for Intensity, (0, 0, 0, v) for Alpha.

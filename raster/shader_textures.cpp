@@ -21,6 +21,8 @@ bool kind_matches(const TextureImage& image, SamplerKind kind) {
     case SamplerKind::Tex3D: return image.kind == TexKind::Volume;
     case SamplerKind::Cube: return image.kind == TexKind::Cube;
     case SamplerKind::Shadow1D: case SamplerKind::Shadow2D: return image.kind == TexKind::Planar && image.depth;
+    case SamplerKind::Rect: return image.kind == TexKind::Rect;
+    case SamplerKind::ShadowRect: return image.kind == TexKind::Rect && image.depth;
   }
   return false;
 }
@@ -103,7 +105,9 @@ const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit
     static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
     const Sampler& sampler = units_[static_cast<size_t>(unit)].sampler;
     f.quad = select_bilinear8_sampler(image, sampler);
-    f.block = f.quad ? select_bilinear8_block_sampler(sampler, path) : nullptr;
+    // (The block samplers scale coordinates by the size: none for a rectangle.)
+    const bool planar = image.kind == TexKind::Planar;
+    f.block = f.quad && planar ? select_bilinear8_block_sampler(sampler, path) : nullptr;
     if (!f.quad) {
       f.quad = select_nearest8_sampler(image, sampler);
       f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
@@ -119,12 +123,12 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
   if (image && !kind_matches(*image, kind)) image = nullptr;
   const bool one_d = kind == SamplerKind::Tex1D || kind == SamplerKind::Shadow1D;
-  const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D;
+  const bool shadow = kind == SamplerKind::Shadow1D || kind == SamplerKind::Shadow2D || kind == SamplerKind::ShadowRect;
   // 2D lookups of RGBA8 images with linear filters take the fixed-function unit's fast sampler
   // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler; nearest ones the
   // general sampler's texels without its level-of-detail work (sampler_nearest8.h).
   QuadSampler fast = nullptr;
-  if (image && kind == SamplerKind::Tex2D && mode != shader::LodMode::Explicit) {
+  if (image && (kind == SamplerKind::Tex2D || kind == SamplerKind::Rect) && mode != shader::LodMode::Explicit) {
     const FastSamplers& f = fast_samplers(unit, *image);
     float* const channels[4] = {out[0], out[1], out[2], out[3]};
     if (f.block && sample_block_at_one_level(f.block, *image, tu->sampler, coords[0], coords[1], mode, lod, live, channels)) {

@@ -28,7 +28,16 @@ inline float mirror(float s) {
 }
 
 // Texel index along one axis for nearest filtering; -1 means the border colour.
+// kTexels: s is in texels already (a rectangle texture), used as it is, so that s = i + 0.5
+// lands on texel i exactly; only the clamping wrap modes apply (the others clamp to the edge).
+template <bool kTexels = false>
 inline int nearest_index(TexWrap wrap, float s, int size) {
+  if constexpr (kTexels) {
+    const float n = static_cast<float>(size);
+    if (wrap != TexWrap::ClampToBorder) return std::clamp(floor_int(std::clamp(s, 0.f, n)), 0, size - 1);
+    const int i = floor_int(std::clamp(s, -1.f, n + 1.f));
+    return i < 0 || i >= size ? -1 : i;
+  }
   switch (wrap) {
     case TexWrap::Repeat: {
       const int i = floor_int((s - floor_fast(s)) * size);
@@ -48,15 +57,26 @@ inline int nearest_index(TexWrap wrap, float s, int size) {
 }
 
 // The two texel indices and the weight of the second one for linear filtering; -1 means
-// the border colour.
+// the border colour. kTexels: as nearest_index's.
+template <bool kTexels = false>
 inline void linear_indices(TexWrap wrap, float s, int size, int& i0, int& i1, float& frac) {
   float u = 0.f;
-  switch (wrap) {
-    case TexWrap::Repeat: u = (s - floor_fast(s)) * size - 0.5f; break;
-    case TexWrap::MirroredRepeat: u = mirror(s) * size - 0.5f; break;
-    case TexWrap::Clamp: u = std::clamp(s, 0.f, 1.f) * size - 0.5f; break;
-    case TexWrap::ClampToEdge: u = std::clamp(s * size, 0.5f, size - 0.5f) - 0.5f; break;
-    case TexWrap::ClampToBorder: u = std::clamp(s, -1.f, 2.f) * size - 0.5f; break;
+  if constexpr (kTexels) {
+    const float n = static_cast<float>(size);
+    if (wrap == TexWrap::Clamp) u = std::clamp(s, 0.f, n) - 0.5f;
+    else if (wrap == TexWrap::ClampToBorder) u = std::clamp(s, -1.f, n + 1.f) - 0.5f;
+    else {
+      wrap = TexWrap::ClampToEdge;
+      u = std::clamp(s, 0.5f, n - 0.5f) - 0.5f;
+    }
+  } else {
+    switch (wrap) {
+      case TexWrap::Repeat: u = (s - floor_fast(s)) * size - 0.5f; break;
+      case TexWrap::MirroredRepeat: u = mirror(s) * size - 0.5f; break;
+      case TexWrap::Clamp: u = std::clamp(s, 0.f, 1.f) * size - 0.5f; break;
+      case TexWrap::ClampToEdge: u = std::clamp(s * size, 0.5f, size - 0.5f) - 0.5f; break;
+      case TexWrap::ClampToBorder: u = std::clamp(s, -1.f, 2.f) * size - 0.5f; break;
+    }
   }
   const float f = floor_fast(u);
   frac = u - f;

@@ -25,11 +25,15 @@ struct TextureLevel {
   std::vector<uint32_t> texels;
   int depth = 1;  // slices of a 3D level; the six faces of a cube map level
   bool srgb = false;  // R, G, B are sRGB-encoded: decoded per texel before filtering (raster/srgb.h)
+  // A rectangle's level: s and t are in texels already, so the factor that turns them into texel
+  // units is 1, not the size (texel centres i + 0.5 land exactly).
+  bool texel_coords = false;
 };
 
 // How the sampler addresses the image: 1D and 2D textures are Planar (s, t), 3D textures
-// Volume (s, t, r), cube maps Cube (the direction s, t, r selects a face).
-enum class TexKind : uint8_t { Planar, Volume, Cube };
+// Volume (s, t, r), cube maps Cube (the direction s, t, r selects a face), rectangle textures
+// Rect (s, t in texels: [0, width] x [0, height], one level, only the clamping wrap modes).
+enum class TexKind : uint8_t { Planar, Volume, Cube, Rect };
 
 struct TextureImage {
   // For a depth texture (`depth`) the texels are float depths in [0, 1] and the base format
@@ -84,7 +88,9 @@ struct TextureUnit {
   CombineState combine;  // read when env_mode is Combine
 
   // Whether sampling reads the r coordinate, so that the draw interpolates it.
-  bool reads_r() const { return image && (image->kind != TexKind::Planar || (image->depth && sampler.compare)); }
+  bool reads_r() const {
+    return image && (image->kind == TexKind::Volume || image->kind == TexKind::Cube || (image->depth && sampler.compare));
+  }
 };
 
 }  // namespace pineda::raster

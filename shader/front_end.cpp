@@ -64,9 +64,13 @@ std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::strin
   if (strings.empty()) strings.push_back(empty);
   sh->setStrings(strings.data(), static_cast<int>(strings.size()));
   // GLSL 1.10/1.20 give vertex shaders texture*Lod; glslang 12 asks for the ARB extension
-  // there, so it is enabled ahead of the user's source (no line moves).
-  if (shader.language == Language::Desktop && shader.stage == Stage::Vertex)
-    sh->setPreamble("#extension GL_ARB_shader_texture_lod : enable\n");
+  // there, so it is enabled ahead of the user's source (no line moves). The rectangle samplers
+  // (ARB_texture_rectangle) need no #extension line either, as in Mesa, which enables that
+  // extension for every desktop shader.
+  if (shader.language == Language::Desktop)
+    sh->setPreamble(shader.stage == Stage::Vertex ? "#extension GL_ARB_texture_rectangle : enable\n"
+                                                    "#extension GL_ARB_shader_texture_lod : enable\n"
+                                                  : "#extension GL_ARB_texture_rectangle : enable\n");
   sh->setEnvInput(glslang::EShSourceGlsl, stage_of(shader.stage), glslang::EShClientNone, 100);
   sh->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
   sh->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));

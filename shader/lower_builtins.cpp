@@ -70,6 +70,8 @@ Val Lowerer::texture(TIntermAggregate* a) {
     case BaseType::SamplerCube: t.kind = SamplerKind::Cube; break;
     case BaseType::Sampler1DShadow: t.kind = SamplerKind::Shadow1D; break;
     case BaseType::Sampler2DShadow: t.kind = SamplerKind::Shadow2D; break;
+    case BaseType::Sampler2DRect: t.kind = SamplerKind::Rect; break;
+    case BaseType::Sampler2DRectShadow: t.kind = SamplerKind::ShadowRect; break;
     default: fail("error: texture lookup without a sampler\n");
   }
   t.sampler = rv(sampler)[0];
@@ -79,8 +81,8 @@ Val Lowerer::texture(TIntermAggregate* a) {
   int used[4] = {-1, -1, -1, -1};
   switch (t.kind) {
     case SamplerKind::Tex1D: used[0] = 0; break;
-    case SamplerKind::Tex2D: used[0] = 0; used[1] = 1; break;
-    case SamplerKind::Tex3D: case SamplerKind::Cube: case SamplerKind::Shadow2D:
+    case SamplerKind::Tex2D: case SamplerKind::Rect: used[0] = 0; used[1] = 1; break;
+    case SamplerKind::Tex3D: case SamplerKind::Cube: case SamplerKind::Shadow2D: case SamplerKind::ShadowRect:
       used[0] = 0; used[1] = 1; used[2] = 2; break;
     case SamplerKind::Shadow1D: used[0] = 0; used[2] = 2; break;
   }

@@ -23,6 +23,7 @@ VarType var_type_of_element(const TType& t) {
         case glslang::Esd2D: v.base = s.shadow ? BaseType::Sampler2DShadow : BaseType::Sampler2D; break;
         case glslang::Esd3D: v.base = BaseType::Sampler3D; break;
         case glslang::EsdCube: v.base = BaseType::SamplerCube; break;
+        case glslang::EsdRect: v.base = s.shadow ? BaseType::Sampler2DRectShadow : BaseType::Sampler2DRect; break;
         default: fail("error: unsupported sampler type\n");
       }
       break;

@@ -27,7 +27,8 @@ enum class Language : uint8_t { Desktop, Es100 };
 
 enum class BaseType : uint8_t {
   Float, Int, Bool,
-  Sampler1D, Sampler2D, Sampler3D, SamplerCube, Sampler1DShadow, Sampler2DShadow
+  Sampler1D, Sampler2D, Sampler3D, SamplerCube, Sampler1DShadow, Sampler2DShadow,
+  Sampler2DRect, Sampler2DRectShadow  // ARB_texture_rectangle
 };
 struct Type {
   BaseType base = BaseType::Float;
@@ -104,7 +105,7 @@ struct VertexBatch {
 };
 
 // Texture lookups go back to raster/ through this interface, 16 lanes at a time.
-enum class SamplerKind : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Shadow1D, Shadow2D };
+enum class SamplerKind : uint8_t { Tex1D, Tex2D, Tex3D, Cube, Shadow1D, Shadow2D, Rect, ShadowRect };
 enum class LodMode : uint8_t {
   Implicit,  // from the coordinates' differences across each 2x2 quad of lanes (fragments)
   Bias,      // implicit plus lod[] (the bias argument)

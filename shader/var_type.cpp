@@ -30,6 +30,8 @@ std::string type_name(const VarType& t) {
       case BaseType::SamplerCube: s << "samplerCube"; break;
       case BaseType::Sampler1DShadow: s << "sampler1DShadow"; break;
       case BaseType::Sampler2DShadow: s << "sampler2DShadow"; break;
+      case BaseType::Sampler2DRect: s << "sampler2DRect"; break;
+      case BaseType::Sampler2DRectShadow: s << "sampler2DRectShadow"; break;
     }
   }
   if (t.array) s << "[" << t.array << "]";

@@ -113,6 +113,7 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
     f.units[u].enabled_2d = ctx.texture_units[u].enabled_2d;
     f.units[u].enabled_3d = ctx.texture_units[u].enabled_3d;
     f.units[u].enabled_cube = ctx.texture_units[u].enabled_cube;
+    f.units[u].enabled_rect = ctx.texture_units[u].enabled_rect;
   }
   if (mask & GL_TEXTURE_BIT) {
     f.active_texture = ctx.active_texture;
@@ -128,6 +129,8 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
       s.bound_cube = unit.bound_cube;
       s.params_3d = save_params(ctx, unit.bound_3d, GL_TEXTURE_3D);
       s.params_cube = save_params(ctx, unit.bound_cube, GL_TEXTURE_CUBE_MAP);
+      s.bound_rect = unit.bound_rect;
+      s.params_rect = save_params(ctx, unit.bound_rect, GL_TEXTURE_RECTANGLE_ARB);
     }
   }
   return f;
@@ -163,6 +166,7 @@ void restore_enables(Context& ctx, const AttribFrame& f) {
     ctx.texture_units[u].enabled_2d = f.units[u].enabled_2d;
     ctx.texture_units[u].enabled_3d = f.units[u].enabled_3d;
     ctx.texture_units[u].enabled_cube = f.units[u].enabled_cube;
+    ctx.texture_units[u].enabled_rect = f.units[u].enabled_rect;
   }
   restore_caps(ctx, f, GL_ENABLE_BIT);
   ctx.eval.attribs.map1_enabled = f.eval.map1_enabled;
@@ -299,6 +303,7 @@ void restore(Context& ctx, const AttribFrame& f) {
       unit.enabled_2d = saved.enabled_2d;
       unit.enabled_3d = saved.enabled_3d;
       unit.enabled_cube = saved.enabled_cube;
+      unit.enabled_rect = saved.enabled_rect;
       unit.env = saved.env;
       // Bindings to textures deleted since the push fall back to the default texture.
       unit.bound_1d = saved.bound_1d == 0 || ctx.textures.find(saved.bound_1d) ? saved.bound_1d : 0;
@@ -309,6 +314,8 @@ void restore(Context& ctx, const AttribFrame& f) {
       unit.bound_cube = saved.bound_cube == 0 || ctx.textures.find(saved.bound_cube) ? saved.bound_cube : 0;
       restore_params(ctx, saved.params_3d);
       restore_params(ctx, saved.params_cube);
+      unit.bound_rect = saved.bound_rect == 0 || ctx.textures.find(saved.bound_rect) ? saved.bound_rect : 0;
+      restore_params(ctx, saved.params_rect);
     }
     ctx.active_texture = f.active_texture;
     restore_caps(ctx, f, GL_TEXTURE_BIT);

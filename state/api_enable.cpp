@@ -24,7 +24,7 @@ bool is_unrendered_cap(GLenum cap) {
 bool missing_texture_unit_state(const Context& ctx, GLenum pname) {
   if (ctx.es2() || ctx.fixed_function_texture_unit()) return false;
   switch (pname) {
-    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: case GL_TEXTURE_CUBE_MAP:
+    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: case GL_TEXTURE_CUBE_MAP: case GL_TEXTURE_RECTANGLE_ARB:
     case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T: case GL_TEXTURE_GEN_R: case GL_TEXTURE_GEN_Q:
     case GL_CURRENT_TEXTURE_COORDS: case GL_CURRENT_RASTER_TEXTURE_COORDS:
     case GL_TEXTURE_MATRIX: case GL_TRANSPOSE_TEXTURE_MATRIX: case GL_TEXTURE_STACK_DEPTH:
@@ -62,6 +62,7 @@ bool* server_capability(Context& ctx, GLenum cap) {
     case GL_TEXTURE_2D: return &ctx.texture_units[ctx.active_texture].enabled_2d;
     case GL_TEXTURE_3D: return &ctx.texture_units[ctx.active_texture].enabled_3d;
     case GL_TEXTURE_CUBE_MAP: return &ctx.texture_units[ctx.active_texture].enabled_cube;
+    case GL_TEXTURE_RECTANGLE_ARB: return ctx.es1() ? nullptr : &ctx.texture_units[ctx.active_texture].enabled_rect;
     case GL_DEBUG_OUTPUT: return ctx.es1() ? nullptr : &ctx.debug.enabled;
     case GL_DEBUG_OUTPUT_SYNCHRONOUS: return ctx.es1() ? nullptr : &ctx.debug.synchronous;
     default:

@@ -100,6 +100,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_CONTEXT_ROBUST_ACCESS: out = bools({double(ctx.attribs().robust_access)}); return true;
     case GL_MAX_3D_TEXTURE_SIZE: out = ints({kMax3DTextureSize}); return true;
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out = ints({kMaxCubeMapTextureSize}); return true;
+    case GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB: out = ints({kMaxRectangleTextureSize}); return true;
     case GL_MAX_MODELVIEW_STACK_DEPTH: out = ints({kMaxModelviewStackDepth}); return true;
     case GL_MAX_PROJECTION_STACK_DEPTH: out = ints({kMaxProjectionStackDepth}); return true;
     case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
@@ -218,6 +219,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_TEXTURE_BINDING_2D: out = ints({double(unit.bound_2d)}); return true;
     case GL_TEXTURE_BINDING_3D: out = ints({double(unit.bound_3d)}); return true;
     case GL_TEXTURE_BINDING_CUBE_MAP: out = ints({double(unit.bound_cube)}); return true;
+    case GL_TEXTURE_BINDING_RECTANGLE_ARB: out = ints({double(unit.bound_rect)}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = enums({double(ctx.hint_perspective)}); return true;
     case GL_POINT_SMOOTH_HINT: out = enums({double(ctx.hint_point)}); return true;
     case GL_LINE_SMOOTH_HINT: out = enums({double(ctx.hint_line)}); return true;
@@ -322,7 +324,8 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_border_clamp GL_ARB_texture_mirrored_repeat GL_ARB_multitexture GL_ARB_texture_env_add "
       "GL_ARB_texture_env_combine GL_ARB_texture_env_crossbar GL_ARB_texture_env_dot3 GL_EXT_bgra GL_ARB_window_pos GL_SGIS_generate_mipmap "
       "GL_SGIS_texture_lod GL_EXT_texture_lod_bias "
-      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_EXT_vertex_array GL_KHR_debug "
+      "GL_EXT_texture3D GL_ARB_texture_cube_map GL_EXT_texture_cube_map GL_ARB_texture_rectangle GL_NV_texture_rectangle "
+      "GL_EXT_texture_rectangle GL_EXT_vertex_array GL_KHR_debug "
       "GL_ARB_framebuffer_object GL_EXT_framebuffer_object GL_EXT_framebuffer_blit GL_EXT_framebuffer_multisample "
       "GL_EXT_packed_depth_stencil "
       "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 "

@@ -1,4 +1,4 @@
-// Texture objects, images and parameters (1D, 2D, 3D and cube map textures).
+// Texture objects, images and parameters (1D, 2D, 3D, cube map and rectangle textures).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -16,6 +16,7 @@
 #include "state/pixel_unpack.h"
 #include "state/tex_image_checks.h"
 #include "state/texture_format.h"
+#include "state/texture_rectangle.h"
 
 namespace pineda::gl {
 namespace {
@@ -121,7 +122,7 @@ void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const Clie
 bool valid_depth_use(Context& ctx, const TextureFormat& storage, TexTarget kind, GLenum format) {
   if (depth_use_allowed(storage, kind, format)) return true;
   ctx.record_error(GL_INVALID_OPERATION,
-                   "format and internalformat differ in depth or stencil, or the target is not 1D or 2D");
+                   "format and internalformat differ in depth or stencil, or the target is not 1D, 2D or rectangle");
   return false;
 }
 
@@ -203,6 +204,8 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
 GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   TexParams& p = tex.params;
   const GLenum e = enum_from_float(v[0]);
+  if (tex.target == GL_TEXTURE_RECTANGLE_ARB)
+    if (const GlError error = rectangle_parameter_error(pname, v[0]); error != GL_NO_ERROR) return error;
   switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
       if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
@@ -400,7 +403,11 @@ void BindTexture(Context& ctx, GLenum target, GLuint texture) {
     TextureObject* existing = ctx.textures.find(texture);
     if (existing && existing->target != 0 && existing->target != target)
       return ctx.record_error(GL_INVALID_OPERATION, "the texture was first bound to another target");
-    ctx.textures.get_or_create(texture, target).target = target;
+    TextureObject& tex = ctx.textures.get_or_create(texture, target);
+    if (tex.target == 0) {
+      tex.target = target;
+      tex.params = default_tex_params(kind);
+    }
   }
   bound_name(ctx.texture_units[ctx.active_texture], kind) = texture;
 }

@@ -78,6 +78,9 @@ struct AttribFrame {
     bool enabled_3d, enabled_cube;
     GLuint bound_3d, bound_cube;
     SavedTextureParams params_3d, params_cube;
+    bool enabled_rect;
+    GLuint bound_rect;
+    SavedTextureParams params_rect;
   };
   std::array<Unit, raster::kMaxTextureImageUnits> units;  // of the texture image units
   GLuint active_texture = 0;

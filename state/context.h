@@ -88,6 +88,8 @@ struct TextureUnitState {
   GLuint bound_2d = 0, bound_1d = 0;
   bool enabled_3d = false, enabled_cube = false;
   GLuint bound_3d = 0, bound_cube = 0;
+  bool enabled_rect = false;
+  GLuint bound_rect = 0;
   TexEnvState env;
   float current_texcoord[4] = {0, 0, 0, 1};
   ClientArray texcoord_array;

@@ -52,7 +52,7 @@ int snapshot_textures(Context& ctx) {
     raster::TextureUnit& out = ctx.draw_state.texture_units[u];
     out.image.reset();
     TextureObject* tex = nullptr;
-    for (TexTarget kind : {TexTarget::Cube, TexTarget::T3D, TexTarget::T2D, TexTarget::T1D}) {  // GL 1.3 3.8.15
+    for (TexTarget kind : {TexTarget::Cube, TexTarget::Rect, TexTarget::T3D, TexTarget::T2D, TexTarget::T1D}) {  // GL 1.3 3.8.15, ARB_texture_rectangle
       if (!enabled_flag(unit, kind)) continue;
       tex = &ctx.textures.get_or_create(bound_name(unit, kind), binding_enum(kind));
       break;

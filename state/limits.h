@@ -7,6 +7,7 @@ constexpr int kMaxViewportDim = 16384;
 constexpr int kMaxTextureSize = 8192;
 constexpr int kMax3DTextureSize = 256;
 constexpr int kMaxCubeMapTextureSize = 4096;
+constexpr int kMaxRectangleTextureSize = 8192;
 constexpr int kMaxModelviewStackDepth = 32;
 constexpr int kMaxProjectionStackDepth = 10;
 constexpr int kMaxTextureStackDepth = 10;

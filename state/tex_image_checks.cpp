@@ -11,14 +11,17 @@ bool image_target_of(GLenum target, int dims, bool proxy_ok, ImageTarget& out) {
   return image_target(target, out) && image_dimensions(out.kind) == dims && (proxy_ok || !out.proxy);
 }
 
+// The targets whose images may hold depth: 1D, 2D and rectangle textures (as Mesa).
+bool depth_target(TexTarget kind) { return kind == TexTarget::T1D || kind == TexTarget::T2D || kind == TexTarget::Rect; }
+
 }  // namespace
 
 bool depth_use_allowed(const TextureFormat& storage, TexTarget kind, GLenum format) {
   // DEPTH_STENCIL data for DEPTH_STENCIL formats only, and the other way round (as Mesa).
   if (storage.stencil || format == GL_DEPTH_STENCIL)
-    return storage.stencil && format == GL_DEPTH_STENCIL && (kind == TexTarget::T1D || kind == TexTarget::T2D);
+    return storage.stencil && format == GL_DEPTH_STENCIL && depth_target(kind);
   const bool depth = storage.depth > 0;
-  return depth == (format == GL_DEPTH_COMPONENT) && (!depth || kind == TexTarget::T1D || kind == TexTarget::T2D);
+  return depth == (format == GL_DEPTH_COMPONENT) && (!depth || depth_target(kind));
 }
 
 GlError tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
@@ -39,7 +42,7 @@ GlError tex_image_error(GLenum target, int dims, GLint level, GLint internal_for
   if (inner_d < 0) return {GL_INVALID_VALUE, depth < 0 ? "depth is negative" : "depth is less than twice border"};
   if (t.kind == TexTarget::Cube && width != height) return {GL_INVALID_VALUE, "a cube map face's width and height differ"};
   if (!depth_use_allowed(*storage, t.kind, format))
-    return {GL_INVALID_OPERATION, "format and internalformat differ in depth or stencil, or the target is not 1D or 2D"};
+    return {GL_INVALID_OPERATION, "format and internalformat differ in depth or stencil, or the target is not 1D, 2D or rectangle"};
   const int level_max = max_texture_size(t.kind) >> level;  // level l of a full chain is at most max >> l
   if (!t.proxy && (inner_w > level_max || inner_h > level_max || inner_d > level_max))
     return {GL_INVALID_VALUE, "the image is larger than the maximum texture size allows at level"};

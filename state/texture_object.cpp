@@ -5,6 +5,7 @@
 
 #include "state/enum_translate.h"
 #include "state/texture_format.h"
+#include "state/texture_rectangle.h"
 
 namespace pineda {
 namespace {
@@ -85,6 +86,7 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& level) {
 
 raster::TexKind image_kind(GLenum target) {
   if (target == GL_TEXTURE_3D) return raster::TexKind::Volume;
+  if (target == GL_TEXTURE_RECTANGLE_ARB) return raster::TexKind::Rect;
   if (target == GL_TEXTURE_CUBE_MAP) return raster::TexKind::Cube;
   return raster::TexKind::Planar;
 }
@@ -176,6 +178,7 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
     out.height = in.height;
     out.depth = faces == 1 ? in.depth : faces;
     out.srgb = texture_format(in.internal_format).value_or(TextureFormat{}).srgb;
+    out.texel_coords = kind == raster::TexKind::Rect;
     out.texels.reserve(size_t(out.width) * out.height * out.depth);
     for (int f = 0; f < faces; ++f) {
       const std::vector<uint32_t>& texels = face_levels(f)[base + l].texels;
@@ -206,7 +209,9 @@ void TextureObject::generate_levels(int level, int face) {
 TextureNamespace::TextureNamespace() {
   for (int k = 0; k < kTexTargetCount; ++k) {
     defaults_[k].target = binding_enum(TexTarget(k));
+    defaults_[k].params = default_tex_params(TexTarget(k));
     proxies_[k].target = binding_enum(TexTarget(k));
+    proxies_[k].params = default_tex_params(TexTarget(k));
   }
 }
 

@@ -44,7 +44,7 @@ void set_attachments(Context& ctx, FramebufferObject& fb, const int points[2], i
   refresh_framebuffer_views(ctx);
 }
 
-// Whether textarget suits a glFramebufferTexture<dims>D call (cube faces for 2D).
+// Whether textarget suits a glFramebufferTexture<dims>D call (cube faces and rectangles for 2D).
 bool textarget_for(int dims, GLenum textarget, TexTarget& kind, int& face) {
   face = 0;
   switch (dims) {
@@ -52,8 +52,8 @@ bool textarget_for(int dims, GLenum textarget, TexTarget& kind, int& face) {
     case 3: kind = TexTarget::T3D; return textarget == GL_TEXTURE_3D;
     default: break;
   }
-  if (textarget == GL_TEXTURE_2D) {
-    kind = TexTarget::T2D;
+  if (textarget == GL_TEXTURE_2D || textarget == GL_TEXTURE_RECTANGLE_ARB) {
+    kind = textarget == GL_TEXTURE_2D ? TexTarget::T2D : TexTarget::Rect;
     return true;
   }
   if (textarget >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && textarget <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z) {

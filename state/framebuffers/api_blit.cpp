@@ -4,6 +4,7 @@
 // outside the read framebuffer are not written.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
@@ -117,13 +118,16 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
 
   // GL 3.0 4.3.3 (EXT_framebuffer_multisample): samples are copied between equal counts, a
   // multisampled source is resolved into a single-sampled destination, a single-sampled one
-  // replicated into every sample; a multisampled source takes no scaling nor offset.
+  // replicated into every sample; a multisampled source takes no scaling. It may move or mirror:
+  // EXT_framebuffer_multisample asks for rectangles of one size only, as Mesa does on desktop GL
+  // (GL 3.0's same bounds would refuse resolves into another place that programs make).
   const int src_samples = src_fb.samples, dst_samples = dst_all.samples;
   if (src_samples > 1 && dst_samples > 1 && src_samples != dst_samples)
     return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' sample counts differ");
-  if (src_samples > 1 && (srcX0 != dstX0 || srcY0 != dstY0 || srcX1 != dstX1 || srcY1 != dstY1))
-    return ctx.record_error(GL_INVALID_OPERATION,
-                            "a multisampled source and the destination differ in their rectangles");
+  auto extent = [](GLint a, GLint b) { return std::abs(int64_t{b} - a); };
+  if (src_samples > 1 &&
+      (extent(srcX0, srcX1) != extent(dstX0, dstX1) || extent(srcY0, srcY1) != extent(dstY0, dstY1)))
+    return ctx.record_error(GL_INVALID_OPERATION, "a multisampled source and the destination differ in size");
   const bool per_sample = src_samples > 1 && dst_samples > 1;
 
   ctx.finish();

@@ -8,7 +8,9 @@ namespace pineda::gl {
 
 void GenerateMipmap(Context& ctx, GLenum target) {
   TexTarget kind;
-  if (!binding_target(target, kind)) return ctx.record_error(GL_INVALID_ENUM, "target is not a texture target");
+  // A rectangle has no mipmaps (ARB_texture_rectangle).
+  if (!binding_target(target, kind) || kind == TexTarget::Rect)
+    return ctx.record_error(GL_INVALID_ENUM, "target is not a mipmapped texture target");
   TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[ctx.active_texture], kind), target);
   const int faces = kind == TexTarget::Cube ? kCubeFaces : 1;
   const size_t base = size_t(std::max(tex.params.base_level, 0));

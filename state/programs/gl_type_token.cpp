@@ -33,6 +33,8 @@ GLenum gl_type_token(const shader::Type& t) {
     case shader::BaseType::SamplerCube: return GL_SAMPLER_CUBE;
     case shader::BaseType::Sampler1DShadow: return GL_SAMPLER_1D_SHADOW;
     case shader::BaseType::Sampler2DShadow: return GL_SAMPLER_2D_SHADOW;
+    case shader::BaseType::Sampler2DRect: return GL_SAMPLER_2D_RECT_ARB;
+    case shader::BaseType::Sampler2DRectShadow: return GL_SAMPLER_2D_RECT_SHADOW_ARB;
   }
   return GL_FLOAT;
 }

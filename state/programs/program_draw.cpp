@@ -27,6 +27,7 @@ bool sampler_target(shader::BaseType b, TexTarget& out) {
     case shader::BaseType::Sampler2D: case shader::BaseType::Sampler2DShadow: out = TexTarget::T2D; return true;
     case shader::BaseType::Sampler3D: out = TexTarget::T3D; return true;
     case shader::BaseType::SamplerCube: out = TexTarget::Cube; return true;
+    case shader::BaseType::Sampler2DRect: case shader::BaseType::Sampler2DRectShadow: out = TexTarget::Rect; return true;
     default: return false;
   }
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/window_quad.h"
 
 namespace pineda::test {
 namespace {
@@ -37,16 +38,7 @@ class TextureTest : public GlTest {
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
   }
   void textured_rect(float x0, float y0, float x1, float y1, float s0, float t0, float s1, float t1) {
-    glBegin(GL_QUADS);
-    glTexCoord2f(s0, t0);
-    glVertex2f(x0, y0);
-    glTexCoord2f(s1, t0);
-    glVertex2f(x1, y0);
-    glTexCoord2f(s1, t1);
-    glVertex2f(x1, y1);
-    glTexCoord2f(s0, t1);
-    glVertex2f(x0, y1);
-    glEnd();
+    draw_textured_rect(x0, y0, x1, y1, s0, t0, s1, t1);
   }
 };
 

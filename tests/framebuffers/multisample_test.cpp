@@ -154,10 +154,30 @@ TEST_F(MultisampleTest, BlitErrors) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fb_);
   glBlitFramebuffer(0, 0, 8, 8, 0, 0, 16, 16, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // scaled
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  glBlitFramebuffer(0, 0, 8, 8, 1, 0, 9, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // moved
+  glBlitFramebuffer(0, 0, 8, 8, 1, 0, 8, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // narrower
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glBlitFramebuffer(0, 8, 8, 0, 0, 8, 8, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // mirrored alike: allowed
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// A resolve may land elsewhere and mirrored, at the same size (EXT_framebuffer_multisample, as Mesa).
+TEST_F(MultisampleTest, ResolveIntoAnotherPlace) {
+  glColor3f(1, 0, 0);
+  rect(0, 0, 1, 1);
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, ms_fb_);
+  glBlitFramebuffer(0, 0, 2, 2, 5, 3, 7, 5, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // moved
+  glBlitFramebuffer(0, 0, 2, 2, 12, 12, 10, 10, GL_COLOR_BUFFER_BIT, GL_NEAREST);  // moved and mirrored
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glBindFramebuffer(GL_FRAMEBUFFER, resolve_fb_);
+  EXPECT_EQ(pixel(5, 3), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(pixel(6, 3), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(pixel(4, 3), (Rgba{0, 0, 255, 255}));
+  EXPECT_EQ(pixel(11, 11), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(pixel(10, 10), (Rgba{0, 0, 0, 0}));
+  EXPECT_EQ(pixel(0, 0), (Rgba{0, 0, 255, 255}));
 }
 
 // Right edges at x = 2 + t cover the samples of pixel column 2 whose x is below t.

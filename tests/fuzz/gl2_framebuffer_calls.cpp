@@ -25,7 +25,8 @@ constexpr GLenum kRenderbufferFormats[] = {GL_RGBA8,           GL_RGB,          
                                            GL_DEPTH_COMPONENT32, GL_STENCIL_INDEX8, GL_STENCIL_INDEX,
                                            GL_DEPTH_STENCIL,   GL_DEPTH24_STENCIL8, GL_RGBA, GL_RGB10_A2};
 constexpr GLenum kTextureTargets2D[] = {GL_TEXTURE_2D, GL_TEXTURE_CUBE_MAP_POSITIVE_X, GL_TEXTURE_CUBE_MAP_NEGATIVE_Y,
-                                        GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+                                        GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+                                        GL_TEXTURE_RECTANGLE_ARB};
 constexpr GLenum kColorBuffers[] = {GL_NONE,  GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, GL_LEFT, GL_FRONT_LEFT,
                                     GL_AUX0,  GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT7,
                                     GL_COLOR_ATTACHMENT8};
@@ -129,7 +130,7 @@ void blit_framebuffer(FuzzInput& in, ClientMemory&) {
 
 template <auto Generate>
 void generate_mipmap(FuzzInput& in, ClientMemory&) {
-  Generate(in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP}));
+  Generate(in.enumeration({GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_RECTANGLE_ARB}));
 }
 
 template <auto Get>

@@ -33,7 +33,8 @@ constexpr GLenum kBlendFactors[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_
 constexpr GLenum kStencilOps[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT, GL_INCR_WRAP,
                                   GL_DECR_WRAP};
 constexpr GLenum kFaces[] = {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK};
-constexpr GLenum kBindTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+constexpr GLenum kBindTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+                                   GL_TEXTURE_RECTANGLE_ARB};
 constexpr GLenum kImage1DTargets[] = {GL_TEXTURE_1D, GL_PROXY_TEXTURE_1D};
 constexpr GLenum kImage2DTargets[] = {GL_TEXTURE_2D,
                                       GL_PROXY_TEXTURE_2D,

@@ -31,7 +31,8 @@ inline constexpr GLenum kTexEnvTargets[] = {GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CO
 inline constexpr GLenum kTexEnvNames[] = {GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_COMBINE_RGB,
                                           GL_SOURCE2_ALPHA,    GL_RGB_SCALE,         GL_TEXTURE_LOD_BIAS,
                                           GL_COORD_REPLACE,    GL_OPERAND1_RGB};
-inline constexpr GLenum kTextureTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+inline constexpr GLenum kTextureTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP,
+                                             GL_TEXTURE_RECTANGLE_ARB};
 inline constexpr GLenum kTexParameterNames[] = {
     GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,  GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
     GL_TEXTURE_WRAP_R,     GL_TEXTURE_MIN_LOD,     GL_TEXTURE_MAX_LOD,    GL_TEXTURE_BASE_LEVEL,

@@ -19,7 +19,8 @@ namespace pineda::fuzz {
 namespace {
 
 constexpr GLenum kImageTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
-                                    GL_PROXY_TEXTURE_2D, GL_TEXTURE_CUBE_MAP};
+                                    GL_PROXY_TEXTURE_2D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_RECTANGLE_ARB,
+                                    GL_PROXY_TEXTURE_RECTANGLE_ARB};
 constexpr QueryName kTexLevelQueries[] = {{GL_TEXTURE_WIDTH, 1},       {GL_TEXTURE_DEPTH, 1},
                                           {GL_TEXTURE_BORDER, 1},      {GL_TEXTURE_INTERNAL_FORMAT, 1},
                                           {GL_TEXTURE_RED_SIZE, 1},    {GL_TEXTURE_COMPRESSED, 1},

@@ -17,7 +17,7 @@ constexpr GLenum kCompressedFormats[] = {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, GL_CO
                                          GL_COMPRESSED_RGB_FXT1_3DFX, GL_RGBA, GL_COMPRESSED_LUMINANCE};
 constexpr GLenum kTargets1D[] = {GL_TEXTURE_1D, GL_PROXY_TEXTURE_1D};
 constexpr GLenum kTargets2D[] = {GL_TEXTURE_2D, GL_PROXY_TEXTURE_2D, GL_TEXTURE_CUBE_MAP_NEGATIVE_X,
-                                 GL_PROXY_TEXTURE_CUBE_MAP};
+                                 GL_PROXY_TEXTURE_CUBE_MAP, GL_TEXTURE_RECTANGLE_ARB, GL_PROXY_TEXTURE_RECTANGLE_ARB};
 constexpr GLenum kTargets3D[] = {GL_TEXTURE_3D, GL_PROXY_TEXTURE_3D};
 constexpr GLenum kFormats[] = {GL_RGBA, GL_RGB, GL_LUMINANCE, GL_DEPTH_COMPONENT, GL_BGRA, GL_COLOR_INDEX};
 constexpr GLenum kTypes[] = {GL_UNSIGNED_BYTE, GL_FLOAT, GL_UNSIGNED_SHORT_5_6_5, GL_UNSIGNED_INT_8_8_8_8_REV,

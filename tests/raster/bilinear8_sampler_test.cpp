@@ -59,14 +59,17 @@ TEST(Bilinear8Sampler, TexelCentresGiveTheTexelExactly) {
       EXPECT_EQ(out[c][i], static_cast<float>((texels[i] >> (8 * c)) & 0xff) * (1.f / 255.f)) << i << " " << c;
 }
 
-TEST(Bilinear8Sampler, WeightsTruncateToOne256th) {
-  // Texels 0 and 255 along s; u = 2s - 0.5 = 0.3 weighs the second by floor(0.3 * 256) / 256.
+TEST(Bilinear8Sampler, WeightsRoundToTheNearestOne256th) {
+  // Texels 0 and 255 along s; u = 2s - 0.5 = 0.3 weighs the second by round(0.3 * 256) / 256
+  // (76.8: 77), as llvmpipe; u = 0.2 by round(51.2) / 256 = 51 / 256.
   const TextureImage image = one_level(2, 1, {0u, 0xffffffffu});
   const Sampler sampler = linear(TexWrap::ClampToEdge);
   F4 out[4];
-  const float s = 0.4f;
-  select_bilinear8_sampler(image, sampler)(image, sampler, F4{s, s, s, s}, F4{0.5f, 0.5f, 0.5f, 0.5f}, out);
-  for (int c = 0; c < 4; ++c) EXPECT_FLOAT_EQ(out[c][0], 76.f / 256.f);
+  select_bilinear8_sampler(image, sampler)(image, sampler, F4{0.4f, 0.35f, 0.4f, 0.35f}, F4{0.5f, 0.5f, 0.5f, 0.5f}, out);
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_FLOAT_EQ(out[c][0], 77.f / 256.f);
+    EXPECT_FLOAT_EQ(out[c][1], 51.f / 256.f);
+  }
 }
 
 TEST(Bilinear8Sampler, MipmapBlendUsesLambdaInOne256th) {

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <GL/glext.h>
+
 #include "tests/e2e/support/gl_test.h"
 
 namespace pineda::test {
@@ -13,6 +15,22 @@ inline std::vector<uint8_t> solid_texels(int texels, const Rgba& c) {
   for (int i = 0; i < texels; ++i)
     for (int v : c) t.push_back(uint8_t(v));
   return t;
+}
+
+// A kRectWidth x kRectHeight image (not powers of two) whose texels all differ, for rectangle
+// textures: texel (i, j) is rect_texel(i, j).
+constexpr int kRectWidth = 5, kRectHeight = 3;
+inline Rgba rect_texel(int i, int j) { return {40 * i + 20, 60 * j + 30, 200 - 30 * i, 255}; }
+
+// Loads that image into the rectangle texture bound to the active unit.
+inline void load_rect_image() {
+  std::vector<uint8_t> data;
+  for (int j = 0; j < kRectHeight; ++j)
+    for (int i = 0; i < kRectWidth; ++i)
+      for (int c : rect_texel(i, j)) data.push_back(uint8_t(c));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA, kRectWidth, kRectHeight, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               data.data());
 }
 
 }  // namespace pineda::test
