@@ -8,6 +8,7 @@
 
 extern "C" {
 void glAlphaFuncx(GLenum func, GLfixed ref);
+void glBindVertexArrayOES(GLuint array);
 void glBlendEquationOES(GLenum mode);
 void glBlendEquationSeparateOES(GLenum modeRGB, GLenum modeAlpha);
 void glBlendFuncSeparateOES(GLenum srcRGB, GLenum dstRGB, GLenum srcAlpha, GLenum dstAlpha);
@@ -19,6 +20,7 @@ void glColor4x(GLfixed red, GLfixed green, GLfixed blue, GLfixed alpha);
 void glDebugMessageCallbackKHR(GLDEBUGPROC callback, const void *userParam);
 void glDebugMessageControlKHR(GLenum source, GLenum type, GLenum severity, GLsizei count, const GLuint *ids, GLboolean enabled);
 void glDebugMessageInsertKHR(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei length, const GLchar *buf);
+void glDeleteVertexArraysOES(GLsizei n, const GLuint *arrays);
 void glDepthRangex(GLfixed n, GLfixed f);
 void glDiscardFramebufferEXT(GLenum target, GLsizei numAttachments, const GLenum *attachments);
 void glDrawBuffersEXT(GLsizei n, const GLenum *bufs);
@@ -34,6 +36,7 @@ void glFogx(GLenum pname, GLfixed param);
 void glFogxv(GLenum pname, const GLfixed *param);
 void glFrustumf(GLfloat l, GLfloat r, GLfloat b, GLfloat t, GLfloat n, GLfloat f);
 void glFrustumx(GLfixed l, GLfixed r, GLfixed b, GLfixed t, GLfixed n, GLfixed f);
+void glGenVertexArraysOES(GLsizei n, GLuint *arrays);
 void glGetBufferPointervOES(GLenum target, GLenum pname, void **params);
 void glGetClipPlanef(GLenum plane, GLfloat *equation);
 void glGetClipPlanex(GLenum plane, GLfixed *equation);
@@ -55,6 +58,7 @@ void glGetnUniformfvKHR(GLuint program, GLint location, GLsizei bufSize, GLfloat
 void glGetnUniformivEXT(GLuint program, GLint location, GLsizei bufSize, GLint *params);
 void glGetnUniformivKHR(GLuint program, GLint location, GLsizei bufSize, GLint *params);
 void glGetnUniformuivKHR(GLuint program, GLint location, GLsizei bufSize, GLuint *params);
+GLboolean glIsVertexArrayOES(GLuint array);
 void glLightModelx(GLenum pname, GLfixed param);
 void glLightModelxv(GLenum pname, const GLfixed *param);
 void glLightx(GLenum light, GLenum pname, GLfixed param);

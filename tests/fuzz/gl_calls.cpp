@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tests/fuzz/client_arrays.h"
+#include "tests/fuzz/es_prototypes.h"
 #include "tests/fuzz/object_names.h"
 
 namespace pineda::fuzz {
@@ -679,6 +680,10 @@ const GlCall kCalls[] = {
     {"glGenVertexArrays", gen_names<glGenVertexArrays, 4>},
     {"glBindVertexArray", [](FuzzInput& in, ClientMemory&) { glBindVertexArray(in.name()); }},
     {"glDeleteVertexArrays", delete_names<glDeleteVertexArrays>},
+    {"glGenVertexArraysOES", gen_names<glGenVertexArraysOES, 4>},
+    {"glBindVertexArrayOES", [](FuzzInput& in, ClientMemory&) { glBindVertexArrayOES(in.name()); }},
+    {"glDeleteVertexArraysOES", delete_names<glDeleteVertexArraysOES>},
+    {"glIsVertexArrayOES", [](FuzzInput& in, ClientMemory&) { glIsVertexArrayOES(in.name()); }},
     {"glMap1f",
      [](FuzzInput& in, ClientMemory& memory) {
        // stride * order floats are read: at most 40 * 31 of the 16384 floats there.
