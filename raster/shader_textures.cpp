@@ -27,26 +27,17 @@ bool kind_matches(const TextureImage& image, SamplerKind kind) {
   return false;
 }
 
-// GL 2.0 table 3.20: what a shader reads of each base format (four lanes, as apply_base_format).
-void apply_base_format4(TexBaseFormat format, F4 t[4]) {
+// GL 2.0 table 3.20: what a shader reads of each base format, for one texel (float) or four
+// lanes (F4); the block samplers' apply_base_format_lanes is the same table.
+template <typename V>
+void apply_base_format(TexBaseFormat format, V t[4]) {
+  const V zero = V{}, one = zero + 1.f;
   switch (format) {
-    case TexBaseFormat::Alpha: t[0] = t[1] = t[2] = splat(0.f); break;
-    case TexBaseFormat::Luminance: t[1] = t[2] = t[0]; t[3] = splat(1.f); break;
+    case TexBaseFormat::Alpha: t[0] = t[1] = t[2] = zero; break;
+    case TexBaseFormat::Luminance: t[1] = t[2] = t[0]; t[3] = one; break;
     case TexBaseFormat::LuminanceAlpha: t[1] = t[2] = t[0]; break;
     case TexBaseFormat::Intensity: t[1] = t[2] = t[3] = t[0]; break;
-    case TexBaseFormat::RGB: t[3] = splat(1.f); break;
-    case TexBaseFormat::RGBA: break;
-  }
-}
-
-// GL 2.0 table 3.20: what a shader reads of each base format.
-void apply_base_format(TexBaseFormat format, float t[4]) {
-  switch (format) {
-    case TexBaseFormat::Alpha: t[0] = t[1] = t[2] = 0.f; break;
-    case TexBaseFormat::Luminance: t[1] = t[2] = t[0]; t[3] = 1.f; break;
-    case TexBaseFormat::LuminanceAlpha: t[1] = t[2] = t[0]; break;
-    case TexBaseFormat::Intensity: t[1] = t[2] = t[3] = t[0]; break;
-    case TexBaseFormat::RGB: t[3] = 1.f; break;
+    case TexBaseFormat::RGB: t[3] = one; break;
     case TexBaseFormat::RGBA: break;
   }
 }
@@ -151,7 +142,7 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
     if (fast) {
       F4 lanes[4];
       fast(*image, sampler, load4(&coords[0][first]), load4(&coords[1][first]), lanes);
-      apply_base_format4(image->base_format, lanes);
+      apply_base_format(image->base_format, lanes);
       for (int c = 0; c < 4; ++c) store4(&out[c][first], lanes[c]);
       continue;
     }
