@@ -118,8 +118,11 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   // 2D lookups of RGBA8 images with linear filters take the fixed-function unit's fast sampler
   // (8-bit weights, as llvmpipe): one LOD per quad, as the general sampler; nearest ones the
   // general sampler's texels without its level-of-detail work (sampler_nearest8.h).
+  // An explicit level of detail (texture2DLod, and every lookup of a vertex shader) chooses
+  // nothing when the texture is not mipmapped: the fast samplers take both filters alike.
+  const bool mipmapped = tu && tu->sampler.min_filter != TexFilter::Linear && tu->sampler.min_filter != TexFilter::Nearest;
   QuadSampler fast = nullptr;
-  if (image && (kind == SamplerKind::Tex2D || kind == SamplerKind::Rect) && mode != shader::LodMode::Explicit) {
+  if (image && (kind == SamplerKind::Tex2D || kind == SamplerKind::Rect) && (mode != shader::LodMode::Explicit || !mipmapped)) {
     const FastSamplers& f = fast_samplers(unit, *image);
     float* const channels[4] = {out[0], out[1], out[2], out[3]};
     if (f.block && sample_block_at_one_level(f.block, *image, tu->sampler, coords[0], coords[1], mode, lod, live, channels)) {

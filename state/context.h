@@ -38,6 +38,7 @@
 #include "state/share_group.h"
 #include "state/stencil_faces.h"
 #include "state/tex_env_state.h"
+#include "state/transformed_vertices.h"
 #include "state/texture_object.h"
 #include "state/vertex_extras_state.h"
 #include "state/vertex_arrays/vertex_array_object.h"
@@ -184,7 +185,7 @@ class Context {
   std::vector<raster::VertexInput> immediate;
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
-  std::vector<raster::ClipVertex> transformed;  // vertex-stage output of the current draw
+  TransformedVertices transformed;  // vertex-stage output of the current draw
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
   // (empty when the material did not change inside the primitive); the first is the one in
   // effect at glBegin.

@@ -75,8 +75,7 @@ int snapshot_textures(Context& ctx) {
 // Transform and lighting of a draw's vertices into ctx.transformed, in pieces on the renderer's
 // threads (each vertex alone: the pieces do not change a value).
 void transform_in_pieces(Context& ctx, const raster::Transform& transform, std::span<const raster::VertexInput> vertices) {
-  ctx.transformed.resize(vertices.size());
-  const std::span<raster::ClipVertex> out(ctx.transformed);
+  const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.size());
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     raster::transform_vertices(transform, vertices.subspan(begin, end - begin), out.subspan(begin, end - begin));
   });
@@ -120,9 +119,10 @@ void draw_fixed_function(Context& ctx, raster::Primitive primitive, std::span<co
   raster::DrawState& state = ctx.draw_state;
   state.viewport = ctx.viewport;
   state.cull_face = ctx.enable_cull;
-  if (program && draw_fragment_program_only(ctx, primitive, ctx.transformed, indices)) return;
-  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, ctx.transformed, indices);
-  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, ctx.transformed, indices); });
+  const std::span<const raster::ClipVertex> transformed = ctx.transformed.vertices();
+  if (program && draw_fragment_program_only(ctx, primitive, transformed, indices)) return;
+  if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, transformed, indices);
+  ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, transformed, indices); });
 }
 
 }  // namespace
@@ -149,7 +149,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   draw_fixed_function(ctx, primitive, indices, run_vertex_program, [&](raster::Transform& transform) {
     if (materials.empty() || !ctx.lighting.enabled) return transform_in_pieces(ctx, transform, vertices);
     // Each run of vertices is lit with the material in effect when they were specified.
-    ctx.transformed.resize(vertices.size());
+    const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.size());
     std::vector<raster::ClipVertex> run_out;
     for (size_t i = 0; i < materials.size(); ++i) {
       const size_t first = std::min(materials[i].first, vertices.size());
@@ -158,7 +158,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
       transform.lighting.front = materials[i].front;
       transform.lighting.back = materials[i].back;
       raster::transform_vertices(transform, vertices.subspan(first, end - first), run_out);
-      std::copy(run_out.begin(), run_out.end(), ctx.transformed.begin() + first);
+      std::copy(run_out.begin(), run_out.end(), out.begin() + first);
     }
   });
 }
@@ -185,8 +185,7 @@ void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertice
   if (!to_primitive(mode, primitive)) return;
   draw_fixed_function(ctx, primitive, indices, [] { return false; }, [&](const raster::Transform& transform) {
     constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
-    ctx.transformed.resize(vertices.count);
-    const std::span<raster::ClipVertex> out(ctx.transformed);
+    const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.count);
     ctx.renderer().for_each_piece(vertices.count, raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
       std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
       for (size_t first = begin; first < end; first += kFetchRun) {

@@ -1,5 +1,7 @@
 // glFramebufferTexture1D/2D/3D, glFramebufferTextureLayer, glFramebufferRenderbuffer and
 // glGetFramebufferAttachmentParameteriv.
+#include <algorithm>
+
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
@@ -37,7 +39,16 @@ FramebufferObject* attachment_target(Context& ctx, GLenum target, GLenum attachm
   return fb;
 }
 
+bool same_image(const Attachment& a, const Attachment& b) {
+  return a.type == b.type && a.renderbuffer == b.renderbuffer && a.name == b.name && a.level == b.level &&
+         a.face == b.face && a.cube == b.cube && a.layer == b.layer;
+}
+
 void set_attachments(Context& ctx, FramebufferObject& fb, const int points[2], int count, const Attachment& a) {
+  // Attaching the image already attached changes nothing: the queued rendering stays queued and
+  // a depth texture keeps its integer copy (glmark2's shadow scene attaches its depth texture
+  // again every frame).
+  if (std::all_of(points, points + count, [&](int p) { return same_image(fb.attachments[p], a); })) return;
   resolve_rendered_textures(ctx);
   ctx.finish();
   for (int i = 0; i < count; ++i) fb.attachments[points[i]] = a;

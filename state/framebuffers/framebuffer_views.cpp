@@ -1,10 +1,9 @@
 // Completeness of framebuffer objects and the views the context renders through.
 #include <algorithm>
-#include <bit>
-#include <cmath>
 #include <span>
 
 #include "state/context.h"
+#include "state/framebuffers/depth_copy.h"
 #include "state/framebuffers/framebuffer_object.h"
 
 namespace pineda {
@@ -36,8 +35,6 @@ GLint image_internal_format(Context& ctx, const Attachment& a) {
 
 GLsizei attachment_samples(const Attachment& a) { return a.type == GL_RENDERBUFFER ? a.renderbuffer->samples : 0; }
 
-double depth_max(int bits) { return std::ldexp(1.0, bits) - 1.0; }
-
 // The depth texture's texels as integers of `bits` bits, when the texture changed since the
 // last import.
 void import_depth(Context& ctx, Attachment& a, const TextureLevelData& level, int bits) {
@@ -47,13 +44,10 @@ void import_depth(Context& ctx, Attachment& a, const TextureLevelData& level, in
   // Rendering queued into this copy is written back first, so none is lost.
   resolve_rendered_textures(ctx);
   if (a.depth_copy_version == tex->version && a.depth_copy.size() == n) return;
-  const double max = depth_max(bits);
   const size_t offset = n * size_t(a.layer);
   a.depth_copy.assign(n, 0);
-  for (size_t i = 0; i < n && offset + i < level.texels.size(); ++i) {
-    const double z = std::clamp<double>(std::bit_cast<float>(level.texels[offset + i]), 0.0, 1.0);
-    a.depth_copy[i] = static_cast<uint32_t>(std::nearbyint(z * max));
-  }
+  const size_t present = std::min(n, level.texels.size() - std::min(offset, level.texels.size()));
+  depth_integers_from_floats(level.texels.data() + offset, a.depth_copy.data(), present, bits);
   a.depth_copy_version = tex->version;
 }
 
@@ -256,11 +250,11 @@ void resolve_rendered_textures(Context& ctx) {
     const bool depth_copy = p == kDepthPoint && a.depth_copy_version == tex->version;
     if (depth_copy) {
       const std::optional<RenderableFormat> format = attachment_format(ctx, a);
-      const double max = depth_max(format ? format->depth_bits : 24);
+      const int bits = format ? format->depth_bits : 24;
       const size_t n = std::min(a.depth_copy.size(), size_t(level->width) * size_t(level->height));
       const size_t offset = n * size_t(a.layer);
-      for (size_t i = 0; i < n && offset + i < level->texels.size(); ++i)
-        level->texels[offset + i] = std::bit_cast<uint32_t>(static_cast<float>(a.depth_copy[i] / max));
+      const size_t present = std::min(n, level->texels.size() - std::min(offset, level->texels.size()));
+      depth_floats_from_integers(a.depth_copy.data(), level->texels.data() + offset, present, bits);
     }
     tex->changed();
     if (depth_copy) a.depth_copy_version = tex->version;

@@ -135,7 +135,7 @@ PointSizes point_sizes(const Context& ctx, const shader::Program& program) {
 void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
                        const std::array<raster::TextureUnit, raster::kMaxTextureImageUnits>& units,
                        const ShaderVertices& vertices, AttribSource source, const PointSizes& sizes,
-                       bool conventional_outputs, std::vector<raster::ClipVertex>& out,
+                       bool conventional_outputs, TransformedVertices& transformed,
                        std::vector<float>& varyings) {
   const int slots = std::max(program.input_slots(), 1);
   const int nv = program.varying_floats();
@@ -144,8 +144,9 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   constexpr size_t kRunVertices = static_cast<size_t>(shader::kMaxBlocksPerRun) * kLanes;
   static_assert(raster::Renderer::kVerticesPerPiece % kRunVertices == 0);
   const size_t in_floats = static_cast<size_t>(slots) * 4 * kLanes, out_floats = static_cast<size_t>(outputs) * kLanes;
-  out.resize(vertices.size());
-  varyings.resize(vertices.size() * static_cast<size_t>(nv));
+  const std::span<raster::ClipVertex> out = transformed.resize(vertices.size());
+  // Only grows, as `transformed`: every vertex's varyings are written below.
+  if (const size_t floats = vertices.size() * static_cast<size_t>(nv); varyings.size() < floats) varyings.resize(floats);
   const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
   const Context& state = ctx;
@@ -305,18 +306,18 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   const bool conventional_outputs = ctx.render_mode.mode != GL_RENDER;
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
                     point_sizes(ctx, program), conventional_outputs, ctx.transformed, varyings);
-  draw_or_feed_back(ctx, state, primitive, ctx.transformed, indices, varyings.data());
+  draw_or_feed_back(ctx, state, primitive, ctx.transformed.vertices(), indices, varyings.data());
   return true;
 }
 
 bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
-                             std::vector<raster::ClipVertex>& out) {
+                             TransformedVertices& transformed) {
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || !exec->vertex_shader || exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
   std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
   if (!shader_draw) {
-    out.clear();
+    transformed.resize(0);
     return true;
   }
   raster::DrawState state = ctx.draw_state;
@@ -324,7 +325,8 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
   std::vector<float>& varyings = ctx.programs.draw_varyings;
   run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, {vertices, {}},
-                    source, point_sizes(ctx, program), true, out, varyings);
+                    source, point_sizes(ctx, program), true, transformed, varyings);
+  const std::span<raster::ClipVertex> out = transformed.vertices();
   const int nv = program.varying_floats();
   for (size_t i = 0; i < out.size(); ++i) {
     raster::ClipVertex& v = out[i];

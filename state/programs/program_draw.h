@@ -9,6 +9,7 @@
 #include "raster/draw_state.h"
 #include "raster/vertex.h"
 #include "state/programs/generic_attribs.h"
+#include "state/transformed_vertices.h"
 
 namespace pineda {
 
@@ -32,7 +33,7 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
 // gl_Position, gl_FrontColor, gl_TexCoord[i], ... become `out` for the fixed-function
 // fragment stage. False when the program in use is not such a program.
 bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> vertices, AttribSource source,
-                             std::vector<raster::ClipVertex>& out);
+                             TransformedVertices& transformed);
 
 // A program with a fragment shader only: the fixed-function vertex stage produced
 // `vertices`; their colours, texture coordinates and fog coordinate are the shader's inputs.

@@ -226,6 +226,40 @@ TEST_F(RenderToTextureTest, DepthTextureRenderedThenCompared) {
   glDeleteTextures(1, &depth);
 }
 
+// Attaching the attached depth texture again (as glmark2's shadow scene does every frame) keeps
+// what was rendered into it, queued or finished, and what is rendered after.
+TEST_F(RenderToTextureTest, AttachingTheSameDepthTextureAgainKeepsItsDepths) {
+  const GLuint color = make_renderbuffer(GL_RGBA8, 16, 16);
+  const GLuint depth = make_texture(GL_DEPTH_COMPONENT24, 16, 16, GL_DEPTH_COMPONENT, GL_FLOAT);
+  const GLuint fb = make_fbo();
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+  const auto attach = [&] { glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0); };
+  attach();
+  ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  draw_rect(0, 0, 8, 16, 0.f);  // left half at depth 0.5, still queued when attached again
+  attach();
+  draw_rect(8, 0, 16, 16, 0.5f);  // right half at 0.25 (the fixture's glOrtho turns z)
+  std::vector<float> z(16 * 16);
+  glBindTexture(GL_TEXTURE_2D, depth);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());
+  EXPECT_NEAR(z[3], 0.5f, 1e-6);
+  EXPECT_NEAR(z[12], 0.25f, 1e-6);
+  attach();
+  draw_rect(0, 0, 16, 8, -0.5f);  // depth 0.75: fails the test everywhere
+  draw_rect(0, 0, 4, 16, 1.f);  // depth 0 at the left edge
+  glDisable(GL_DEPTH_TEST);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());
+  EXPECT_EQ(z[1], 0.f);
+  EXPECT_NEAR(z[5], 0.5f, 1e-6);
+  EXPECT_NEAR(z[12], 0.25f, 1e-6);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glDeleteFramebuffers(1, &fb);
+  glDeleteRenderbuffers(1, &color);
+  glDeleteTextures(1, &depth);
+}
+
 // Formats with fewer bits than 8: each pixel is stored as the format keeps it.
 TEST_F(RenderToTextureTest, ReducedColourFormats) {
   struct Case { GLenum format; Rgba expected; } cases[] = {

@@ -160,6 +160,33 @@ TEST_F(ShaderRenderingTest, EveryBaseFormatReadsAsTable320InEveryPixel) {
   }
 }
 
+// Without mipmaps a level of detail chooses nothing: a vertex shader's lookups (at level 0, as
+// texture2DLod's) read what a fragment shader's read, through the same 8-bit filter, to the bit.
+TEST_F(ShaderRenderingTest, VertexShaderLookupsReadAsFragmentShaderLookups) {
+  GLubyte texels[4 * 4 * 4];
+  for (int i = 0; i < 64; ++i) texels[i] = GLubyte((i * 97 + 13) % 256);
+  glBindTexture(GL_TEXTURE_2D, 3);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // A point's varyings are the same in all its fragments: the fragment shader's coordinates do
+  // not vary, so it magnifies (level 0) too.
+  use("uniform sampler2D tex; varying vec2 uv; varying vec4 c;\n"
+      "void main() { uv = gl_MultiTexCoord0.xy; c = texture2D(tex, uv); gl_Position = gl_Vertex; }\n",
+      "uniform sampler2D tex; varying vec2 uv; varying vec4 c;\n"
+      "void main() { gl_FragColor = vec4(min(abs(c - texture2D(tex, uv)) * 65536.0, 1.0).rgb, 1.0); }\n");
+  glClearColor(0.f, 0.f, 1.f, 1.f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glBegin(GL_POINTS);
+  for (int i = 0; i < 64; ++i) {
+    const int x = i % 8 * 3, y = i / 8 * 3;
+    glTexCoord2f(0.013f + 0.0371f * float(i), 0.9f - 0.0293f * float(i));
+    glVertex2f((float(x) + 0.5f) / float(width()) * 2.f - 1.f, (float(y) + 0.5f) / float(height()) * 2.f - 1.f);
+  }
+  glEnd();
+  EXPECT_EQ(count_pixels({0, 0, 0, 255}), 64);
+}
+
 TEST_F(ShaderRenderingTest, DiscardKeepsTheFramebuffer) {
   use(kPassVs, "void main() { if (gl_FragCoord.x < 10.0) discard; gl_FragColor = vec4(0.0, 1.0, 0.0, 1.0); }\n");
   full_screen();
