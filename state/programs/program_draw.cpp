@@ -150,6 +150,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
   const uint32_t planes = enabled_clip_planes(ctx);
   const Context& state = ctx;
+  // Array elements take their edge flags from the edge flag array only when it is enabled.
+  const bool edge_flag_array = vertices.inputs.empty() && ctx.edge_flag_array.active();
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
     std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
@@ -200,16 +202,19 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         if (conventional_outputs) std::memcpy(&c, &kZero, sizeof c);
         for (int k = 0; k < 4; ++k) c.clip[k] = r[static_cast<size_t>(shader::kOutPosition + k) * kLanes + lane];
         std::fill(std::begin(c.clip_distance), std::end(c.clip_distance), 0.f);
-        const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
-                                     r[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
-                                     r[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
-                                     r[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
-        for (uint32_t left = planes; left; left &= left - 1) {  // GL 2.0 2.12: planes test gl_ClipVertex
-          const int p = __builtin_ctz(left);
-          c.clip_distance[p] = static_cast<float>(glm::dot(state.extras.clip_planes[p], clip_vertex));
+        if (planes) {
+          const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
+                                       r[static_cast<size_t>(shader::kOutClipVertex + 1) * kLanes + lane],
+                                       r[static_cast<size_t>(shader::kOutClipVertex + 2) * kLanes + lane],
+                                       r[static_cast<size_t>(shader::kOutClipVertex + 3) * kLanes + lane]);
+          for (uint32_t left = planes; left; left &= left - 1) {  // GL 2.0 2.12: planes test gl_ClipVertex
+            const int p = __builtin_ctz(left);
+            c.clip_distance[p] = static_cast<float>(glm::dot(state.extras.clip_planes[p], clip_vertex));
+          }
         }
-        c.edge_flag = vertices.inputs.empty() ? array_edge_flag(state, vertices.elements[first + i])
-                                              : vertices.inputs[first + i].edge_flag;
+        c.edge_flag = !vertices.inputs.empty() ? vertices.inputs[first + i].edge_flag
+                      : edge_flag_array        ? array_edge_flag(state, vertices.elements[first + i])
+                                               : state.current_edge_flag;
         const float size = sizes.from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane] : sizes.fixed;
         c.point_size = std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max);
         float* dst = varyings.data() + (first + i) * static_cast<size_t>(nv);

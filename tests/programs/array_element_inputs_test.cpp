@@ -131,6 +131,16 @@ TEST_F(ArrayElementInputsTest, EdgeFlagsComeFromTheEdgeFlagArray) {
   EXPECT_GT(two_edges, 0);
   EXPECT_LT(two_edges, all_edges);
   EXPECT_EQ(read_all(), from_arrays);
+  // With the edge flag array disabled every array element takes the current flag (false: no edge).
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(3);
+  clear_to(0, 0, 0, 0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);  // the current flag is flags[2], true
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), all_edges);
+  glEdgeFlag(GL_FALSE);
+  clear_to(0, 0, 0, 0);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 0);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
