@@ -23,6 +23,9 @@ float pow_value(float x, float y) {
   return r[0];
 }
 
+// The executor's exp and exp2 over vectors, for one value.
+float exp_value(float x, bool natural) { return lane_exp<4>(LaneTypes<4>::F{x, x, x, x}, natural)[0]; }
+
 // The executor's sin and cos over vectors, for one value.
 float sin_cos_value(float x, bool cosine) {
   return lane_sin_cos<4>(LaneTypes<4>::F{x, x, x, x}, cosine)[0];
@@ -85,9 +88,9 @@ float eval_unary(Op op, float a) {
     case Op::Rsq: return 1.0f / std::sqrt(a);
     // The scale that normalizes a vector of squared length a; 0 for a zero vector.
     case Op::NormScale: return a > 0.0f ? 1.0f / std::sqrt(a) : 0.0f;
-    case Op::Exp: return std::exp(a);
+    case Op::Exp: return exp_value(a, true);
     case Op::Log: return std::log(a);
-    case Op::Exp2: return std::exp2(a);
+    case Op::Exp2: return exp_value(a, false);
     case Op::Log2: return std::log2(a);
     case Op::Sin: return sin_cos_value(a, false);
     case Op::Cos: return sin_cos_value(a, true);

@@ -47,9 +47,34 @@ UNARY_TEST(Sin, "sin", static_cast<float>(std::sin(static_cast<double>(x))))
 UNARY_TEST(Cos, "cos", static_cast<float>(std::cos(static_cast<double>(x))))
 UNARY_TEST(Tan, "tan", std::tan(x))
 UNARY_TEST(Atan, "atan", std::atan(x))
-UNARY_TEST(Exp, "exp", std::exp(x))
-UNARY_TEST(Exp2, "exp2", std::exp2(x))
+// exp and exp2 are correctly rounded here (shader/lane_pow.inc: 2^t in double, rounded once).
+UNARY_TEST(Exp, "exp", static_cast<float>(std::exp(static_cast<double>(x))))
+UNARY_TEST(Exp2, "exp2", static_cast<float>(std::exp2(static_cast<double>(x))))
 UNARY_TEST(Negate, "-", -x)
+
+// exp and exp2 at the ends of float's range, at infinities and NaN (glslang folds constants).
+TEST(BuiltinFunctions, ExpAndExp2EdgesAndConstants) {
+  const auto edges = [](int l, int) {
+    static const float v[16] = {kInf, -kInf, std::numeric_limits<float>::quiet_NaN(), 128.0f, -150.0f, 127.5f, -126.0f,
+                                0.5f, 1.0f, 20.0f, -20.0f, 88.7f, -87.5f, 1e-8f, -1e-8f, -126.5f};
+    return v[l];
+  };
+  ExprResult r = run_fragment("gl_FragColor = vec4(exp2(a.x), exp(a.x), exp2(-a.x), exp(1.0));", edges);
+  // Rounded once to float; below FLT_MIN, zero (denormals are flushed while shaders run).
+  const auto rounded = [](double v) {
+    const float f = static_cast<float>(v);
+    return std::fabs(f) < std::numeric_limits<float>::min() ? 0.0f : f;
+  };
+  expect_lanes(r, 0, [&](int l) { return rounded(std::exp2(static_cast<double>(edges(l, 0)))); }, "exp2");
+  expect_lanes(r, 1, [&](int l) { return rounded(std::exp(static_cast<double>(edges(l, 0)))); }, "exp");
+  EXPECT_EQ(r.c[0][0], kInf);
+  EXPECT_EQ(r.c[0][1], 0.0f);
+  EXPECT_TRUE(std::isnan(r.c[0][2]));
+  EXPECT_EQ(r.c[0][6], std::numeric_limits<float>::min());  // 2^-126
+  EXPECT_EQ(r.c[0][15], 0.0f);                              // 2^-126.5
+  expect_lanes(r, 2, [&](int l) { return rounded(std::exp2(-static_cast<double>(edges(l, 0)))); }, "exp2(-x)");
+  expect_lanes(r, 3, [](int) { return static_cast<float>(std::exp(1.0)); }, "exp const");
+}
 
 // Arguments over many quadrants, and beyond 2^17 (reduced by C's sin and cos in double), and a
 // constant folded at link time against the same value computed per lane.
