@@ -264,8 +264,9 @@ void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Pri
                        const float* varyings) {
   if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, vertices, indices);
   ctx.render_to_draw_buffers([&] {
-    // gl_FragData[i] goes to the colour buffer DRAW_BUFFERi selects.
-    const int output = ctx.draw_pass_output();
+    // gl_FragData[i] goes to the colour buffer DRAW_BUFFERi selects, gl_FragColor (colour 0) to all.
+    const shader::Program* program = state.shader ? state.shader->program.get() : nullptr;
+    const int output = program && program->broadcasts_color() ? 0 : ctx.draw_pass_output();
     if (!state.shader || state.shader->color_output == output)
       return ctx.renderer().draw(state, primitive, vertices, indices, varyings);
     raster::DrawState pass = state;
