@@ -11,7 +11,6 @@
 #include "raster/shader_textures.h"
 #include "state/context.h"
 #include "state/programs/builtin_uniforms.h"
-#include "state/programs/program_link.h"
 #include "state/select_feedback.h"
 #include "state/texture_target.h"
 #include "state/vertex_fetch.h"
@@ -247,8 +246,8 @@ const LinkedProgram* program_in_use(Context& ctx) {
 
 // The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
 std::shared_ptr<raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec) {
-  if (!samplers_consistent(exec, nullptr)) {
-    ctx.record_error(GL_INVALID_OPERATION, "samplers of different types use the same texture unit");
+  if (!exec.sampler_conflict.empty()) {
+    ctx.record_error(GL_INVALID_OPERATION, exec.sampler_conflict);
     return nullptr;
   }
   auto draw = std::make_shared<raster::ShaderDraw>();
