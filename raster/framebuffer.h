@@ -49,7 +49,7 @@ struct StencilBuffer {
 };
 
 // The colour buffers one draw writes at most (GL_MAX_DRAW_BUFFERS).
-constexpr int kMaxColorTargets = 4;
+constexpr int kMaxColorTargets = 8;
 
 // A multisampled framebuffer (samples > 1) keeps each sample as a whole plane of every
 // buffer: sample s of a pixel is where the pixel is in plane s (raster/multisample.h).

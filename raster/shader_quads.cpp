@@ -203,8 +203,9 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
   if (sd.color_output != 0 && s.alpha_test)  // colour 0's alpha is tested even if never written
     std::fill(&block.color[0][3][0], &block.color[0][3][0] + kLanes, 0.f);
-  for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
-    std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
+  if (!program.broadcasts_color())  // else colour 0 serves every draw buffer
+    for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
+      std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
   block.varyings = &varyings[0][0];
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
@@ -340,7 +341,7 @@ std::conditional_t<kTargets, TargetViews, NoTargets> target_views(const DrawReco
       if (!fb.target_color(i).base || !record.color_write_any) continue;
       targets.view[size_t(targets.count)] = fb.target(i);
       targets.record[size_t(targets.count)] = &record;
-      targets.output[size_t(targets.count++)] = i;
+      targets.output[size_t(targets.count++)] = d.state.shader->program->broadcasts_color() ? 0 : i;
     }
   }
   return targets;

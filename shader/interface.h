@@ -49,6 +49,7 @@ struct Interface {
   bool writes_depth = false;
   bool uses_discard = false;
   int draw_buffers = 0;
+  bool broadcasts_color = false;  // gl_FragColor
   std::set<std::string> reads;
 
   // The uniform named `name` (shared by both stages), created when new; null on a type clash.

@@ -44,7 +44,7 @@ enum class Op : uint8_t {
   LoadFrontFacing,
   LoadPointCoord, // d = gl_PointCoord component i0
   StoreOutput,    // vertex output float i0 = a (all lanes)
-  StoreColor,     // fragment colour: buffer i0 >> 2, component i0 & 3 = a; i1 = 1: every buffer
+  StoreColor,     // fragment colour: buffer i0 >> 2, component i0 & 3 = a; i1 = 1: gl_FragColor (buffer 0, read for every buffer)
   StoreDepth,     // gl_FragDepth = a
   Texture,        // i0: index into Code::textures
   // Unary (d = f(a)).

@@ -241,6 +241,7 @@ LinkResult link(const std::vector<const CompiledShader*>& vertex, const std::vec
   linked_program->writes_depth_ = iface.writes_depth;
   linked_program->uses_discard_ = iface.uses_discard;
   linked_program->draw_buffers_ = iface.draw_buffers;
+  linked_program->broadcasts_color_ = iface.broadcasts_color;
   linked_program->reads_ = iface.reads;
   linked_program->reads_frag_coord_ = iface.reads.count("gl_FragCoord") != 0;
   linked_program->reads_point_coord_ = iface.reads.count("gl_PointCoord") != 0;

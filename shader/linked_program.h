@@ -21,6 +21,7 @@ class LinkedProgram final : public Program {
   bool writes_depth_ = false;
   bool uses_discard_ = false;
   int draw_buffers_ = 0;
+  bool broadcasts_color_ = false;
   std::set<std::string> reads_;
   bool reads_frag_coord_ = false;
   bool reads_point_coord_ = false;
@@ -37,6 +38,7 @@ class LinkedProgram final : public Program {
   bool writes_depth() const override { return writes_depth_; }
   bool uses_discard() const override { return uses_discard_; }
   int draw_buffers_written() const override { return draw_buffers_; }
+  bool broadcasts_color() const override { return broadcasts_color_; }
   bool reads(const char* builtin) const override { return reads_.count(builtin) != 0; }
   bool reads_frag_coord() const override { return reads_frag_coord_; }
   bool reads_point_coord() const override { return reads_point_coord_; }

@@ -12,6 +12,7 @@ void Lowerer::route_outputs() {
     for (const OutputVar& o : outputs_) {
       if (o.name == "gl_FragColor") {
         iface_.draw_buffers = std::max(iface_.draw_buffers, 1);
+        iface_.broadcasts_color = true;
         for (int c = 0; c < 4; ++c)
           code_.insts.push_back(ir::Inst{Op::StoreColor, kNone, o.reg + c, kNone, kNone, c, 1});
       } else if (o.name == "gl_FragData") {

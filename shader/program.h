@@ -16,7 +16,7 @@ namespace pineda::shader {
 constexpr int kLanes = 16;       // a 4x4 fragment block, or a batch of 16 vertices
 using LaneMask = uint16_t;       // bit i: lane i is live
 constexpr int kMaxBlocksPerRun = 4;  // fragment blocks one run_fragment_blocks shades together
-constexpr int kMaxDrawBuffers = 4;
+constexpr int kMaxDrawBuffers = 8;  // GL_MAX_DRAW_BUFFERS, as Mesa
 constexpr int kMaxVaryingFloats = 64;   // GL_MAX_VARYING_FLOATS (16 vec4)
 constexpr int kMaxVertexAttribs = 16;
 
@@ -146,7 +146,9 @@ struct FragmentBlock {
   // across two lines made every colour store two (glsl_lit spent a tenth of its time there).
   alignas(64) float frag_coord[4][kLanes];  // x+0.5, y+0.5, window z, 1/w
   float point_coord[2][kLanes];
-  float color[kMaxDrawBuffers][4][kLanes];  // out: gl_FragColor (broadcast) or gl_FragData[i] < draw_buffers_written()
+  // out: gl_FragData[i] < draw_buffers_written(), or gl_FragColor in color[0] alone (broadcasts_color():
+  // the caller reads it for every draw buffer, so one bound buffer costs one store).
+  float color[kMaxDrawBuffers][4][kLanes];
   float depth[kLanes];                      // out, when writes_depth()
 };
 
@@ -164,6 +166,7 @@ class Program {
   virtual bool writes_depth() const = 0;
   virtual bool uses_discard() const = 0;
   virtual int draw_buffers_written() const = 0;  // 1 for gl_FragColor, else highest gl_FragData + 1
+  virtual bool broadcasts_color() const = 0;     // writes gl_FragColor: color[0] is every draw buffer's
   virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
   virtual bool reads_frag_coord() const = 0;          // reads("gl_FragCoord"), without the lookup
   virtual bool reads_point_coord() const = 0;         // reads("gl_PointCoord"), without the lookup

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "shader/type_name.h"
+
 namespace pineda::shader {
 
 std::string type_name(const VarType& t) {
@@ -36,6 +38,13 @@ std::string type_name(const VarType& t) {
   }
   if (t.array) s << "[" << t.array << "]";
   return s.str();
+}
+
+std::string type_name(const Type& type) {
+  VarType t = VarType::scalar(type.base);
+  t.cols = type.columns;
+  t.rows = type.rows;
+  return type_name(t);
 }
 
 }  // namespace pineda::shader

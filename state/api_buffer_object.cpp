@@ -64,7 +64,8 @@ void unbind_everywhere(Context& ctx, GLuint name) {
   drop(ctx.pack.buffer);
   drop(ctx.unpack.buffer);
   for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array,
-                         &ctx.fog_coord_array, &ctx.secondary_color_array, &ctx.index_array})
+                         &ctx.fog_coord_array, &ctx.secondary_color_array, &ctx.index_array,
+                         &ctx.point_size_array})
     drop(a->buffer);
   for (TextureUnitState& unit : ctx.texture_units) drop(unit.texcoord_array.buffer);
   for (GenericArray& a : ctx.programs.arrays) drop(a.buffer);

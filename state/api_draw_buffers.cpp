@@ -12,7 +12,6 @@
 
 namespace pineda {
 
-static_assert(kMaxDrawBuffers == shader::kMaxDrawBuffers, "the fragment outputs a shader writes");
 static_assert(kMaxDrawBuffers == raster::kMaxColorTargets, "the colour buffers a draw writes");
 
 namespace {

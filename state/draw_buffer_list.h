@@ -6,12 +6,12 @@
 
 #include <array>
 
+#include "shader/program.h"
 #include "state/get_values.h"
 
 namespace pineda {
 
-// The fragment colour outputs Pineda writes (shader/program.h kMaxDrawBuffers).
-constexpr int kMaxDrawBuffers = 4;
+using shader::kMaxDrawBuffers;  // the fragment colour outputs a shader writes
 
 using ExtraDrawBuffers = std::array<GLenum, kMaxDrawBuffers - 1>;  // DRAW_BUFFER1..
 

@@ -515,10 +515,7 @@ class Generator {
         return finish_sources(at, in);
       case Op::StoreColor: {
         const int32_t color = static_cast<int32_t>(offsetof(FragmentBlock, color));
-        for (int buffer = 0; buffer < kMaxDrawBuffers; ++buffer) {
-          if (!in.i1 && buffer != in.i0 >> 2) continue;
-          x_.store({kBlock, color + (buffer * 4 + (in.i0 & 3)) * kBytesPerValue}, a);
-        }
+        x_.store({kBlock, color + in.i0 * kBytesPerValue}, a);  // buffer i0 >> 2, component i0 & 3
         return finish_sources(at, in);
       }
       default:

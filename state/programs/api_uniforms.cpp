@@ -8,6 +8,7 @@
 #include "state/context.h"
 #include "state/pixel_buffer.h"
 #include "state/programs/program_lookup.h"
+#include "state/programs/sampler_units.h"
 
 namespace pineda::gl {
 namespace {
@@ -74,6 +75,7 @@ void set_vector(Context& ctx, GLint location, GLsizei count, int components, Sou
       exec->values[at + c] = t.base == shader::BaseType::Bool ? (x != T(0) ? 1.f : 0.f) : static_cast<float>(x);
     }
   }
+  if (is_sampler(t.base)) exec->sampler_conflict = sampler_unit_conflict(*exec);
 }
 
 void set_matrix(Context& ctx, GLint location, GLsizei count, int columns, int rows, GLboolean transpose,

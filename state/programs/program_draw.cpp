@@ -11,7 +11,6 @@
 #include "raster/shader_textures.h"
 #include "state/context.h"
 #include "state/programs/builtin_uniforms.h"
-#include "state/programs/program_link.h"
 #include "state/select_feedback.h"
 #include "state/texture_target.h"
 #include "state/vertex_fetch.h"
@@ -253,8 +252,8 @@ const LinkedProgram* program_in_use(Context& ctx) {
 
 // The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
 std::shared_ptr<raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec) {
-  if (!samplers_consistent(exec, nullptr)) {
-    ctx.record_error(GL_INVALID_OPERATION, "samplers of different types use the same texture unit");
+  if (!exec.sampler_conflict.empty()) {
+    ctx.record_error(GL_INVALID_OPERATION, exec.sampler_conflict);
     return nullptr;
   }
   auto draw = std::make_shared<raster::ShaderDraw>();
@@ -270,8 +269,9 @@ void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Pri
                        const float* varyings) {
   if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, vertices, indices);
   ctx.render_to_draw_buffers([&] {
-    // gl_FragData[i] goes to the colour buffer DRAW_BUFFERi selects.
-    const int output = ctx.draw_pass_output();
+    // gl_FragData[i] goes to the colour buffer DRAW_BUFFERi selects, gl_FragColor (colour 0) to all.
+    const shader::Program* program = state.shader ? state.shader->program.get() : nullptr;
+    const int output = program && program->broadcasts_color() ? 0 : ctx.draw_pass_output();
     if (!state.shader || state.shader->color_output == output)
       return ctx.renderer().draw(state, primitive, vertices, indices, varyings);
     raster::DrawState pass = state;

@@ -3,13 +3,9 @@
 #include <algorithm>
 
 #include "state/context.h"
+#include "state/programs/sampler_units.h"
 
 namespace pineda {
-namespace {
-
-bool is_sampler(shader::BaseType b) { return b >= shader::BaseType::Sampler1D; }
-
-}  // namespace
 
 void link_program(Context& ctx, ProgramObject& p) {
   p.link_status = false;
@@ -49,30 +45,10 @@ void link_program(Context& ctx, ProgramObject& p) {
     }
     const auto& attributes = exec->program->attributes();
     for (size_t i = 0; i < attributes.size(); ++i) exec->attributes.push_back(static_cast<int>(i));
+    exec->sampler_conflict = sampler_unit_conflict(*exec);
   }
   p.executable = std::move(exec);
   p.link_status = true;
-}
-
-bool samplers_consistent(const LinkedProgram& exec, std::string* log) {
-  shader::BaseType unit_type[raster::kMaxTextureImageUnits];
-  bool used[raster::kMaxTextureImageUnits] = {};
-  for (const shader::Uniform& u : exec.uniforms.active) {
-    if (!is_sampler(u.type.base)) continue;
-    for (int e = 0; e < std::max(u.array_size, 1); ++e) {
-      const size_t at = static_cast<size_t>(u.offset + e * u.stride);
-      if (at >= exec.values.size()) continue;
-      const int unit = static_cast<int>(exec.values[at]);
-      if (unit < 0 || unit >= raster::kMaxTextureImageUnits) continue;
-      if (used[unit] && unit_type[unit] != u.type.base) {
-        if (log) *log = "error: samplers of different types use texture unit " + std::to_string(unit) + "\n";
-        return false;
-      }
-      used[unit] = true;
-      unit_type[unit] = u.type.base;
-    }
-  }
-  return true;
 }
 
 bool validate_program(const Context&, const ProgramObject& p, std::string& log) {
@@ -80,8 +56,8 @@ bool validate_program(const Context&, const ProgramObject& p, std::string& log) 
     log = "error: the program is not linked\n";
     return false;
   }
-  log.clear();
-  return samplers_consistent(*p.executable, &log);
+  log = p.executable->sampler_conflict;
+  return log.empty();
 }
 
 }  // namespace pineda

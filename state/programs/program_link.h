@@ -15,6 +15,5 @@ void link_program(Context& ctx, ProgramObject& program);
 // Whether the program's executable can run with the current state (GL 2.0 2.15.4): linked,
 // and no two samplers of different types on one texture unit. `log` says why not.
 bool validate_program(const Context& ctx, const ProgramObject& program, std::string& log);
-bool samplers_consistent(const LinkedProgram& exec, std::string* log);
 
 }  // namespace pineda

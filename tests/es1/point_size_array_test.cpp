@@ -98,5 +98,33 @@ TEST_F(PointSizeArray, StateAndErrors) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
 }
 
+// As Mesa: the deleted buffer's binding reverts to zero (the stored offset then names client
+// memory, the application's problem); draws with the array disabled keep working.
+TEST_F(PointSizeArray, DeletingItsBufferUnbindsIt) {
+  const GLfloat sizes[] = {5};
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, sizeof sizes, sizes, GL_STATIC_DRAW);
+  glPointSizePointerOES(GL_FLOAT, 0, nullptr);
+  GLint binding = -1;
+  glGetIntegerv(GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES, &binding);
+  EXPECT_EQ(binding, GLint(buffer));
+  glDeleteBuffers(1, &buffer);
+  glGetIntegerv(GL_POINT_SIZE_ARRAY_BUFFER_BINDING_OES, &binding);
+  EXPECT_EQ(binding, 0);
+  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &binding);
+  EXPECT_EQ(binding, 0);
+  const GLfloat positions[] = {8.5f, 8.5f};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, positions);
+  glPointSizex(X(3));
+  glDrawArrays(GL_POINTS, 0, 1);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(lit_pixels(), 9);
+  EXPECT_TRUE(lit(7, 7));
+  EXPECT_TRUE(lit(9, 9));
+}
+
 }  // namespace
 }  // namespace pineda::es1_test

@@ -87,7 +87,7 @@ class Es2DrawBuffers : public ::testing::Test {
 };
 
 TEST_F(Es2DrawBuffers, Limits) {
-  EXPECT_EQ(get_int(GL_MAX_DRAW_BUFFERS_EXT), 4);
+  EXPECT_EQ(get_int(GL_MAX_DRAW_BUFFERS_EXT), 8);
   EXPECT_GE(get_int(GL_MAX_COLOR_ATTACHMENTS_EXT), 4);
   EXPECT_EQ(get_int(GL_DRAW_BUFFER0_EXT), GL_BACK);
   EXPECT_EQ(get_int(GL_DRAW_BUFFER1_EXT), GL_NONE);
@@ -111,7 +111,7 @@ TEST_F(Es2DrawBuffers, FragDataGoesToEachAttachment) {
                                  "  gl_FragData[0] = vec4(1.0, 0.0, 0.0, 1.0);\n"
                                  "  gl_FragData[1] = vec4(0.0, 1.0, 0.0, 1.0);\n"
                                  "  gl_FragData[2] = vec4(1.0, 1.0, 0.0, 1.0);\n"
-                                 "  gl_FragData[gl_MaxDrawBuffers - 1] = vec4(1.0, 1.0, 1.0, 0.0);\n"
+                                 "  gl_FragData[3] = vec4(1.0, 1.0, 1.0, 0.0);\n"
                                  "}\n",
                                  {{"a_pos", 0}});
   ASSERT_NE(p, 0u);
@@ -148,12 +148,12 @@ TEST_F(Es2DrawBuffers, ShaderDirectives) {
                        log);
   EXPECT_NE(s, 0u) << log;
   glDeleteShader(s);
-  // Enabled: four outputs, and the directive is not reported as unknown.
+  // Enabled: eight outputs, and the directive is not reported as unknown.
   s = compile_fragment(
       "#version 100\n"
       "  #  extension   GL_EXT_draw_buffers :   enable  // comment\n"
-      "precision mediump float;\nuniform float m[gl_MaxDrawBuffers == 4 ? 1 : -1];\n"
-      "void main() { gl_FragData[3] = vec4(m[0]); }\n",
+      "precision mediump float;\nuniform float m[gl_MaxDrawBuffers == 8 ? 1 : -1];\n"
+      "void main() { gl_FragData[7] = vec4(m[0]); }\n",
       log);
   EXPECT_NE(s, 0u) << log;
   EXPECT_EQ(log.find("GL_EXT_draw_buffers"), std::string::npos) << log;
@@ -177,7 +177,8 @@ TEST_F(Es2DrawBuffers, Errors) {
   const GLenum attachment = GL_COLOR_ATTACHMENT0_EXT;
   draw_buffers_(1, &attachment);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  draw_buffers_(5, two);
+  const GLenum nine[9] = {GL_BACK};  // more than MAX_DRAW_BUFFERS_EXT
+  draw_buffers_(9, nine);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   draw_buffers_(-1, two);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));

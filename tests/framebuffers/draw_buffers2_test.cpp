@@ -211,20 +211,20 @@ TEST_F(DrawBuffers2Test, QueriesReturnEachBuffersState) {
 }
 
 TEST_F(DrawBuffers2Test, Errors) {
-  glColorMaskIndexedEXT(4, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glColorMaskIndexedEXT(8, GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
-  glEnableIndexedEXT(GL_BLEND, 4);
+  glEnableIndexedEXT(GL_BLEND, 8);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   glDisableIndexedEXT(GL_BLEND, 0xffffffffu);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
-  EXPECT_EQ(glIsEnabledIndexedEXT(GL_BLEND, 4), GL_FALSE);
+  EXPECT_EQ(glIsEnabledIndexedEXT(GL_BLEND, 8), GL_FALSE);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   GLboolean b[4] = {9, 9, 9, 9};
-  glGetBooleanIndexedvEXT(GL_COLOR_WRITEMASK, 4, b);
+  glGetBooleanIndexedvEXT(GL_COLOR_WRITEMASK, 8, b);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   EXPECT_EQ(b[0], 9);  // untouched
   GLint v = 9;
-  glGetIntegerIndexedvEXT(GL_BLEND, 4, &v);
+  glGetIntegerIndexedvEXT(GL_BLEND, 8, &v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   EXPECT_EQ(v, 9);
   // Only BLEND is indexed (and COLOR_WRITEMASK for the queries).

@@ -73,7 +73,7 @@ class DrawBuffersFboTest : public FboTest {
 };
 
 TEST_F(DrawBuffersFboTest, Limits) {
-  EXPECT_EQ(get_int(GL_MAX_DRAW_BUFFERS), 4);
+  EXPECT_EQ(get_int(GL_MAX_DRAW_BUFFERS), 8);
   EXPECT_EQ(get_int(GL_MAX_COLOR_ATTACHMENTS), 8);
 }
 
@@ -342,10 +342,10 @@ TEST_F(DrawBuffersFboTest, Errors) {
     glDrawBuffers(2, bufs);
     EXPECT_EQ(glGetError(), c.error) << std::hex << c.buffer;
   }
-  const GLenum five[] = {GL_COLOR_ATTACHMENT0, GL_NONE, GL_NONE, GL_NONE, GL_NONE};
-  glDrawBuffers(5, five);
+  const GLenum nine[9] = {GL_COLOR_ATTACHMENT0};  // more than MAX_DRAW_BUFFERS, the rest NONE
+  glDrawBuffers(9, nine);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
-  glDrawBuffers(-1, five);
+  glDrawBuffers(-1, nine);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
   const GLenum twice[] = {GL_COLOR_ATTACHMENT1, GL_NONE, GL_COLOR_ATTACHMENT1};
   glDrawBuffers(3, twice);

@@ -40,6 +40,7 @@ class CountingProgram final : public shader::Program {
   bool writes_depth() const override { return writes_depth_; }
   bool uses_discard() const override { return discards_; }
   int draw_buffers_written() const override { return 1; }
+  bool broadcasts_color() const override { return true; }
   bool reads(const char*) const override { return false; }
   bool reads_frag_coord() const override { return false; }
   bool reads_point_coord() const override { return false; }
