@@ -131,9 +131,13 @@ bool fold(ir::Code& code, Inst& in) {
     case Op::Sub:
       if (is_k(in.b, 0.0f)) return to_mov(in.a);
       break;
+    // GL 2.1 2.1.1 asks 0 * x = x * 0 = 0 only for finite x (GLSL need not keep infinities
+    // and NaNs; Mesa folds these too): a term weighted by zero, such as a convolution
+    // kernel's texture lookup (glmark2 effect2d), then goes away with its operands.
     case Op::Mul:
       if (is_k(in.a, 1.0f)) return to_mov(in.b);
       if (is_k(in.b, 1.0f)) return to_mov(in.a);
+      if (is_k(in.a, 0.0f) || is_k(in.b, 0.0f)) return to_mov(code.constant(0.0f));
       break;
     case Op::Div:
       if (is_k(in.b, 1.0f)) return to_mov(in.a);
@@ -143,6 +147,7 @@ bool fold(ir::Code& code, Inst& in) {
       if (in.b == in.c) return to_mov(in.b);
       break;
     case Op::Mad:
+      if (is_k(in.a, 0.0f) || is_k(in.b, 0.0f)) return to_mov(in.c);
       if (is_k(in.c, 0.0f)) {
         in.op = Op::Mul;
         in.c = kNone;

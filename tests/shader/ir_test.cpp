@@ -55,6 +55,24 @@ TEST(Ir, DeadCodeAndUnusedInputsDisappear) {
   EXPECT_EQ(count_ops(ir, "input"), 4) << ir;  // a only
 }
 
+// A texture lookup weighted by a zero constant (a convolution kernel's zero taps) is not made;
+// a lookup weighted by a uniform that happens to be 0 is.
+TEST(Ir, TermsTimesZeroDisappearWithTheirLookups) {
+  auto p = link_ok("", "uniform sampler2D t;\nuniform float u;\nvarying vec2 c;\nconst float k0 = 0.0;\n"
+                       "void main() {\n"
+                       "  vec4 sum = texture2D(t, c + vec2(-0.1)) * k0;\n"
+                       "  sum += texture2D(t, c) * 2.0;\n"
+                       "  sum += k0 * texture2D(t, c + vec2(0.1));\n"
+                       "  sum += texture2D(t, c + vec2(0.2)) * u;\n"
+                       "  gl_FragColor = sum + c.x * -0.0;\n}\n");
+  ASSERT_TRUE(p);
+  const std::string ir = dump_ir(*p);
+  EXPECT_EQ(count_ops(ir, "texture"), 2) << ir;
+  EXPECT_EQ(count_ops(ir, "mad"), 4) << ir;  // the u-weighted lookup added to 2 * the middle one
+  EXPECT_EQ(count_ops(ir, "mul"), 4) << ir;
+  EXPECT_EQ(count_ops(ir, "add"), 2) << ir;  // c + 0.2 only
+}
+
 TEST(Ir, CopiesArePropagated) {
   auto p = link_ok("", "varying vec4 v;\nvoid main() { vec4 a = v; vec4 b = a; vec4 c = b.wzyx; gl_FragColor = c.wzyx; }\n");
   ASSERT_TRUE(p);
