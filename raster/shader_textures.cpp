@@ -42,6 +42,11 @@ void apply_base_format(TexBaseFormat format, V t[4]) {
   }
 }
 
+// The sampler reads level 0 only: it has no mipmap filter.
+bool reads_level_zero(const Sampler& sampler) {
+  return sampler.min_filter == TexFilter::Linear || sampler.min_filter == TexFilter::Nearest;
+}
+
 // The fast sampler's lookups of a whole block at once when its live quads read the same level
 // or pair of levels, each with its own weight between the pair (the same per-quad choice, bias
 // included, as the quad sampler's); false otherwise. Only for an image and sampler that
@@ -51,7 +56,7 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
                                float* const out[4]) {
   BlockLevels levels;
   // For every quad: no mipmaps (the nearest sampler's magnification and minification are alike).
-  const bool level_zero = sampler.min_filter == TexFilter::Linear || sampler.min_filter == TexFilter::Nearest;
+  const bool level_zero = reads_level_zero(sampler);
   bool any = level_zero && live != 0;
   for (int first = 0; first < kLanes && !level_zero; first += 4) {
     if (!((live >> first) & 0xf)) continue;
@@ -82,6 +87,12 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
 }  // namespace
 
 bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t, float* const out[4]) const {
+  // (sample_block_at_one_level's route for one level and every lane live, without its checks.)
+  if (unit >= 0 && unit < kMaxTextureImageUnits && (chosen_ & (1u << unit)) && fast_[static_cast<size_t>(unit)].level_zero_image) {
+    const FastSamplers& f = fast_[static_cast<size_t>(unit)];
+    f.block(*f.level_zero_image, BlockLevels{}, s, t, out);
+    return true;
+  }
   const TextureUnit* tu = unit >= 0 && unit < kMaxTextureImageUnits ? &units_[unit] : nullptr;
   const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
   if (!image || !kind_matches(*image, SamplerKind::Tex2D)) return false;
@@ -103,6 +114,7 @@ const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit
       f.quad = select_nearest8_sampler(image, sampler);
       f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
     }
+    f.level_zero_image = f.block && reads_level_zero(sampler) && kind_matches(image, SamplerKind::Tex2D) ? &image : nullptr;
     chosen_ |= 1u << unit;
   }
   return f;
@@ -120,7 +132,7 @@ void UnitTextureAccess::sample(int unit, SamplerKind kind, const float (*coords)
   // general sampler's texels without its level-of-detail work (sampler_nearest8.h).
   // An explicit level of detail (texture2DLod, and every lookup of a vertex shader) chooses
   // nothing when the texture is not mipmapped: the fast samplers take both filters alike.
-  const bool mipmapped = tu && tu->sampler.min_filter != TexFilter::Linear && tu->sampler.min_filter != TexFilter::Nearest;
+  const bool mipmapped = tu && !reads_level_zero(tu->sampler);
   QuadSampler fast = nullptr;
   if (image && (kind == SamplerKind::Tex2D || kind == SamplerKind::Rect) && (mode != shader::LodMode::Explicit || !mipmapped)) {
     const FastSamplers& f = fast_samplers(unit, *image);

@@ -26,6 +26,9 @@ class UnitTextureAccess final : public shader::TextureAccess {
   struct FastSamplers {
     QuadSampler quad;
     BlockSampler block;
+    // sample_2d_block's whole route: the unit's 2D image, whose block sampler reads level 0
+    // for every quad (no mipmap filter); null when the route needs more.
+    const TextureImage* level_zero_image;
   };
   const FastSamplers& fast_samplers(int unit, const TextureImage& image) const;
 

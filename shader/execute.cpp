@@ -258,7 +258,9 @@ void jit::call_texture(const Frame* frame, const FrameTextureLookup* t) {
     coord[c] = lanes(t->coord[c]);
     dst[c] = lanes(t->dst[c]);
   }
-  exec_avx512::texture_lanes(frame->textures, t->lookup, coord, lanes(t->sampler),
+  const float* sampler = lanes(t->sampler);
+  if (sample_whole_2d_block(frame->textures, t->lookup, coord, sampler, frame->mask, frame->needed, dst)) return;
+  exec_avx512::texture_lanes(frame->textures, t->lookup, coord, sampler,
                              t->lookup.lod == ir::kNone ? nullptr : lanes(t->lod), frame->mask, frame->needed, dst);
 }
 

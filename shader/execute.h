@@ -12,6 +12,14 @@ namespace jit {
 class CompiledStage;
 }
 
+// A whole block's 2D lookup (the common one) by the textures' shorter route
+// (TextureAccess::sample_2d_block), if the lookup and the textures allow it: true when done.
+inline bool sample_whole_2d_block(const TextureAccess* textures, const ir::TextureLookup& t, const float* const coord[4],
+                                  const float* sampler, LaneMask block_mask, LaneMask needed, float* const dst[4]) {
+  return textures && t.kind == SamplerKind::Tex2D && t.mode == LodMode::Implicit && (block_mask & needed) == 0xFFFF &&
+         textures->sample_2d_block(sampler_unit(sampler[0]), coord[0], coord[1], dst);
+}
+
 // A run executes one instruction over the lanes of several fragment blocks together
 // (kMaxBlocksPerRun, program.h), so that each dispatch does more work: lane l of block b is
 // lane b * kLanes + l of the run.

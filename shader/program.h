@@ -111,6 +111,9 @@ enum class LodMode : uint8_t {
   Bias,      // implicit plus lod[] (the bias argument)
   Explicit   // lod[] is the level of detail (texture*Lod, and every vertex-shader lookup)
 };
+// The texture unit a sampler's lane value names (out of range: unit 0).
+inline int sampler_unit(float unit) { return unit >= 0.0f && unit < 256.0f ? static_cast<int>(unit) : 0; }
+
 class TextureAccess {
  public:
   virtual ~TextureAccess() = default;
