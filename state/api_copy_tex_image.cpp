@@ -87,20 +87,31 @@ std::vector<float> read_depth(Context& ctx, GLint x, GLint y, GLsizei width, GLs
   return out;
 }
 
-// The read framebuffer's depth and stencil in the same rectangle as UNSIGNED_INT_24_8 words;
-// outside it, zero. Records INVALID_OPERATION and returns false when either buffer is missing.
-bool read_depth_stencil(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, std::vector<uint32_t>& out) {
+// The read framebuffer's depth and stencil in the same rectangle as DEPTH_STENCIL pixels for a
+// texture of `internal_format`: FLOAT_32_UNSIGNED_INT_24_8_REV for a float depth format (no
+// precision lost), UNSIGNED_INT_24_8 otherwise; outside the rectangle, zero. Records
+// INVALID_OPERATION and returns false when either buffer is missing.
+struct DepthStencilWords {
+  GLenum type = GL_UNSIGNED_INT_24_8;
+  std::vector<uint32_t> words;
+};
+bool read_depth_stencil(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, GLint internal_format,
+                        DepthStencilWords& out) {
   const Drawable* d = ctx.read_drawable();
   if (!d || !d->framebuffer.depth.bits || !d->framebuffer.stencil.bits) {
     ctx.record_error(GL_INVALID_OPERATION, "the read framebuffer has no depth or no stencil buffer");
     return false;
   }
-  out.assign(size_t(std::max(width, 0)) * size_t(std::max(height, 0)), 0u);
+  const bool float_depth = texture_format(internal_format).value_or(TextureFormat{}).depth_float;
+  out.type = float_depth ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV : GL_UNSIGNED_INT_24_8;
+  const size_t words_per_pixel = float_depth ? 2 : 1;
+  out.words.assign(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * words_per_pixel, 0u);
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
   const double max = std::ldexp(1.0, fb.depth.bits) - 1.0;
   for_each_read_pixel(fb, x, y, width, height, [&](int64_t fx, int64_t fy, size_t i) {
-    out[i] = pack_depth_stencil(fb.depth.base[fb.depth.stride * fy + fx] / max, fb.stencil.base[fb.stencil.stride * fy + fx]);
+    store_depth_stencil(fb.depth.base[fb.depth.stride * fy + fx] / max, fb.stencil.base[fb.stencil.stride * fy + fx],
+                        out.type, false, reinterpret_cast<uint8_t*>(&out.words[i * words_per_pixel]));
   });
   return true;
 }
@@ -111,15 +122,20 @@ bool is_depth_stencil_format(GLint internal_format) {
 
 bool is_depth_format(GLint internal_format) { return texture_format(internal_format).value_or(TextureFormat{}).depth > 0; }
 
-// Whether the level a glCopyTexSubImage writes is a depth image (read from the depth buffer).
-bool depth_level(Context& ctx, GLenum target, GLint level, bool with_stencil = false) {
+// The internal format of the level a glCopyTexSubImage writes; 0 when it has no image.
+GLint level_internal_format(Context& ctx, GLenum target, GLint level) {
   ImageTarget t;
-  if (!image_target(target, t) || t.proxy || level < 0) return false;
+  if (!image_target(target, t) || t.proxy || level < 0) return 0;
   const GLuint name = bound_name(ctx.texture_units[ctx.active_texture], t.kind);
   const std::vector<TextureLevelData>& levels = ctx.textures.get_or_create(name, binding_enum(t.kind)).face_levels(t.face);
-  if (size_t(level) >= levels.size() || levels[level].width == 0) return false;
-  return with_stencil ? is_depth_stencil_format(levels[level].internal_format)
-                      : is_depth_format(levels[level].internal_format);
+  if (size_t(level) >= levels.size() || levels[level].width == 0) return 0;
+  return levels[level].internal_format;
+}
+
+// Whether the level a glCopyTexSubImage writes is a depth image (read from the depth buffer).
+bool depth_level(Context& ctx, GLenum target, GLint level, bool with_stencil = false) {
+  const GLint format = level_internal_format(ctx, target, level);
+  return with_stencil ? is_depth_stencil_format(format) : is_depth_format(format);
 }
 
 // A depth copy needs a depth buffer to read (Mesa: INVALID_OPERATION).
@@ -174,11 +190,11 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
       !valid_copy_size(ctx, width, height))
     return;
   if (is_depth_stencil_format(GLint(internalformat))) {
-    std::vector<uint32_t> words;
-    if (!read_depth_stencil(ctx, x, y, width, height, words)) return;
+    DepthStencilWords ds;
+    if (!read_depth_stencil(ctx, x, y, width, height, GLint(internalformat), ds)) return;
     return with_tight_unpack(ctx, [&] {
-      TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_DEPTH_STENCIL,
-                 GL_UNSIGNED_INT_24_8, words.data());
+      TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_DEPTH_STENCIL, ds.type,
+                 ds.words.data());
     });
   }
   if (is_depth_format(GLint(internalformat))) {
@@ -211,11 +227,10 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
       !valid_copy_size(ctx, width, 1))
     return;
   if (is_depth_stencil_format(GLint(internalformat))) {
-    std::vector<uint32_t> words;
-    if (!read_depth_stencil(ctx, x, y, width, 1, words)) return;
+    DepthStencilWords ds;
+    if (!read_depth_stencil(ctx, x, y, width, 1, GLint(internalformat), ds)) return;
     return with_tight_unpack(ctx, [&] {
-      TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
-                 words.data());
+      TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_DEPTH_STENCIL, ds.type, ds.words.data());
     });
   }
   if (is_depth_format(GLint(internalformat))) {
@@ -236,11 +251,10 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
                        GLsizei width, GLsizei height) {
   if (!valid_copy_size(ctx, width, height)) return;
   if (depth_level(ctx, target, level, true)) {
-    std::vector<uint32_t> words;
-    if (!read_depth_stencil(ctx, x, y, width, height, words)) return;
+    DepthStencilWords ds;
+    if (!read_depth_stencil(ctx, x, y, width, height, level_internal_format(ctx, target, level), ds)) return;
     return with_tight_unpack(ctx, [&] {
-      TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
-                    words.data());
+      TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_DEPTH_STENCIL, ds.type, ds.words.data());
     });
   }
   if (depth_level(ctx, target, level)) {
@@ -260,10 +274,10 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
 void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
   if (!valid_copy_size(ctx, width, 1)) return;
   if (depth_level(ctx, target, level, true)) {
-    std::vector<uint32_t> words;
-    if (!read_depth_stencil(ctx, x, y, width, 1, words)) return;
+    DepthStencilWords ds;
+    if (!read_depth_stencil(ctx, x, y, width, 1, level_internal_format(ctx, target, level), ds)) return;
     return with_tight_unpack(ctx, [&] {
-      TexSubImage1D(ctx, target, level, xoffset, width, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words.data());
+      TexSubImage1D(ctx, target, level, xoffset, width, GL_DEPTH_STENCIL, ds.type, ds.words.data());
     });
   }
   if (depth_level(ctx, target, level)) {

@@ -94,7 +94,7 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
     image.depth = unpack_depth_image(ctx, width, height, type, pixels);
   } else if (format == GL_DEPTH_STENCIL) {
     image.kind = PixelRectImage::Kind::DepthStencil;
-    unpack_depth_stencil_image(ctx, width, height, pixels, image.depth, image.stencil);
+    unpack_depth_stencil_image(ctx, width, height, type, pixels, image.depth, image.stencil);
   } else if (format == GL_STENCIL_INDEX) {
     image.kind = PixelRectImage::Kind::Stencil;
     image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);

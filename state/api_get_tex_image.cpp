@@ -59,15 +59,13 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   if (packed_ds) {  // a DEPTH_STENCIL level only
     if (l.stencil.empty()) return ctx.record_error(GL_INVALID_OPERATION, "the level is not a depth-stencil image");
     if (!writes()) return;
-    const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, l.width);
+    const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, l.width, type);
     auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
     for (int y = 0; y < l.height; ++y)
       for (int x = 0; x < l.width; ++x) {
         const size_t k = size_t(y) * l.width + x;
-        const uint32_t v = pack_depth_stencil(std::bit_cast<float>(l.texels[k]), l.stencil[k]);
-        uint8_t* dst = out + layout.row_stride * size_t(y) + 4 * size_t(x);
-        std::memcpy(dst, &v, 4);
-        if (ctx.pack.swap_bytes) swap_component_bytes(dst, 1, 4);
+        uint8_t* dst = out + layout.row_stride * size_t(y) + layout.pixel_bytes * size_t(x);
+        store_depth_stencil(std::bit_cast<float>(l.texels[k]), l.stencil[k], type, ctx.pack.swap_bytes, dst);
       }
     return;
   }

@@ -110,16 +110,14 @@ void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, 
     return;
   }
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
-  if (format == GL_DEPTH_STENCIL) {  // EXT_packed_depth_stencil: UNSIGNED_INT_24_8
-    const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, width);
+  if (format == GL_DEPTH_STENCIL) {
+    const ImageLayout layout = packed_depth_stencil_layout(ctx.pack, width, type);
     auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
     for (int fy = y0; fy < y1; ++fy)
       for (int fx = x0; fx < x1; ++fx) {
         const double z = transfer_depth(ctx.pixel_mode, fb.depth.base[fb.depth.stride * fy + fx] / depth_max);
-        const uint32_t v = pack_depth_stencil(z, uint32_t(stencil_at(fx, fy)));
-        uint8_t* dst = out + layout.row_stride * size_t(fy - y) + 4 * size_t(fx - x);
-        std::memcpy(dst, &v, 4);
-        if (ctx.pack.swap_bytes) swap_component_bytes(dst, 1, 4);
+        uint8_t* dst = out + layout.row_stride * size_t(fy - y) + layout.pixel_bytes * size_t(fx - x);
+        store_depth_stencil(z, uint32_t(stencil_at(fx, fy)), type, ctx.pack.swap_bytes, dst);
       }
     return;
   }

@@ -90,8 +90,8 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
 }
 
 // The same for a depth texture (1D or 2D): DEPTH_COMPONENT data through DEPTH_SCALE/BIAS,
-// rounded to the format's bits.
-void unpack_depth_into(Context& ctx, TextureLevelData& level, int bits, const ClientBox& box, GLenum type,
+// as the format keeps it (depth_texel).
+void unpack_depth_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, const ClientBox& box, GLenum type,
                        const void* pixels) {
   if (!pixels) return;
   const int full_width = box.width + 2 * box.border_x, full_height = box.height + 2 * box.border_y;
@@ -99,22 +99,23 @@ void unpack_depth_into(Context& ctx, TextureLevelData& level, int bits, const Cl
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x)
       level.texels[size_t(box.y + y) * level.width + box.x + x] =
-          depth_texel(depths[size_t(y + box.border_y) * full_width + x + box.border_x], bits);
+          depth_texel(depths[size_t(y + box.border_y) * full_width + x + box.border_x], storage);
 }
 
-// The same for a DEPTH_STENCIL texture: UNSIGNED_INT_24_8 data, depth and stencil.
-void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const ClientBox& box, const void* pixels) {
+// The same for a DEPTH_STENCIL texture: packed DEPTH_STENCIL data of `type`, depth and stencil.
+void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, const ClientBox& box,
+                               GLenum type, const void* pixels) {
   if (!pixels) return;
   const int full_width = box.width + 2 * box.border_x, full_height = box.height + 2 * box.border_y;
   std::vector<double> depths;
   std::vector<int64_t> stencils;
-  unpack_depth_stencil_image(ctx, full_width, full_height, pixels, depths, stencils);
+  unpack_depth_stencil_image(ctx, full_width, full_height, type, pixels, depths, stencils);
   level.stencil.resize(level.texels.size(), 0);  // a level made by mipmap generation has none yet
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x) {
       const size_t src = size_t(y + box.border_y) * full_width + x + box.border_x;
       const size_t dst = size_t(box.y + y) * level.width + box.x + x;
-      level.texels[dst] = depth_texel(depths[src], 24);
+      level.texels[dst] = depth_texel(depths[src], storage);
       level.stencil[dst] = static_cast<uint8_t>(stencils[src] & 0xff);
     }
 }
@@ -161,9 +162,9 @@ void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint in
   const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
                       dims == 3};
   if (storage.stencil)
-    unpack_depth_stencil_into(ctx, l, box, pixels);
+    unpack_depth_stencil_into(ctx, l, storage, box, type, pixels);
   else if (storage.depth)
-    unpack_depth_into(ctx, l, storage.depth, box, type, pixels);
+    unpack_depth_into(ctx, l, storage, box, type, pixels);
   else
     unpack_into(ctx, l, storage, box, format, type, pixels);
   tex.level_changed(level, target.face);
@@ -192,9 +193,9 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, volume, format, type))) return;
   const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, volume};
   if (storage.stencil)
-    unpack_depth_stencil_into(ctx, l, box, pixels);
+    unpack_depth_stencil_into(ctx, l, storage, box, type, pixels);
   else if (storage.depth)
-    unpack_depth_into(ctx, l, storage.depth, box, type, pixels);
+    unpack_depth_into(ctx, l, storage, box, type, pixels);
   else
     unpack_into(ctx, l, storage, box, format, type, pixels);
   tex.level_changed(level, target.face);
@@ -322,6 +323,8 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
   }
 }
 
+GLint component_type(int bits) { return bits ? GL_UNSIGNED_NORMALIZED : GL_NONE; }
+
 bool get_tex_level_parameter(Context& ctx, const ImageTarget& target, GLint level, GLenum pname, GLint& out) {
   const std::vector<TextureLevelData>& levels = image_texture(ctx, target).face_levels(target.face);
   const TextureLevelData empty;
@@ -344,6 +347,14 @@ bool get_tex_level_parameter(Context& ctx, const ImageTarget& target, GLint leve
     case GL_TEXTURE_INTENSITY_SIZE: out = sizes.intensity; return true;
     case GL_TEXTURE_DEPTH_SIZE: out = sizes.depth; return true;
     case GL_TEXTURE_STENCIL_SIZE: out = sizes.stencil; return true;  // Mesa answers it in any version
+    // GL 3.0's component types (ARB_texture_float's queries): NONE where the format has no such component.
+    case GL_TEXTURE_RED_TYPE: out = component_type(sizes.red); return true;
+    case GL_TEXTURE_GREEN_TYPE: out = component_type(sizes.green); return true;
+    case GL_TEXTURE_BLUE_TYPE: out = component_type(sizes.blue); return true;
+    case GL_TEXTURE_ALPHA_TYPE: out = component_type(sizes.alpha); return true;
+    case GL_TEXTURE_LUMINANCE_TYPE: out = component_type(sizes.luminance); return true;
+    case GL_TEXTURE_INTENSITY_TYPE: out = component_type(sizes.intensity); return true;
+    case GL_TEXTURE_DEPTH_TYPE: out = sizes.depth_float ? GL_FLOAT : component_type(sizes.depth); return true;
     case GL_TEXTURE_COMPRESSED: out = GL_FALSE; return true;  // no image is ever compressed
     default: return false;
   }

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "state/bitmap_layout.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/pixel_format.h"
 
 namespace pineda {
@@ -34,7 +35,7 @@ size_t client_image_extent(const PixelStore& store, int width, int height, int d
     const int64_t rows = int64_t(height) * depth;
     return rows > INT32_MAX ? SIZE_MAX : BitmapLayout(store, width).size(int(rows));
   }
-  if (format == GL_DEPTH_STENCIL && type == GL_UNSIGNED_INT_24_8) format = GL_RED, type = GL_UNSIGNED_INT;
+  packed_depth_stencil_as_plain(format, type);
   const ImageLayout layout = image_layout(store, width, format, type);
   Wide rows_before = Wide(height - 1);
   if (volume) {

@@ -5,6 +5,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/framebuffers/packed_depth_stencil.h"
 #include "state/packed_image.h"
 #include "state/pixel_buffer.h"
 #include "state/pixel_format.h"
@@ -12,14 +13,16 @@
 namespace pineda::gl {
 
 void compile_DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  // DEPTH_STENCIL / UNSIGNED_INT_24_8 pixels are laid out as one-component UNSIGNED_INT ones.
-  const bool packed_ds = format == GL_DEPTH_STENCIL && type == GL_UNSIGNED_INT_24_8;
+  // Packed DEPTH_STENCIL pixels are laid out as one- or two-component UNSIGNED_INT ones.
+  GlError packed_error;
+  const bool packed_ds = packed_depth_stencil_pixels(format, type, packed_error) && packed_error == GL_NO_ERROR;
+  GLenum plain_format = format, plain_type = type;
+  packed_depth_stencil_as_plain(plain_format, plain_type);
   const bool reads = width > 0 && height > 0 &&
                      (packed_ds || pixel_rect_format_type_error(format, type) == GL_NO_ERROR) &&
                      unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, 1, false, format, type)) &&
                      pixels;
-  auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, packed_ds ? GL_RED : format,
-                                         packed_ds ? GL_UNSIGNED_INT : type, pixels)
+  auto image = reads ? pack_client_image(ctx.unpack, width, height, 1, false, plain_format, plain_type, pixels)
                      : std::vector<uint8_t>{};
   ctx.record_list_command([=, image = std::move(image)](Context& c) {
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");

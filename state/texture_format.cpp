@@ -29,6 +29,12 @@ TextureFormat depth_format(uint8_t bits) {
   f.depth = bits;
   return f;
 }
+TextureFormat float_depth(uint8_t stencil) {
+  TextureFormat f = depth_format(32);
+  f.depth_float = true;
+  f.stencil = stencil;
+  return f;
+}
 TextureFormat srgb(TextureFormat f) {
   f.srgb = true;
   return f;
@@ -123,13 +129,16 @@ std::optional<TextureFormat> texture_format(GLint internal_format) {
       f.stencil = 8;
       return f;
     }
+    case GL_DEPTH_COMPONENT32F: return float_depth(0);
+    case GL_DEPTH32F_STENCIL8: return float_depth(8);
     default: return std::nullopt;
   }
 }
 
-uint32_t depth_texel(double depth, int bits) {
-  const double max = std::ldexp(1.0, bits) - 1.0;
-  const double d = std::clamp(depth, 0.0, 1.0);
+uint32_t depth_texel(double depth, const TextureFormat& format) {
+  const double d = depth > 0.0 ? std::min(depth, 1.0) : 0.0;  // NaN as 0
+  if (format.depth_float) return std::bit_cast<uint32_t>(static_cast<float>(d));
+  const double max = std::ldexp(1.0, format.depth) - 1.0;
   return std::bit_cast<uint32_t>(static_cast<float>(std::floor(d * max) / max));  // truncated, as Mesa packs
 }
 

@@ -23,6 +23,9 @@ struct TextureFormat {
   // hold the depth as a float's bits (depth_texel).
   uint8_t depth = 0;
   uint8_t stencil = 0;  // DEPTH_STENCIL formats (EXT_packed_depth_stencil): the stencil bits
+  // DEPTH_COMPONENT32F and DEPTH32F_STENCIL8 (ARB_depth_buffer_float): the depth is a 32-bit
+  // float, kept as given instead of truncated to `depth` bits.
+  bool depth_float = false;
   // An sRGB format (GL 2.1, EXT_texture_sRGB): texels keep the sRGB-encoded values as given;
   // the sampler decodes them (raster/srgb.h).
   bool srgb = false;
@@ -41,9 +44,9 @@ GLint stored_internal_format(GLint internal_format);
 // components 0, missing alpha 1, luminance in R, G and B, intensity in all four.
 void reduce_to_base_format(float rgba[4], raster::TexBaseFormat base);
 
-// A depth in [0, 1] truncated to `bits` bits (as Mesa's Z16/Z24/Z32 packing), as a depth
-// format's texel.
-uint32_t depth_texel(double depth, int bits);
+// A depth clamped to [0, 1] as a texel of the depth format: truncated to its bits (as Mesa's
+// Z16/Z24/Z32 packing), or rounded to float for a float format.
+uint32_t depth_texel(double depth, const TextureFormat& format);
 
 // An RGBA colour reduced to the components the format keeps and quantized to its bits, as an
 // RGBA8 texel (R in the lowest byte).

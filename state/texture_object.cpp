@@ -69,7 +69,7 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& level) {
         if (storage.depth) {  // depth texels are floats (only 1D and 2D textures have them)
           float sum = 0.f;
           for (uint32_t t : quad) sum += std::bit_cast<float>(t);
-          out = depth_texel(sum / 4.f, storage.depth);
+          out = depth_texel(sum / 4.f, storage);
           continue;
         }
         if (src.depth == 1) {

@@ -149,7 +149,8 @@ GLint attachment_parameter(Context& ctx, const Attachment& a, GLenum pname, bool
     case GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE: return f ? f->depth_bits : 0;
     case GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE: return f ? f->stencil_bits : 0;
     case GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE:
-      return f && f->kind == RenderableFormat::Kind::Stencil ? GL_UNSIGNED_INT : GL_UNSIGNED_NORMALIZED;
+      if (f && f->kind == RenderableFormat::Kind::Stencil) return GL_UNSIGNED_INT;
+      return f && f->depth_float ? GL_FLOAT : GL_UNSIGNED_NORMALIZED;
     case GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING: return GL_LINEAR;
     default: ok = false; return 0;
   }

@@ -16,6 +16,13 @@
 namespace pineda::gl {
 namespace {
 
+// Whether a framebuffer object's depth image has a float format (a window's never has).
+bool float_depth(Context& ctx, const FramebufferObject* fb) {
+  if (!fb) return false;
+  const std::optional<RenderableFormat> format = attachment_format(ctx, fb->attachments[kDepthPoint]);
+  return format && format->depth_float;
+}
+
 // The source rectangle's pixels, copied before anything is written (the rectangles may
 // overlap in one framebuffer): bytes R, G, B, A; depth values; stencil indices.
 struct SourceImage {
@@ -109,7 +116,8 @@ void BlitFramebuffer(Context& ctx, GLint srcX0, GLint srcY0, GLint srcX1, GLint 
   // Depth and stencil copy between buffers of one format only.
   const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && src_fb.depth.bits && dst_all.depth.bits;
   const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && src_fb.stencil.bits && dst_all.stencil.bits;
-  if (depth && src_fb.depth.bits != dst_all.depth.bits)
+  if (depth && (src_fb.depth.bits != dst_all.depth.bits ||
+                float_depth(ctx, ctx.framebuffers.read_object()) != float_depth(ctx, ctx.framebuffers.draw_object())))
     return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' depth formats differ");
   if (stencil && src_fb.stencil.bits != dst_all.stencil.bits)
     return ctx.record_error(GL_INVALID_OPERATION, "the framebuffers' stencil formats differ");

@@ -7,6 +7,7 @@ namespace {
 
 RenderableFormat color(const TextureFormat& f) { return {RenderableFormat::Kind::Color, f, 0, 0}; }
 RenderableFormat depth(int bits) { return {RenderableFormat::Kind::Depth, {}, bits, 0}; }
+RenderableFormat float_depth(RenderableFormat::Kind kind, int stencil_bits) { return {kind, {}, 32, stencil_bits, true}; }
 
 // Stored bits of each RGBA8 channel and which written channel feeds it.
 void channel_layout(const TextureFormat& f, uint8_t bits[4], uint8_t source[4]) {
@@ -34,6 +35,8 @@ std::optional<RenderableFormat> renderbuffer_format(GLenum internal_format) {
     case GL_STENCIL_INDEX16:
       return RenderableFormat{RenderableFormat::Kind::Stencil, {}, 0, 8};
     case GL_DEPTH_STENCIL: case GL_DEPTH24_STENCIL8: return RenderableFormat{RenderableFormat::Kind::DepthStencil, {}, 24, 8};
+    case GL_DEPTH_COMPONENT32F: return float_depth(RenderableFormat::Kind::Depth, 0);
+    case GL_DEPTH32F_STENCIL8: return float_depth(RenderableFormat::Kind::DepthStencil, 8);
     case GL_RGB565: {
       TextureFormat f;
       f.base = raster::TexBaseFormat::RGB;
@@ -53,8 +56,8 @@ std::optional<RenderableFormat> texture_renderable_format(GLint internal_format)
   if (stored_internal_format(internal_format) != internal_format) return std::nullopt;  // compressed
   const std::optional<TextureFormat> f = texture_format(internal_format);
   if (!f) return std::nullopt;
-  if (f->stencil) return RenderableFormat{RenderableFormat::Kind::DepthStencil, {}, f->depth, f->stencil};
-  if (f->depth) return depth(f->depth);
+  if (f->stencil) return RenderableFormat{RenderableFormat::Kind::DepthStencil, {}, f->depth, f->stencil, f->depth_float};
+  if (f->depth) return RenderableFormat{RenderableFormat::Kind::Depth, {}, f->depth, 0, f->depth_float};
   return color(*f);
 }
 

@@ -16,6 +16,8 @@ struct RenderableFormat {
   Kind kind = Kind::Color;
   TextureFormat color;  // the colour bits and base format (Color only)
   int depth_bits = 0, stencil_bits = 0;
+  // The depth is a float (ARB_depth_buffer_float); it renders as 32-bit integer depth.
+  bool depth_float = false;
   bool has_depth() const { return kind == Kind::Depth || kind == Kind::DepthStencil; }
   bool has_stencil() const { return kind == Kind::Stencil || kind == Kind::DepthStencil; }
 };
