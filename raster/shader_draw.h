@@ -19,12 +19,15 @@ struct ShaderDraw {
   // program->fragment_uniform_values(uniforms), computed by the first block that asks (on any
   // worker thread); null when the fragment shader has none.
   const float* fragment_uniform_values() const {
-    // Once computed, without std::call_once's thread-local bookkeeping (every quad row asks).
+    // Once computed, a flag read (every quad row asks). A mutex, not std::call_once: glibc's
+    // pthread_once ends every first call with a futex wake system call, once per draw here
+    // (2-3% of glmark2's ideas scene, many small draws, under this VM's costly system calls).
     if (!uniform_values_.ready.load(std::memory_order_acquire)) {
-      std::call_once(uniform_values_.once, [this] {
+      const std::lock_guard lock(uniform_values_.mutex);
+      if (!uniform_values_.ready.load(std::memory_order_relaxed)) {
         if (program) uniform_values_.values = program->fragment_uniform_values(uniforms.data());
         uniform_values_.ready.store(true, std::memory_order_release);
-      });
+      }
     }
     return uniform_values_.values.empty() ? nullptr : uniform_values_.values.data();
   }
@@ -32,7 +35,7 @@ struct ShaderDraw {
  private:
   // A copy (a draw that changes some uniforms) starts without values.
   struct UniformValues {
-    std::once_flag once;
+    std::mutex mutex;
     std::atomic<bool> ready{false};
     std::vector<float> values;
     UniformValues() = default;
