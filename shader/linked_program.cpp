@@ -19,6 +19,7 @@ void LinkedProgram::run_vertex_batches(const float* uniforms, const TextureAcces
   LaneIo io;
   io.uniforms = uniforms;
   io.textures = textures;
+  io.slot_lanes = batches[0].uniform_values;
   RunMask mask = 0;
   for (int k = 0; k < count; ++k) {
     const int lanes = batches[k].count > kLanes ? kLanes : (batches[k].count < 0 ? 0 : batches[k].count);
@@ -86,11 +87,23 @@ void LinkedProgram::run_fragment_blocks(const float* uniforms, const TextureAcce
   for (int k = 0; k < count; ++k) blocks[k].live &= static_cast<LaneMask>(~(discarded >> (k * kLanes)));
 }
 
-std::vector<float> LinkedProgram::fragment_uniform_values(const float* uniforms) const {
-  if (!fragment_ || fragment_->slots == 0) return {};
-  std::vector<float> values(static_cast<size_t>(fragment_->slots) * kLanes);
-  fragment_->compute_uniform_ops(uniforms, values.data());
+namespace {
+
+std::vector<float> uniform_values(const StageCode* stage, const float* uniforms) {
+  if (!stage || stage->slots == 0) return {};
+  std::vector<float> values(static_cast<size_t>(stage->slots) * kLanes);
+  stage->compute_uniform_ops(uniforms, values.data());
   return values;
+}
+
+}  // namespace
+
+std::vector<float> LinkedProgram::fragment_uniform_values(const float* uniforms) const {
+  return uniform_values(fragment_ ? &*fragment_ : nullptr, uniforms);
+}
+
+std::vector<float> LinkedProgram::vertex_uniform_values(const float* uniforms) const {
+  return uniform_values(vertex_ ? &*vertex_ : nullptr, uniforms);
 }
 
 std::string dump_ir(const Program& program) {

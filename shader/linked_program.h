@@ -49,6 +49,7 @@ class LinkedProgram final : public Program {
   void run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
                            int count) const override;
   std::vector<float> fragment_uniform_values(const float* uniforms) const override;
+  std::vector<float> vertex_uniform_values(const float* uniforms) const override;
 };
 
 }  // namespace pineda::shader

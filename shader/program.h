@@ -102,6 +102,8 @@ struct VertexBatch {
   int count = 0;                 // live vertices, 1..kLanes (lanes past count hold garbage)
   const float* inputs = nullptr;  // [input slot][4 components][kLanes]
   float* outputs = nullptr;       // [kOutFirstVarying + varying_floats][kLanes]
+  // Program::vertex_uniform_values() of this draw's uniforms, or null (computed per run).
+  const float* uniform_values = nullptr;
 };
 
 // Texture lookups go back to raster/ through this interface, 16 lanes at a time.
@@ -189,6 +191,8 @@ class Program {
   // What the fragment shader computes from uniforms alone (shader/hoist.h), for
   // FragmentBlock::uniform_values: computed once per draw instead of once per block.
   virtual std::vector<float> fragment_uniform_values(const float* uniforms) const = 0;
+  // The same of the vertex shader, for VertexBatch::uniform_values.
+  virtual std::vector<float> vertex_uniform_values(const float* uniforms) const = 0;
 };
 
 struct AttributeBinding {

@@ -151,6 +151,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const Context& state = ctx;
   // Array elements take their edge flags from the edge flag array only when it is enabled.
   const bool edge_flag_array = vertices.inputs.empty() && ctx.edge_flag_array.active();
+  // What the shader computes from uniforms alone, once for the draw (not once per run).
+  const std::vector<float> uniform_values = program.vertex_uniform_values(uniforms);
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
     std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
@@ -189,6 +191,7 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         batches[b].count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes));
         batches[b].inputs = in.data() + static_cast<size_t>(b) * in_floats;
         batches[b].outputs = result.data() + static_cast<size_t>(b) * out_floats;
+        batches[b].uniform_values = uniform_values.empty() ? nullptr : uniform_values.data();
       }
       program.run_vertex_batches(uniforms, &textures, batches, batch_count);
       for (size_t i = 0; i < count; ++i) {

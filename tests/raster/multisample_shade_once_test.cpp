@@ -61,6 +61,7 @@ class CountingProgram final : public shader::Program {
     }
   }
   std::vector<float> fragment_uniform_values(const float*) const override { return {}; }
+  std::vector<float> vertex_uniform_values(const float*) const override { return {}; }
 
  private:
   float alpha_;

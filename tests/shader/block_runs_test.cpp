@@ -134,6 +134,40 @@ TEST(VertexBatchRuns, BatchesRunTogetherComeOutAsEachAlone) {
   }
 }
 
+// A draw computes the vertex shader's uniform-only values once (vertex_uniform_values) and its
+// batches read them: here values of other uniforms than the run's, to see which ones it reads.
+TEST(VertexBatchRuns, BatchesReadTheDrawsUniformValues) {
+  auto p = link_ok("attribute vec4 position;\nuniform mat4 a;\nuniform mat4 b;\n"
+                   "void main() { gl_Position = (a * b) * position; }\n",
+                   "void main() { gl_FragColor = vec4(1.0); }\n");
+  ASSERT_TRUE(p);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<float> value(-2.0f, 2.0f);
+  std::vector<float> drawn(static_cast<size_t>(p->uniform_floats()), 0.0f), other(drawn.size());
+  for (float& u : drawn) u = value(random);
+  for (float& u : other) u = value(random);
+  const std::vector<float> values = p->vertex_uniform_values(drawn.data());
+  ASSERT_FALSE(values.empty());  // a * b
+  const size_t in_floats = static_cast<size_t>(p->input_slots()) * 4 * kLanes;
+  const size_t out_floats = static_cast<size_t>(kOutFirstVarying + p->varying_floats()) * kLanes;
+  std::vector<float> inputs(in_floats * 2), read(out_floats * 2, -99.0f), expected(out_floats * 2, -99.0f);
+  for (float& v : inputs) v = value(random);
+  VertexBatch batches[2], plain[2];
+  for (int k = 0; k < 2; ++k) {
+    batches[k].count = plain[k].count = kLanes;
+    batches[k].inputs = plain[k].inputs = inputs.data() + in_floats * static_cast<size_t>(k);
+    batches[k].outputs = read.data() + out_floats * static_cast<size_t>(k);
+    batches[k].uniform_values = values.data();
+    plain[k].outputs = expected.data() + out_floats * static_cast<size_t>(k);
+  }
+  p->run_vertex_batches(other.data(), nullptr, batches, 2);
+  p->run_vertex_batches(drawn.data(), nullptr, plain, 2);
+  for (size_t f = 0; f < kLanes * 4 * 2; ++f) {
+    const size_t at = (f / (kLanes * 4)) * out_floats + kOutPosition * kLanes + f % (kLanes * 4);
+    ASSERT_EQ(std::memcmp(&read[at], &expected[at], sizeof(float)), 0) << f;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Shaders, BlockRuns, testing::Values(kShader, kLargeShader));
 
 }  // namespace
