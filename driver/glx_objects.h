@@ -13,7 +13,7 @@
 #include "state/context.h"
 #include "state/drawable.h"
 
-#define GLX_GLXEXT_PROTOTYPES 1
+#define GLX_GLXEXT_PROTOTYPES
 #include <GL/glx.h>
 #include <GL/glxext.h>
 

@@ -18,7 +18,7 @@ namespace {
 
 using namespace quad_ops;
 
-template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver, bool kCount, bool kExtras>
+template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool kOver, bool kExtras>
 [[gnu::always_inline]] inline uint32_t shade_quads_body(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                  const uint8_t* masks) {
   const DrawState& s = d.state;
@@ -27,6 +27,9 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
   // Without an alpha test no stage before depth and stencil reads the colour, so they run first
   // and only the surviving quads are coloured (the colour has no side effects).
   const bool early_tests = !s.alpha_test;
+  // Occlusion queries count at run time, as the other routines do: a template flag for them would
+  // double the routines (and their compile time) for a branch per quad.
+  const bool count_passed = d.key.count_samples;
   uint32_t passed = 0;
   for (int q = 0; q < count; ++q) {
     unsigned mask = masks[q];
@@ -49,7 +52,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     };
     if (early_tests) {
       depth_and_stencil();
-      if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
+      if (count_passed) passed += static_cast<uint32_t>(__builtin_popcount(mask));
       if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, colors());
       continue;
     }
@@ -60,7 +63,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
       if (d.alpha_to_one) col.c[3] = splat(1.f);
     }
     depth_and_stencil();
-    if constexpr (kCount) passed += static_cast<uint32_t>(__builtin_popcount(mask));
+    if (count_passed) passed += static_cast<uint32_t>(__builtin_popcount(mask));
     if (mask && write_color) write_quad<kBlend, kOver>(d, fb, qx, y, mask, col);
   }
   return passed;
@@ -83,9 +86,9 @@ template <bool... kFlags>
 
 template <int kBits, bool kExtras, bool kAvx2>
 constexpr QuadRoutine routine_for() {
-  constexpr bool t = kBits & 1, z = kBits & 2, st = kBits & 4, b = kBits & 8, f = kBits & 16, o = kBits & 32, c = kBits & 64;
-  if constexpr (kAvx2) return &shade_quads_avx2<t, z, st, b, f, o, c, kExtras>;
-  else return &shade_quads<t, z, st, b, f, o, c, kExtras>;
+  constexpr bool t = kBits & 1, z = kBits & 2, st = kBits & 4, b = kBits & 8, f = kBits & 16, o = kBits & 32;
+  if constexpr (kAvx2) return &shade_quads_avx2<t, z, st, b, f, o, kExtras>;
+  else return &shade_quads<t, z, st, b, f, o, kExtras>;
 }
 
 template <bool kExtras, bool kAvx2, int... kBits>
@@ -93,30 +96,23 @@ constexpr auto make_table(std::integer_sequence<int, kBits...>) {
   return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits, kExtras, kAvx2>()...};
 }
 
-constexpr auto kRoutines = make_table<false, false>(std::make_integer_sequence<int, 128>{});
-constexpr auto kRoutinesAvx2 = make_table<false, true>(std::make_integer_sequence<int, 128>{});
+constexpr auto kRoutines = make_table<false, false>(std::make_integer_sequence<int, 64>{});
+constexpr auto kRoutinesAvx2 = make_table<false, true>(std::make_integer_sequence<int, 64>{});
 
 // Fog, colour sum and stipple are rare: their routines leave out the SRC_ALPHA-over fast path
-// (bit 32) to halve their count. Index bit 5 stands for key bit 6.
-constexpr int extras_key_bits(int index) { return (index & 31) | ((index & 32) << 1); }
-constexpr int extras_index(int key_bits) { return (key_bits & 31) | ((key_bits & 64) >> 1); }
-
-template <bool kAvx2, int... kIndex>
-constexpr auto make_extras_table(std::integer_sequence<int, kIndex...>) {
-  return std::array<QuadRoutine, sizeof...(kIndex)>{routine_for<extras_key_bits(kIndex), true, kAvx2>()...};
-}
-
-constexpr auto kExtrasRoutines = make_extras_table<false>(std::make_integer_sequence<int, 64>{});
-constexpr auto kExtrasRoutinesAvx2 = make_extras_table<true>(std::make_integer_sequence<int, 64>{});
+// (bit 32) to halve their count.
+constexpr auto kExtrasRoutines = make_table<true, false>(std::make_integer_sequence<int, 32>{});
+constexpr auto kExtrasRoutinesAvx2 = make_table<true, true>(std::make_integer_sequence<int, 32>{});
 
 }  // namespace
 
 QuadRoutine select_quad_routine(const FragmentKey& key, SimdPath path) {
   const int bits = (key.textured ? 1 : 0) | (key.depth ? 2 : 0) | (key.stencil ? 4 : 0) | (key.blend ? 8 : 0) |
-                   (key.flat ? 16 : 0) | (key.blend && key.blend_over ? 32 : 0) | (key.count_samples ? 64 : 0);
+                   (key.flat ? 16 : 0);
   const bool avx2 = uses_avx2(path);
-  if (key.extras) return (avx2 ? kExtrasRoutinesAvx2 : kExtrasRoutines)[extras_index(bits)];
-  return (avx2 ? kRoutinesAvx2 : kRoutines)[bits];
+  if (key.extras) return (avx2 ? kExtrasRoutinesAvx2 : kExtrasRoutines)[bits];
+  const int over = key.blend && key.blend_over ? 32 : 0;
+  return (avx2 ? kRoutinesAvx2 : kRoutines)[bits | over];
 }
 
 }  // namespace pineda::raster

@@ -2,7 +2,7 @@
 // glx.CaptureUnderXvfb, which sets the variable to a fresh folder; skipped without it.
 #include "glx_fixture.h"
 
-#define EGL_EGLEXT_PROTOTYPES 1
+#define EGL_EGLEXT_PROTOTYPES
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <png.h>

@@ -2,7 +2,7 @@
 // window and pixmap surfaces, swaps that reach the X server, resizes, destroyed windows.
 #include "glx_fixture.h"
 
-#define EGL_EGLEXT_PROTOTYPES 1
+#define EGL_EGLEXT_PROTOTYPES
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 

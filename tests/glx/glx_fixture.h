@@ -4,7 +4,7 @@
 // GoogleTest before Xlib: X.h defines macros (None, Bool...) that GoogleTest's names use.
 #include <gtest/gtest.h>
 
-#define GLX_GLXEXT_PROTOTYPES 1
+#define GLX_GLXEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glx.h>
 #include <GL/glxext.h>

@@ -1,6 +1,6 @@
 // Helpers for the programmable-pipeline tests: compiling and linking from source strings.
 #pragma once
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
 

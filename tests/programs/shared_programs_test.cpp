@@ -1,7 +1,7 @@
 // Shader and program objects belong to the share group (GL 2.1 Appendix D): a context made
 // with a share list sees the other's shaders and programs, one name space serves both, and a
 // program deleted while another context uses it lives until that context stops using it.
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
 

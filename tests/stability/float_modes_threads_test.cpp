@@ -1,7 +1,7 @@
 // The application's floating-point modes (an MXCSR it set after creating its context: rounding
 // up, flush to zero) do not change which pixels a thread count gives: every tile rasterizes
 // under the default modes, whichever thread takes it.
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <gtest/gtest.h>

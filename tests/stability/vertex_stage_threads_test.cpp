@@ -1,6 +1,6 @@
 // The vertex stages of a big draw (array fetch, transform and lighting, vertex shaders) run in
 // pieces on the renderer's threads: the images must not depend on the number of threads.
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <gtest/gtest.h>

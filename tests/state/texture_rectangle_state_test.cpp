@@ -1,7 +1,7 @@
 // State of ARB_texture_rectangle's target: limits, bindings, enables, the initial parameters
 // of a rectangle texture, the errors the extension adds (one level, no mipmap filters, no
 // repeating wraps), proxies, the attribute stack and display lists.
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #include <string>
 
 #include "tests/e2e/support/gl_test.h"

@@ -2,7 +2,7 @@
 // for tests that draw through shaders (the current context's GL 2.0 entry points).
 #pragma once
 #ifndef GL_GLEXT_PROTOTYPES
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #endif
 #include <GL/gl.h>
 #include <GL/glext.h>

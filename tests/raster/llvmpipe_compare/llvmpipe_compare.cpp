@@ -1,7 +1,7 @@
 // Renders random scenes with Pineda's raster/ and with Mesa llvmpipe (EGL surfaceless, an FBO,
 // GL 1.x immediate mode) and prints, per scene kind, the pixels whose coverage differs and the
 // largest channel difference. Run: GALLIUM_DRIVER=llvmpipe ./pineda_raster_llvmpipe_compare
-#define GL_GLEXT_PROTOTYPES 1
+#define GL_GLEXT_PROTOTYPES
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/gl.h>
