@@ -38,6 +38,6 @@ timed "sanitizer build" "$root/scripts/build.sh" "$root/build-asan" -DCMAKE_C_CO
   -DPINEDA_SANITIZE=ON -DPINEDA_FUZZ=ON
 timed "sanitizer ctest" env ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$root/build-asan" -j"$jobs" --output-on-failure
-# Each fuzz target for 60 s from its seeds (the inputs of earlier findings among them), with a
-# fixed random seed so that a failure reproduces.
+# Both fuzz targets side by side, each for 60 s from its seeds (the inputs of earlier findings
+# among them), with a fixed random seed so that a failure reproduces.
 timed fuzz env PINEDA_FUZZ_SEED=1 PINEDA_FUZZ_BUILD="$root/build-asan" "$root/tests/fuzz/run.sh" 60

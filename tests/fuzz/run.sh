@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs each fuzz target (clang, libFuzzer, ASan + UBSan) for SECONDS seconds from its committed
-# seed corpus (tests/fuzz/corpus/<target>/): api (every exported GL entry point, OpenGL ES 1.1's
+# Runs the fuzz targets (clang, libFuzzer, ASan + UBSan) side by side, each for SECONDS seconds from
+# its committed seed corpus (tests/fuzz/corpus/<target>/): api (every exported GL entry point, OpenGL ES 1.1's
 # among them, and every EGL entry point, tests/fuzz/api_fuzzer.cpp and gl_calls.h) and glsl
 # (shaders compiled, linked and drawn with, tests/fuzz/glsl_fuzzer.cpp, with tests/fuzz/glsl.dict).
 # The build is PINEDA_FUZZ_BUILD when that is already configured with PINEDA_FUZZ=ON (scripts/test.sh
@@ -24,7 +24,8 @@ fi
 for target in "${targets[@]}"; do
   cmake --build "$build" -j"$(nproc)" --target "pineda_${target}_fuzzer"
 done
-status=0
+# The targets run side by side (each is one process), each into its own log, shown when all are done.
+pids=()
 for target in "${targets[@]}"; do
   # New inputs go to the build's corpus; the committed seeds are only read.
   corpus=$build/corpus/$target findings=$build/findings/$target
@@ -32,10 +33,20 @@ for target in "${targets[@]}"; do
   options=()
   [ -n "${PINEDA_FUZZ_SEED:-}" ] && options+=(-seed="$PINEDA_FUZZ_SEED")
   [ -f "$root/tests/fuzz/$target.dict" ] && options+=(-dict="$root/tests/fuzz/$target.dict")
-  if ! "$build/tests/fuzz/pineda_${target}_fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-      -malloc_limit_mb=512 -max_len=4096 -print_final_stats=1 -artifact_prefix="$findings/" "${options[@]}" \
-      "$corpus" "$root/tests/fuzz/corpus/$target"; then
-    echo "fuzz target $target failed; reproducer in $findings/" >&2
+  "$build/tests/fuzz/pineda_${target}_fuzzer" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -malloc_limit_mb=512 -max_len=4096 -print_final_stats=1 -artifact_prefix="$findings/" "${options[@]}" \
+    "$corpus" "$root/tests/fuzz/corpus/$target" > "$build/fuzz-$target.log" 2>&1 &
+  pids+=($!)
+done
+status=0
+for i in "${!targets[@]}"; do
+  target=${targets[$i]}
+  result=0
+  wait "${pids[$i]}" || result=$?
+  echo "== fuzz target $target ($build/fuzz-$target.log)"
+  cat "$build/fuzz-$target.log"
+  if [ "$result" -ne 0 ]; then
+    echo "fuzz target $target failed; reproducer in $build/findings/$target/" >&2
     status=1
   fi
 done
