@@ -117,6 +117,7 @@ void Renderer::for_each_piece(size_t count, size_t grain, const std::function<vo
 void Renderer::flush() {
   impl_->finish_running();
   impl_->scene.execute(impl_->pool);
+  impl_->scene.forget_draws();
 }
 
 // A full scene runs on the pool's threads while this one bins the next (the two never run at

@@ -38,6 +38,9 @@ class Scene {
   // Runs all commands; afterwards the scene is empty but keeps the current draw, so that a
   // draw interrupted by a full scene can go on adding primitives.
   void execute(WorkerPool& pool);
+  // Between draws, after execute: lets the current draw's record go too, and the texture images
+  // it keeps alive (a texture changed now can then be changed in place: TextureObject).
+  void forget_draws() { draws_.clear(); }
 
   // Running while the calling thread goes on binning into another scene: start hands the
   // commands to the pool's threads (worth it only for a scene that is not small, with a pool that

@@ -30,22 +30,49 @@ void for_each_read_pixel(const raster::Framebuffer& fb, GLint x, GLint y, GLsize
   }
 }
 
-// The read drawable's pixels in [x, x + width) x [y, y + height) as tight RGBA8 rows, bottom
-// row first; pixels outside the drawable read as zero (GL leaves them undefined).
-std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height) {
-  std::vector<uint8_t> out(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 4, 0);
+// RGBA8 rows, bottom row first: `row_length` pixels from one row to the next (0: tight).
+struct Rgba8Rows {
+  const uint8_t* pixels = nullptr;
+  GLint row_length = 0;
+};
+
+// The read drawable's pixels in [x, x + width) x [y, y + height) as RGBA8 rows. Inside a
+// window's (not a framebuffer object's, which may be the texture written) plain RGBA8 colour
+// buffer with alpha and rows upwards in memory, and when `in_place`, they are the buffer's own
+// rows; otherwise tight rows in the context's copied_pixels (reused: a blur copying the frame
+// several times a frame would otherwise fault fresh pages in each time), where pixels outside
+// the drawable read as zero (GL leaves them undefined).
+Rgba8Rows read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, bool in_place = true) {
+  const size_t row_bytes = size_t(std::max(width, 0)) * 4, rows = size_t(std::max(height, 0));
+  std::vector<uint8_t>& out = ctx.copied_pixels;
+  if (out.size() < row_bytes * rows) out.resize(row_bytes * rows);
   const Drawable* d = ctx.read_drawable();
-  if (!d || width <= 0 || height <= 0) return out;
+  if (!d || row_bytes * rows == 0) {
+    std::fill_n(out.begin(), row_bytes * rows, uint8_t(0));
+    return {out.data(), 0};
+  }
   ctx.finish();
   const raster::Framebuffer fb = ctx.read_framebuffer();
+  const bool inside = x >= 0 && y >= 0 && int64_t(x) + width <= fb.width && int64_t(y) + height <= fb.height;
+  const bool plain_rgba8 = !fb.color.reduction.active && fb.color.format == raster::ColorFormat::RGBA8;
+  if (in_place && inside && plain_rgba8 && d == ctx.window_read_drawable() && d->alpha_bits && fb.color.stride > 0 &&
+      fb.color.stride % 4 == 0 && fb.color.stride / 4 <= INT32_MAX)
+    return {fb.color.base + fb.color.stride * y + 4 * ptrdiff_t(x), GLint(fb.color.stride / 4)};
   // Row by row: the columns inside the framebuffer; RGBA8 and BGRA8 rows in whole words.
-  const int64_t col0 = std::max<int64_t>(0, -int64_t(x)), col1 = std::min<int64_t>(width, int64_t(fb.width) - x);
+  const int64_t col0 = std::clamp<int64_t>(-int64_t(x), 0, width);
+  const int64_t col1 = std::clamp<int64_t>(int64_t(fb.width) - x, col0, width);
   const bool plain = !fb.color.reduction.active, bgra = fb.color.format == raster::ColorFormat::BGRA8;
-  for (GLsizei row = 0; row < height && col0 < col1; ++row) {
+  for (GLsizei row = 0; row < height; ++row) {
+    uint8_t* dst_row = &out[size_t(row) * row_bytes];
     const int64_t fy = int64_t(y) + row;
-    if (fy < 0 || fy >= fb.height) continue;
+    if (fy < 0 || fy >= fb.height || col0 == col1) {
+      std::fill_n(dst_row, row_bytes, uint8_t(0));
+      continue;
+    }
+    std::fill_n(dst_row, size_t(col0) * 4, uint8_t(0));
+    std::fill(dst_row + size_t(col1) * 4, dst_row + row_bytes, uint8_t(0));
     const uint8_t* src = fb.color.base + fb.color.stride * fy + 4 * (x + col0);
-    uint8_t* dst = &out[(size_t(row) * width + col0) * 4];
+    uint8_t* dst = dst_row + size_t(col0) * 4;
     const size_t n = size_t(col1 - col0);
     if (plain && !bgra) {
       std::memcpy(dst, src, n * 4);
@@ -62,7 +89,7 @@ std::vector<uint8_t> read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, G
     if (!d->alpha_bits)
       for (size_t i = 0; i < n; ++i) dst[4 * i + 3] = 255;
   }
-  return out;
+  return {out.data(), 0};
 }
 
 // glCopyTexImage takes the targets of glTexImage with `dims` dimensions but no proxy
@@ -169,12 +196,14 @@ bool valid_copy_internal_format(Context& ctx, GLenum internalformat) {
   return false;
 }
 
-// Runs `upload` with a tightly packed unpack state, then restores the application's.
+// Runs `upload` with a packed unpack state (rows `row_length` pixels apart, 0: tight), then
+// restores the application's.
 template <typename Upload>
-void with_tight_unpack(Context& ctx, Upload upload) {
+void with_tight_unpack(Context& ctx, Upload upload, GLint row_length = 0) {
   const PixelStore saved = ctx.unpack;
   ctx.unpack = PixelStore{};
   ctx.unpack.alignment = 1;
+  ctx.unpack.row_length = row_length;
   upload();
   ctx.unpack = saved;
 }
@@ -206,19 +235,22 @@ void CopyTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalfor
     });
   }
   if (!has_read_color(ctx)) return;
-  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
+  const Rgba8Rows rows = read_rgba8(ctx, x, y, width, height, !ctx.es2());
   if (ctx.es2()) {
     // ES 2.0's glTexImage2D takes only format == internalformat: the pixels are passed in it.
-    const std::vector<uint8_t> base = es2_base_format_pixels(pixels, internalformat);
+    const std::vector<uint8_t> base =
+        es2_base_format_pixels(rows.pixels, size_t(width) * size_t(height), internalformat);
     return with_tight_unpack(ctx, [&] {
       TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, internalformat, GL_UNSIGNED_BYTE,
                  base.data());
     });
   }
-  with_tight_unpack(ctx, [&] {
-    TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
-               pixels.data());
-  });
+  with_tight_unpack(
+      ctx, [&] {
+        TexImage2D(ctx, target, level, GLint(internalformat), width, height, border, GL_RGBA, GL_UNSIGNED_BYTE,
+                       rows.pixels);
+      },
+      rows.row_length);
 }
 
 void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
@@ -241,10 +273,12 @@ void CopyTexImage1D(Context& ctx, GLenum target, GLint level, GLenum internalfor
     });
   }
   if (!has_read_color(ctx)) return;
-  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
-  with_tight_unpack(ctx, [&] {
-    TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  });
+  const Rgba8Rows rows = read_rgba8(ctx, x, y, width, 1);
+  with_tight_unpack(
+      ctx, [&] {
+        TexImage1D(ctx, target, level, GLint(internalformat), width, border, GL_RGBA, GL_UNSIGNED_BYTE, rows.pixels);
+      },
+      rows.row_length);
 }
 
 void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
@@ -265,10 +299,12 @@ void CopyTexSubImage2D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
     });
   }
   if (!has_read_color(ctx)) return;
-  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
-  with_tight_unpack(ctx, [&] {
-    TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  });
+  const Rgba8Rows rows = read_rgba8(ctx, x, y, width, height);
+  with_tight_unpack(
+      ctx, [&] {
+        TexSubImage2D(ctx, target, level, xoffset, yoffset, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.pixels);
+      },
+      rows.row_length);
 }
 
 void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
@@ -288,10 +324,12 @@ void CopyTexSubImage1D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
     });
   }
   if (!has_read_color(ctx)) return;
-  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, 1);
-  with_tight_unpack(ctx, [&] {
-    TexSubImage1D(ctx, target, level, xoffset, width, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  });
+  const Rgba8Rows rows = read_rgba8(ctx, x, y, width, 1);
+  with_tight_unpack(
+      ctx, [&] {
+        TexSubImage1D(ctx, target, level, xoffset, width, GL_RGBA, GL_UNSIGNED_BYTE, rows.pixels);
+      },
+      rows.row_length);
 }
 
 // One slice (zoffset) of a 3D texture level from the read buffer.
@@ -299,11 +337,13 @@ void CopyTexSubImage3D(Context& ctx, GLenum target, GLint level, GLint xoffset, 
                        GLint y, GLsizei width, GLsizei height) {
   if (!valid_copy_size(ctx, width, height)) return;
   if (!has_read_color(ctx)) return;
-  const std::vector<uint8_t> pixels = read_rgba8(ctx, x, y, width, height);
-  with_tight_unpack(ctx, [&] {
-    TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, 1, GL_RGBA, GL_UNSIGNED_BYTE,
-                  pixels.data());
-  });
+  const Rgba8Rows rows = read_rgba8(ctx, x, y, width, height);
+  with_tight_unpack(
+      ctx, [&] {
+        TexSubImage3D(ctx, target, level, xoffset, yoffset, zoffset, width, height, 1, GL_RGBA, GL_UNSIGNED_BYTE,
+                      rows.pixels);
+      },
+      rows.row_length);
 }
 
 void CopyTexSubImage3DEXT(Context& ctx, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,

@@ -198,7 +198,10 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
     unpack_depth_into(ctx, l, storage, box, type, pixels);
   else
     unpack_into(ctx, l, storage, box, format, type, pixels);
-  tex.level_changed(level, target.face);
+  // The last draw's state still holds the images it sampled (each draw takes them again): let
+  // them go, so that an image no queued draw holds is changed in place.
+  for (raster::TextureUnit& unit : ctx.draw_state.texture_units) unit.image.reset();
+  tex.box_changed(level, target.face, {xoffset, yoffset, zoffset, width, height, depth});
 }
 
 // Sets one parameter; returns the error the spec names for a bad one.

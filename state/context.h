@@ -185,6 +185,7 @@ class Context {
   std::vector<raster::VertexInput> immediate;
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
+  std::vector<uint8_t> copied_pixels;         // glCopyTex(Sub)Image's colour rectangle; only grows
   TransformedVertices transformed;  // vertex-stage output of the current draw
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
   // (empty when the material did not change inside the primitive); the first is the one in

@@ -194,6 +194,33 @@ void TextureObject::level_changed(int level, int face) {
   if (params.generate_mipmap && level == params.base_level) generate_levels(level, face);
 }
 
+void TextureObject::box_changed(int level, int face, const TexelBox& box) {
+  if (params.generate_mipmap && level == params.base_level) return level_changed(level, face);
+  if (!patch_snapshot(level, face, box)) {
+    snapshot_.reset();
+    snapshot_valid_ = false;
+  }
+  ++version;
+}
+
+// Only the context's thread copies snapshot_: held by no one else, no draw can be reading it.
+bool TextureObject::patch_snapshot(int level, int face, const TexelBox& box) {
+  if (!snapshot_valid_ || !snapshot_ || snapshot_.use_count() != 1) return false;
+  const int64_t l = int64_t(level) - params.base_level;
+  if (l < 0 || l >= int64_t(snapshot_->levels.size())) return false;
+  const TextureLevelData& in = face_levels(face)[size_t(level)];
+  raster::TextureLevel& out = snapshot_->levels[size_t(l)];
+  const size_t face_texels = in.texels.size();
+  if (out.texels.size() < face_texels * size_t(face + 1)) return false;
+  for (int z = 0; z < box.depth; ++z)
+    for (int y = 0; y < box.height; ++y) {
+      const size_t at = (size_t(box.z + z) * size_t(in.height) + size_t(box.y + y)) * size_t(in.width) + size_t(box.x);
+      std::copy_n(in.texels.begin() + ptrdiff_t(at), box.width,
+                  out.texels.begin() + ptrdiff_t(face_texels * size_t(face) + at));
+    }
+  return true;
+}
+
 void TextureObject::generate_levels(int level, int face) {
   changed();
   std::vector<TextureLevelData>& chain = face_levels(face);

@@ -59,13 +59,22 @@ struct TextureObject {
   // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
   // it when it is the base level and generation is on.
   void level_changed(int level, int face = 0);
+  // The same after glTexSubImage replaced the texels of `box` in `level`: a snapshot that no
+  // queued draw holds takes the box in place instead of being rebuilt whole.
+  struct TexelBox {
+    int x, y, z, width, height, depth;
+  };
+  void box_changed(int level, int face, const TexelBox& box);
   // Rebuilds the levels below `level` of cube face `face` from it (glGenerateMipmap).
   void generate_levels(int level, int face = 0);
   // Counts changes: a framebuffer attachment's copy of a depth image compares it (framebuffers/).
   uint64_t version = 0;
 
  private:
-  std::shared_ptr<const raster::TextureImage> snapshot_;
+  // Copies `box` of `level` into the snapshot; false when there is none to patch.
+  bool patch_snapshot(int level, int face, const TexelBox& box);
+
+  std::shared_ptr<raster::TextureImage> snapshot_;
   bool snapshot_valid_ = false;
 };
 

@@ -120,18 +120,18 @@ bool es2_copy_tex_image_format(GLenum internalformat) {
   }
 }
 
-std::vector<uint8_t> es2_base_format_pixels(const std::vector<uint8_t>& rgba, GLenum format) {
+std::vector<uint8_t> es2_base_format_pixels(const uint8_t* rgba, size_t pixels, GLenum format) {
   std::vector<int> picks;  // the RGBA components kept, in order
   switch (format) {
     case GL_RGB: picks = {0, 1, 2}; break;
     case GL_LUMINANCE_ALPHA: picks = {0, 3}; break;
     case GL_LUMINANCE: picks = {0}; break;
     case GL_ALPHA: picks = {3}; break;
-    default: return rgba;
+    default: return std::vector<uint8_t>(rgba, rgba + pixels * 4);
   }
   std::vector<uint8_t> out;
-  out.reserve(rgba.size() / 4 * picks.size());
-  for (size_t i = 0; i + 3 < rgba.size(); i += 4)
+  out.reserve(pixels * picks.size());
+  for (size_t i = 0; i < pixels * 4; i += 4)
     for (int c : picks) out.push_back(rgba[i + size_t(c)]);
   return out;
 }

@@ -45,6 +45,6 @@ bool es2_copy_tex_image_format(GLenum internalformat);
 
 // RGBA8 pixels reduced to the components of base format `format` (RGBA, RGB, LUMINANCE_ALPHA,
 // LUMINANCE: R, ALPHA), one byte each.
-std::vector<uint8_t> es2_base_format_pixels(const std::vector<uint8_t>& rgba, GLenum format);
+std::vector<uint8_t> es2_base_format_pixels(const uint8_t* rgba, size_t pixels, GLenum format);
 
 }  // namespace pineda

@@ -1,0 +1,158 @@
+// glTexSubImage and glCopyTexSubImage while draws use the texture: a queued draw samples the
+// texels it was recorded with, every later draw the replaced ones, whichever level, cube face
+// or 3D slice was replaced (the sampled image is patched in place once no draw holds it).
+#include <GL/glext.h>
+
+#include <vector>
+
+#include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/window_quad.h"
+
+// Its own namespace: a unity batch holds texture_test.cpp's grid_texel and colour names.
+namespace pineda::test::sub_image {
+namespace {
+
+constexpr Rgba kRed{255, 0, 0, 255}, kBlue{0, 0, 255, 255}, kGreen{0, 255, 0, 255};
+
+// A 4x4 RGBA texture whose texel (s, t) is (40 s + 10, 40 t + 10, 200, 255).
+Rgba grid_texel(int s, int t) { return {40 * s + 10, 40 * t + 10, 200, 255}; }
+std::vector<uint8_t> grid_texels() {
+  std::vector<uint8_t> out;
+  for (int t = 0; t < 4; ++t)
+    for (int s = 0; s < 4; ++s) out.insert(out.end(), {uint8_t(40 * s + 10), uint8_t(40 * t + 10), 200, 255});
+  return out;
+}
+
+void set_texel(GLenum target, GLint level, int s, int t, const Rgba& c) {
+  const uint8_t texel[4] = {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};
+  glTexSubImage2D(target, level, s, t, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+}
+
+void nearest(GLenum target) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+class TextureSubImageTest : public GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    pixel_projection();
+    clear_to(0, 0, 0, 0);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  }
+  void TearDown() override {
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    GlTest::TearDown();
+  }
+  // The 4x4 grid texture drawn over [x, x + 8) x [0, 8): texel (s, t) covers 2x2 pixels.
+  void draw_grid_at(float x) { draw_textured_rect(x, 0, x + 8, 8, 0, 0, 1, 1); }
+  // The texels a draw_grid_at(x) shows, against `expected(s, t)`.
+  template <typename Expected>
+  void expect_grid_at(int x, Expected expected) {
+    for (int t = 0; t < 4; ++t)
+      for (int s = 0; s < 4; ++s) EXPECT_TRUE(near_rgba(pixel(x + 2 * s, 2 * t), expected(s, t))) << s << "," << t;
+  }
+};
+
+TEST_F(TextureSubImageTest, EachDrawSamplesTheTexelsOfItsTime) {
+  glBindTexture(GL_TEXTURE_2D, 1);
+  const std::vector<uint8_t> grid = grid_texels();
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, grid.data());
+  nearest(GL_TEXTURE_2D);
+  glEnable(GL_TEXTURE_2D);
+  draw_grid_at(0);
+  set_texel(GL_TEXTURE_2D, 0, 1, 1, kRed);  // while the first draw is queued
+  draw_grid_at(8);
+  expect_grid_at(0, grid_texel);
+  set_texel(GL_TEXTURE_2D, 0, 2, 3, kBlue);  // no draw queued now
+  draw_grid_at(16);
+  expect_grid_at(8, [](int s, int t) { return s == 1 && t == 1 ? kRed : grid_texel(s, t); });
+  expect_grid_at(16, [](int s, int t) {
+    return s == 1 && t == 1 ? kRed : s == 2 && t == 3 ? kBlue : grid_texel(s, t);
+  });
+}
+
+// The second level replaced, with the base level at 1: the sampled image's first level is the
+// texture's level 1, and level 0's texels are not sampled at all.
+TEST_F(TextureSubImageTest, ALevelAboveTheBaseLevel) {
+  glBindTexture(GL_TEXTURE_2D, 1);
+  const std::vector<uint8_t> grid = grid_texels();
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, grid.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+  nearest(GL_TEXTURE_2D);
+  glEnable(GL_TEXTURE_2D);
+  draw_grid_at(0);
+  expect_grid_at(0, grid_texel);
+  set_texel(GL_TEXTURE_2D, 1, 3, 0, kGreen);
+  set_texel(GL_TEXTURE_2D, 0, 0, 0, kRed);
+  draw_grid_at(8);
+  expect_grid_at(8, [](int s, int t) { return s == 3 && t == 0 ? kGreen : grid_texel(s, t); });
+}
+
+// A cube map of 1x1 faces, face i the colour (30 i, 0, 0): replacing -Y changes only what
+// the -Y direction samples.
+TEST_F(TextureSubImageTest, OneFaceOfACubeMap) {
+  glBindTexture(GL_TEXTURE_CUBE_MAP, 1);
+  for (int f = 0; f < 6; ++f) {
+    const uint8_t texel[4] = {uint8_t(30 * f), 0, 0, 255};
+    glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f), 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  }
+  nearest(GL_TEXTURE_CUBE_MAP);
+  glEnable(GL_TEXTURE_CUBE_MAP);
+  const float directions[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  auto draw_faces = [&] {
+    for (int f = 0; f < 6; ++f) {
+      glTexCoord3fv(directions[f]);
+      glRectf(float(2 * f), 0, float(2 * f + 2), 2);
+    }
+  };
+  draw_faces();
+  for (int f = 0; f < 6; ++f) EXPECT_TRUE(near_rgba(pixel(2 * f, 0), {30 * f, 0, 0, 255})) << f;
+  set_texel(GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0, 0, 0, kBlue);
+  draw_faces();
+  for (int f = 0; f < 6; ++f) EXPECT_TRUE(near_rgba(pixel(2 * f, 0), f == 3 ? kBlue : Rgba{30 * f, 0, 0, 255})) << f;
+}
+
+// A 1x1x4 3D texture, slice r the colour (0, 50 r, 0): replacing slice 2 changes only it.
+TEST_F(TextureSubImageTest, OneSliceOfA3DTexture) {
+  glBindTexture(GL_TEXTURE_3D, 1);
+  const uint8_t slices[16] = {0, 0, 0, 255, 0, 50, 0, 255, 0, 100, 0, 255, 0, 150, 0, 255};
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA, 1, 1, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, slices);
+  nearest(GL_TEXTURE_3D);
+  glEnable(GL_TEXTURE_3D);
+  auto draw_slices = [] {
+    for (int r = 0; r < 4; ++r) {
+      glTexCoord3f(0.5f, 0.5f, (float(r) + 0.5f) / 4.f);
+      glRectf(float(2 * r), 0, float(2 * r + 2), 2);
+    }
+  };
+  draw_slices();
+  for (int r = 0; r < 4; ++r) EXPECT_TRUE(near_rgba(pixel(2 * r, 0), {0, 50 * r, 0, 255})) << r;
+  const uint8_t red[4] = {255, 0, 0, 255};
+  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, red);
+  draw_slices();
+  for (int r = 0; r < 4; ++r) EXPECT_TRUE(near_rgba(pixel(2 * r, 0), r == 2 ? kRed : Rgba{0, 50 * r, 0, 255})) << r;
+}
+
+// glCopyTexSubImage2D from the window into a texture drawn each time: every draw shows the
+// frame as it was when copied.
+TEST_F(TextureSubImageTest, CopiesOfTheFrameBetweenDraws) {
+  glBindTexture(GL_TEXTURE_2D, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  nearest(GL_TEXTURE_2D);
+  for (int i = 0; i < 3; ++i) {
+    glDisable(GL_TEXTURE_2D);
+    glColor4ub(GLubyte(60 * i + 20), GLubyte(200 - 60 * i), 7, 255);
+    glRecti(20, 20, 24, 24);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 20, 20, 4, 4);
+    glEnable(GL_TEXTURE_2D);
+    draw_textured_rect(float(8 * i), 0, float(8 * i + 4), 4, 0, 0, 1, 1);
+  }
+  for (int i = 0; i < 3; ++i)
+    EXPECT_TRUE(near_rgba(pixel(8 * i + 1, 1), {60 * i + 20, 200 - 60 * i, 7, 255})) << i;
+}
+
+}  // namespace
+}  // namespace pineda::test::sub_image
