@@ -47,11 +47,15 @@ struct StencilFace {
   StencilOp fail = StencilOp::Keep, depth_fail = StencilOp::Keep, depth_pass = StencilOp::Keep;
 };
 
-struct BlendState {
+// A draw buffer's factors and equations (ARB_draw_buffers_blend gives each its own).
+struct BlendFunction {
   BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
   BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;
   BlendEquation eq_rgb = BlendEquation::Add, eq_alpha = BlendEquation::Add;
-  float color[4] = {0, 0, 0, 0};
+};
+
+struct BlendState : BlendFunction {
+  float color[4] = {0, 0, 0, 0};  // one for every draw buffer
 };
 
 enum class FogMode : uint8_t { Linear, Exp, Exp2 };
@@ -125,11 +129,13 @@ struct DrawState {
   LogicOp logic_op = LogicOp::Copy;
   bool dither = true;  // accepted; Pineda never dithers (exact output)
   std::array<bool, 4> color_write = {true, true, true, true};
-  // EXT_draw_buffers2: the blend enable and colour write mask of draw buffers 1.. (`blend` and
-  // `color_write` above are draw buffer 0's).
+  // EXT_draw_buffers2 and ARB_draw_buffers_blend: the blend enable, colour write mask, blend
+  // factors and equations of draw buffers 1.. (`blend`, `color_write` and `blend_state` above
+  // are draw buffer 0's).
   struct TargetWrite {
     bool blend = false;
     std::array<bool, 4> color_write = {true, true, true, true};
+    BlendFunction blend_function;
   };
   std::array<TargetWrite, kMaxColorTargets - 1> more_targets{};
   MultisampleState multisample;
@@ -149,12 +155,14 @@ struct DrawState {
   // state/; raster/ interpolates its varyings and runs the fragment shader.
   std::shared_ptr<const ShaderDraw> shader;
 
-  // Draw buffer i's blend enable and colour write mask become `blend` and `color_write`, the
-  // ones a draw's write stage reads.
+  // Draw buffer i's blend enable, colour write mask and blend function become `blend`,
+  // `color_write` and `blend_state`'s, the ones a draw's write stage reads.
   void use_target_write(int i) {
     if (i <= 0 || i >= kMaxColorTargets) return;
-    blend = more_targets[static_cast<size_t>(i - 1)].blend;
-    color_write = more_targets[static_cast<size_t>(i - 1)].color_write;
+    const TargetWrite& t = more_targets[static_cast<size_t>(i - 1)];
+    blend = t.blend;
+    color_write = t.color_write;
+    static_cast<BlendFunction&>(blend_state) = t.blend_function;
   }
 };
 

@@ -1,11 +1,16 @@
 // EXT_draw_buffers2: a colour write mask and a blend enable per draw buffer
 // (glColorMaskIndexedEXT, glEnable/Disable/IsEnabledIndexedEXT for BLEND, and their indexed
-// queries). glColorMask and glEnable(GL_BLEND) set every draw buffer's; the unindexed queries
-// return draw buffer 0's.
+// queries, which also answer ARB_draw_buffers_blend's factors and equations per draw buffer).
+// glColorMask and glEnable(GL_BLEND) set every draw buffer's; the unindexed queries return draw
+// buffer 0's.
+#include <type_traits>
+
 #include "glapi/gl_entry_points.h"
+#include "state/blend_function.h"
 #include "state/context.h"
 #include "state/debug/debug_output.h"
 #include "state/draw_buffer_list.h"
+#include "state/enum_translate.h"
 
 namespace pineda {
 namespace {
@@ -20,10 +25,24 @@ std::array<bool, 4>& color_mask(Context& ctx, GLuint index) {
   return index == 0 ? s.color_write : s.more_targets[index - 1].color_write;
 }
 
+// A blend factor or equation a query names per draw buffer (ARB_draw_buffers_blend; GL 1.0's
+// BLEND_SRC and BLEND_DST too, as Mesa answers them, for RGB's).
+bool blend_function_state(GLenum target) {
+  switch (target) {
+    case GL_BLEND_SRC: case GL_BLEND_DST:
+    case GL_BLEND_SRC_RGB: case GL_BLEND_DST_RGB: case GL_BLEND_SRC_ALPHA: case GL_BLEND_DST_ALPHA:
+    case GL_BLEND_EQUATION_RGB: case GL_BLEND_EQUATION_ALPHA:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // The draw buffer `index` names, or an error recorded: the indexed state is BLEND (and, for the
-// queries, COLOR_WRITEMASK); the index is below MAX_DRAW_BUFFERS.
-bool indexed_state(Context& ctx, GLenum target, GLuint index, bool color_mask_too) {
-  if (target != GL_BLEND && !(color_mask_too && target == GL_COLOR_WRITEMASK)) {
+// queries, COLOR_WRITEMASK and the blend factors and equations); the index is below
+// MAX_DRAW_BUFFERS.
+bool indexed_state(Context& ctx, GLenum target, GLuint index, bool queried_too) {
+  if (target != GL_BLEND && !(queried_too && (target == GL_COLOR_WRITEMASK || blend_function_state(target)))) {
     ctx.record_error(GL_INVALID_ENUM, [target] { return "no indexed state " + hex_enum(target); });
     return false;
   }
@@ -34,12 +53,30 @@ bool indexed_state(Context& ctx, GLenum target, GLuint index, bool color_mask_to
   return true;
 }
 
-// The indexed value as integers: the four mask components, or the enable.
+GLenum blend_function_enum(const raster::BlendFunction& f, GLenum target) {
+  switch (target) {
+    case GL_BLEND_SRC:
+    case GL_BLEND_SRC_RGB: return blend_factor_enum(f.src_rgb);
+    case GL_BLEND_DST:
+    case GL_BLEND_DST_RGB: return blend_factor_enum(f.dst_rgb);
+    case GL_BLEND_SRC_ALPHA: return blend_factor_enum(f.src_alpha);
+    case GL_BLEND_DST_ALPHA: return blend_factor_enum(f.dst_alpha);
+    case GL_BLEND_EQUATION_RGB: return blend_equation_enum(f.eq_rgb);
+    default: return blend_equation_enum(f.eq_alpha);
+  }
+}
+
+// The indexed value as integers: the four mask components, the enable, or the factor or equation.
 template <typename T>
 void get_indexed(Context& ctx, GLenum target, GLuint index, T* data) {
   if (!indexed_state(ctx, target, index, true) || !data) return;
   if (target == GL_BLEND) {
     data[0] = blend_enable(ctx, index) ? 1 : 0;
+    return;
+  }
+  if (blend_function_state(target)) {
+    const GLenum e = blend_function_enum(blend_function(ctx, index), target);
+    data[0] = std::is_same_v<T, GLboolean> ? T(e != 0) : T(e);
     return;
   }
   const std::array<bool, 4>& mask = color_mask(ctx, index);

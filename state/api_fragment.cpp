@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "glapi/gl_entry_points.h"
+#include "state/blend_function.h"
 #include "state/context.h"
 #include "state/enum_translate.h"
 
@@ -29,32 +30,26 @@ void DepthMask(Context& ctx, GLboolean flag) { ctx.draw_state.depth_write = flag
 
 // glStencilFunc, glStencilOp and glStencilMask: api_stencil.cpp (per face).
 
+// glBlendFunc and glBlendEquation set every draw buffer's (ARB_draw_buffers_blend; the
+// indexed forms one buffer's: api_draw_buffers_blend.cpp).
 void BlendFuncSeparate(Context& ctx, GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha) {
-  raster::BlendFactor sr, dr, sa, da;
-  if (!to_blend_factor(src_rgb, sr) || !to_blend_factor(dst_rgb, dr) || !to_blend_factor(src_alpha, sa) ||
-      !to_blend_factor(dst_alpha, da))
-    return ctx.record_error(GL_INVALID_ENUM, "a factor is not a blend factor");
+  raster::BlendFunction f = ctx.draw_state.blend_state;
+  if (!set_blend_factors(ctx, src_rgb, dst_rgb, src_alpha, dst_alpha, f)) return;
   ctx.blend_src_rgb = src_rgb;
   ctx.blend_dst_rgb = dst_rgb;
   ctx.blend_src_alpha = src_alpha;
   ctx.blend_dst_alpha = dst_alpha;
-  raster::BlendState& b = ctx.draw_state.blend_state;
-  b.src_rgb = sr;
-  b.dst_rgb = dr;
-  b.src_alpha = sa;
-  b.dst_alpha = da;
+  set_every_blend_factors(ctx, f);
 }
 
 void BlendFunc(Context& ctx, GLenum src, GLenum dst) { BlendFuncSeparate(ctx, src, dst, src, dst); }
 
 void BlendEquationSeparate(Context& ctx, GLenum mode_rgb, GLenum mode_alpha) {
-  raster::BlendEquation rgb, alpha;
-  if (!to_blend_equation(mode_rgb, rgb) || !to_blend_equation(mode_alpha, alpha))
-    return ctx.record_error(GL_INVALID_ENUM, "a mode is not a blend equation");
+  raster::BlendFunction f = ctx.draw_state.blend_state;
+  if (!set_blend_equations(ctx, mode_rgb, mode_alpha, f)) return;
   ctx.blend_eq_rgb = mode_rgb;
   ctx.blend_eq_alpha = mode_alpha;
-  ctx.draw_state.blend_state.eq_rgb = rgb;
-  ctx.draw_state.blend_state.eq_alpha = alpha;
+  set_every_blend_equations(ctx, f);
 }
 
 void BlendEquation(Context& ctx, GLenum mode) { BlendEquationSeparate(ctx, mode, mode); }

@@ -57,6 +57,19 @@ bool to_blend_equation(GLenum e, raster::BlendEquation& out) {
   }
 }
 
+GLenum blend_factor_enum(raster::BlendFactor f) {
+  static constexpr GLenum kEnums[] = {GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
+                                      GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
+                                      GL_ONE_MINUS_DST_ALPHA, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_COLOR,
+                                      GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_ALPHA_SATURATE};
+  return kEnums[static_cast<size_t>(f)];
+}
+
+GLenum blend_equation_enum(raster::BlendEquation e) {
+  static constexpr GLenum kEnums[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+  return kEnums[static_cast<size_t>(e)];
+}
+
 bool to_logic_op(GLenum e, raster::LogicOp& out) {
   if (e < GL_CLEAR || e > GL_SET) return false;
   out = static_cast<raster::LogicOp>(e - GL_CLEAR);  // GL orders them as raster does

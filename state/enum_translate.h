@@ -17,6 +17,9 @@ bool to_compare_func(GLenum e, raster::CompareFunc& out);
 bool to_stencil_op(GLenum e, raster::StencilOp& out);
 bool to_blend_factor(GLenum e, raster::BlendFactor& out);
 bool to_blend_equation(GLenum e, raster::BlendEquation& out);
+// The GL enum of a factor or equation (what glGet returns for it).
+GLenum blend_factor_enum(raster::BlendFactor f);
+GLenum blend_equation_enum(raster::BlendEquation e);
 bool to_logic_op(GLenum e, raster::LogicOp& out);
 bool to_polygon_mode(GLenum e, raster::PolygonMode& out);
 bool to_primitive(GLenum e, raster::Primitive& out);

@@ -12,8 +12,6 @@
 namespace pineda::gl {
 namespace {
 
-GLint length_with_nul(const std::string& s) { return s.empty() ? 0 : static_cast<GLint>(s.size() + 1); }
-
 bool starts_with_gl(const GLchar* name) { return std::strncmp(name, "gl_", 3) == 0; }
 
 }  // namespace

@@ -15,9 +15,6 @@ std::string joined_source(const ShaderObject& s) {
   return all;
 }
 
-// Lengths GL reports include the terminating NUL; an empty string reports 0.
-GLint length_with_nul(const std::string& s) { return s.empty() ? 0 : static_cast<GLint>(s.size() + 1); }
-
 }  // namespace
 
 GLuint CreateShader(Context& ctx, GLenum type) {

@@ -14,5 +14,7 @@ ProgramObject* program_or_error(Context& ctx, GLuint name);
 
 // glGet*InfoLog / glGetShaderSource: copies at most bufSize - 1 characters and a NUL.
 void copy_string_out(const std::string& s, GLsizei buf_size, GLsizei* length, GLchar* out);
+// The length those queries report: with the terminating NUL; an empty string reports 0.
+inline GLint length_with_nul(const std::string& s) { return s.empty() ? 0 : static_cast<GLint>(s.size() + 1); }
 
 }  // namespace pineda
