@@ -318,7 +318,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_ARB_texture_non_power_of_two GL_EXT_texture_edge_clamp GL_SGIS_texture_edge_clamp GL_EXT_texture_env_add "
       "GL_ARB_vertex_buffer_object GL_ARB_occlusion_query GL_EXT_multi_draw_arrays GL_EXT_draw_range_elements "
       "GL_EXT_stencil_wrap GL_ATI_separate_stencil GL_ARB_draw_buffers GL_ATI_draw_buffers GL_EXT_draw_buffers2 "
-      "GL_ARB_draw_buffers_blend "
+      "GL_ARB_draw_buffers_blend GL_ARB_texture_storage "
       "GL_ARB_transpose_matrix GL_ARB_multisample GL_ARB_point_parameters GL_EXT_point_parameters GL_ARB_point_sprite "
       "GL_ARB_texture_compression GL_ARB_depth_texture GL_ARB_shadow GL_EXT_shadow_funcs "
       "GL_EXT_fog_coord GL_EXT_secondary_color GL_EXT_separate_specular_color "

@@ -141,6 +141,8 @@ void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint in
   const int inner_d = dims == 3 ? depth - 2 * border : 1;
   const GLint recorded_format = stored_internal_format(internal_format);
   TextureObject& tex = image_texture(ctx, target);
+  if (tex.immutable_levels > 0)  // ARB_texture_storage: even an image of the same size and format
+    return ctx.record_error(GL_INVALID_OPERATION, "the texture's storage is immutable (glTexStorage)");
   std::vector<TextureLevelData>& levels = tex.face_levels(target.face);
   const int level_max = max_texture_size(target.kind) >> level;
   if (target.proxy) {  // GL 1.5 3.8.1: a proxy level takes the image's state when it fits, zeros otherwise
@@ -241,7 +243,7 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
     case GL_TEXTURE_MAX_LEVEL: {
       if (!(v[0] >= 0.f)) return {GL_INVALID_VALUE, "the level is negative"};  // or NaN
       const GLint level = v[0] >= 2147483648.f ? 2147483647 : GLint(v[0]);
-      (pname == GL_TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = level;
+      (pname == GL_TEXTURE_BASE_LEVEL ? p.base_level : p.max_level) = tex.clamped_level_param(pname, level);
       break;
     }
     case GL_GENERATE_MIPMAP:
@@ -276,7 +278,10 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
 }
 
 // OES_draw_texture's crop rectangle is OpenGL ES 1.1's only.
-bool known_pname(const Context& ctx, GLenum pname) { return pname != GL_TEXTURE_CROP_RECT_OES || ctx.es1(); }
+bool known_pname(const Context& ctx, GLenum pname) {
+  if (pname == GL_TEXTURE_IMMUTABLE_FORMAT) return !ctx.es1() && !ctx.es2();  // ARB_texture_storage's
+  return pname != GL_TEXTURE_CROP_RECT_OES || ctx.es1();
+}
 
 void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) {
   TextureObject* tex = bound_texture(ctx, target);
@@ -322,6 +327,7 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
       std::copy(p.crop_rect, p.crop_rect + 4, out);
       count = 4;
       return true;
+    case GL_TEXTURE_IMMUTABLE_FORMAT: out[0] = tex->immutable_levels > 0 ? 1.f : 0.f; return true;
     default: return false;
   }
 }

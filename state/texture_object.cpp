@@ -147,6 +147,10 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
   if (snapshot_valid_) return snapshot_;
   snapshot_valid_ = true;
   snapshot_.reset();
+  // Immutable storage: the levels in use clamped into its levels, whatever glPopAttrib restored.
+  TexParams params = this->params;
+  params.base_level = clamped_level_param(GL_TEXTURE_BASE_LEVEL, params.base_level);
+  params.max_level = clamped_level_param(GL_TEXTURE_MAX_LEVEL, params.max_level);
   const size_t base = size_t(params.base_level);
   const raster::TexKind kind = image_kind(target);
   const int faces = kind == raster::TexKind::Cube ? kCubeFaces : 1;
@@ -228,9 +232,24 @@ void TextureObject::generate_levels(int level, int face) {
   // An image with a zero width, height or depth has no texels to derive levels from.
   if (chain[level].width == 0 || chain[level].height == 0 || chain[level].depth == 0) return;
   for (size_t l = size_t(level); chain[l].width > 1 || chain[l].height > 1 || chain[l].depth > 1; ++l) {
+    // Immutable storage keeps its levels: no level is added below the last (the spec's issue 22).
+    if (immutable_levels > 0 && l + 1 >= chain.size()) break;
     if (chain.size() <= l + 1) chain.resize(l + 2);
     downsample_level(chain[l], chain[l + 1]);
   }
+}
+
+void TextureObject::make_immutable(GLint levels) {
+  immutable_levels = levels;
+  params.base_level = clamped_level_param(GL_TEXTURE_BASE_LEVEL, params.base_level);
+  params.max_level = clamped_level_param(GL_TEXTURE_MAX_LEVEL, params.max_level);
+  changed();
+}
+
+GLint TextureObject::clamped_level_param(GLenum pname, GLint level) const {
+  if (immutable_levels <= 0) return level;
+  if (pname == GL_TEXTURE_BASE_LEVEL) return std::clamp(level, 0, immutable_levels - 1);
+  return std::clamp(level, std::min(params.base_level, immutable_levels - 1), immutable_levels - 1);
 }
 
 TextureNamespace::TextureNamespace() {

@@ -70,6 +70,15 @@ struct TextureObject {
   // Counts changes: a framebuffer attachment's copy of a depth image compares it (framebuffers/).
   uint64_t version = 0;
 
+  // glTexStorage's levels (ARB_texture_storage); 0 while the storage is mutable.
+  GLint immutable_levels = 0;
+  // After glTexStorage made `levels` levels: the storage is immutable, and the base and
+  // maximum levels are clamped into them.
+  void make_immutable(GLint levels);
+  // BASE_LEVEL or MAX_LEVEL as glTexParameter stores it: an immutable texture's clamped into
+  // its levels (base to [0, levels - 1], max to [base, levels - 1]).
+  GLint clamped_level_param(GLenum pname, GLint level) const;
+
  private:
   // Copies `box` of `level` into the snapshot; false when there is none to patch.
   bool patch_snapshot(int level, int face, const TexelBox& box);
