@@ -114,6 +114,33 @@ std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program&
   return fetches;
 }
 
+// A float array's elements[0..count) into an input slot's lanes: component c of vertex i at
+// lanes[(i / kLanes) * batch_floats + c * kLanes + i % kLanes], missing components (0, 0, 0, 1)
+// and an element past the buffer the attribute's current value, as FloatArrayView::read gives
+// them. One routine per element size, so that the loop has no branch but the buffer's end.
+template <int kSize>
+void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elements, size_t count, float* lanes,
+                                size_t batch_floats) {
+  for (size_t i = 0; i < count; ++i) {
+    float* out = lanes + (i / kLanes) * batch_floats + i % kLanes;
+    const size_t element = elements[i];
+    float v[4] = {0.f, 0.f, 0.f, 1.f};
+    if (element < view.count) std::memcpy(v, view.base + view.stride * element, sizeof(float) * kSize);
+    else std::memcpy(v, view.current, sizeof v);
+    for (int c = 0; c < 4; ++c) out[c * kLanes] = v[c];
+  }
+}
+
+void gather_float_array(const FloatArrayView& view, const uint32_t* elements, size_t count, float* lanes,
+                        size_t batch_floats) {
+  switch (view.size) {
+    case 4: return gather_float_array_of_size<4>(view, elements, count, lanes, batch_floats);
+    case 3: return gather_float_array_of_size<3>(view, elements, count, lanes, batch_floats);
+    case 2: return gather_float_array_of_size<2>(view, elements, count, lanes, batch_floats);
+    default: return gather_float_array_of_size<1>(view, elements, count, lanes, batch_floats);
+  }
+}
+
 // Each vertex's point size: the shader's (`from_shader`) or glPointSize's, clamped to the point
 // parameters' range.
 struct PointSizes {
@@ -165,14 +192,18 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         return in[(i / kLanes) * in_floats + (static_cast<size_t>(slot) * 4 + c) * kLanes + i % kLanes];
       };
       if (vertices.inputs.empty()) {  // array elements: each input read straight from its array
-        for (const InputFetch& f : fetches)
+        for (const InputFetch& f : fetches) {
+          if (f.from_view) {
+            gather_float_array(f.view, vertices.elements.data() + first, count,
+                               in.data() + static_cast<size_t>(f.slot) * 4 * kLanes, in_floats);
+            continue;
+          }
           for (size_t i = 0; i < count; ++i) {
-            const size_t element = vertices.elements[first + i];
             float value[4];
-            if (f.from_view) f.view.read(element, value);
-            else fetch_generic_element(state, f.location, element, value);
+            fetch_generic_element(state, f.location, vertices.elements[first + i], value);
             for (int c = 0; c < 4; ++c) input(i, f.slot, c) = value[c];
           }
+        }
       } else {
         for (size_t i = 0; i < count; ++i) {
           const raster::VertexInput& v = vertices.inputs[first + i];

@@ -50,6 +50,30 @@ TEST_F(ArrayElementInputsTest, DisabledArraysGiveTheCurrentValue) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// Interleaved in a buffer object (position, then four colour floats; 24-byte stride): a colour
+// array of 3, 1 and 4 components gives (r, g, b, 1), (r, 0, 0, 1) and the four as they are.
+TEST_F(ArrayElementInputsTest, FloatArraysOfEachSizeFromABufferObject) {
+  std::vector<GLfloat> data;
+  for (int v = 0; v < 4; ++v) data.insert(data.end(), {quad_[2 * v], quad_[2 * v + 1], 0.2f, 0.4f, 0.6f, 0.8f});
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(data.size() * sizeof(GLfloat)), data.data(), GL_STATIC_DRAW);
+  const GLsizei stride = 6 * sizeof(GLfloat);
+  const void* colour = reinterpret_cast<const void*>(2 * sizeof(GLfloat));
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(3);
+  const std::pair<GLint, Rgba> sizes[] = {{3, {51, 102, 153, 255}}, {1, {51, 0, 0, 255}}, {4, {51, 102, 153, 204}}};
+  for (const auto& [size, expected] : sizes) {
+    glVertexAttribPointer(3, size, GL_FLOAT, GL_FALSE, stride, colour);
+    glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
+    EXPECT_EQ(count_pixels(expected), width() * height()) << size << " components";
+  }
+  glDeleteBuffers(1, &buffer);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // One pixel-sized square (two triangles) per pixel, coloured by its position: thousands of
 // vertices, so the vertex shader runs in pieces, on every thread, and in part batches.
 TEST_F(ArrayElementInputsTest, EveryVertexOfALargeDrawGetsItsOwnElement) {
