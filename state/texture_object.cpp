@@ -210,7 +210,7 @@ void TextureObject::box_changed(int level, int face, const TexelBox& box) {
 // Only the context's thread copies snapshot_: held by no one else, no draw can be reading it.
 bool TextureObject::patch_snapshot(int level, int face, const TexelBox& box) {
   if (!snapshot_valid_ || !snapshot_ || snapshot_.use_count() != 1) return false;
-  const int64_t l = int64_t(level) - params.base_level;
+  const int64_t l = int64_t(level) - clamped_level_param(GL_TEXTURE_BASE_LEVEL, params.base_level);  // as snapshot()
   if (l < 0 || l >= int64_t(snapshot_->levels.size())) return false;
   const TextureLevelData& in = face_levels(face)[size_t(level)];
   raster::TextureLevel& out = snapshot_->levels[size_t(l)];
