@@ -81,12 +81,6 @@ AttribFrame save(Context& ctx, GLbitfield mask) {
   f.stencil_fail = ctx.stencil_fail;
   f.stencil_zfail = ctx.stencil_zfail;
   f.stencil_zpass = ctx.stencil_zpass;
-  f.blend_src_rgb = ctx.blend_src_rgb;
-  f.blend_dst_rgb = ctx.blend_dst_rgb;
-  f.blend_src_alpha = ctx.blend_src_alpha;
-  f.blend_dst_alpha = ctx.blend_dst_alpha;
-  f.blend_eq_rgb = ctx.blend_eq_rgb;
-  f.blend_eq_alpha = ctx.blend_eq_alpha;
   f.logic_op = ctx.logic_op;
   f.stencil_value_mask = ctx.stencil_value_mask;
   f.stencil_write_mask = ctx.stencil_write_mask;
@@ -264,12 +258,6 @@ void restore(Context& ctx, const AttribFrame& f) {
     s.alpha_func = o.alpha_func;
     s.alpha_ref = o.alpha_ref;
     s.blend = o.blend;
-    ctx.blend_src_rgb = f.blend_src_rgb;
-    ctx.blend_dst_rgb = f.blend_dst_rgb;
-    ctx.blend_src_alpha = f.blend_src_alpha;
-    ctx.blend_dst_alpha = f.blend_dst_alpha;
-    ctx.blend_eq_rgb = f.blend_eq_rgb;
-    ctx.blend_eq_alpha = f.blend_eq_alpha;
     s.blend_state = o.blend_state;
     s.dither = o.dither;
     s.logic_op_enabled = o.logic_op_enabled;

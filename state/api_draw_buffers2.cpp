@@ -10,7 +10,6 @@
 #include "state/context.h"
 #include "state/debug/debug_output.h"
 #include "state/draw_buffer_list.h"
-#include "state/enum_translate.h"
 
 namespace pineda {
 namespace {
@@ -23,19 +22,6 @@ bool& blend_enable(Context& ctx, GLuint index) {
 std::array<bool, 4>& color_mask(Context& ctx, GLuint index) {
   raster::DrawState& s = ctx.draw_state;
   return index == 0 ? s.color_write : s.more_targets[index - 1].color_write;
-}
-
-// A blend factor or equation a query names per draw buffer (ARB_draw_buffers_blend; GL 1.0's
-// BLEND_SRC and BLEND_DST too, as Mesa answers them, for RGB's).
-bool blend_function_state(GLenum target) {
-  switch (target) {
-    case GL_BLEND_SRC: case GL_BLEND_DST:
-    case GL_BLEND_SRC_RGB: case GL_BLEND_DST_RGB: case GL_BLEND_SRC_ALPHA: case GL_BLEND_DST_ALPHA:
-    case GL_BLEND_EQUATION_RGB: case GL_BLEND_EQUATION_ALPHA:
-      return true;
-    default:
-      return false;
-  }
 }
 
 // The draw buffer `index` names, or an error recorded: the indexed state is BLEND (and, for the
@@ -51,19 +37,6 @@ bool indexed_state(Context& ctx, GLenum target, GLuint index, bool queried_too) 
     return false;
   }
   return true;
-}
-
-GLenum blend_function_enum(const raster::BlendFunction& f, GLenum target) {
-  switch (target) {
-    case GL_BLEND_SRC:
-    case GL_BLEND_SRC_RGB: return blend_factor_enum(f.src_rgb);
-    case GL_BLEND_DST:
-    case GL_BLEND_DST_RGB: return blend_factor_enum(f.dst_rgb);
-    case GL_BLEND_SRC_ALPHA: return blend_factor_enum(f.src_alpha);
-    case GL_BLEND_DST_ALPHA: return blend_factor_enum(f.dst_alpha);
-    case GL_BLEND_EQUATION_RGB: return blend_equation_enum(f.eq_rgb);
-    default: return blend_equation_enum(f.eq_alpha);
-  }
 }
 
 // The indexed value as integers: the four mask components, the enable, or the factor or equation.

@@ -19,22 +19,11 @@ bool valid_buffer(Context& ctx, GLuint buf) {
   return false;
 }
 
-// Draw buffer 0's are also the unindexed queries' values.
-void keep_buffer0_enums(Context& ctx, GLuint buf, GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha) {
-  if (buf != 0) return;
-  ctx.blend_src_rgb = src_rgb;
-  ctx.blend_dst_rgb = dst_rgb;
-  ctx.blend_src_alpha = src_alpha;
-  ctx.blend_dst_alpha = dst_alpha;
-}
-
 }  // namespace
 
 void BlendFuncSeparateiARB(Context& ctx, GLuint buf, GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha,
                            GLenum dst_alpha) {
-  if (!valid_buffer(ctx, buf) || !set_blend_factors(ctx, src_rgb, dst_rgb, src_alpha, dst_alpha, blend_function(ctx, buf)))
-    return;
-  keep_buffer0_enums(ctx, buf, src_rgb, dst_rgb, src_alpha, dst_alpha);
+  if (valid_buffer(ctx, buf)) set_blend_factors(ctx, src_rgb, dst_rgb, src_alpha, dst_alpha, blend_function(ctx, buf));
 }
 
 void BlendFunciARB(Context& ctx, GLuint buf, GLenum src, GLenum dst) {
@@ -42,10 +31,7 @@ void BlendFunciARB(Context& ctx, GLuint buf, GLenum src, GLenum dst) {
 }
 
 void BlendEquationSeparateiARB(Context& ctx, GLuint buf, GLenum mode_rgb, GLenum mode_alpha) {
-  if (!valid_buffer(ctx, buf) || !set_blend_equations(ctx, mode_rgb, mode_alpha, blend_function(ctx, buf))) return;
-  if (buf != 0) return;
-  ctx.blend_eq_rgb = mode_rgb;
-  ctx.blend_eq_alpha = mode_alpha;
+  if (valid_buffer(ctx, buf)) set_blend_equations(ctx, mode_rgb, mode_alpha, blend_function(ctx, buf));
 }
 
 void BlendEquationiARB(Context& ctx, GLuint buf, GLenum mode) { BlendEquationSeparateiARB(ctx, buf, mode, mode); }

@@ -35,10 +35,6 @@ void DepthMask(Context& ctx, GLboolean flag) { ctx.draw_state.depth_write = flag
 void BlendFuncSeparate(Context& ctx, GLenum src_rgb, GLenum dst_rgb, GLenum src_alpha, GLenum dst_alpha) {
   raster::BlendFunction f = ctx.draw_state.blend_state;
   if (!set_blend_factors(ctx, src_rgb, dst_rgb, src_alpha, dst_alpha, f)) return;
-  ctx.blend_src_rgb = src_rgb;
-  ctx.blend_dst_rgb = dst_rgb;
-  ctx.blend_src_alpha = src_alpha;
-  ctx.blend_dst_alpha = dst_alpha;
   set_every_blend_factors(ctx, f);
 }
 
@@ -47,8 +43,6 @@ void BlendFunc(Context& ctx, GLenum src, GLenum dst) { BlendFuncSeparate(ctx, sr
 void BlendEquationSeparate(Context& ctx, GLenum mode_rgb, GLenum mode_alpha) {
   raster::BlendFunction f = ctx.draw_state.blend_state;
   if (!set_blend_equations(ctx, mode_rgb, mode_alpha, f)) return;
-  ctx.blend_eq_rgb = mode_rgb;
-  ctx.blend_eq_alpha = mode_alpha;
   set_every_blend_equations(ctx, f);
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "glapi/gl_entry_points.h"
+#include "state/blend_function.h"
 #include "state/buffer_get.h"
 #include "state/accum.h"
 #include "state/capabilities.h"
@@ -183,14 +184,10 @@ bool query(Context& ctx, GLenum pname, Values& out) {
     case GL_STENCIL_PASS_DEPTH_FAIL: out = enums({double(ctx.stencil_zfail)}); return true;
     case GL_STENCIL_PASS_DEPTH_PASS: out = enums({double(ctx.stencil_zpass)}); return true;
     case GL_STENCIL_WRITEMASK: out = ints({double(ctx.stencil_write_mask)}); return true;
-    case GL_BLEND_SRC: out = enums({double(ctx.blend_src_rgb)}); return true;
-    case GL_BLEND_DST: out = enums({double(ctx.blend_dst_rgb)}); return true;
-    case GL_BLEND_SRC_RGB: out = enums({double(ctx.blend_src_rgb)}); return true;
-    case GL_BLEND_DST_RGB: out = enums({double(ctx.blend_dst_rgb)}); return true;
-    case GL_BLEND_SRC_ALPHA: out = enums({double(ctx.blend_src_alpha)}); return true;
-    case GL_BLEND_DST_ALPHA: out = enums({double(ctx.blend_dst_alpha)}); return true;
-    case GL_BLEND_EQUATION: out = enums({double(ctx.blend_eq_rgb)}); return true;
-    case GL_BLEND_EQUATION_ALPHA: out = enums({double(ctx.blend_eq_alpha)}); return true;
+    case GL_BLEND_SRC: case GL_BLEND_DST: case GL_BLEND_SRC_RGB: case GL_BLEND_DST_RGB:  // draw buffer 0's
+    case GL_BLEND_SRC_ALPHA: case GL_BLEND_DST_ALPHA: case GL_BLEND_EQUATION: case GL_BLEND_EQUATION_ALPHA:
+      out = enums({double(blend_function_enum(s.blend_state, pname))});
+      return true;
     case GL_BLEND_COLOR: out = colors(s.blend_state.color); return true;
     case GL_LOGIC_OP_MODE: out = enums({double(ctx.logic_op)}); return true;
     case GL_COLOR_WRITEMASK:

@@ -55,7 +55,6 @@ struct AttribFrame {
   GLenum color_material_face, color_material_mode;
   std::unordered_map<GLenum, bool> unrendered_caps;
   GLenum depth_func, alpha_func, stencil_func, stencil_fail, stencil_zfail, stencil_zpass;
-  GLenum blend_src_rgb, blend_dst_rgb, blend_src_alpha, blend_dst_alpha, blend_eq_rgb, blend_eq_alpha;
   GLenum logic_op;
   GLuint stencil_value_mask, stencil_write_mask;
   StencilBackValues stencil_back_values;

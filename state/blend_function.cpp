@@ -31,6 +31,30 @@ bool set_blend_equations(Context& ctx, GLenum mode_rgb, GLenum mode_alpha, raste
   return true;
 }
 
+bool blend_function_state(GLenum target) {
+  switch (target) {
+    case GL_BLEND_SRC: case GL_BLEND_DST:
+    case GL_BLEND_SRC_RGB: case GL_BLEND_DST_RGB: case GL_BLEND_SRC_ALPHA: case GL_BLEND_DST_ALPHA:
+    case GL_BLEND_EQUATION_RGB: case GL_BLEND_EQUATION_ALPHA:
+      return true;
+    default:
+      return false;
+  }
+}
+
+GLenum blend_function_enum(const raster::BlendFunction& f, GLenum target) {
+  switch (target) {
+    case GL_BLEND_SRC:
+    case GL_BLEND_SRC_RGB: return blend_factor_enum(f.src_rgb);
+    case GL_BLEND_DST:
+    case GL_BLEND_DST_RGB: return blend_factor_enum(f.dst_rgb);
+    case GL_BLEND_SRC_ALPHA: return blend_factor_enum(f.src_alpha);
+    case GL_BLEND_DST_ALPHA: return blend_factor_enum(f.dst_alpha);
+    case GL_BLEND_EQUATION_RGB: return blend_equation_enum(f.eq_rgb);
+    default: return blend_equation_enum(f.eq_alpha);
+  }
+}
+
 raster::BlendFunction& blend_function(Context& ctx, GLuint index) {
   raster::DrawState& s = ctx.draw_state;
   return index == 0 ? s.blend_state : s.more_targets[index - 1].blend_function;

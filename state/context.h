@@ -229,8 +229,6 @@ class Context {
   // Raw GL values for glGet
   GLenum depth_func = GL_LESS, alpha_func = GL_ALWAYS;
   GLenum stencil_func = GL_ALWAYS, stencil_fail = GL_KEEP, stencil_zfail = GL_KEEP, stencil_zpass = GL_KEEP;
-  GLenum blend_src_rgb = GL_ONE, blend_dst_rgb = GL_ZERO, blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
-  GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_alpha = GL_FUNC_ADD;
   GLenum logic_op = GL_COPY;
   GLuint stencil_value_mask = ~0u, stencil_write_mask = ~0u;
   StencilBackValues stencil_back_values;  // GL 2.0: the back face's (the front's are above)

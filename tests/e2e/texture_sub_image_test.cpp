@@ -6,22 +6,14 @@
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/texel_images.h"
 #include "tests/e2e/support/window_quad.h"
 
-// Its own namespace: a unity batch holds texture_test.cpp's grid_texel and colour names.
+// Its own namespace: a unity batch holds other files' colour names.
 namespace pineda::test::sub_image {
 namespace {
 
 constexpr Rgba kRed{255, 0, 0, 255}, kBlue{0, 0, 255, 255}, kGreen{0, 255, 0, 255};
-
-// A 4x4 RGBA texture whose texel (s, t) is (40 s + 10, 40 t + 10, 200, 255).
-Rgba grid_texel(int s, int t) { return {40 * s + 10, 40 * t + 10, 200, 255}; }
-std::vector<uint8_t> grid_texels() {
-  std::vector<uint8_t> out;
-  for (int t = 0; t < 4; ++t)
-    for (int s = 0; s < 4; ++s) out.insert(out.end(), {uint8_t(40 * s + 10), uint8_t(40 * t + 10), 200, 255});
-  return out;
-}
 
 void set_texel(GLenum target, GLint level, int s, int t, const Rgba& c) {
   const uint8_t texel[4] = {uint8_t(c[0]), uint8_t(c[1]), uint8_t(c[2]), uint8_t(c[3])};

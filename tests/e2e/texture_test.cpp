@@ -4,24 +4,11 @@
 #include <cmath>
 
 #include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/texel_images.h"
 #include "tests/e2e/support/window_quad.h"
 
 namespace pineda::test {
 namespace {
-
-// A 4x4 RGBA texture whose texel (s, t) is (40 s + 10, 40 t + 10, 200, 255).
-std::vector<uint8_t> grid_texels() {
-  std::vector<uint8_t> t;
-  for (int y = 0; y < 4; ++y)
-    for (int x = 0; x < 4; ++x) {
-      t.push_back(uint8_t(40 * x + 10));
-      t.push_back(uint8_t(40 * y + 10));
-      t.push_back(200);
-      t.push_back(255);
-    }
-  return t;
-}
-Rgba grid_texel(int s, int t) { return {40 * s + 10, 40 * t + 10, 200, 255}; }
 
 class TextureTest : public GlTest {
  protected:

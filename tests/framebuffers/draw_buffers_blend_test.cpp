@@ -39,7 +39,6 @@ class DrawBuffersBlendTest : public FourDrawBuffersTest {
     return {indexed(GL_BLEND_SRC_RGB, i),   indexed(GL_BLEND_DST_RGB, i),      indexed(GL_BLEND_SRC_ALPHA, i),
             indexed(GL_BLEND_DST_ALPHA, i), indexed(GL_BLEND_EQUATION_RGB, i), indexed(GL_BLEND_EQUATION_ALPHA, i)};
   }
-
 };
 
 TEST_F(DrawBuffersBlendTest, Advertised) {

@@ -17,6 +17,16 @@ inline std::vector<uint8_t> solid_texels(int texels, const Rgba& c) {
   return t;
 }
 
+// A 4x4 RGBA8 image whose texel (s, t) is grid_texel(s, t): every texel differs.
+inline Rgba grid_texel(int s, int t) { return {40 * s + 10, 40 * t + 10, 200, 255}; }
+inline std::vector<uint8_t> grid_texels() {
+  std::vector<uint8_t> out;
+  for (int t = 0; t < 4; ++t)
+    for (int s = 0; s < 4; ++s)
+      for (int c : grid_texel(s, t)) out.push_back(uint8_t(c));
+  return out;
+}
+
 // A kRectWidth x kRectHeight image (not powers of two) whose texels all differ, for rectangle
 // textures: texel (i, j) is rect_texel(i, j).
 constexpr int kRectWidth = 5, kRectHeight = 3;
