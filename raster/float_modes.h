@@ -10,18 +10,23 @@ namespace pineda::raster {
 
 // Round to nearest, no flush to zero, every exception masked: what a thread starts with.
 constexpr unsigned kDefaultFloatModes = 0x1F80;
+// The default modes with flush to zero and denormals are zero: where shaders run
+// (shader::ir::FlushDenormals).
+constexpr unsigned kShaderFloatModes = kDefaultFloatModes | 0x8040;
 
 class ScopedFloatModes {
  public:
 #ifdef PINEDA_HAS_MXCSR
   explicit ScopedFloatModes(unsigned modes) : own_(_mm_getcsr()) { _mm_setcsr(modes); }
   ~ScopedFloatModes() { _mm_setcsr(own_); }
+  void set(unsigned modes) { _mm_setcsr(modes); }
   static unsigned current() { return _mm_getcsr(); }
 
  private:
   unsigned own_;
 #else
   explicit ScopedFloatModes(unsigned) {}
+  void set(unsigned) {}
   static unsigned current() { return kDefaultFloatModes; }
 #endif
   ScopedFloatModes(const ScopedFloatModes&) = delete;
