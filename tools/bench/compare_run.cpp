@@ -88,6 +88,19 @@ DriverOutcome runOn(const Options& options, const Driver& driver, const BenchSce
   return outcome;
 }
 
+// Runs a scene on a driver `rounds` times (compare_run's turns), keeping the run with the
+// lowest median; a failed run ends the turns of that driver and is what is kept.
+struct BestOutcome {
+  DriverOutcome best;
+  bool ran = false;
+  void take(DriverOutcome&& outcome) {
+    if (!ran || (best.result && (!outcome.result || outcome.result->medianMs < best.result->medianMs)))
+      best = std::move(outcome);
+    ran = true;
+  }
+  bool done() const { return ran && !best.result; }
+};
+
 // Pineda's image against `other`'s; writes where they differ to OUT/<diffFolder>/SCENE.png.
 std::optional<tools::ImageDifference> imageError(const Options& options, const DriverOutcome& pineda,
                                                  const DriverOutcome& other, const std::string& diffFolder,
@@ -143,6 +156,9 @@ void printHeader(const Options& options) {
   std::printf("size %dx%d; ms = median of %d frames after a warm-up frame 0 (frame = draw + glFinish); "
               "first = frame 0's ms\n",
               options.width, options.height, options.frames);
+  if (options.rounds > 1)
+    std::printf("each driver's fastest of %d runs per scene (lowest median), the drivers taking turns\n",
+                options.rounds);
   std::printf("Mtri/s and Mpix/s are Pineda's; pixels = fragments rasterized per frame, counted in frame 0 "
               "with stencil INCR (depth-rejected fragments included)\n");
   if (options.compareLlvmpipe)
@@ -174,10 +190,16 @@ int runComparison(const Options& options) {
   bool failed = false;
   std::string pinedaRenderer, llvmpipeRenderer;
   for (const BenchSceneEntry* entry : selectedScenes(options)) {
-    const DriverOutcome pineda = runOn(options, pinedaDriver, *entry);
-    DriverOutcome llvmpipe, reference;
-    if (options.compareLlvmpipe) llvmpipe = runOn(options, llvmpipeDriver, *entry);
-    if (options.reference) reference = runOn(options, referenceDriver, *entry);
+    // The drivers take turns, so that a slow minute of the machine falls on both.
+    BestOutcome best_pineda, best_llvmpipe, best_reference;
+    for (int round = 0; round < options.rounds; ++round) {
+      if (!best_pineda.done()) best_pineda.take(runOn(options, pinedaDriver, *entry));
+      if (options.compareLlvmpipe && !best_llvmpipe.done()) best_llvmpipe.take(runOn(options, llvmpipeDriver, *entry));
+      if (options.reference && !best_reference.done()) best_reference.take(runOn(options, referenceDriver, *entry));
+    }
+    const DriverOutcome& pineda = best_pineda.best;
+    const DriverOutcome& llvmpipe = best_llvmpipe.best;
+    const DriverOutcome& reference = best_reference.best;
     failed |= !pineda.result || (options.compareLlvmpipe && !llvmpipe.result) ||
               (options.reference && !reference.result);
     if (pinedaRenderer.empty()) pinedaRenderer = pineda.renderer;

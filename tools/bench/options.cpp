@@ -11,7 +11,8 @@ namespace {
 void usage(std::FILE* to) {
   std::fprintf(to,
       "usage: pineda-bench [--size WxH] [--frames N] [--out DIR] [--scene NAME]... [--threads N]\n"
-      "                    [--compare llvmpipe] [--reference] [--lib DIR] [--timeout SECONDS]\n"
+      "                    [--compare llvmpipe] [--reference] [--rounds N] [--lib DIR]\n"
+      "                    [--timeout SECONDS]\n"
       "\n"
       "Times GL 1.1 scenes headless through EGL: per scene the median ms/frame of N frames\n"
       "(default 30) after a warm-up frame 0 (frame = draw + glFinish), frame 0's time, Mtri/s,\n"
@@ -28,6 +29,9 @@ void usage(std::FILE* to) {
       "                      Pineda honours PINEDA_REFERENCE only once the driver implements it;\n"
       "                      until then both runs are the same renderer.\n"
       "  --threads N         PINEDA_THREADS=N for Pineda (and LP_NUM_THREADS=N for llvmpipe)\n"
+      "  --rounds N          with --compare or --reference: run each scene N times on each driver,\n"
+      "                      the drivers taking turns, and report each driver's fastest run (on a\n"
+      "                      machine whose speed varies from minute to minute; default 1)\n"
       "  --timeout SECONDS   per child process (default 600)\n"
       "  --child NAME        internal: render one scene, print one 'pineda-bench-result' line\n"
       "\n"
@@ -73,6 +77,8 @@ bool parseOptions(int argc, char** argv, Options& options) {
       ok = parseInt(value, 0, 1000000, options.frames);
     } else if (arg == "--threads") {
       ok = parseInt(value, 1, 1024, options.threads);
+    } else if (arg == "--rounds") {
+      ok = parseInt(value, 1, 100, options.rounds);
     } else if (arg == "--timeout") {
       ok = parseInt(value, 1, 86400, options.timeoutSeconds);
     } else if (arg == "--scene") {

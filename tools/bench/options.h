@@ -17,6 +17,7 @@ struct Options {
   std::string libDir;       // Pineda's libraries; empty: <dir of the executable>/../lib
   std::string childScene;   // --child: render this one scene and print one result line
   int timeoutSeconds = 600;  // per child
+  int rounds = 1;            // --compare/--reference: runs per scene and driver, the fastest kept
 };
 
 // Returns false (after printing why) on a bad command line; exits 0 after --help.
