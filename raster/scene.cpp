@@ -22,22 +22,6 @@ constexpr size_t kMaxRetainedTextureBytes = size_t{256} << 20;
 constexpr size_t kMaxPlaneChunks = 64;  // 12 MiB of varying planes
 // Below this many binned commands the calling thread does the work alone.
 constexpr size_t kSmallScene = 64;
-// Nor does a scene with less work than this, in rough nanoseconds of one thread (work_of):
-// handing a scene to another core costs about 0.1 ms on this kind of machine (its records move
-// between the cores' caches, and a sleeping thread wakes), more than the other thread saves on
-// a thousand triangles of a few pixels (small_tris: 113-161 ms a frame with two threads, 69-71
-// with its tiles on the binning thread, 70-78 with one), but less than it saves on a thousand
-// lines (wireframe: 4.5 ms shared, 6.4 not).
-constexpr size_t kParallelWork = 200000;
-
-size_t pixels_in(const PixelRect& r) { return static_cast<size_t>(r.x1 - r.x0) * static_cast<size_t>(r.y1 - r.y0); }
-
-// A primitive's rasterization in a tile, roughly, as measured on one thread: a fixed cost (a
-// line's or point's span walk costs more than a triangle's edge setup) and about 2 ns per pixel of
-// its box (which a triangle half fills).
-size_t work_of(const PrimSetup& prim, const PixelRect& box) {
-  return (prim.kind == CoverageKind::Triangle ? 40 : 300) + 2 * pixels_in(box);
-}
 
 }  // namespace
 
@@ -55,7 +39,6 @@ void Scene::reset(const Framebuffer& fb) {
   bins_.assign(static_cast<size_t>(tiles_x_) * tiles_y_, {});
   touched_tiles_.clear();
   commands_ = 0;
-  work_ = 0;
   retained_images_.clear();
   retained_texture_bytes_ = 0;
   plane_chunks_.clear();
@@ -113,7 +96,6 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
       used = true;
     }
   if (!used) return;
-  work_ += work_of(prim, r);
   if (prim_count_ == prims_.size()) prims_.resize(prims_.size() + kMaxPrims);  // (full() stops binning before)
   PrimSetup& stored = prims_[prim_count_++];
   copy_prim(stored, prim, used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes)));
@@ -135,7 +117,6 @@ void Scene::add_clear(const ClearRecord& clear) {
   if (r.empty()) return;
   const uint32_t index = static_cast<uint32_t>(clears_.size()) | kClearBit;
   clears_.push_back(clear);
-  work_ += pixels_in(r) / 4;  // stores of whole rows
   for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
     for (int tx = r.x0 >> kTileShift; tx <= (r.x1 - 1) >> kTileShift; ++tx) {
       std::vector<uint32_t>& bin = bins_[static_cast<size_t>(ty) * tiles_x_ + tx];
@@ -184,7 +165,7 @@ void Scene::run_tile(int tile) const {
 
 void Scene::execute(WorkerPool& pool) {
   if (commands_ > 0) {
-    if (!worth_sharing()) {
+    if (commands_ < kSmallScene) {
       for (const int t : touched_tiles_) run_tile(t);
     } else {
       pool.run(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
@@ -195,9 +176,7 @@ void Scene::execute(WorkerPool& pool) {
   if (!draws_.empty()) retain_textures(*draws_.back());
 }
 
-bool Scene::worth_sharing() const { return commands_ >= kSmallScene && work_ >= kParallelWork; }
-
-bool Scene::worth_starting(const WorkerPool& pool) const { return worth_sharing() && pool.threads() > 1; }
+bool Scene::worth_starting(const WorkerPool& pool) const { return commands_ >= kSmallScene && pool.threads() > 1; }
 
 void Scene::start(WorkerPool& pool) {
   pool.start(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
@@ -221,7 +200,6 @@ void Scene::drop_commands() {
   prim_count_ = 0;
   clears_.clear();
   commands_ = 0;
-  work_ = 0;
   retained_images_.clear();
   retained_texture_bytes_ = 0;
   if (plane_chunks_.size() > 1) plane_chunks_.erase(plane_chunks_.begin(), plane_chunks_.end() - 1);

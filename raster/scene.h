@@ -56,8 +56,6 @@ class Scene {
   static constexpr uint32_t kClearBit = 0x80000000u;
 
   void run_tile(int tile) const;
-  // Whether the scene holds enough work to share among threads (else the calling thread runs it).
-  bool worth_sharing() const;
   void retain_textures(const DrawRecord& draw);
   // Drops the executed commands and what they kept alive; the draws stay.
   void drop_commands();
@@ -77,7 +75,6 @@ class Scene {
   std::vector<std::vector<uint32_t>> bins_;
   std::vector<int> touched_tiles_;
   size_t commands_ = 0;
-  size_t work_ = 0;  // the binned commands' estimated work (scene.cpp, work_of)
   // The distinct texture images that queued draws keep alive (a program that creates, draws
   // with and deletes textures in a loop must not pile them up until the next flush).
   std::vector<const TextureImage*> retained_images_;
