@@ -11,21 +11,6 @@ namespace {
 constexpr int kGatherBytes = 0;  // quads: four scalar loads
 #include "raster/bilinear8_lanes.inc"
 
-}  // namespace
-
-LevelChoice bilinear8_quad_levels(const TextureImage& image, const Sampler& sampler, F4 s_in, F4 t_in) {
-  // Without mipmaps both magnification and minification filter level 0 bilinearly: the level
-  // of detail changes nothing (choose_levels returns level 0 for any lambda).
-  if (sampler.min_filter == TexFilter::Linear) return LevelChoice{};
-  float sa[4], ta[4];
-  store4(sa, sane_lanes(s_in));
-  store4(ta, sane_lanes(t_in));
-  const int max_level = static_cast<int>(image.levels.size()) - 1;
-  return choose_levels(sampler, quad_lambda(image.levels[0], sa, ta), max_level);
-}
-
-namespace {
-
 template <TexWrap kWrapS, TexWrap kWrapT>
 [[gnu::always_inline]] inline void sample_body(const TextureImage& image, const Sampler& sampler, F4 s_in, F4 t_in,
                                                F4 out[4]) {

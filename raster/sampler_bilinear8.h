@@ -6,7 +6,9 @@
 
 #include "raster/mip_selection.h"
 #include "raster/quad_vector.h"
+#include "raster/sampler.h"
 #include "raster/simd_path.h"
+#include "raster/texel_addressing.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -21,7 +23,20 @@ using QuadSampler = void (*)(const TextureImage& image, const Sampler& sampler, 
 QuadSampler select_bilinear8_sampler(const TextureImage& image, const Sampler& sampler,
                                      SimdPath path = SimdPath::Best);
 
-// The level or pair of levels that sampler reads for the quad at (s, t).
-LevelChoice bilinear8_quad_levels(const TextureImage& image, const Sampler& sampler, F4 s, F4 t);
+// The level or pair of levels that sampler reads for the quad at (s, t). Inline: returned from
+// a call, the choice was put together on the stack and read back at a size it was not written
+// at, a store-forwarding stall that took most of the function's time (glmark2's terrain).
+inline LevelChoice bilinear8_quad_levels(const TextureImage& image, const Sampler& sampler, F4 s, F4 t) {
+  // Without mipmaps both magnification and minification filter level 0 bilinearly: the level
+  // of detail changes nothing (choose_levels returns level 0 for any lambda).
+  if (sampler.min_filter == TexFilter::Linear) return LevelChoice{};
+  float sa[4], ta[4];
+  for (int i = 0; i < 4; ++i) {
+    sa[i] = sane(s[i]);
+    ta[i] = sane(t[i]);
+  }
+  const int max_level = static_cast<int>(image.levels.size()) - 1;
+  return choose_levels(sampler, quad_lambda(image.levels[0], sa, ta), max_level);
+}
 
 }  // namespace pineda::raster

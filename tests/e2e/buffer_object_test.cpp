@@ -108,6 +108,32 @@ TEST_F(BufferObjectTest, DataSubDataAndParameters) {
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
 }
 
+// glBufferData again at the buffer's size (its store is reused): new contents, zeros without
+// data, from a pointer into the buffer's own mapping too, and the mapping ends.
+TEST_F(BufferObjectTest, DataAgainAtTheSameSizeReplacesTheContents) {
+  const uint8_t first[6] = {1, 2, 3, 4, 5, 6}, second[6] = {9, 8, 7, 6, 5, 4};
+  make_buffer(GL_ARRAY_BUFFER, first, 6);
+  glBufferData(GL_ARRAY_BUFFER, 6, second, GL_STREAM_DRAW);
+  uint8_t out[6] = {};
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, 6, out);
+  EXPECT_EQ(std::memcmp(out, second, 6), 0);
+  EXPECT_EQ(buffer_param(GL_ARRAY_BUFFER, GL_BUFFER_USAGE), GL_STREAM_DRAW);
+
+  glBufferData(GL_ARRAY_BUFFER, 6, nullptr, GL_STREAM_DRAW);
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, 6, out);
+  const uint8_t zeros[6] = {};
+  EXPECT_EQ(std::memcmp(out, zeros, 6), 0);
+
+  glBufferData(GL_ARRAY_BUFFER, 6, first, GL_STREAM_DRAW);
+  auto* mapped = static_cast<const uint8_t*>(glMapBuffer(GL_ARRAY_BUFFER, GL_READ_ONLY));
+  ASSERT_NE(mapped, nullptr);
+  glBufferData(GL_ARRAY_BUFFER, 6, mapped, GL_STREAM_DRAW);  // its own bytes, in place
+  EXPECT_EQ(buffer_param(GL_ARRAY_BUFFER, GL_BUFFER_MAPPED), GL_FALSE);
+  glGetBufferSubData(GL_ARRAY_BUFFER, 0, 6, out);
+  EXPECT_EQ(std::memcmp(out, first, 6), 0);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(BufferObjectTest, MapAndUnmap) {
   const uint8_t zeros[16] = {};
   make_buffer(GL_ARRAY_BUFFER, zeros, 16);
