@@ -110,8 +110,7 @@ void BufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data, 
   const auto* from = static_cast<const uint8_t*>(data);
   if (b->data.size() == bytes) {
     // Specified again at the same size (a buffer streamed every frame): the store is reused,
-    // without a new allocation whose pages the system clears and faults in again (glmark2's
-    // terrain spent a tenth of its time there).
+    // without a new allocation whose pages the system would clear and fault in again.
     if (from) std::memmove(b->data.data(), from, bytes);
     else std::fill(b->data.begin(), b->data.end(), uint8_t{0});
   } else {
