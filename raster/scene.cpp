@@ -134,10 +134,10 @@ bool Scene::full() const {
 
 void Scene::run_tile(int tile) const {
   // The application's modes on its own thread would make a tile it takes differ from one a
-  // worker takes: every tile computes under the default modes.
+  // worker takes: every tile computes under the default modes, except that a programmable
+  // draw's commands run under the shaders' modes, set once for each run of them rather than by
+  // every shader run (its MXCSR writes took 2-3% of the shader scenes).
   ScopedFloatModes modes(kDefaultFloatModes);
-  // A programmable draw's commands run under the shaders' modes, set once for each run of them
-  // rather than by every shader run (its MXCSR writes took 2-3% of the shader scenes).
   bool shader_modes = false;
   auto use_shader_modes = [&](bool on) {
     if (on != shader_modes) modes.set(on ? kShaderFloatModes : kDefaultFloatModes);

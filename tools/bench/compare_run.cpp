@@ -88,8 +88,8 @@ DriverOutcome runOn(const Options& options, const Driver& driver, const BenchSce
   return outcome;
 }
 
-// Runs a scene on a driver `rounds` times (compare_run's turns), keeping the run with the
-// lowest median; a failed run ends the turns of that driver and is what is kept.
+// The best of a driver's runs of one scene (--rounds): the run with the lowest median; a
+// failed run ends that driver's turns and is what is kept.
 struct BestOutcome {
   DriverOutcome best;
   bool ran = false;
