@@ -5,8 +5,6 @@ namespace {
 
 constexpr int kFixedPlanes = 7;
 constexpr int kPlaneCount = kFixedPlanes + kMaxClipPlanes;
-// Points closer than this to w = 0 are clipped away: their projection is meaningless.
-constexpr double kMinW = 1e-30;
 
 double plane_distance(const ClipVert& v, const ClipVolume& vol, int plane) {
   const double x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];

@@ -25,6 +25,9 @@ struct ClipVert {
   float attr[kClipAttrCapacity];
 };
 
+// Points closer than this to w = 0 are clipped away: their projection is meaningless.
+constexpr double kMinW = 1e-30;
+
 // The clip volume: near and far always, w > epsilon always, x/y against the guard band
 // (expressed as multiples of w, so the band is fixed in window pixels), and the enabled user
 // clip planes (ClipVert::user >= 0 is inside).

@@ -321,13 +321,9 @@ double GeometryStage::polygon_offset(const std::vector<WinVert>& window, bool en
   return std::isfinite(offset) ? offset : 0.0;
 }
 
-void GeometryStage::window_positions(size_t begin, size_t end, PreparedWindow* out) const {
-  constexpr size_t kPrefetchAhead = 16;
-  for (size_t i = begin; i < end; ++i) {
-    // The vertex shader's pass over the whole draw left the first vertices out of the cache.
-    if (i + kPrefetchAhead < end) __builtin_prefetch(&vertex_base_[i + kPrefetchAhead]);
-    transform_.prepare(vertex_base_[i], varyings_ + i * static_cast<size_t>(varying_count_), out[i - begin]);
-  }
+void GeometryStage::window_positions(size_t begin, size_t end, PreparedWindow* out, SimdPath path) const {
+  transform_.prepare_many(vertex_base_ + begin, varyings_ + begin * static_cast<size_t>(varying_count_),
+                          static_cast<size_t>(varying_count_), end - begin, out, path);
 }
 
 const WinVert* GeometryStage::cached_window(const ClipVertex& v) {

@@ -45,8 +45,8 @@ class GeometryStage final : public PrimitiveSink {
   }
 
   // Vertices [begin, end) of the draw (after set_varyings) into out[0, end - begin); may run
-  // on several threads at once.
-  void window_positions(size_t begin, size_t end, PreparedWindow* out) const;
+  // on several threads at once; `path` picks the copy of the vector code (the same windows).
+  void window_positions(size_t begin, size_t end, PreparedWindow* out, SimdPath path) const;
   // Triangles of the draw take their vertices' window positions from `windows` (one per vertex).
   void use_window_positions(const PreparedWindow* windows) { prepared_ = windows; }
 

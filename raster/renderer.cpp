@@ -86,7 +86,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
       impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
       PreparedWindow* windows = impl_->windows.data();
       for_each_piece(vertices.size(), kVerticesPerPiece,
-                     [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin); });
+                     [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin, impl_->simd); });
       geometry.use_window_positions(windows);
     }
   }

@@ -7,30 +7,33 @@
 
 namespace pineda::raster {
 
-WindowTransform::WindowTransform(const Viewport& vp, uint32_t clip_planes, double depth_max) : depth_max_(depth_max) {
-  vp_half_w_ = vp.width * 0.5;
-  vp_half_h_ = vp.height * 0.5;
-  vp_x_ = vp.x;
-  vp_y_ = vp.y;
-  depth_near_ = std::clamp(vp.near_z, 0.0, 1.0);
-  depth_far_ = std::clamp(vp.far_z, 0.0, 1.0);
+WindowTransform::WindowTransform(const Viewport& vp, uint32_t clip_planes, double depth_max) {
+  p_.depth_max = depth_max;
+  p_.half_w = vp.width * 0.5;
+  p_.half_h = vp.height * 0.5;
+  p_.x = vp.x;
+  p_.y = vp.y;
+  p_.depth_near = std::clamp(vp.near_z, 0.0, 1.0);
+  p_.depth_far = std::clamp(vp.far_z, 0.0, 1.0);
   // The guard band in window pixels, as NDC multiples of w.
-  volume_.x_min = (-kGuardBand - vp_x_) / vp_half_w_ - 1.0;
-  volume_.x_max = (kGuardBand - vp_x_) / vp_half_w_ - 1.0;
-  volume_.y_min = (-kGuardBand - vp_y_) / vp_half_h_ - 1.0;
-  volume_.y_max = (kGuardBand - vp_y_) / vp_half_h_ - 1.0;
-  volume_.user_planes = clip_planes & ((1u << kMaxClipPlanes) - 1);
+  ClipVolume& volume = p_.volume;
+  volume.x_min = (-kGuardBand - p_.x) / p_.half_w - 1.0;
+  volume.x_max = (kGuardBand - p_.x) / p_.half_w - 1.0;
+  volume.y_min = (-kGuardBand - p_.y) / p_.half_h - 1.0;
+  volume.y_max = (kGuardBand - p_.y) / p_.half_h - 1.0;
+  volume.user_planes = clip_planes & ((1u << kMaxClipPlanes) - 1);
 }
 
+// window_lanes_body.inc does the same operations on vectors of vertices: change both together.
 void WindowTransform::position(const ClipVert& v, WinPosition& w) const {
   w.inv_w = 1.0 / v.pos[3];
-  w.fx = std::clamp<double>((v.pos[0] * w.inv_w + 1.0) * vp_half_w_ + vp_x_, -4.0 * kGuardBand, 4.0 * kGuardBand);
-  w.fy = std::clamp<double>((v.pos[1] * w.inv_w + 1.0) * vp_half_h_ + vp_y_, -4.0 * kGuardBand, 4.0 * kGuardBand);
+  w.fx = std::clamp<double>((v.pos[0] * w.inv_w + 1.0) * p_.half_w + p_.x, -4.0 * kGuardBand, 4.0 * kGuardBand);
+  w.fy = std::clamp<double>((v.pos[1] * w.inv_w + 1.0) * p_.half_h + p_.y, -4.0 * kGuardBand, 4.0 * kGuardBand);
   w.x = snap(w.fx);
   w.y = snap(w.fy);
-  double z = depth_near_ + (depth_far_ - depth_near_) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
+  double z = p_.depth_near + (p_.depth_far - p_.depth_near) * (v.pos[2] * w.inv_w + 1.0) * 0.5;
   z = z > 0.0 ? (z < 1.0 ? z : 1.0) : 0.0;
-  w.z = z * depth_max_;
+  w.z = z * p_.depth_max;
 }
 
 void WindowTransform::prepare(const ClipVertex& v, const float* varyings, PreparedWindow& out) const {
@@ -38,7 +41,7 @@ void WindowTransform::prepare(const ClipVertex& v, const float* varyings, Prepar
   if (!finite_position(v)) return;
   ClipVert clip;  // position and clip distances only
   clip_position(v, clip);
-  if (clip_outcode(clip, volume_) != 0) return;
+  if (clip_outcode(clip, p_.volume) != 0) return;
   position(clip, out.position);
   out.position.varyings = varyings;
   out.usable = has_window_position(out.position);
