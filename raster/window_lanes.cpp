@@ -1,8 +1,6 @@
 // WindowTransform::prepare_many: vertices in vector lanes, in two copies, baseline x86-64 (its
 // 8-lane vectors are split into SSE2 ones) and AVX-512, both with the operations of prepare()
 // (no FMA, no contraction), so every path gives the same windows.
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
