@@ -45,10 +45,15 @@ struct LevelChoice {
 
 // `lambda`: the quad's level of detail before bias and clamping; `max_level`: the last level
 // of the image (its levels are a complete chain when the filter mipmaps).
-inline LevelChoice choose_levels(const Sampler& sampler, float lambda, int max_level) {
+// choose_levels in two steps: lambda biased and clamped, then the levels at that lambda.
+inline float clamped_lambda(const Sampler& sampler, float lambda) {
   if (std::isnan(lambda)) lambda = 0.f;
   lambda = std::min(std::max(lambda + sampler.lod_bias, sampler.min_lod), sampler.max_lod);
   if (!(lambda > -1e30f && lambda < 1e30f)) lambda = lambda > 0 ? 1e30f : -1e30f;
+  return lambda;
+}
+
+inline LevelChoice levels_at(const Sampler& sampler, float lambda, int max_level) {
   const TexFilter min = sampler.min_filter;
   const bool mag_linear = sampler.mag_filter == TexFilter::Linear;
   const float c = mag_linear && (min == TexFilter::NearestMipmapNearest || min == TexFilter::NearestMipmapLinear)
@@ -72,6 +77,10 @@ inline LevelChoice choose_levels(const Sampler& sampler, float lambda, int max_l
   out.blend = lambda - static_cast<float>(out.first);
   out.two = true;
   return out;
+}
+
+inline LevelChoice choose_levels(const Sampler& sampler, float lambda, int max_level) {
+  return levels_at(sampler, clamped_lambda(sampler, lambda), max_level);
 }
 
 }  // namespace pineda::raster

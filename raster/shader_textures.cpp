@@ -58,21 +58,21 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
   // For every quad: no mipmaps (the nearest sampler's magnification and minification are alike).
   const bool level_zero = reads_level_zero(sampler);
   bool any = level_zero && live != 0;
-  for (int first = 0; first < kLanes && !level_zero; first += 4) {
-    if (!((live >> first) & 0xf)) continue;
-    const Sampler* quad = &sampler;
-    Sampler biased;
-    if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[first])) {
-      biased = sampler;
-      biased.lod_bias += lod[first];
-      quad = &biased;
+  if (!level_zero) {
+    F4 bias = splat(sampler.lod_bias);
+    for (int q = 0; q < 4; ++q)
+      if (mode == shader::LodMode::Bias && lod && std::isfinite(lod[4 * q])) bias[q] = sampler.lod_bias + lod[4 * q];
+    const F4 lambda = bilinear8_block_lambdas(image, sampler, s, t, bias);
+    const int max_level = static_cast<int>(image.levels.size()) - 1;
+    for (int q = 0; q < 4; ++q) {
+      if (!((live >> (4 * q)) & 0xf)) continue;
+      const LevelChoice c = levels_at(sampler, lambda[q], max_level);
+      if (any && (c.first != levels.first || c.two != levels.two)) return false;
+      levels.first = c.first;
+      levels.two = c.two;
+      levels.blend[q] = c.blend;
+      any = true;
     }
-    const LevelChoice c = bilinear8_quad_levels(image, *quad, load4(&s[first]), load4(&t[first]));
-    if (any && (c.first != levels.first || c.two != levels.two)) return false;
-    levels.first = c.first;
-    levels.two = c.two;
-    levels.blend[first / 4] = c.blend;
-    any = true;
   }
   if (!any) return false;
   block(image, levels, s, t, out);  // with the base format applied
