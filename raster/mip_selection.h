@@ -43,9 +43,9 @@ struct LevelChoice {
   bool linear = false;  // filtering within a level
 };
 
-// `lambda`: the quad's level of detail before bias and clamping; `max_level`: the last level
-// of the image (its levels are a complete chain when the filter mipmaps).
-// choose_levels in two steps: lambda biased and clamped, then the levels at that lambda.
+// choose_levels in two steps: the quad's level of detail `lambda` biased and clamped, then the
+// levels at that lambda; `max_level`: the last level of the image (its levels are a complete
+// chain when the filter mipmaps).
 inline float clamped_lambda(const Sampler& sampler, float lambda) {
   if (std::isnan(lambda)) lambda = 0.f;
   lambda = std::min(std::max(lambda + sampler.lod_bias, sampler.min_lod), sampler.max_lod);
