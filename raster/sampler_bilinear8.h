@@ -47,8 +47,7 @@ inline LevelChoice bilinear8_quad_levels(const TextureImage& image, const Sample
 // they were a tenth of glmark2 terrain's time).
 inline F4 bilinear8_block_lambdas(const TextureImage& image, const Sampler& sampler, const float* s, const float* t,
                                   F4 bias) {
-  const F4 zero = F4{}, high = splat(1e6f), low = splat(-1e6f);
-  auto sane4 = [&](F4 v) { return v > low ? (v < high ? v : high) : (v <= low ? low : zero); };
+  const F4 zero = F4{};
   auto pixel = [&](const float* c, int i) { return sane4(F4{c[i], c[4 + i], c[8 + i], c[12 + i]}); };
   const F4 s0 = pixel(s, 0), s1 = pixel(s, 1), s2 = pixel(s, 2);
   const F4 t0 = pixel(t, 0), t1 = pixel(t, 1), t2 = pixel(t, 2);

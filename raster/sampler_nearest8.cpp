@@ -6,13 +6,8 @@
 namespace pineda::raster {
 namespace {
 
-// sane(), floor_int() and nearest_index() of texel_addressing.h for four lanes: the same
-// operations in each lane, so the same indices.
-inline F4 sane4(F4 v) {
-  const F4 hi = splat(1e6f), lo = splat(-1e6f);
-  return v > lo ? (v < hi ? v : hi) : (v <= lo ? lo : F4{});
-}
-
+// floor_int() and nearest_index() of texel_addressing.h for four lanes (with its sane4): the
+// same operations in each lane, so the same indices.
 inline I4 floor_int4(F4 v) {
   const I4 i = __builtin_convertvector(v, I4);
   return i + (__builtin_convertvector(i, F4) > v);  // a true comparison is -1

@@ -3,12 +3,18 @@
 #pragma once
 #include <algorithm>
 
+#include "raster/quad_vector.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
 
 // Keeps coordinates where float-to-int conversions are defined; NaN becomes 0.
 inline float sane(float v) { return v > -1e6f ? (v < 1e6f ? v : 1e6f) : (v <= -1e6f ? -1e6f : 0.f); }
+// sane() for four lanes: the same operations in each lane.
+inline F4 sane4(F4 v) {
+  const F4 hi = splat(1e6f), lo = splat(-1e6f);
+  return v > lo ? (v < hi ? v : hi) : (v <= lo ? lo : F4{});
+}
 
 // floor() for |v| < 2^31 without a libm call (the x86-64 baseline has no round instruction).
 inline float floor_fast(float v) {
