@@ -6,6 +6,7 @@
 #include <map>
 #include <tuple>
 
+#include "shader/early_textures.h"
 #include "shader/ir_operands.h"
 #include "shader/rename_values.h"
 #include "shader/unroll_loops.h"
@@ -457,6 +458,7 @@ void optimize(ir::Code& code) {
   if (fuse_multiply_add(code))
     for (int round = 0; round < 32 && pass(code); ++round) {
     }
+  move_texture_lookups_early(code);
   allocate_registers(code);
   fix_jumps(code);
 }

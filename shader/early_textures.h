@@ -1,0 +1,18 @@
+// Texture lookups as early as their operands allow: each lookup moves up its stretch of
+// straight-line code to just after what it reads, so the lookups of a filter kernel end up side
+// by side. Compiled code calls out for every lookup; side by side, the calls' memory reads
+// (gathers) overlap instead of each one waiting behind the arithmetic that used the last.
+#pragma once
+#include "shader/ir.h"
+
+namespace pineda::shader {
+
+// First moves the arithmetic whose results a later lookup reads the same way (over lookups too),
+// then every texture lookup: above the instructions before it that neither write what it reads
+// nor read or write what it writes, stopping at structure (branches, loops, discard), dynamic
+// register indexing and the previous lookup (so lookups keep their order). Values are
+// unchanged: a lookup depends only on its operands and the lanes that run, which do not change
+// within a stretch. Returns whether anything moved.
+bool move_texture_lookups_early(ir::Code& code);
+
+}  // namespace pineda::shader
