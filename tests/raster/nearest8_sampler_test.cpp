@@ -92,7 +92,8 @@ TEST(Nearest8Sampler, BlocksGiveTheQuadSamplersTexelsOnEveryPath) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> near(-2.5f, 3.5f);
   const float special[] = {0.f, 1.f, -1.f, 1e7f, -1e7f, std::numeric_limits<float>::infinity(),
-                           std::numeric_limits<float>::quiet_NaN(), 1.f / 3.f};
+                           std::numeric_limits<float>::quiet_NaN(), 1.f / 3.f, -0.f, -std::numeric_limits<float>::infinity(),
+                           std::nextafter(1.f, 0.f), std::nextafter(0.f, -1.f), -std::numeric_limits<float>::quiet_NaN()};
   const TexWrap wraps[] = {TexWrap::Repeat, TexWrap::Clamp, TexWrap::ClampToEdge};
   int blocks = 0;
   for (const auto& [w, h] : {std::pair{1, 1}, {5, 3}, {64, 64}, {300, 7}})
