@@ -7,10 +7,11 @@
 
 namespace pineda::shader {
 
-// First moves the arithmetic whose results a later lookup reads the same way (over lookups too),
-// then every texture lookup: above the instructions before it that neither write what it reads
-// nor read or write what it writes, stopping at structure (branches, loops, discard), dynamic
-// register indexing and the previous lookup (so lookups keep their order). Values are
+// First the arithmetic whose result a later lookup of its stretch reads (it may rise above
+// lookups), then every texture lookup, each moves above the instructions before it that neither
+// write what it reads nor read or write what it writes, stopping at structure (branches, loops,
+// discard), dynamic register indexing and the previous one of its kind (so both keep their
+// order). Values are
 // unchanged: a lookup depends only on its operands and the lanes that run, which do not change
 // within a stretch. Returns whether anything moved.
 bool move_texture_lookups_early(ir::Code& code);
