@@ -40,18 +40,24 @@ bool move_up(ir::Code& code, std::vector<char>& stays_above, size_t at) {
   return true;
 }
 
-// Whether the value `in` writes is read by a texture lookup later in the same stretch.
-bool feeds_a_lookup(ir::Code& code, size_t at) {
-  const Operand d = code.insts[at].d;
-  if (d < 0) return false;
-  for (size_t k = at + 1; k < code.insts.size() && !ir::is_structure(code.insts[k].op); ++k) {
-    bool reads = false, writes = false;
-    ir::for_each_use(code, code.insts[k], [&](Operand& o) { reads = reads || o == d; });
-    if (reads && code.insts[k].op == Op::Texture) return true;
-    ir::for_each_def(code, code.insts[k], [&](Operand& o) { writes = writes || o == d; });
-    if (writes) return false;
+// For each instruction, whether it is arithmetic whose result a later texture lookup of the same
+// stretch reads (before anything writes that register again): one pass from the end, keeping the
+// registers the lookups below read.
+std::vector<char> feeds_lookups(ir::Code& code) {
+  std::vector<char> feeds(code.insts.size());
+  std::vector<Operand> read_below;
+  for (size_t at = code.insts.size(); at-- > 0;) {
+    Inst& in = code.insts[at];
+    if (ir::is_structure(in.op)) {
+      read_below.clear();
+      continue;
+    }
+    feeds[at] = ir::op_is_pure_arith(in.op) && in.d >= 0 &&
+                std::find(read_below.begin(), read_below.end(), in.d) != read_below.end();
+    ir::for_each_def(code, in, [&](Operand& d) { std::erase(read_below, d); });
+    if (in.op == Op::Texture) ir::for_each_use(code, in, [&](Operand& o) { if (o >= 0) read_below.push_back(o); });
   }
-  return false;
+  return feeds;
 }
 
 }  // namespace
@@ -61,8 +67,7 @@ bool move_texture_lookups_early(ir::Code& code) {
   // First the arithmetic that computes lookups' operands (coordinate offsets), so that the
   // lookups after it can rise as far; each keeps its order with the others.
   const size_t n = code.insts.size();
-  std::vector<char> feeds(n);
-  for (size_t at = 0; at < n; ++at) feeds[at] = ir::op_is_pure_arith(code.insts[at].op) && feeds_a_lookup(code, at);
+  std::vector<char> feeds = feeds_lookups(code);
   for (size_t at = 0; at < n; ++at)
     if (feeds[at]) moved |= move_up(code, feeds, at);
   std::vector<char> lookups(n);
