@@ -65,6 +65,7 @@ void Context::release_current() {
   renderer_->flush();
   draw_ = read_ = nullptr;
   renderer_->set_framebuffer(raster::Framebuffer{});
+  renderer_pixels_.clear();
 }
 
 void Context::drawable_changed() { bind_framebuffer(); }

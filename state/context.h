@@ -272,7 +272,7 @@ class Context {
   AccumState accum;
   ProgramState programs{share_group_->programs};  // GL 2.0 shader and program objects, generic attributes (state/programs/)
 
-  FramebufferState framebuffers;  // framebuffer and renderbuffer objects (state/framebuffers/)
+  FramebufferState framebuffers{share_group_->renderbuffers};  // framebuffer and renderbuffer objects (state/framebuffers/)
   // Vertex array objects (GL_ARB_vertex_array_object, state/vertex_arrays/): the arrays above
   // are the bound object's; the others keep theirs there.
   VertexArrayObjects vertex_array_objects;
@@ -297,6 +297,10 @@ class Context {
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;
   uint64_t errors_recorded_ = 0;
+  // The renderbuffer pixels that the renderer's framebuffer points into, alive until it no
+  // longer does (another context may respecify or delete the renderbuffers meanwhile). Before
+  // renderer_: a scene still running when the context goes writes them.
+  std::vector<std::shared_ptr<const RenderbufferPixels>> renderer_pixels_;
   std::unique_ptr<raster::Renderer> renderer_;
   Drawable* draw_ = nullptr;
   Drawable* read_ = nullptr;

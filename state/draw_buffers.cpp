@@ -105,7 +105,10 @@ void Context::bind_framebuffer(bool always) {
     }
   }
   // Binding the same buffers again would only flush the queued rendering.
-  if (always || !same_buffers(fb, renderer_->framebuffer())) renderer_->set_framebuffer(fb);
+  if (always || !same_buffers(fb, renderer_->framebuffer())) {
+    renderer_->set_framebuffer(fb);
+    renderer_pixels_ = d ? d->renderbuffer_pixels : decltype(renderer_pixels_){};
+  }
 }
 
 void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer) {
@@ -115,6 +118,7 @@ void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer
   fb.color = color;
   fb.color_index = draw_buffer;
   renderer_->set_framebuffer(fb);
+  renderer_pixels_ = draw_drawable()->renderbuffer_pixels;
 }
 
 void Context::render_to_draw_buffers(const std::function<void()>& render) {

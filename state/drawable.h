@@ -1,9 +1,14 @@
 // A set of buffers a context renders into (pbuffer, window back buffer, OSMesa buffer),
 // owned by driver/; the context only borrows its framebuffer description.
 #pragma once
+#include <memory>
+#include <vector>
+
 #include "raster/framebuffer.h"
 
 namespace pineda {
+
+struct RenderbufferPixels;
 
 struct Drawable {
   raster::Framebuffer framebuffer;
@@ -21,6 +26,9 @@ struct Drawable {
   // Set by the context when it renders into the front buffer; the driver clears it when it
   // has shown the front buffer (glFlush shows front-buffer drawing, as in Mesa).
   bool front_drawn = false;
+
+  // A framebuffer object's view: the pixels of the renderbuffers it points into.
+  std::vector<std::shared_ptr<const RenderbufferPixels>> renderbuffer_pixels;
 
   const raster::ColorBuffer& front_color() const { return front.base ? front : framebuffer.color; }
 };

@@ -1,7 +1,7 @@
 // The objects that contexts created with a share list (glXCreateContext's shareList,
 // eglCreateContext's share_context, OSMesa's sharelist) hold in common: textures (the
-// default ones too, as Mesa), buffer objects, display lists, shader and program objects.
-// Queries and framebuffer objects stay per context.
+// default ones too, as Mesa), buffer objects, display lists, shader and program objects,
+// renderbuffers. Queries and framebuffer objects stay per context.
 #pragma once
 #include <atomic>
 #include <memory>
@@ -9,6 +9,7 @@
 
 #include "state/buffer_object.h"
 #include "state/display_list.h"
+#include "state/framebuffers/renderbuffer.h"
 #include "state/programs/program_objects.h"
 #include "state/texture_object.h"
 
@@ -19,6 +20,7 @@ struct ShareGroup {
   ObjectNames<BufferObject> buffers;
   DisplayLists lists;
   ShaderProgramNames programs;
+  RenderbufferNames renderbuffers;
 
   // Contexts of a group may run on different threads: while the group has more than one
   // member, every GL call holds this lock (glapi/), so calls on shared objects never race.

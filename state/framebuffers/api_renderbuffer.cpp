@@ -11,11 +11,7 @@
 namespace pineda::gl {
 namespace {
 
-Renderbuffer* bound_renderbuffer(Context& ctx) {
-  const FramebufferState& fs = ctx.framebuffers;
-  auto it = fs.renderbuffers.find(fs.renderbuffer_binding);
-  return fs.renderbuffer_binding && it != fs.renderbuffers.end() ? it->second.get() : nullptr;
-}
+Renderbuffer* bound_renderbuffer(Context& ctx) { return ctx.framebuffers.bound_renderbuffer.get(); }
 
 void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat, GLsizei width, GLsizei height) {
   if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_RENDERBUFFER");
@@ -27,7 +23,9 @@ void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat
   Renderbuffer* rb = bound_renderbuffer(ctx);
   if (!rb) return ctx.record_error(GL_INVALID_OPERATION, "no renderbuffer is bound");
   resolve_rendered_textures(ctx);
-  ctx.finish();  // queued rendering may still write the old storage
+  // Rendering queued here may still write the old pixels (and another context's keeps them
+  // alive: RenderbufferPixels).
+  ctx.finish();
   Renderbuffer fresh;
   fresh.width = width;
   fresh.height = height;
@@ -37,9 +35,10 @@ void storage(Context& ctx, GLenum target, GLsizei samples, GLenum internalformat
   fresh.samples = samples > 0 ? kMaxSamples : 0;
   const size_t n = size_t(width) * size_t(height) * size_t(std::max(fresh.samples, 1));
   try {
-    if (format->kind == RenderableFormat::Kind::Color) fresh.color.assign(n, 0);
-    if (format->has_depth()) fresh.depth.assign(n, 0);
-    if (format->has_stencil()) fresh.stencil.assign(n, 0);
+    RenderbufferPixels& pixels = *fresh.pixels;
+    if (format->kind == RenderableFormat::Kind::Color) pixels.color.assign(n, 0);
+    if (format->has_depth()) pixels.depth.assign(n, 0);
+    if (format->has_stencil()) pixels.stencil.assign(n, 0);
   } catch (const std::bad_alloc&) {
     return ctx.record_error(GL_OUT_OF_MEMORY, "no memory for the renderbuffer's storage");
   }
@@ -69,7 +68,12 @@ void DeleteRenderbuffers(Context& ctx, GLsizei n, const GLuint* renderbuffers) {
     const GLuint name = renderbuffers[i];
     auto it = fs.renderbuffers.find(name);
     if (name == 0 || it == fs.renderbuffers.end()) continue;
-    if (fs.renderbuffer_binding == name) fs.renderbuffer_binding = 0;
+    // Unbound and detached in this context only; another context that has it bound or
+    // attached keeps the object (GL 3.0 appendix D.1.2), without its name.
+    if (fs.renderbuffer_binding == name) {
+      fs.renderbuffer_binding = 0;
+      fs.bound_renderbuffer.reset();
+    }
     if (it->second) detach_deleted(ctx, GL_RENDERBUFFER, name);
     fs.renderbuffers.erase(name);
     ctx.debug.forget_label(GL_RENDERBUFFER, name);
@@ -85,9 +89,11 @@ GLboolean IsRenderbuffer(Context& ctx, GLuint renderbuffer) {
 void BindRenderbuffer(Context& ctx, GLenum target, GLuint renderbuffer) {
   if (target != GL_RENDERBUFFER) return ctx.record_error(GL_INVALID_ENUM, "target is not GL_RENDERBUFFER");
   FramebufferState& fs = ctx.framebuffers;
+  fs.bound_renderbuffer.reset();
   if (renderbuffer != 0) {
     std::shared_ptr<Renderbuffer>& slot = fs.renderbuffers[renderbuffer];
     if (!slot) slot = std::make_shared<Renderbuffer>();
+    fs.bound_renderbuffer = slot;
   }
   fs.renderbuffer_binding = renderbuffer;
 }

@@ -22,6 +22,7 @@
 #include "state/draw_buffer_list.h"
 #include "state/drawable.h"
 #include "state/framebuffers/renderable_format.h"
+#include "state/framebuffers/renderbuffer.h"
 
 namespace pineda {
 
@@ -33,18 +34,6 @@ constexpr int kMaxColorAttachments = 8;
 constexpr int kMaxRenderbufferSize = 8192;
 // GL_MAX_SAMPLES: llvmpipe's only multisample count; 1..4 samples are rounded up to it.
 constexpr int kMaxSamples = 4;
-
-struct Renderbuffer {
-  GLsizei width = 0, height = 0;
-  GLenum internal_format = GL_RGBA;
-  RenderableFormat format;
-  // GL_RENDERBUFFER_SAMPLES: 0, or 4 (multisampled: every buffer holds 4 planes of
-  // width x height, sample s in plane s; raster/multisample.h).
-  GLsizei samples = 0;
-  std::vector<uint32_t> color;  // RGBA8, R in the lowest byte, bottom row first
-  std::vector<uint32_t> depth;
-  std::vector<uint8_t> stencil;
-};
 
 struct Attachment {
   GLenum type = GL_NONE;  // GL_NONE, GL_RENDERBUFFER or GL_TEXTURE
@@ -73,10 +62,14 @@ struct FramebufferObject {
 };
 
 struct FramebufferState {
+  explicit FramebufferState(RenderbufferNames& shared_renderbuffers) : renderbuffers(shared_renderbuffers) {}
+
   std::map<GLuint, std::unique_ptr<FramebufferObject>> framebuffers;
-  std::map<GLuint, std::shared_ptr<Renderbuffer>> renderbuffers;  // a null entry: generated, not yet bound
+  RenderbufferNames& renderbuffers;  // the share group's
   std::set<GLuint> generated_framebuffers;  // generated names not yet bound
   GLuint draw_binding = 0, read_binding = 0, renderbuffer_binding = 0;
+  // The bound renderbuffer: it stays bound here when another context deletes its name.
+  std::shared_ptr<Renderbuffer> bound_renderbuffer;
   // The window-system framebuffer's draw and read buffers while an object is bound (the
   // context's draw_buffer/read_buffer are those of the bound draw/read framebuffer).
   GLenum window_draw_buffer = GL_BACK, window_read_buffer = GL_BACK;

@@ -55,7 +55,7 @@ raster::ColorBuffer color_buffer(Context& ctx, const Attachment& a, const Render
   raster::ColorBuffer cb;
   cb.reduction = color_reduction(format.color);
   if (a.type == GL_RENDERBUFFER) {
-    cb.base = reinterpret_cast<uint8_t*>(a.renderbuffer->color.data());
+    cb.base = reinterpret_cast<uint8_t*>(a.renderbuffer->pixels->color.data());
     cb.stride = ptrdiff_t(a.renderbuffer->width) * 4;
     cb.sample_stride = cb.stride * a.renderbuffer->height;
     return cb;
@@ -82,6 +82,7 @@ void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buf
   for (const Attachment& a : fb.attachments) {
     int w = 0, h = 0;
     if (a.type == GL_NONE || !image_size(ctx, a, w, h)) continue;
+    if (a.type == GL_RENDERBUFFER) view.renderbuffer_pixels.push_back(a.renderbuffer->pixels);
     out.width = std::min(out.width, w);
     out.height = std::min(out.height, h);
     out.samples = std::max(attachment_samples(a), 1);  // the same for all: the framebuffer is complete
@@ -109,7 +110,7 @@ void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buf
     const RenderableFormat format = *attachment_format(ctx, depth);
     out.depth.bits = format.depth_bits;
     if (depth.type == GL_RENDERBUFFER) {
-      out.depth.base = depth.renderbuffer->depth.data();
+      out.depth.base = depth.renderbuffer->pixels->depth.data();
       out.depth.stride = depth.renderbuffer->width;
       out.depth.sample_stride = out.depth.stride * depth.renderbuffer->height;
     } else {
@@ -122,7 +123,7 @@ void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buf
   Attachment& stencil = fb.attachments[kStencilPoint];
   if (stencil.type == GL_RENDERBUFFER) {
     out.stencil.bits = 8;
-    out.stencil.base = stencil.renderbuffer->stencil.data();
+    out.stencil.base = stencil.renderbuffer->pixels->stencil.data();
     out.stencil.stride = stencil.renderbuffer->width;
     out.stencil.sample_stride = out.stencil.stride * stencil.renderbuffer->height;
   } else if (stencil.type == GL_TEXTURE) {  // a DEPTH_STENCIL texture's indices, rendered in place

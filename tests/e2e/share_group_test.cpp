@@ -15,12 +15,6 @@
 namespace pineda::test {
 namespace {
 
-Rgba read_pixel(int x, int y) {
-  uint8_t p[4] = {0, 0, 0, 0};
-  glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
-  return {p[0], p[1], p[2], p[3]};
-}
-
 // A 2x2 texture of four colours, named `name`, bound to GL_TEXTURE_2D.
 void make_checker(GLuint name) {
   const uint8_t texels[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
@@ -42,10 +36,10 @@ void draw_textured_quad() {
 }
 
 void expect_checker() {
-  EXPECT_EQ(read_pixel(0, 0), (Rgba{255, 0, 0, 255}));
-  EXPECT_EQ(read_pixel(15, 0), (Rgba{0, 255, 0, 255}));
-  EXPECT_EQ(read_pixel(0, 15), (Rgba{0, 0, 255, 255}));
-  EXPECT_EQ(read_pixel(15, 15), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(read_rgba(0, 0), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(read_rgba(15, 0), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(read_rgba(0, 15), (Rgba{0, 0, 255, 255}));
+  EXPECT_EQ(read_rgba(15, 15), (Rgba{255, 255, 255, 255}));
 }
 
 class ShareGroupTest : public ::testing::TestWithParam<bool> {  // param: force EGL

@@ -36,12 +36,6 @@ void draw_full_quad() {
   glEnd();
 }
 
-Rgba read_pixel(int x, int y) {
-  uint8_t p[4] = {0, 0, 0, 0};
-  glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
-  return {p[0], p[1], p[2], p[3]};
-}
-
 GLint program_int(GLuint p, GLenum pname) {
   GLint v = -1;
   glGetProgramiv(p, pname, &v);
@@ -72,7 +66,7 @@ TEST_P(SharedProgramsTest, AProgramLinkedInOneContextDrawsInTheOther) {
   glClearColor(0, 0, 1, 1);
   glClear(GL_COLOR_BUFFER_BIT);
   draw_full_quad();
-  EXPECT_EQ(read_pixel(8, 8), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(read_rgba(8, 8), (Rgba{255, 0, 0, 255}));
   // One name space: a shader made here does not reuse a name the first context gave out.
   const GLuint shader = glCreateShader(GL_FRAGMENT_SHADER);
   EXPECT_NE(shader, program);
@@ -96,7 +90,7 @@ TEST_P(SharedProgramsTest, ADeletedProgramLivesWhileAnotherContextUsesIt) {
 
   ASSERT_TRUE(second.make_current());
   draw_full_quad();
-  EXPECT_EQ(read_pixel(3, 3), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(read_rgba(3, 3), (Rgba{255, 0, 0, 255}));
   glUseProgram(0);
   EXPECT_EQ(glIsProgram(program), GL_FALSE);
   ASSERT_TRUE(first.make_current());

@@ -15,6 +15,13 @@ namespace pineda::test {
 
 using Rgba = std::array<int, 4>;
 
+// The pixel (x, y) of the read framebuffer, as glReadPixels gives it in RGBA8.
+inline Rgba read_rgba(int x, int y) {
+  uint8_t p[4] = {0, 0, 0, 0};
+  glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  return {p[0], p[1], p[2], p[3]};
+}
+
 class GlTest : public ::testing::Test {
  protected:
   virtual SurfaceSpec spec() const { return {}; }
@@ -46,11 +53,7 @@ class GlTest : public ::testing::Test {
     glClear(GL_COLOR_BUFFER_BIT);
   }
 
-  Rgba pixel(int x, int y) {
-    uint8_t p[4] = {0, 0, 0, 0};
-    glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
-    return {p[0], p[1], p[2], p[3]};
-  }
+  Rgba pixel(int x, int y) { return read_rgba(x, y); }
 
   // The whole colour buffer, bottom row first.
   std::vector<uint8_t> read_all() {
