@@ -5,6 +5,8 @@
 #include <glslang/Public/ResourceLimits.h>
 
 #include "shader/es_draw_buffers.h"
+#include "shader/fragment_outputs.h"
+#include "shader/function_rules.h"
 #include "shader/tree_depth.h"
 
 namespace pineda::shader::front_end {
@@ -96,6 +98,7 @@ std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::strin
            "ERROR: 1 compilation errors.  No code generated.\n\n\n";
     return nullptr;
   }
+  if (!fragment_outputs_ok(tree, log) || !function_rules_ok(tree, log)) return nullptr;
   return sh;
 }
 

@@ -50,6 +50,54 @@ TEST(Compile, VersionsAcceptedPerLanguage) {
   EXPECT_EQ(compile(Stage::Vertex, Language::Desktop, {std::string("#version 300 es\n") + body}).shader, nullptr);
 }
 
+// GLSL 1.10 7.2: gl_FragColor or gl_FragData, not both; static assignments count, dead or not,
+// through out parameters too; reading one while writing the other is allowed.
+TEST(Compile, FragColorAndFragDataAreNotBothAssigned) {
+  auto fails = [](Language language, const std::string& body) {
+    const std::string src = (language == Language::Es100 ? "precision mediump float;\n" : "") + body;
+    CompileResult r = compile(Stage::Fragment, language, {src});
+    return r.shader == nullptr &&
+           r.info_log.find("may assign to gl_FragColor or to gl_FragData, not to both") != std::string::npos;
+  };
+  for (Language language : {Language::Desktop, Language::Es100}) {
+    EXPECT_TRUE(fails(language, "void main() {\n gl_FragColor = vec4(1.0);\n gl_FragData[0] = vec4(1.0);\n}\n"));
+    EXPECT_TRUE(fails(language, "void main() {\n if (false) gl_FragData[0].x = 1.0;\n gl_FragColor = vec4(1.0);\n}\n"));
+    EXPECT_TRUE(fails(language, "void set(out vec4 c) { c = vec4(1.0); }\n"
+                                "void main() {\n set(gl_FragColor);\n gl_FragData[0] += vec4(1.0);\n}\n"));
+    EXPECT_FALSE(fails(language, "void main() {\n gl_FragData[0] = vec4(1.0);\n gl_FragData[0].y = 0.5;\n}\n"));
+    EXPECT_FALSE(fails(language, "void main() {\n gl_FragColor = vec4(1.0);\n gl_FragColor.y = 0.5;\n}\n"));
+    EXPECT_FALSE(fails(language, "void main() {\n gl_FragData[0] = vec4(1.0);\n vec4 c = gl_FragColor;\n}\n"));
+  }
+}
+
+// GLSL 1.10 4.1.7 and 5.8, which glslang 12 does not check: no sampler (nor a structure holding
+// one) as an out or inout parameter or as a return type; no out or inout array parameter before
+// GLSL 1.20.
+TEST(Compile, SamplersAndArraysAreNoOutParameters) {
+  auto error = [](Stage stage, const std::string& src) {
+    CompileResult r = compile(stage, Language::Desktop, {src});
+    return r.shader ? std::string("compiled") : r.info_log;
+  };
+  const std::string with_sampler = "struct S { float x; sampler2D t; };\nuniform S u;\n";
+  const std::string main_fs = "void main() { gl_FragColor = vec4(1.0); }\n";
+  EXPECT_NE(error(Stage::Fragment, with_sampler + "void f(out S s) {}\n" + main_fs)
+                .find("ERROR: 0:3: 's' : a sampler or a structure holding one cannot be an out or inout parameter"),
+            std::string::npos);
+  EXPECT_NE(error(Stage::Fragment, with_sampler + "void f(inout S s) {}\n" + main_fs).find("cannot be an out or inout"),
+            std::string::npos);
+  EXPECT_NE(error(Stage::Fragment, with_sampler + "S f() { return u; }\n" + main_fs)
+                .find("ERROR: 0:3: 'f' : a function cannot return a sampler or a structure holding one"),
+            std::string::npos);
+  EXPECT_EQ(error(Stage::Fragment, with_sampler + "float f(S s) { return s.x; }\n" + main_fs), "compiled");
+  const std::string main_vs = "void main() { gl_Position = vec4(0.0); }\n";
+  EXPECT_NE(error(Stage::Vertex, "#version 110\nvoid f(out float x[2]) {}\n" + main_vs)
+                .find("ERROR: 0:2: 'x' : an array cannot be an out or inout parameter in GLSL 1.10"),
+            std::string::npos);
+  EXPECT_NE(error(Stage::Vertex, "void f(inout float x[2]) {}\n" + main_vs).find("in GLSL 1.10"), std::string::npos);
+  EXPECT_EQ(error(Stage::Vertex, "#version 120\nvoid f(out float x[2]) { x[0] = 1.0; }\n" + main_vs), "compiled");
+  EXPECT_EQ(error(Stage::Vertex, "#version 110\nfloat f(float x[2]) { return x[1]; }\n" + main_vs), "compiled");
+}
+
 TEST(Compile, DesktopBuiltinsAbsentInEs) {
   CompileResult es = compile(Stage::Vertex, Language::Es100, {"void main() { gl_Position = gl_Vertex; }\n"});
   EXPECT_EQ(es.shader, nullptr);
