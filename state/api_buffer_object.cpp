@@ -1,4 +1,5 @@
-// Vertex buffer objects (GL 1.5, GL_ARB_vertex_buffer_object): names, data, mapping, queries.
+// Vertex buffer objects (GL 1.5, GL_ARB_vertex_buffer_object): names, data, mapping (also of a
+// range: GL_ARB_map_buffer_range, ES's GL_EXT_map_buffer_range), queries.
 #include <algorithm>
 #include <cstring>
 
@@ -83,7 +84,7 @@ void DeleteBuffers(Context& ctx, GLsizei n, const GLuint* buffers) {
   if (!buffers) return;
   for (GLsizei i = 0; i < n; ++i) {
     if (buffers[i] == 0) continue;
-    if (std::shared_ptr<BufferObject> b = ctx.buffers.names.find(buffers[i])) b->mapped = false;
+    if (std::shared_ptr<BufferObject> b = ctx.buffers.names.find(buffers[i])) b->unmap();
     unbind_everywhere(ctx, buffers[i]);
     ctx.buffers.names.remove(buffers[i]);
     ctx.debug.forget_label(GL_BUFFER, buffers[i]);
@@ -120,7 +121,7 @@ void BufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data, 
   }
   // A mapped buffer is unmapped by its new contents (as Mesa does).
   b->usage = usage;
-  b->mapped = false;
+  b->unmap();
   b->access = GL_READ_WRITE;
 }
 
@@ -146,9 +147,58 @@ void* MapBuffer(Context& ctx, GLenum target, GLenum access) {
     ctx.record_error(GL_INVALID_OPERATION, "the buffer is already mapped");
     return nullptr;
   }
-  b->mapped = true;
   b->access = access;
+  b->map(0, b->data.size(), access == GL_READ_ONLY    ? GL_MAP_READ_BIT
+                            : access == GL_WRITE_ONLY ? GL_MAP_WRITE_BIT
+                                                      : GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
   return b->data.data();
+}
+
+// GL 3.0 2.9.3 / GL_ARB_map_buffer_range, with Mesa's INVALID_OPERATION for a zero length
+// (GL 4.5, ES 3.0). The store is the client memory that draws read when they are made, so
+// nothing waits, and invalidation leaves the contents as they were (they become undefined).
+void* MapBufferRange(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr length, GLbitfield access) {
+  if (!binding(ctx, target)) return nullptr;
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b) return nullptr;
+  constexpr GLbitfield kFlags = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT |
+                                GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_FLUSH_EXPLICIT_BIT | GL_MAP_UNSYNCHRONIZED_BIT;
+  const char* problem = nullptr;
+  GLenum error = GL_INVALID_VALUE;
+  if (offset < 0 || length < 0) problem = "offset or length is negative";
+  else if (length == 0) error = GL_INVALID_OPERATION, problem = "length is zero";
+  else if (access & ~kFlags) problem = "access has bits that are not GL_MAP_*_BIT flags";
+  else if (!(access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT)))
+    error = GL_INVALID_OPERATION, problem = "access has neither GL_MAP_READ_BIT nor GL_MAP_WRITE_BIT";
+  else if ((access & GL_MAP_READ_BIT) &&
+           (access & (GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT)))
+    error = GL_INVALID_OPERATION, problem = "GL_MAP_READ_BIT with an invalidate or unsynchronized bit";
+  else if ((access & GL_MAP_FLUSH_EXPLICIT_BIT) && !(access & GL_MAP_WRITE_BIT))
+    error = GL_INVALID_OPERATION, problem = "GL_MAP_FLUSH_EXPLICIT_BIT without GL_MAP_WRITE_BIT";
+  else if (size_t(offset) > b->data.size() || size_t(length) > b->data.size() - size_t(offset))
+    problem = "offset + length is past the buffer's end";
+  else if (b->mapped) error = GL_INVALID_OPERATION, problem = "the buffer is already mapped";
+  if (problem) {
+    ctx.record_error(error, problem);
+    return nullptr;
+  }
+  const bool read = access & GL_MAP_READ_BIT, write = access & GL_MAP_WRITE_BIT;
+  b->access = read && write ? GL_READ_WRITE : read ? GL_READ_ONLY : GL_WRITE_ONLY;
+  b->map(size_t(offset), size_t(length), access);
+  return b->data.data() + offset;
+}
+
+void FlushMappedBufferRange(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr length) {
+  if (!binding(ctx, target)) return;
+  BufferObject* b = bound_buffer(ctx, target);
+  if (!b) return;
+  if (offset < 0 || length < 0) return ctx.record_error(GL_INVALID_VALUE, "offset or length is negative");
+  if (!b->mapped) return ctx.record_error(GL_INVALID_OPERATION, "the buffer is not mapped");
+  if (!(b->access_flags & GL_MAP_FLUSH_EXPLICIT_BIT))
+    return ctx.record_error(GL_INVALID_OPERATION, "the buffer is not mapped with GL_MAP_FLUSH_EXPLICIT_BIT");
+  if (size_t(offset) > b->map_length || size_t(length) > b->map_length - size_t(offset))
+    return ctx.record_error(GL_INVALID_VALUE, "offset + length is past the mapped range");
+  // Writes through the mapping are in the store already.
 }
 
 GLboolean UnmapBuffer(Context& ctx, GLenum target) {
@@ -158,20 +208,29 @@ GLboolean UnmapBuffer(Context& ctx, GLenum target) {
     ctx.record_error(GL_INVALID_OPERATION, "the buffer is not mapped");
     return GL_FALSE;
   }
-  b->mapped = false;
+  b->unmap();
   return GL_TRUE;  // the store is never corrupted while mapped
 }
 
 void GetBufferParameteriv(Context& ctx, GLenum target, GLenum pname, GLint* params) {
   if (!binding(ctx, target)) return;
-  if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE && pname != GL_BUFFER_ACCESS && pname != GL_BUFFER_MAPPED)
+  // The mapped range's state: GL 3.0's, which Mesa offers with ARB_map_buffer_range (ES's
+  // EXT_map_buffer_range has no such queries).
+  const bool range = !ctx.es1() && !ctx.es2() &&
+                     (pname == GL_BUFFER_ACCESS_FLAGS || pname == GL_BUFFER_MAP_OFFSET || pname == GL_BUFFER_MAP_LENGTH);
+  if (pname != GL_BUFFER_SIZE && pname != GL_BUFFER_USAGE && pname != GL_BUFFER_ACCESS && pname != GL_BUFFER_MAPPED &&
+      !range)
     return ctx.record_error(GL_INVALID_ENUM, "pname is not a buffer parameter");
   const BufferObject* b = bound_buffer(ctx, target);
   if (!b || !params) return;
+  auto clamped = [](size_t v) { return GLint(std::min<size_t>(v, 0x7fffffff)); };
   switch (pname) {
-    case GL_BUFFER_SIZE: *params = GLint(std::min<size_t>(b->data.size(), 0x7fffffff)); break;
+    case GL_BUFFER_SIZE: *params = clamped(b->data.size()); break;
     case GL_BUFFER_USAGE: *params = GLint(b->usage); break;
     case GL_BUFFER_ACCESS: *params = GLint(b->access); break;
+    case GL_BUFFER_ACCESS_FLAGS: *params = GLint(b->access_flags); break;
+    case GL_BUFFER_MAP_OFFSET: *params = clamped(b->map_offset); break;
+    case GL_BUFFER_MAP_LENGTH: *params = clamped(b->map_length); break;
     default: *params = b->mapped ? GL_TRUE : GL_FALSE; break;
   }
 }
@@ -181,7 +240,7 @@ void GetBufferPointerv(Context& ctx, GLenum target, GLenum pname, void** params)
   if (pname != GL_BUFFER_MAP_POINTER) return ctx.record_error(GL_INVALID_ENUM, "pname is not GL_BUFFER_MAP_POINTER");
   BufferObject* b = bound_buffer(ctx, target);
   if (!b || !params) return;
-  *params = b->mapped ? b->data.data() : nullptr;
+  *params = b->mapped ? b->data.data() + b->map_offset : nullptr;
 }
 
 // The ARB_vertex_buffer_object names.

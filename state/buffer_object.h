@@ -19,6 +19,22 @@ struct BufferObject {
   GLenum usage = GL_STATIC_DRAW;
   GLenum access = GL_READ_WRITE;
   bool mapped = false;
+  // The mapped range (glMapBuffer maps the whole store) and its GL_MAP_*_BIT flags
+  // (GL_ARB_map_buffer_range; GL_BUFFER_ACCESS_FLAGS, GL_BUFFER_MAP_OFFSET, GL_BUFFER_MAP_LENGTH).
+  GLbitfield access_flags = 0;
+  size_t map_offset = 0, map_length = 0;
+
+  void map(size_t offset, size_t length, GLbitfield flags) {
+    mapped = true;
+    map_offset = offset;
+    map_length = length;
+    access_flags = flags;
+  }
+  void unmap() {
+    mapped = false;
+    map_offset = map_length = 0;
+    access_flags = 0;
+  }
 };
 
 struct BufferState {

@@ -55,7 +55,7 @@ TEST_F(Es2Egl, ClientVersion2IsES20) {
   EXPECT_EQ(gl_string(GL_SHADING_LANGUAGE_VERSION), "OpenGL ES GLSL ES 1.00");
   EXPECT_EQ(gl_string(GL_VENDOR), "Pineda");
   EXPECT_EQ(gl_string(GL_EXTENSIONS),
-            "GL_EXT_blend_minmax GL_EXT_discard_framebuffer GL_EXT_draw_buffers GL_EXT_robustness "
+            "GL_EXT_blend_minmax GL_EXT_discard_framebuffer GL_EXT_draw_buffers GL_EXT_map_buffer_range GL_EXT_robustness "
             "GL_EXT_texture_format_BGRA8888 GL_KHR_debug GL_KHR_robustness GL_OES_depth24 GL_OES_depth_texture "
             "GL_OES_element_index_uint GL_OES_fbo_render_mipmap GL_OES_mapbuffer GL_OES_packed_depth_stencil "
             "GL_OES_rgb8_rgba8 GL_OES_standard_derivatives GL_OES_texture_npot GL_OES_vertex_array_object ");

@@ -3,6 +3,8 @@
 // without a program (nothing drawn, no error).
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "tests/es2/es2_context.h"
 
 namespace pineda::es2_test {
@@ -26,6 +28,24 @@ void main() { gl_FragColor = texture2D(u_tex, v_uv) * u_tint; }
 class Es2Draw : public ::testing::Test {
  protected:
   void SetUp() override { ASSERT_TRUE(context.ok()) << context.error(); }
+  // A program of one `color` (GLSL vec4 text) in use, over four client-array vertices at
+  // location 3: (9, 9), then a triangle (-1, -1), (3, -1), (-1, 3) over the whole pbuffer; and
+  // an element buffer of `bytes` bytes bound. False when the program does not build.
+  bool solid_indexed_setup(const std::string& color, GLsizeiptr bytes) {
+    const char* vs = "attribute vec2 a_pos; void main() { gl_Position = vec4(a_pos, 0.0, 1.0); }\n";
+    const std::string fs = "precision mediump float; void main() { gl_FragColor = " + color + "; }\n";
+    const GLuint program = build_program(vs, fs.c_str(), {{"a_pos", 3}});
+    if (program == 0) return false;
+    glUseProgram(program);
+    glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, kPositions);
+    glEnableVertexAttribArray(3);
+    GLuint buffer = 0;
+    glGenBuffers(1, &buffer);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, bytes, nullptr, GL_DYNAMIC_DRAW);
+    return true;
+  }
+  static constexpr float kPositions[] = {9, 9, -1, -1, 3, -1, -1, 3};
   Es2Context context{16, 16};
 };
 
@@ -107,18 +127,7 @@ TEST_F(Es2Draw, NoProgramDrawsNothing) {
 // GL_OES_element_index_uint and GL_OES_mapbuffer: 32-bit indices out of a mapped-then-unmapped
 // element buffer.
 TEST_F(Es2Draw, UintIndicesFromMappedBuffer) {
-  const char* vs = "attribute vec2 a_pos; void main() { gl_Position = vec4(a_pos, 0.0, 1.0); }\n";
-  const char* fs = "precision mediump float; void main() { gl_FragColor = vec4(1.0, 0.0, 1.0, 1.0); }\n";
-  const GLuint program = build_program(vs, fs, {{"a_pos", 3}});
-  ASSERT_NE(program, 0u);
-  glUseProgram(program);
-  const float pos[] = {9, 9, -1, -1, 3, -1, -1, 3};
-  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, pos);
-  glEnableVertexAttribArray(3);
-  GLuint buffer = 0;
-  glGenBuffers(1, &buffer);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(GLuint), nullptr, GL_STATIC_DRAW);
+  ASSERT_TRUE(solid_indexed_setup("vec4(1.0, 0.0, 1.0, 1.0)", 3 * sizeof(GLuint)));
   auto map = reinterpret_cast<PFNGLMAPBUFFEROESPROC>(eglGetProcAddress("glMapBufferOES"));
   auto unmap = reinterpret_cast<PFNGLUNMAPBUFFEROESPROC>(eglGetProcAddress("glUnmapBufferOES"));
   ASSERT_TRUE(map && unmap);
@@ -136,6 +145,36 @@ TEST_F(Es2Draw, UintIndicesFromMappedBuffer) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   EXPECT_EQ(read_pixel(7, 7), 0xFF00FFFFu);
   EXPECT_EQ(read_pixel(15, 0), 0xFF00FFFFu);
+}
+
+// GL_EXT_map_buffer_range: indices written through a mapped range, and its errors.
+TEST_F(Es2Draw, IndicesWrittenThroughAMappedRange) {
+  ASSERT_TRUE(solid_indexed_setup("vec4(0.0, 1.0, 1.0, 1.0)", 6 * sizeof(GLushort)));
+  auto map = reinterpret_cast<PFNGLMAPBUFFERRANGEEXTPROC>(eglGetProcAddress("glMapBufferRangeEXT"));
+  auto flush = reinterpret_cast<PFNGLFLUSHMAPPEDBUFFERRANGEEXTPROC>(eglGetProcAddress("glFlushMappedBufferRangeEXT"));
+  auto unmap = reinterpret_cast<PFNGLUNMAPBUFFEROESPROC>(eglGetProcAddress("glUnmapBufferOES"));
+  ASSERT_TRUE(map && flush && unmap);
+  EXPECT_EQ(map(GL_ELEMENT_ARRAY_BUFFER, 0, 0, GL_MAP_WRITE_BIT_EXT), nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(map(GL_ELEMENT_ARRAY_BUFFER, 4, 10, GL_MAP_WRITE_BIT_EXT), nullptr);  // past the end
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  // Indices 3..5 of the buffer: the second triangle's.
+  auto* indices = static_cast<GLushort*>(map(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(GLushort), 3 * sizeof(GLushort),
+                                             GL_MAP_WRITE_BIT_EXT | GL_MAP_FLUSH_EXPLICIT_BIT_EXT));
+  ASSERT_NE(indices, nullptr);
+  indices[0] = 1;
+  indices[1] = 2;
+  indices[2] = 3;
+  flush(GL_ELEMENT_ARRAY_BUFFER, 0, 3 * sizeof(GLushort));
+  EXPECT_EQ(unmap(GL_ELEMENT_ARRAY_BUFFER), GL_TRUE);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, reinterpret_cast<const void*>(3 * sizeof(GLushort)));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(read_pixel(7, 7), 0x00FFFFFFu);
+  GLint flags = -1;
+  glGetBufferParameteriv(GL_ELEMENT_ARRAY_BUFFER, 0x911F, &flags);  // GL_BUFFER_ACCESS_FLAGS: not ES 2.0's
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
 }
 
 }  // namespace

@@ -284,6 +284,17 @@ void map_buffer(FuzzInput& in, ClientMemory& memory) {
   if (p && size > 0) static_cast<uint8_t*>(p)[size - 1] ^= 1;
 }
 
+// A range inside or around the buffer, with any mix of the access bits and a stray one; what
+// comes back is written at its last byte (the mapped length is what GL says it is).
+void map_buffer_range(FuzzInput& in, ClientMemory&) {
+  const GLenum target = in.enumeration(kBufferTargets);
+  const GLbitfield access = static_cast<GLbitfield>(in.integer(0, 0x7f)) | (in.integer(0, 7) == 0 ? 0x100u : 0u);
+  void* p = glMapBufferRange(target, in.integer(-4, 64), in.integer(-4, 80), access);
+  GLint length = 0;
+  glGetBufferParameteriv(target, GL_BUFFER_MAP_LENGTH, &length);
+  if (p && length > 0 && (access & GL_MAP_WRITE_BIT)) static_cast<uint8_t*>(p)[length - 1] ^= 1;
+}
+
 template <auto Call>
 void unmap_buffer(FuzzInput& in, ClientMemory& memory) {
   Call(in.enumeration(kBufferTargets));
@@ -671,6 +682,11 @@ const GlCall kCalls[] = {
     {"glGetBufferSubDataARB", get_buffer_sub_data<glGetBufferSubDataARB>},
     {"glMapBuffer", map_buffer<glMapBuffer>},
     {"glMapBufferARB", map_buffer<glMapBufferARB>},
+    {"glMapBufferRange", map_buffer_range},
+    {"glFlushMappedBufferRange",
+     [](FuzzInput& in, ClientMemory&) {
+       glFlushMappedBufferRange(in.enumeration(kBufferTargets), in.integer(-4, 64), in.integer(-4, 80));
+     }},
     {"glUnmapBuffer", unmap_buffer<glUnmapBuffer>},
     {"glUnmapBufferARB", unmap_buffer<glUnmapBufferARB>},
     {"glDeleteBuffers", delete_buffers<glDeleteBuffers>},
