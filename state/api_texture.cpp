@@ -102,7 +102,8 @@ void unpack_depth_into(Context& ctx, TextureLevelData& level, const TextureForma
           depth_texel(depths[size_t(y + box.border_y) * full_width + x + box.border_x], storage);
 }
 
-// The same for a DEPTH_STENCIL texture: packed DEPTH_STENCIL data of `type`, depth and stencil.
+// The same for packed DEPTH_STENCIL data of `type`: its depth, and its stencil where the texture
+// keeps stencil (a depth format takes the depth alone).
 void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const TextureFormat& storage, const ClientBox& box,
                                GLenum type, const void* pixels) {
   if (!pixels) return;
@@ -110,14 +111,23 @@ void unpack_depth_stencil_into(Context& ctx, TextureLevelData& level, const Text
   std::vector<double> depths;
   std::vector<int64_t> stencils;
   unpack_depth_stencil_image(ctx, full_width, full_height, type, pixels, depths, stencils);
-  level.stencil.resize(level.texels.size(), 0);  // a level made by mipmap generation has none yet
+  if (storage.stencil) level.stencil.resize(level.texels.size(), 0);  // a level made by mipmap generation has none yet
   for (int y = 0; y < box.height; ++y)
     for (int x = 0; x < box.width; ++x) {
       const size_t src = size_t(y + box.border_y) * full_width + x + box.border_x;
       const size_t dst = size_t(box.y + y) * level.width + box.x + x;
       level.texels[dst] = depth_texel(depths[src], storage);
-      level.stencil[dst] = static_cast<uint8_t>(stencils[src] & 0xff);
+      if (storage.stencil) level.stencil[dst] = static_cast<uint8_t>(stencils[src] & 0xff);
     }
+}
+
+// Client pixels of `format` into a level: depth data (DEPTH_COMPONENT into the depth of a depth or
+// depth-stencil level, whose stencil stays; DEPTH_STENCIL into either) or colour data.
+void unpack_texels(Context& ctx, TextureLevelData& level, const TextureFormat& storage, const ClientBox& box,
+                   GLenum format, GLenum type, const void* pixels) {
+  if (format == GL_DEPTH_STENCIL) unpack_depth_stencil_into(ctx, level, storage, box, type, pixels);
+  else if (format == GL_DEPTH_COMPONENT) unpack_depth_into(ctx, level, storage, box, type, pixels);
+  else unpack_into(ctx, level, storage, box, format, type, pixels);
 }
 
 bool valid_depth_use(Context& ctx, const TextureFormat& storage, TexTarget kind, GLenum format) {
@@ -163,12 +173,7 @@ void tex_image(Context& ctx, GLenum target_enum, int dims, GLint level, GLint in
   l = std::move(image);
   const ClientBox box{0, 0, 0, inner_w, inner_h, inner_d, border, dims >= 2 ? border : 0, dims == 3 ? border : 0,
                       dims == 3};
-  if (storage.stencil)
-    unpack_depth_stencil_into(ctx, l, storage, box, type, pixels);
-  else if (storage.depth)
-    unpack_depth_into(ctx, l, storage, box, type, pixels);
-  else
-    unpack_into(ctx, l, storage, box, format, type, pixels);
+  unpack_texels(ctx, l, storage, box, format, type, pixels);
   tex.level_changed(level, target.face);
 }
 
@@ -194,12 +199,7 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   const bool volume = target.kind == TexTarget::T3D;
   if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, volume, format, type))) return;
   const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, volume};
-  if (storage.stencil)
-    unpack_depth_stencil_into(ctx, l, storage, box, type, pixels);
-  else if (storage.depth)
-    unpack_depth_into(ctx, l, storage, box, type, pixels);
-  else
-    unpack_into(ctx, l, storage, box, format, type, pixels);
+  unpack_texels(ctx, l, storage, box, format, type, pixels);
   // The last draw's state still holds the images it sampled (each draw takes them again): let
   // them go, so that an image no queued draw holds is changed in place.
   for (raster::TextureUnit& unit : ctx.draw_state.texture_units) unit.image.reset();

@@ -105,7 +105,9 @@ GlError pixel_rect_format_type_error(GLenum format, GLenum type) {
 GlError texture_image_format_type_error(GLenum format, GLenum type) {
   if (GlError error; packed_depth_stencil_pixels(format, type, error)) return error;
   if (const GlError error = pixel_rect_format_type_error(format, type); error != GL_NO_ERROR) return error;
-  if (format == GL_STENCIL_INDEX) return {GL_INVALID_ENUM, "format GL_STENCIL_INDEX is not a texture format"};
+  // A pixel format, but no texture format takes stencil indices alone: they never agree (Mesa's
+  // INVALID_OPERATION, texture_formats_agree).
+  if (format == GL_STENCIL_INDEX) return {GL_INVALID_OPERATION, "no texture format takes GL_STENCIL_INDEX data"};
   return GL_NO_ERROR;
 }
 

@@ -17,11 +17,9 @@ bool depth_target(TexTarget kind) { return kind == TexTarget::T1D || kind == Tex
 }  // namespace
 
 bool depth_use_allowed(const TextureFormat& storage, TexTarget kind, GLenum format) {
-  // DEPTH_STENCIL data for DEPTH_STENCIL formats only, and the other way round (as Mesa).
-  if (storage.stencil || format == GL_DEPTH_STENCIL)
-    return storage.stencil && format == GL_DEPTH_STENCIL && depth_target(kind);
-  const bool depth = storage.depth > 0;
-  return depth == (format == GL_DEPTH_COMPONENT) && (!depth || depth_target(kind));
+  const bool depth_storage = storage.depth > 0 || storage.stencil;
+  const bool depth_data = format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL;
+  return depth_storage == depth_data && (!depth_storage || depth_target(kind));
 }
 
 GlError tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,

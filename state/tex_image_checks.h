@@ -16,8 +16,11 @@ namespace pineda {
 GlError tex_image_error(GLenum target, int dims, GLint level, GLint internal_format, GLsizei width, GLsizei height,
                        GLsizei depth, GLint border, GLenum format, GLenum type);
 
-// GL 1.4 3.8.1: depth data only for depth formats and the other way round; depth formats on
-// 1D and 2D textures only (Mesa's INVALID_OPERATION for both).
+// GL 3.3 3.8.3: depth or depth-stencil data (DEPTH_COMPONENT, DEPTH_STENCIL) only for depth or
+// depth-stencil formats and the other way round, either for either (a depth format takes the
+// depth of DEPTH_STENCIL data; a DEPTH_STENCIL format takes DEPTH_COMPONENT data into its depth,
+// as Mesa's texture_formats_agree); depth formats on 1D, 2D and rectangle textures only (Mesa's
+// INVALID_OPERATION for both).
 bool depth_use_allowed(const TextureFormat& storage, TexTarget kind, GLenum format);
 
 // False when a glTexSubImage*D with these arguments fails whatever texture is bound: then it

@@ -207,7 +207,10 @@ TEST_F(DepthBufferFloatTest, PixelErrors) {
   glBindTexture(GL_TEXTURE_2D, tex);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  // DEPTH_COMPONENT data goes into a depth-stencil format's depth (GL 3.3 3.8.3, as Mesa).
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 1, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, v);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH32F_STENCIL8, 1, 1, 0, GL_RGBA, GL_FLOAT, v);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glDeleteTextures(1, &tex);
   // No stencil buffer: no DEPTH_STENCIL pixels.

@@ -26,15 +26,51 @@ TEST_F(DepthStencilTextureTest, ImageRoundTrip) {
   glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &sub);
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
   EXPECT_EQ(out[3], sub);
-  // DEPTH_STENCIL data for DEPTH_STENCIL formats only, and the other way round.
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 2, 2, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  // Depth or depth-stencil data for depth or depth-stencil formats only, and the other way round
+  // (GL 3.3 3.8.3, as Mesa); stencil indices for no texture format.
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 2, 2, 0, GL_RGBA, GL_FLOAT, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT16, 2, 2, 0, GL_STENCIL_INDEX, GL_INT, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, 2, 2, 0, GL_DEPTH_STENCIL, GL_FLOAT, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, out);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glDeleteTextures(1, &tex);
+}
+
+// A depth-stencil format takes DEPTH_COMPONENT data into its depth (its stencil stays), a depth
+// format the depth of DEPTH_STENCIL data.
+TEST_F(DepthStencilTextureTest, DepthDataIntoDepthStencilAndTheOtherWayRound) {
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  const GLfloat depths[2] = {0.0f, 1.0f};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 2, 1, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLuint out[2] = {1, 1};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
+  EXPECT_EQ(out[0], 0x00000000u);
+  EXPECT_EQ(out[1], 0xffffff00u);  // stencil 0
+  const GLuint packed = 0x80000042u;
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &packed);
+  const GLfloat one = 1.0f;
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
+  EXPECT_EQ(out[0], 0xffffff42u);  // the new depth, the stencil kept
+
+  const GLuint in[2] = {0xffffff11u, 0x00000022u};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 2, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, in);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLuint depth_out[2] = {1, 1};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depth_out);
+  EXPECT_EQ(depth_out[0], 0xffffffffu);  // the depths alone
+  EXPECT_EQ(depth_out[1], 0u);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   glDeleteTextures(1, &tex);
 }
 
