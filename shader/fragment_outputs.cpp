@@ -3,6 +3,9 @@
 #include <map>
 #include <string>
 
+#include "shader/compile_error.h"
+#include "shader/function_definitions.h"
+
 namespace pineda::shader {
 namespace {
 
@@ -67,29 +70,18 @@ class OutputWrites : public glslang::TIntermTraverser {
   const std::map<std::string, glslang::TIntermAggregate*>& functions_;
 };
 
-// The function definitions at the top of the tree, by glslang's (mangled) name.
-std::map<std::string, glslang::TIntermAggregate*> function_definitions(TIntermNode* root) {
-  std::map<std::string, glslang::TIntermAggregate*> out;
-  glslang::TIntermAggregate* top = root ? root->getAsAggregate() : nullptr;
-  if (!top) return out;
-  for (TIntermNode* n : top->getSequence())
-    if (glslang::TIntermAggregate* f = n ? n->getAsAggregate() : nullptr; f && f->getOp() == glslang::EOpFunction)
-      out[f->getName().c_str()] = f;
-  return out;
-}
-
 }  // namespace
 
 bool fragment_outputs_ok(const glslang::TIntermediate* tree, std::string& log) {
   if (!tree || !tree->getTreeRoot() || tree->getStage() != EShLangFragment) return true;
-  const auto functions = function_definitions(tree->getTreeRoot());
+  std::map<std::string, glslang::TIntermAggregate*> functions;  // by glslang's (mangled) name
+  for (glslang::TIntermAggregate* f : function_definitions(tree->getTreeRoot())) functions[f->getName().c_str()] = f;
   OutputWrites writes(functions);
   tree->getTreeRoot()->traverse(&writes);
   if (!writes.color || !writes.data) return true;
   const glslang::TSourceLoc& later = writes.color->line > writes.data->line ? *writes.color : *writes.data;
-  log += "ERROR: " + std::to_string(later.string) + ":" + std::to_string(later.line) +
-         ": 'gl_FragColor' : a fragment shader may assign to gl_FragColor or to gl_FragData, not to both\n"
-         "ERROR: 1 compilation errors.  No code generated.\n\n\n";
+  log += compile_error(later.string, later.line, "gl_FragColor",
+                       "a fragment shader may assign to gl_FragColor or to gl_FragData, not to both");
   return false;
 }
 

@@ -4,6 +4,7 @@
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
 
+#include "shader/compile_error.h"
 #include "shader/es_draw_buffers.h"
 #include "shader/fragment_outputs.h"
 #include "shader/function_rules.h"
@@ -86,16 +87,16 @@ std::unique_ptr<glslang::TShader> parse(const CompiledShader& shader, std::strin
   // Desktop GL takes GLSL ES 1.00 too (GL_ARB_ES2_compatibility, as Mesa).
   const bool supported = (tree_es && version == 100) || (!es && !tree_es && (version == 110 || version == 120));
   if (!supported) {
-    log += "ERROR: 0:1: '#version' : version " + std::to_string(version) + (tree_es ? " es" : "") +
-           " is not supported here (" + (es ? "GLSL ES 1.00 only" : "GLSL 1.10, 1.20 and ES 1.00 only") + ")\n"
-           "ERROR: 1 compilation errors.  No code generated.\n\n\n";
+    log += compile_error(0, 1, "#version",
+                         "version " + std::to_string(version) + (tree_es ? " es" : "") + " is not supported here (" +
+                             (es ? "GLSL ES 1.00 only" : "GLSL 1.10, 1.20 and ES 1.00 only") + ")");
     return nullptr;
   }
   const int depth = tree_depth(tree->getTreeRoot());
   if (depth > kMaxTreeDepth) {
-    log += "ERROR: 0:0: '' : expressions and statements nested too deeply (" + std::to_string(depth) +
-           " levels, at most " + std::to_string(kMaxTreeDepth) + ")\n"
-           "ERROR: 1 compilation errors.  No code generated.\n\n\n";
+    log += compile_error(0, 0, "",
+                         "expressions and statements nested too deeply (" + std::to_string(depth) + " levels, at most " +
+                             std::to_string(kMaxTreeDepth) + ")");
     return nullptr;
   }
   if (!fragment_outputs_ok(tree, log) || !function_rules_ok(tree, log)) return nullptr;

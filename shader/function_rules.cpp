@@ -1,13 +1,16 @@
 #include "shader/function_rules.h"
 
+#include "shader/compile_error.h"
+#include "shader/function_definitions.h"
+
 namespace pineda::shader {
 namespace {
 
-std::string error_line(const glslang::TSourceLoc& loc, const std::string& what, const std::string& why) {
-  return "ERROR: " + std::to_string(loc.string) + ":" + std::to_string(loc.line) + ": '" + what + "' : " + why + "\n";
+std::string error_line(const glslang::TSourceLoc& loc, const std::string& what, const char* why) {
+  return compile_error(loc.string, loc.line, what, why);
 }
 
-// The first broken rule of definition `f`, as a log line; empty when it keeps them all.
+// The first broken rule of definition `f`, as its error; empty when it keeps them all.
 std::string broken_rule(glslang::TIntermAggregate* f, bool desktop110) {
   const std::string name(f->getName().c_str(), f->getName().find('('));
   if (f->getType().containsSampler())
@@ -30,15 +33,12 @@ std::string broken_rule(glslang::TIntermAggregate* f, bool desktop110) {
 }  // namespace
 
 bool function_rules_ok(const glslang::TIntermediate* tree, std::string& log) {
-  glslang::TIntermAggregate* top = tree && tree->getTreeRoot() ? tree->getTreeRoot()->getAsAggregate() : nullptr;
-  if (!top) return true;
+  if (!tree) return true;
   const bool desktop110 = tree->getProfile() != EEsProfile && tree->getVersion() == 110;
-  for (TIntermNode* n : top->getSequence()) {
-    glslang::TIntermAggregate* f = n ? n->getAsAggregate() : nullptr;
-    if (!f || f->getOp() != glslang::EOpFunction) continue;
+  for (glslang::TIntermAggregate* f : function_definitions(tree->getTreeRoot())) {
     const std::string error = broken_rule(f, desktop110);
     if (error.empty()) continue;
-    log += error + "ERROR: 1 compilation errors.  No code generated.\n\n\n";
+    log += error;
     return false;
   }
   return true;
