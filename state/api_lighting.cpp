@@ -112,7 +112,7 @@ template <typename T>
 void to_floats(GLenum pname, const T* params, GLfloat out[4], bool colour) {
   const int n = param_count(pname);
   for (int i = 0; i < n; ++i)
-    out[i] = colour ? GLfloat((2.0 * params[i] + 1.0) / 4294967295.0) : GLfloat(params[i]);
+    out[i] = colour ? colour_from_int_param(params[i]) : GLfloat(params[i]);
 }
 
 bool is_colour_param(GLenum pname) {

@@ -136,7 +136,7 @@ void TexEnviv(Context& ctx, GLenum target, GLenum pname, const GLint* params) {
   if (!params) return;
   GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
   if (pname == GL_TEXTURE_ENV_COLOR)
-    for (int i = 0; i < 4; ++i) v[i] = GLfloat((2.0 * params[i] + 1.0) / 4294967295.0);
+    for (int i = 0; i < 4; ++i) v[i] = colour_from_int_param(params[i]);
   tex_env(ctx, target, pname, v);
 }
 

@@ -17,6 +17,7 @@
 #include "state/tex_image_checks.h"
 #include "state/texture_format.h"
 #include "state/texture_rectangle.h"
+#include "state/textures/sampling_params.h"
 
 namespace pineda::gl {
 namespace {
@@ -212,33 +213,15 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   const GLenum e = enum_from_float(v[0]);
   if (tex.target == GL_TEXTURE_RECTANGLE_ARB)
     if (const GlError error = rectangle_parameter_error(pname, v[0]); error != GL_NO_ERROR) return error;
+  if (is_sampling_param(pname)) {
+    if (const GlError error = set_sampling_param(p, pname, v); error != GL_NO_ERROR) return error;
+    tex.changed();
+    return GL_NO_ERROR;
+  }
   switch (pname) {
-    case GL_TEXTURE_MIN_FILTER:
-      if (e != GL_NEAREST && e != GL_LINEAR && e != GL_NEAREST_MIPMAP_NEAREST && e != GL_LINEAR_MIPMAP_NEAREST &&
-          e != GL_NEAREST_MIPMAP_LINEAR && e != GL_LINEAR_MIPMAP_LINEAR)
-        return {GL_INVALID_ENUM, "param is not a minifying filter"};
-      p.min_filter = e;
-      break;
-    case GL_TEXTURE_MAG_FILTER:
-      if (e != GL_NEAREST && e != GL_LINEAR) return {GL_INVALID_ENUM, "param is not GL_NEAREST or GL_LINEAR"};
-      p.mag_filter = e;
-      break;
-    case GL_TEXTURE_WRAP_S:
-    case GL_TEXTURE_WRAP_T:
-    case GL_TEXTURE_WRAP_R:
-      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE && e != GL_CLAMP_TO_BORDER && e != GL_MIRRORED_REPEAT)
-        return {GL_INVALID_ENUM, "param is not a wrap mode"};
-      (pname == GL_TEXTURE_WRAP_S ? p.wrap_s : pname == GL_TEXTURE_WRAP_T ? p.wrap_t : p.wrap_r) = e;
-      break;
-    case GL_TEXTURE_BORDER_COLOR:
-      for (int i = 0; i < 4; ++i) p.border_color[i] = std::clamp(v[i], 0.f, 1.f);
-      break;
     case GL_TEXTURE_PRIORITY:
       p.priority = std::clamp(v[0], 0.f, 1.f);
       return GL_NO_ERROR;
-    case GL_TEXTURE_MIN_LOD: p.min_lod = v[0]; break;
-    case GL_TEXTURE_MAX_LOD: p.max_lod = v[0]; break;
-    case GL_TEXTURE_LOD_BIAS: p.lod_bias = v[0]; break;
     case GL_TEXTURE_BASE_LEVEL:
     case GL_TEXTURE_MAX_LEVEL: {
       if (!(v[0] >= 0.f)) return {GL_INVALID_VALUE, "the level is negative"};  // or NaN
@@ -255,17 +238,6 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
         return {GL_INVALID_ENUM, "param is not GL_LUMINANCE, GL_INTENSITY or GL_ALPHA"};
       p.depth_mode = e;
       break;
-    case GL_TEXTURE_COMPARE_MODE:
-      if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE)
-        return {GL_INVALID_ENUM, "param is not GL_NONE or GL_COMPARE_R_TO_TEXTURE"};
-      p.compare_mode = e;
-      break;
-    case GL_TEXTURE_COMPARE_FUNC: {
-      raster::CompareFunc f;
-      if (!to_compare_func(e, f)) return {GL_INVALID_ENUM, "param is not a comparison function"};
-      p.compare_func = e;
-      break;
-    }
     case GL_TEXTURE_CROP_RECT_OES:  // only glDrawTex reads it: the sampled image is unchanged
       for (int i = 0; i < 4; ++i)  // integers, as the extension keeps them; NaN becomes 0
         p.crop_rect[i] = std::isnan(v[i]) ? 0 : GLint(std::clamp(v[i], -2147483648.f, 2147483520.f));
@@ -299,30 +271,16 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
   TextureObject* tex = bound_texture(ctx, target);
   if (!tex || !known_pname(ctx, pname)) return false;
   const TexParams& p = tex->params;
+  if (get_sampling_param(p, pname, out, count, colour)) return true;
   count = 1;
   colour = false;
   switch (pname) {
-    case GL_TEXTURE_MIN_FILTER: out[0] = float(p.min_filter); return true;
-    case GL_TEXTURE_MAG_FILTER: out[0] = float(p.mag_filter); return true;
-    case GL_TEXTURE_WRAP_S: out[0] = float(p.wrap_s); return true;
-    case GL_TEXTURE_WRAP_T: out[0] = float(p.wrap_t); return true;
-    case GL_TEXTURE_WRAP_R: out[0] = float(p.wrap_r); return true;
     case GL_TEXTURE_PRIORITY: out[0] = p.priority; colour = true; return true;
     case GL_TEXTURE_RESIDENT: out[0] = 1.f; return true;
-    case GL_TEXTURE_MIN_LOD: out[0] = p.min_lod; return true;
-    case GL_TEXTURE_MAX_LOD: out[0] = p.max_lod; return true;
-    case GL_TEXTURE_LOD_BIAS: out[0] = p.lod_bias; return true;
     case GL_TEXTURE_BASE_LEVEL: out[0] = float(p.base_level); return true;
     case GL_TEXTURE_MAX_LEVEL: out[0] = float(p.max_level); return true;
     case GL_GENERATE_MIPMAP: out[0] = p.generate_mipmap ? 1.f : 0.f; return true;
     case GL_DEPTH_TEXTURE_MODE: out[0] = float(p.depth_mode); return true;
-    case GL_TEXTURE_COMPARE_MODE: out[0] = float(p.compare_mode); return true;
-    case GL_TEXTURE_COMPARE_FUNC: out[0] = float(p.compare_func); return true;
-    case GL_TEXTURE_BORDER_COLOR:
-      std::copy(p.border_color, p.border_color + 4, out);
-      count = 4;
-      colour = true;
-      return true;
     case GL_TEXTURE_CROP_RECT_OES:
       std::copy(p.crop_rect, p.crop_rect + 4, out);
       count = 4;
@@ -512,7 +470,7 @@ void TexParameteriv(Context& ctx, GLenum target, GLenum pname, const GLint* para
   if (!params) return;
   GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
   if (pname == GL_TEXTURE_BORDER_COLOR)  // integer colours map [-2^31, 2^31-1] onto [-1, 1]
-    for (int i = 0; i < 4; ++i) v[i] = GLfloat((2.0 * params[i] + 1.0) / 4294967295.0);
+    for (int i = 0; i < 4; ++i) v[i] = colour_from_int_param(params[i]);
   if (pname == GL_TEXTURE_CROP_RECT_OES)
     for (int i = 0; i < 4; ++i) v[i] = GLfloat(params[i]);
   tex_parameter(ctx, target, pname, v);

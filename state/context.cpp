@@ -29,6 +29,7 @@ Context::Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> shar
     : share_group_(joined(share ? std::move(share) : std::make_shared<ShareGroup>())),
       debug(attribs.debug, print_errors_from_environment()),
       textures(share_group_->textures),
+      samplers(share_group_->samplers),
       lists(share_group_->lists),
       attribs_(attribs), renderer_(std::make_unique<raster::Renderer>(attribs.threads)) {
   for (auto& stack : texture_matrix) stack.max_depth = 10;
@@ -65,7 +66,7 @@ void Context::release_current() {
   renderer_->flush();
   draw_ = read_ = nullptr;
   renderer_->set_framebuffer(raster::Framebuffer{});
-  renderer_pixels_.clear();
+  renderer_storage_.clear();
 }
 
 void Context::drawable_changed() { bind_framebuffer(); }

@@ -92,6 +92,9 @@ struct TextureUnitState {
   bool enabled_rect = false;
   GLuint bound_rect = 0;
   TexEnvState env;
+  // The sampler object bound to the unit (glBindSampler), or none.
+  std::shared_ptr<SamplerObject> sampler;
+  GLuint sampler_name = 0;
   float current_texcoord[4] = {0, 0, 0, 1};
   ClientArray texcoord_array;
 };
@@ -256,6 +259,7 @@ class Context {
   // texture coordinates) of the first raster::kMaxTextureUnits only.
   std::array<TextureUnitState, raster::kMaxTextureImageUnits> texture_units;
   TextureNamespace& textures;  // the share group's
+  SamplerNames& samplers;  // the share group's
 
   GLenum draw_buffer = GL_BACK, read_buffer = GL_BACK;
   ExtraDrawBuffers extra_draw_buffers{};  // DRAW_BUFFER1.. (glDrawBuffers), GL_NONE by default
@@ -297,10 +301,10 @@ class Context {
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;
   uint64_t errors_recorded_ = 0;
-  // The renderbuffer pixels that the renderer's framebuffer points into, alive until it no
-  // longer does (another context may respecify or delete the renderbuffers meanwhile). Before
-  // renderer_: a scene still running when the context goes writes them.
-  std::vector<std::shared_ptr<const RenderbufferPixels>> renderer_pixels_;
+  // The storage that the renderer's framebuffer points into (Drawable::kept_storage), alive
+  // until it no longer does (another context may respecify or delete the renderbuffers and
+  // textures meanwhile). Before renderer_: a scene still running when the context goes writes it.
+  std::vector<std::shared_ptr<const void>> renderer_storage_;
   std::unique_ptr<raster::Renderer> renderer_;
   Drawable* draw_ = nullptr;
   Drawable* read_ = nullptr;

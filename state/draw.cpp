@@ -59,9 +59,10 @@ int snapshot_textures(Context& ctx) {
     }
     if (!tex) continue;
     resolve_if_rendered(ctx, *tex);  // a feedback loop samples what was rendered before this draw
-    out.image = tex->snapshot();
+    const TexParams* sampling = unit.sampler ? &unit.sampler->params : nullptr;
+    out.image = tex->snapshot(sampling);
     if (!out.image) continue;
-    out.sampler = tex->sampler();
+    out.sampler = tex->sampler(sampling);
     out.sampler.lod_bias =
         std::clamp(out.sampler.lod_bias + unit.env.lod_bias, -kMaxTextureLodBias, kMaxTextureLodBias);
     out.env_mode = raster_env_mode(unit.env);

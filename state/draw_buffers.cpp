@@ -107,7 +107,7 @@ void Context::bind_framebuffer(bool always) {
   // Binding the same buffers again would only flush the queued rendering.
   if (always || !same_buffers(fb, renderer_->framebuffer())) {
     renderer_->set_framebuffer(fb);
-    renderer_pixels_ = d ? d->renderbuffer_pixels : decltype(renderer_pixels_){};
+    renderer_storage_ = d ? d->kept_storage : decltype(renderer_storage_){};
   }
 }
 
@@ -118,7 +118,7 @@ void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer
   fb.color = color;
   fb.color_index = draw_buffer;
   renderer_->set_framebuffer(fb);
-  renderer_pixels_ = draw_drawable()->renderbuffer_pixels;
+  renderer_storage_ = draw_drawable()->kept_storage;
 }
 
 void Context::render_to_draw_buffers(const std::function<void()>& render) {

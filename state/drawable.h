@@ -8,8 +8,6 @@
 
 namespace pineda {
 
-struct RenderbufferPixels;
-
 struct Drawable {
   raster::Framebuffer framebuffer;
   int red_bits = 8, green_bits = 8, blue_bits = 8, alpha_bits = 8;
@@ -27,8 +25,9 @@ struct Drawable {
   // has shown the front buffer (glFlush shows front-buffer drawing, as in Mesa).
   bool front_drawn = false;
 
-  // A framebuffer object's view: the pixels of the renderbuffers it points into.
-  std::vector<std::shared_ptr<const RenderbufferPixels>> renderbuffer_pixels;
+  // A framebuffer object's view: the storage it points into (renderbuffer pixels, texture
+  // levels), kept alive while the view or the renderer uses it.
+  std::vector<std::shared_ptr<const void>> kept_storage;
 
   const raster::ColorBuffer& front_color() const { return front.base ? front : framebuffer.color; }
 };

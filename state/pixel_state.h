@@ -30,6 +30,10 @@ inline GLint colour_int_param(double v) {
   return std::isnan(v) ? 0 : static_cast<GLint>(std::clamp(v, -1.0, 1.0) * 2147483647.0);
 }
 
+// The reverse, for a colour given as integers (glLightiv, glTexEnviv, glTexParameteriv...):
+// the GLint range maps linearly onto [-1, 1] (GL 1.1 2.13 table 2.6).
+inline GLfloat colour_from_int_param(GLint v) { return static_cast<GLfloat>((2.0 * v + 1.0) / 4294967295.0); }
+
 // GL_CURRENT_RASTER_*: saved with GL_CURRENT_BIT.
 struct RasterPosition {
   float window[4] = {0, 0, 0, 1};  // x, y, z in window coordinates; w is the clip w

@@ -1,7 +1,7 @@
 // The objects that contexts created with a share list (glXCreateContext's shareList,
 // eglCreateContext's share_context, OSMesa's sharelist) hold in common: textures (the
 // default ones too, as Mesa), buffer objects, display lists, shader and program objects,
-// renderbuffers. Queries and framebuffer objects stay per context.
+// renderbuffers, sampler objects. Queries and framebuffer objects stay per context.
 #pragma once
 #include <atomic>
 #include <memory>
@@ -12,6 +12,7 @@
 #include "state/framebuffers/renderbuffer.h"
 #include "state/programs/program_objects.h"
 #include "state/texture_object.h"
+#include "state/textures/sampler_object.h"
 
 namespace pineda {
 
@@ -21,6 +22,7 @@ struct ShareGroup {
   DisplayLists lists;
   ShaderProgramNames programs;
   RenderbufferNames renderbuffers;
+  SamplerNames samplers;
 
   // Contexts of a group may run on different threads: while the group has more than one
   // member, every GL call holds this lock (glapi/), so calls on shared objects never race.

@@ -6,6 +6,7 @@
 #include "state/enum_translate.h"
 #include "state/texture_format.h"
 #include "state/texture_rectangle.h"
+#include "state/textures/sampling_params.h"
 
 namespace pineda {
 namespace {
@@ -32,6 +33,13 @@ raster::TexWrap to_raster_wrap(GLenum w) {
 }
 
 bool uses_mipmaps(GLenum min_filter) { return min_filter != GL_NEAREST && min_filter != GL_LINEAR; }
+
+// A rectangle texture sampled through a sampler object: complete only without mipmap filters
+// and repeating wrap modes (the values glTexParameter refuses for it).
+bool rectangle_sampling(const TexParams& sampling) {
+  const auto clamps = [](GLenum wrap) { return wrap != GL_REPEAT && wrap != GL_MIRRORED_REPEAT; };
+  return !uses_mipmaps(sampling.min_filter) && clamps(sampling.wrap_s) && clamps(sampling.wrap_t);
+}
 
 // The rounded average of n texels per channel.
 template <size_t n>
@@ -116,7 +124,8 @@ size_t complete_levels(const std::vector<TextureLevelData>& levels, size_t base,
 
 }  // namespace
 
-raster::Sampler TextureObject::sampler() const {
+raster::Sampler TextureObject::sampler(const TexParams* sampling) const {
+  const TexParams params = sampling ? with_sampling_params(this->params, *sampling) : this->params;
   raster::Sampler s;
   s.min_filter = to_raster_filter(params.min_filter);
   s.mag_filter = to_raster_filter(params.mag_filter);
@@ -143,12 +152,28 @@ raster::Sampler TextureObject::sampler() const {
 // each face is and the faces' base levels are square, of one size and one internal format
 // (GL 1.3 3.8.10, "cube complete"). The snapshot's level 0 is the base level; a cube map level
 // holds the six faces as slices.
-std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
-  if (snapshot_valid_) return snapshot_;
-  snapshot_valid_ = true;
-  snapshot_.reset();
+std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexParams* sampling) {
+  if (!sampling || uses_mipmaps(sampling->min_filter) == uses_mipmaps(params.min_filter)) {
+    if (!snapshot_valid_) {
+      snapshot_ = build_snapshot(params.min_filter);
+      snapshot_valid_ = true;
+    }
+    if (!sampling || target != GL_TEXTURE_RECTANGLE_ARB || rectangle_sampling(*sampling)) return snapshot_;
+    return nullptr;
+  }
+  // A sampler object's minification filter decides completeness on its own (ARB_sampler_objects).
+  if (target == GL_TEXTURE_RECTANGLE_ARB && !rectangle_sampling(*sampling)) return nullptr;
+  if (!other_snapshot_valid_) {
+    other_snapshot_ = build_snapshot(sampling->min_filter);
+    other_snapshot_valid_ = true;
+  }
+  return other_snapshot_;
+}
+
+std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(GLenum min_filter) const {
   // Immutable storage: the levels in use clamped into its levels, whatever glPopAttrib restored.
   TexParams params = this->params;
+  params.min_filter = min_filter;
   params.base_level = clamped_level_param(GL_TEXTURE_BASE_LEVEL, params.base_level);
   params.max_level = clamped_level_param(GL_TEXTURE_MAX_LEVEL, params.max_level);
   const size_t base = size_t(params.base_level);
@@ -185,12 +210,11 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot() {
     out.texel_coords = kind == raster::TexKind::Rect;
     out.texels.reserve(size_t(out.width) * out.height * out.depth);
     for (int f = 0; f < faces; ++f) {
-      const std::vector<uint32_t>& texels = face_levels(f)[base + l].texels;
+      const SharedTexels<uint32_t>& texels = face_levels(f)[base + l].texels;
       out.texels.insert(out.texels.end(), texels.begin(), texels.end());
     }
   }
-  snapshot_ = std::move(image);
-  return snapshot_;
+  return image;
 }
 
 void TextureObject::level_changed(int level, int face) {
@@ -204,6 +228,8 @@ void TextureObject::box_changed(int level, int face, const TexelBox& box) {
     snapshot_.reset();
     snapshot_valid_ = false;
   }
+  other_snapshot_.reset();
+  other_snapshot_valid_ = false;
   ++version;
 }
 
@@ -219,7 +245,7 @@ bool TextureObject::patch_snapshot(int level, int face, const TexelBox& box) {
   for (int z = 0; z < box.depth; ++z)
     for (int y = 0; y < box.height; ++y) {
       const size_t at = (size_t(box.z + z) * size_t(in.height) + size_t(box.y + y)) * size_t(in.width) + size_t(box.x);
-      std::copy_n(in.texels.begin() + ptrdiff_t(at), box.width,
+      std::copy_n(in.texels.begin() + at, box.width,
                   out.texels.begin() + ptrdiff_t(face_texels * size_t(face) + at));
     }
   return true;

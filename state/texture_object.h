@@ -11,6 +11,7 @@
 
 #include "raster/texture.h"
 #include "state/texture_target.h"
+#include "state/textures/shared_texels.h"
 
 namespace pineda {
 
@@ -18,8 +19,8 @@ struct TextureLevelData {
   GLint width = 0, height = 0, depth = 1, border = 0;  // without the border
   GLint internal_format = 0;  // as the application gave it (for glGetTexLevelParameter)
   raster::TexBaseFormat base = raster::TexBaseFormat::RGBA;  // what `texels` were reduced to
-  std::vector<uint32_t> texels;
-  std::vector<uint8_t> stencil;  // a DEPTH_STENCIL level's stencil indices, beside the depth texels
+  SharedTexels<uint32_t> texels;
+  SharedTexels<uint8_t> stencil;  // a DEPTH_STENCIL level's stencil indices, beside the depth texels
 };
 
 // What glTexParameter sets; glPushAttrib(GL_TEXTURE_BIT) saves it whole.
@@ -48,12 +49,17 @@ struct TextureObject {
     return face == 0 ? levels : other_faces[face - 1];
   }
 
-  // The image the sampler reads, or null when the texture is incomplete.
-  std::shared_ptr<const raster::TextureImage> snapshot();
-  raster::Sampler sampler() const;
+  // The image the sampler reads, or null when the texture is incomplete; `sampling`: the
+  // parameters of a sampler object bound to the unit, which replace the texture's sampling
+  // parameters (textures/sampling_params.h), its minification filter in the completeness rules
+  // too.
+  std::shared_ptr<const raster::TextureImage> snapshot(const TexParams* sampling = nullptr);
+  raster::Sampler sampler(const TexParams* sampling = nullptr) const;
   void changed() {
     snapshot_.reset();
     snapshot_valid_ = false;
+    other_snapshot_.reset();
+    other_snapshot_valid_ = false;
     ++version;
   }
   // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
@@ -83,8 +89,13 @@ struct TextureObject {
   // Copies `box` of `level` into the snapshot; false when there is none to patch.
   bool patch_snapshot(int level, int face, const TexelBox& box);
 
-  std::shared_ptr<raster::TextureImage> snapshot_;
-  bool snapshot_valid_ = false;
+  // The snapshot for the minification filter `min_filter` (its completeness rules).
+  std::shared_ptr<raster::TextureImage> build_snapshot(GLenum min_filter) const;
+
+  // For the texture's own minification filter, and for a sampler object's that needs mipmaps
+  // where the texture's does not, or the reverse.
+  std::shared_ptr<raster::TextureImage> snapshot_, other_snapshot_;
+  bool snapshot_valid_ = false, other_snapshot_valid_ = false;
 };
 
 class TextureNamespace {

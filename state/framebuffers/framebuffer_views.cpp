@@ -82,7 +82,12 @@ void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buf
   for (const Attachment& a : fb.attachments) {
     int w = 0, h = 0;
     if (a.type == GL_NONE || !image_size(ctx, a, w, h)) continue;
-    if (a.type == GL_RENDERBUFFER) view.renderbuffer_pixels.push_back(a.renderbuffer->pixels);
+    if (a.type == GL_RENDERBUFFER) view.kept_storage.push_back(a.renderbuffer->pixels);
+    if (a.type == GL_TEXTURE) {  // (a depth texture renders into the attachment's copy instead)
+      const TextureLevelData* level = attached_level(ctx, a);
+      view.kept_storage.push_back(level->texels.owner());
+      if (!level->stencil.empty()) view.kept_storage.push_back(level->stencil.owner());
+    }
     out.width = std::min(out.width, w);
     out.height = std::min(out.height, h);
     out.samples = std::max(attachment_samples(a), 1);  // the same for all: the framebuffer is complete

@@ -14,7 +14,7 @@ namespace pineda {
 
 // A renderbuffer's pixels, held apart from the object: another context of the group may
 // respecify or delete the renderbuffer while rendering that this context queued still writes
-// the old pixels, which the views and the context keep alive until then (Drawable).
+// the old pixels, which the views and the context keep alive until then (Drawable::kept_storage).
 struct RenderbufferPixels {
   std::vector<uint32_t> color;  // RGBA8, R in the lowest byte, bottom row first
   std::vector<uint32_t> depth;

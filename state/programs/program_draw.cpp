@@ -46,9 +46,11 @@ void snapshot_sampler_textures(Context& ctx, const shader::Program& program, con
       if (index < 0 || index >= raster::kMaxTextureImageUnits) continue;
       raster::TextureUnit& out = state.texture_units[index];
       TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[index], target), binding_enum(target));
-      out.image = tex.snapshot();
+      const SamplerObject* sampler = ctx.texture_units[index].sampler.get();
+      const TexParams* sampling = sampler ? &sampler->params : nullptr;
+      out.image = tex.snapshot(sampling);
       if (!out.image) continue;
-      out.sampler = tex.sampler();
+      out.sampler = tex.sampler(sampling);
       out.sampler.lod_bias = std::clamp(out.sampler.lod_bias + ctx.texture_units[index].env.lod_bias,
                                         -kMaxTextureLodBias, kMaxTextureLodBias);
     }

@@ -577,6 +577,33 @@ const GlCall kCalls[] = {
        glTexParameterfv(in.enumeration(kBindTargets), in.enumeration(kTexParamNames),
                         reinterpret_cast<const GLfloat*>(memory.arrays.data() + in.offset(64) * 4));
      }},
+    // GL_ARB_sampler_objects: names live and stale, units in and past the range.
+    {"glGenSamplers",
+     [](FuzzInput& in, ClientMemory&) {
+       GLuint names[2] = {};
+       glGenSamplers(in.integer(-1, 2), names);
+     }},
+    {"glDeleteSamplers",
+     [](FuzzInput& in, ClientMemory&) {
+       const GLuint names[2] = {in.name(), in.name()};
+       glDeleteSamplers(in.integer(-1, 2), names);
+     }},
+    {"glBindSampler", [](FuzzInput& in, ClientMemory&) { glBindSampler(GLuint(in.integer(-1, 9)), in.name()); }},
+    {"glSamplerParameteri",
+     [](FuzzInput& in, ClientMemory&) {
+       const GLint value = in.boolean() ? GLint(in.enumeration(kTexParamValues)) : in.integer(-2, 16);
+       glSamplerParameteri(in.name(), in.enumeration(kTexParamNames), value);
+     }},
+    {"glSamplerParameterfv",
+     [](FuzzInput& in, ClientMemory& memory) {
+       glSamplerParameterfv(in.name(), in.enumeration(kTexParamNames),
+                            reinterpret_cast<const GLfloat*>(memory.arrays.data() + in.offset(64) * 4));
+     }},
+    {"glGetSamplerParameteriv",
+     [](FuzzInput& in, ClientMemory&) {
+       GLint values[4] = {};
+       glGetSamplerParameteriv(in.name(), in.enumeration(kTexParamNames), values);
+     }},
     {"glTexEnvi",
      [](FuzzInput& in, ClientMemory&) {
        glTexEnvi(in.enumeration({GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL}), in.enumeration(kTexEnvNames),
