@@ -1,5 +1,5 @@
 // Vertex buffer objects (GL 1.5, GL_ARB_vertex_buffer_object): names, data, mapping (also of a
-// range: GL_ARB_map_buffer_range, ES's GL_EXT_map_buffer_range), queries.
+// range: GL_ARB_map_buffer_range, ES's GL_EXT_map_buffer_range), copies (GL_ARB_copy_buffer), queries.
 #include <algorithm>
 #include <cstring>
 
@@ -16,6 +16,8 @@ std::shared_ptr<BufferObject>* binding(Context& ctx, GLenum target) {
     case GL_ELEMENT_ARRAY_BUFFER: return &ctx.buffers.element_array;
     case GL_PIXEL_PACK_BUFFER: if (!ctx.es1()) return &ctx.pack.buffer; break;
     case GL_PIXEL_UNPACK_BUFFER: if (!ctx.es1()) return &ctx.unpack.buffer; break;
+    case GL_COPY_READ_BUFFER: if (!ctx.es1() && !ctx.es2()) return &ctx.buffers.copy_read; break;
+    case GL_COPY_WRITE_BUFFER: if (!ctx.es1() && !ctx.es2()) return &ctx.buffers.copy_write; break;
     default: break;
   }
   ctx.record_error(GL_INVALID_ENUM, "target is not a buffer target");
@@ -62,6 +64,8 @@ void unbind_everywhere(Context& ctx, GLuint name) {
   };
   drop(ctx.buffers.array);
   drop(ctx.buffers.element_array);
+  drop(ctx.buffers.copy_read);
+  drop(ctx.buffers.copy_write);
   drop(ctx.pack.buffer);
   drop(ctx.unpack.buffer);
   for (ClientArray* a : {&ctx.vertex_array, &ctx.color_array, &ctx.normal_array, &ctx.edge_flag_array,
@@ -128,6 +132,30 @@ void BufferData(Context& ctx, GLenum target, GLsizeiptr size, const void* data, 
 void BufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size, const void* data) {
   BufferObject* b = sub_data_buffer(ctx, target, offset, size);
   if (b && data && size > 0) std::memcpy(b->data.data() + offset, data, size_t(size));
+}
+
+// GL_ARB_copy_buffer (GL 3.1 2.9.5), its errors checked in Mesa's order: a buffer bound to
+// both targets, neither mapped, then the ranges.
+void CopyBufferSubData(Context& ctx, GLenum readTarget, GLenum writeTarget, GLintptr readOffset, GLintptr writeOffset,
+                       GLsizeiptr size) {
+  std::shared_ptr<BufferObject>* read_slot = binding(ctx, readTarget);
+  if (!read_slot) return;
+  std::shared_ptr<BufferObject>* write_slot = binding(ctx, writeTarget);
+  if (!write_slot) return;
+  BufferObject* from = read_slot->get();
+  BufferObject* to = write_slot->get();
+  if (!from || !to) return ctx.record_error(GL_INVALID_OPERATION, "no buffer is bound to readTarget or writeTarget");
+  if (from->mapped || to->mapped) return ctx.record_error(GL_INVALID_OPERATION, "the source or destination is mapped");
+  if (readOffset < 0 || writeOffset < 0 || size < 0)
+    return ctx.record_error(GL_INVALID_VALUE, "readOffset, writeOffset or size is negative");
+  const auto count = size_t(size), read_at = size_t(readOffset), write_at = size_t(writeOffset);
+  if (read_at > from->data.size() || count > from->data.size() - read_at)
+    return ctx.record_error(GL_INVALID_VALUE, "the source range reaches past the read buffer's end");
+  if (write_at > to->data.size() || count > to->data.size() - write_at)
+    return ctx.record_error(GL_INVALID_VALUE, "the destination range reaches past the write buffer's end");
+  if (from == to && read_at < write_at + count && write_at < read_at + count)
+    return ctx.record_error(GL_INVALID_VALUE, "the source and destination ranges of one buffer overlap");
+  if (count) std::memmove(to->data.data() + write_at, from->data.data() + read_at, count);
 }
 
 void GetBufferSubData(Context& ctx, GLenum target, GLintptr offset, GLsizeiptr size, void* data) {

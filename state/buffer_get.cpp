@@ -15,6 +15,11 @@ bool query_buffer_binding(const Context& ctx, GLenum pname, GLuint& name) {
       if (ctx.es1()) return false;
       name = buffer_name(pname == GL_PIXEL_PACK_BUFFER_BINDING ? ctx.pack.buffer : ctx.unpack.buffer);
       return true;
+    case GL_COPY_READ_BUFFER_BINDING:
+    case GL_COPY_WRITE_BUFFER_BINDING:
+      if (ctx.es1() || ctx.es2()) return false;
+      name = buffer_name(pname == GL_COPY_READ_BUFFER_BINDING ? ctx.buffers.copy_read : ctx.buffers.copy_write);
+      return true;
     case GL_INDEX_ARRAY_BUFFER_BINDING: array = &ctx.index_array; break;
     case GL_VERTEX_ARRAY_BUFFER_BINDING: array = &ctx.vertex_array; break;
     case GL_NORMAL_ARRAY_BUFFER_BINDING: array = &ctx.normal_array; break;

@@ -41,6 +41,8 @@ struct BufferState {
   explicit BufferState(ObjectNames<BufferObject>& shared_names) : names(shared_names) {}
   ObjectNames<BufferObject>& names;  // the share group's
   std::shared_ptr<BufferObject> array, element_array;  // GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER
+  // GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER (GL_ARB_copy_buffer): bound for copies alone.
+  std::shared_ptr<BufferObject> copy_read, copy_write;
 };
 
 // The `size` bytes at `offset` in the buffer's store, or null when they are not all inside it.

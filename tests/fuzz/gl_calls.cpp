@@ -124,7 +124,8 @@ constexpr GLenum kGetNames[] = {
     GL_ACCUM_CLEAR_VALUE, GL_DEPTH_RANGE,             GL_SCISSOR_BOX,      GL_COLOR_WRITEMASK,
     GL_VERTEX_ARRAY_BINDING};
 // No element array buffer: see glBindBuffer. Pixel calls take offsets into pixel buffers (image_source).
-constexpr GLenum kBufferTargets[] = {GL_ARRAY_BUFFER, GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER};
+constexpr GLenum kBufferTargets[] = {GL_ARRAY_BUFFER, GL_PIXEL_PACK_BUFFER, GL_PIXEL_UNPACK_BUFFER,
+                                     GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER};
 constexpr GLenum kBufferUsages[] = {GL_STATIC_DRAW, GL_DYNAMIC_DRAW, GL_STREAM_READ};
 
 // Vertex indices of a draw, all within what the client arrays hold.
@@ -576,6 +577,11 @@ const GlCall kCalls[] = {
      [](FuzzInput& in, ClientMemory& memory) {
        glTexParameterfv(in.enumeration(kBindTargets), in.enumeration(kTexParamNames),
                         reinterpret_cast<const GLfloat*>(memory.arrays.data() + in.offset(64) * 4));
+     }},
+    {"glCopyBufferSubData",
+     [](FuzzInput& in, ClientMemory&) {
+       glCopyBufferSubData(in.enumeration(kBufferTargets), in.enumeration(kBufferTargets), in.integer(-4, 64),
+                           in.integer(-4, 64), in.integer(-4, 80));
      }},
     // GL_ARB_sampler_objects: names live and stale, units in and past the range.
     {"glGenSamplers",
