@@ -153,27 +153,34 @@ raster::Sampler TextureObject::sampler(const TexParams* sampling) const {
 // (GL 1.3 3.8.10, "cube complete"). The snapshot's level 0 is the base level; a cube map level
 // holds the six faces as slices.
 std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexParams* sampling) {
-  if (!sampling || uses_mipmaps(sampling->min_filter) == uses_mipmaps(params.min_filter)) {
+  if (sampling && target == GL_TEXTURE_RECTANGLE_ARB && !rectangle_sampling(*sampling)) return nullptr;
+  const SnapshotKey own = snapshot_key(params);
+  if (!sampling || snapshot_key(*sampling) == own) {
     if (!snapshot_valid_) {
-      snapshot_ = build_snapshot(params.min_filter);
+      snapshot_ = build_snapshot(own);
       snapshot_valid_ = true;
     }
-    if (!sampling || target != GL_TEXTURE_RECTANGLE_ARB || rectangle_sampling(*sampling)) return snapshot_;
-    return nullptr;
+    return snapshot_;
   }
-  // A sampler object's minification filter decides completeness on its own (ARB_sampler_objects).
-  if (target == GL_TEXTURE_RECTANGLE_ARB && !rectangle_sampling(*sampling)) return nullptr;
-  if (!other_snapshot_valid_) {
-    other_snapshot_ = build_snapshot(sampling->min_filter);
+  // A sampler object's minification filter decides completeness on its own (ARB_sampler_objects),
+  // its sRGB decoding what the levels hold.
+  const SnapshotKey key = snapshot_key(*sampling);
+  if (!other_snapshot_valid_ || other_snapshot_key_ != key) {
+    other_snapshot_ = build_snapshot(key);
+    other_snapshot_key_ = key;
     other_snapshot_valid_ = true;
   }
   return other_snapshot_;
 }
 
-std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(GLenum min_filter) const {
+TextureObject::SnapshotKey TextureObject::snapshot_key(const TexParams& sampling) {
+  return {uses_mipmaps(sampling.min_filter), sampling.srgb_decode == GL_DECODE_EXT};
+}
+
+std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(SnapshotKey key) const {
   // Immutable storage: the levels in use clamped into its levels, whatever glPopAttrib restored.
   TexParams params = this->params;
-  params.min_filter = min_filter;
+  params.min_filter = key.mipmapped ? GL_NEAREST_MIPMAP_NEAREST : GL_NEAREST;
   params.base_level = clamped_level_param(GL_TEXTURE_BASE_LEVEL, params.base_level);
   params.max_level = clamped_level_param(GL_TEXTURE_MAX_LEVEL, params.max_level);
   const size_t base = size_t(params.base_level);
@@ -206,7 +213,7 @@ std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(GLenum min_f
     out.width = in.width;
     out.height = in.height;
     out.depth = faces == 1 ? in.depth : faces;
-    out.srgb = texture_format(in.internal_format).value_or(TextureFormat{}).srgb;
+    out.srgb = key.srgb_decode && texture_format(in.internal_format).value_or(TextureFormat{}).srgb;
     out.texel_coords = kind == raster::TexKind::Rect;
     out.texels.reserve(size_t(out.width) * out.height * out.depth);
     for (int f = 0; f < faces; ++f) {

@@ -34,6 +34,7 @@ struct TexParams {
   bool generate_mipmap = false;
   // GL 1.4 depth textures and shadow comparison
   GLenum depth_mode = GL_LUMINANCE, compare_mode = GL_NONE, compare_func = GL_LEQUAL;
+  GLenum srgb_decode = GL_DECODE_EXT;  // EXT_texture_sRGB_decode: SKIP_DECODE_EXT reads sRGB texels as stored
   GLint crop_rect[4] = {0, 0, 0, 0};  // OES_draw_texture (OpenGL ES 1.1): u, v, width, height
 };
 
@@ -89,12 +90,19 @@ struct TextureObject {
   // Copies `box` of `level` into the snapshot; false when there is none to patch.
   bool patch_snapshot(int level, int face, const TexelBox& box);
 
-  // The snapshot for the minification filter `min_filter` (its completeness rules).
-  std::shared_ptr<raster::TextureImage> build_snapshot(GLenum min_filter) const;
+  // What of the sampling parameters a snapshot depends on: whether the minification filter
+  // needs mipmaps (completeness), and whether sRGB texels are decoded.
+  struct SnapshotKey {
+    bool mipmapped = false, srgb_decode = true;
+    bool operator==(const SnapshotKey&) const = default;
+  };
+  static SnapshotKey snapshot_key(const TexParams& sampling);
+  std::shared_ptr<raster::TextureImage> build_snapshot(SnapshotKey key) const;
 
-  // For the texture's own minification filter, and for a sampler object's that needs mipmaps
-  // where the texture's does not, or the reverse.
+  // For the texture's own sampling parameters, and for the last sampler object's that differ
+  // in the key.
   std::shared_ptr<raster::TextureImage> snapshot_, other_snapshot_;
+  SnapshotKey other_snapshot_key_;
   bool snapshot_valid_ = false, other_snapshot_valid_ = false;
 };
 

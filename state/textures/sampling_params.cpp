@@ -13,6 +13,7 @@ bool is_sampling_param(GLenum pname) {
     case GL_TEXTURE_BORDER_COLOR:
     case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD: case GL_TEXTURE_LOD_BIAS:
     case GL_TEXTURE_COMPARE_MODE: case GL_TEXTURE_COMPARE_FUNC:
+    case GL_TEXTURE_SRGB_DECODE_EXT:
       return true;
     default:
       return false;
@@ -56,6 +57,11 @@ GlError set_sampling_param(TexParams& p, GLenum pname, const GLfloat* v) {
       p.compare_func = e;
       return GL_NO_ERROR;
     }
+    case GL_TEXTURE_SRGB_DECODE_EXT:
+      if (e != GL_DECODE_EXT && e != GL_SKIP_DECODE_EXT)
+        return {GL_INVALID_ENUM, "param is not GL_DECODE_EXT or GL_SKIP_DECODE_EXT"};
+      p.srgb_decode = e;
+      return GL_NO_ERROR;
     default:
       return {GL_INVALID_ENUM, "pname is not a sampling parameter"};
   }
@@ -75,6 +81,7 @@ bool get_sampling_param(const TexParams& p, GLenum pname, float out[4], int& cou
     case GL_TEXTURE_LOD_BIAS: out[0] = p.lod_bias; return true;
     case GL_TEXTURE_COMPARE_MODE: out[0] = float(p.compare_mode); return true;
     case GL_TEXTURE_COMPARE_FUNC: out[0] = float(p.compare_func); return true;
+    case GL_TEXTURE_SRGB_DECODE_EXT: out[0] = float(p.srgb_decode); return true;
     case GL_TEXTURE_BORDER_COLOR:
       std::copy(p.border_color, p.border_color + 4, out);
       count = 4;
@@ -97,6 +104,7 @@ TexParams with_sampling_params(const TexParams& texture, const TexParams& sample
   out.lod_bias = sampler.lod_bias;
   out.compare_mode = sampler.compare_mode;
   out.compare_func = sampler.compare_func;
+  out.srgb_decode = sampler.srgb_decode;
   return out;
 }
 

@@ -1,6 +1,7 @@
 // The sampling parameters: the part of a texture's parameters that a sampler object
 // (GL_ARB_sampler_objects) holds too, set and read by glTexParameter and glSamplerParameter
-// alike: filters, wrap modes, border colour, level-of-detail range and bias, depth comparison.
+// alike: filters, wrap modes, border colour, level-of-detail range and bias, depth comparison,
+// sRGB decoding (EXT_texture_sRGB_decode).
 #pragma once
 #include <GL/gl.h>
 

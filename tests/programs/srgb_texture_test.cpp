@@ -1,7 +1,9 @@
 // sRGB textures (GL 2.1 3.8.15, EXT_texture_sRGB): texels are decoded to linear per texel
 // before filtering, through the same sampler for fixed function and shaders; alpha is not
-// decoded, and glGetTexImage returns the values as stored.
+// decoded, and glGetTexImage returns the values as stored. EXT_texture_sRGB_decode's
+// SKIP_DECODE_EXT, as a texture parameter or a sampler object's, reads them as stored.
 #include <cstring>
+#include <string>
 
 #include "tests/programs/program_test.h"
 
@@ -133,6 +135,40 @@ TEST_F(SrgbTextureTest, ShadersSampleThroughTheSameDecoding) {
   glUniform1f(glGetUniformLocation(p, "s"), 0.5f);
   textured_window();
   EXPECT_EQ(pixel(5, 5), (Rgba{28, 7, 67, 0x40}));  // halves of the linear values; alpha filtered as stored
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(SrgbTextureTest, SkipDecodeReadsTexelsAsStored) {
+  const std::string extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
+  EXPECT_NE(extensions.find("GL_EXT_texture_sRGB_decode "), std::string::npos);
+  const GLubyte texel[4] = {0x80, 0x40, 0xFF, 0x80};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  GLint decode = 0;
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, &decode);
+  EXPECT_EQ(decode, GL_DECODE_EXT);
+  glEnable(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
+  textured_window();
+  EXPECT_EQ(pixel(5, 5), (Rgba{0x80, 0x40, 0xFF, 0x80}));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, GL_LINEAR);  // not a decode mode
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, &decode);
+  EXPECT_EQ(decode, GL_SKIP_DECODE_EXT);
+  // A sampler object's parameter replaces the texture's, either way.
+  GLuint sampler = 0;
+  glGenSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glBindSampler(0, sampler);
+  textured_window();
+  EXPECT_EQ(pixel(5, 5), (Rgba{kLinear80, kLinear40, 255, 0x80}));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_SRGB_DECODE_EXT, GL_DECODE_EXT);
+  glSamplerParameteri(sampler, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
+  textured_window();
+  EXPECT_EQ(pixel(5, 5), (Rgba{0x80, 0x40, 0xFF, 0x80}));
+  glBindSampler(0, 0);
+  textured_window();
+  EXPECT_EQ(pixel(5, 5), (Rgba{kLinear80, kLinear40, 255, 0x80}));
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
