@@ -59,7 +59,7 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   }
   if (d.num_units == 1) {
     const TextureUnit& unit = d.state.texture_units[d.units[0]];
-    const TexBaseFormat format = unit.image->base_format;
+    const TexBaseFormat format = unit.image->texenv_format();
     // (The fill routines' row samplers filter bilinearly.)
     d.modulate_in_lanes = bilinear_first && unit.env_mode == TexEnvMode::Modulate &&
                           (format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB);

@@ -60,7 +60,7 @@ void quad_colors(const DrawRecord& d, const float flat_color[4], const Reference
     for (int i = 0; i < 4; ++i) {
       float frag[4];
       for (int c = 0; c < 4; ++c) frag[c] = static_cast<float>(out[i][c]);
-      apply_tex_env(unit.env_mode, unit.image->base_format, unit.env_color, texel[i], frag);
+      apply_tex_env(unit.env_mode, unit.image->texenv_format(), unit.env_color, texel[i], frag);
       for (int c = 0; c < 4; ++c) out[i][c] = frag[c];
     }
   }

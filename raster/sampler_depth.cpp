@@ -68,6 +68,7 @@ void sample_depth_quad_in(const TextureImage& image, const Sampler& sampler, con
       v = (1 - choice.blend) * v + choice.blend * v1;
     }
     expand(v, image.base_format, out[i]);
+    if (image.depth_swizzle != kIdentitySwizzle) swizzle_rgba(image.depth_swizzle, out[i]);
   }
 }
 

@@ -72,7 +72,7 @@ void apply_unit_env(const TextureUnit& unit, int index, const PixelTexels& texel
     apply_tex_combine(unit.combine, index, unit.env_color, texels, primary, color);
     return;
   }
-  apply_tex_env(unit.env_mode, unit.image->base_format, unit.env_color, texels.unit[index], color);
+  apply_tex_env(unit.env_mode, unit.image->texenv_format(), unit.env_color, texels.unit[index], color);
 }
 
 }  // namespace pineda::raster

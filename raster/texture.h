@@ -3,9 +3,11 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "raster/compare_func.h"
+#include "raster/texture_swizzle.h"
 
 namespace pineda::raster {
 
@@ -39,6 +41,12 @@ struct TextureImage {
   // For a depth texture (`depth`) the texels are float depths in [0, 1] and the base format
   // (Luminance, Intensity or Alpha: DEPTH_TEXTURE_MODE) says where the sampled value goes.
   TexBaseFormat base_format = TexBaseFormat::RGBA;
+  // A colour texture with a swizzle (texture_swizzle.h) has it applied to its texels already:
+  // they are RGBA (base_format) and env_format keeps the base format that the texture
+  // environment applies. A depth texture's swizzle follows DEPTH_TEXTURE_MODE in its sampler.
+  std::optional<TexBaseFormat> env_format;
+  TexSwizzle depth_swizzle = kIdentitySwizzle;
+  TexBaseFormat texenv_format() const { return env_format.value_or(base_format); }
   bool depth = false;
   TexKind kind = TexKind::Planar;
   std::vector<TextureLevel> levels;  // level 0 first; a complete chain when mipmapped

@@ -329,7 +329,7 @@ const GLubyte* GetString(Context& ctx, GLenum name) {
       "GL_EXT_packed_depth_stencil GL_ARB_depth_buffer_float "
       "GL_ARB_shader_objects GL_ARB_vertex_shader GL_ARB_fragment_shader GL_ARB_shading_language_100 "
       "GL_ARB_pixel_buffer_object GL_EXT_pixel_buffer_object GL_ARB_vertex_array_object GL_ARB_map_buffer_range GL_ARB_sampler_objects GL_ARB_copy_buffer "
-      "GL_EXT_texture_sRGB GL_EXT_texture_sRGB_decode GL_ARB_robustness GL_KHR_robustness GL_ARB_ES2_compatibility ";  // a trailing space, as Mesa (programs split on it)
+      "GL_EXT_texture_sRGB GL_EXT_texture_sRGB_decode GL_EXT_texture_swizzle GL_ARB_texture_swizzle GL_ARB_robustness GL_KHR_robustness GL_ARB_ES2_compatibility ";  // a trailing space, as Mesa (programs split on it)
   switch (name) {
     case GL_VENDOR: return reinterpret_cast<const GLubyte*>(kVendor.c_str());
     case GL_RENDERER: return reinterpret_cast<const GLubyte*>(kRenderer.c_str());

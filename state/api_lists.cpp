@@ -117,7 +117,7 @@ size_t list_param_count(GLenum pname) {
     case GL_AMBIENT: case GL_DIFFUSE: case GL_SPECULAR: case GL_POSITION: case GL_EMISSION:
     case GL_AMBIENT_AND_DIFFUSE: case GL_LIGHT_MODEL_AMBIENT: case GL_TEXTURE_BORDER_COLOR:
     case GL_TEXTURE_ENV_COLOR: case GL_FOG_COLOR: case GL_OBJECT_PLANE: case GL_EYE_PLANE:
-    case GL_TEXTURE_CROP_RECT_OES:
+    case GL_TEXTURE_CROP_RECT_OES: case GL_TEXTURE_SWIZZLE_RGBA:
       return 4;
     case GL_SPOT_DIRECTION: case GL_COLOR_INDEXES: case GL_POINT_DISTANCE_ATTENUATION: return 3;
     default: return 1;

@@ -207,6 +207,10 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   tex.box_changed(level, target.face, {xoffset, yoffset, zoffset, width, height, depth});
 }
 
+bool swizzle_source(GLenum e) {
+  return e == GL_RED || e == GL_GREEN || e == GL_BLUE || e == GL_ALPHA || e == GL_ZERO || e == GL_ONE;
+}
+
 // Sets one parameter; returns the error the spec names for a bad one.
 GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   TexParams& p = tex.params;
@@ -238,6 +242,19 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
         return {GL_INVALID_ENUM, "param is not GL_LUMINANCE, GL_INTENSITY or GL_ALPHA"};
       p.depth_mode = e;
       break;
+    case GL_TEXTURE_SWIZZLE_R:
+    case GL_TEXTURE_SWIZZLE_G:
+    case GL_TEXTURE_SWIZZLE_B:
+    case GL_TEXTURE_SWIZZLE_A:
+      if (!swizzle_source(e)) return {GL_INVALID_ENUM, "param is not GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_ZERO or GL_ONE"};
+      p.swizzle[pname - GL_TEXTURE_SWIZZLE_R] = e;
+      break;
+    case GL_TEXTURE_SWIZZLE_RGBA:
+      for (int i = 0; i < 4; ++i)
+        if (!swizzle_source(enum_from_float(v[i])))
+          return {GL_INVALID_ENUM, "a value is not GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_ZERO or GL_ONE"};
+      for (int i = 0; i < 4; ++i) p.swizzle[i] = enum_from_float(v[i]);
+      break;
     case GL_TEXTURE_CROP_RECT_OES:  // only glDrawTex reads it: the sampled image is unchanged
       for (int i = 0; i < 4; ++i)  // integers, as the extension keeps them; NaN becomes 0
         p.crop_rect[i] = std::isnan(v[i]) ? 0 : GLint(std::clamp(v[i], -2147483648.f, 2147483520.f));
@@ -264,7 +281,9 @@ void tex_parameter(Context& ctx, GLenum target, GLenum pname, const GLfloat* v) 
   if (const GlError error = set_tex_parameter(*tex, pname, v); error != GL_NO_ERROR) ctx.record_error(error);
 }
 
-bool is_vector_tex_param(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_CROP_RECT_OES; }
+bool is_vector_tex_param(GLenum pname) {
+  return pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_CROP_RECT_OES || pname == GL_TEXTURE_SWIZZLE_RGBA;
+}
 
 // The values of a texture parameter; `colour` tells whether integer queries map them as colours.
 bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], int& count, bool& colour) {
@@ -283,6 +302,13 @@ bool get_tex_parameter(Context& ctx, GLenum target, GLenum pname, float out[4], 
     case GL_DEPTH_TEXTURE_MODE: out[0] = float(p.depth_mode); return true;
     case GL_TEXTURE_CROP_RECT_OES:
       std::copy(p.crop_rect, p.crop_rect + 4, out);
+      count = 4;
+      return true;
+    case GL_TEXTURE_SWIZZLE_R: case GL_TEXTURE_SWIZZLE_G: case GL_TEXTURE_SWIZZLE_B: case GL_TEXTURE_SWIZZLE_A:
+      out[0] = float(p.swizzle[pname - GL_TEXTURE_SWIZZLE_R]);
+      return true;
+    case GL_TEXTURE_SWIZZLE_RGBA:
+      for (int i = 0; i < 4; ++i) out[i] = float(p.swizzle[i]);
       count = 4;
       return true;
     case GL_TEXTURE_IMMUTABLE_FORMAT: out[0] = tex->immutable_levels > 0 ? 1.f : 0.f; return true;
@@ -471,7 +497,7 @@ void TexParameteriv(Context& ctx, GLenum target, GLenum pname, const GLint* para
   GLfloat v[4] = {GLfloat(params[0]), 0, 0, 0};
   if (pname == GL_TEXTURE_BORDER_COLOR)  // integer colours map [-2^31, 2^31-1] onto [-1, 1]
     for (int i = 0; i < 4; ++i) v[i] = colour_from_int_param(params[i]);
-  if (pname == GL_TEXTURE_CROP_RECT_OES)
+  if (pname == GL_TEXTURE_CROP_RECT_OES || pname == GL_TEXTURE_SWIZZLE_RGBA)
     for (int i = 0; i < 4; ++i) v[i] = GLfloat(params[i]);
   tex_parameter(ctx, target, pname, v);
 }

@@ -1,8 +1,12 @@
 #include "state/texture_object.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <cmath>
 
+#include "raster/srgb.h"
+#include "raster/texture_swizzle.h"
 #include "state/enum_translate.h"
 #include "state/texture_format.h"
 #include "state/texture_rectangle.h"
@@ -33,6 +37,45 @@ raster::TexWrap to_raster_wrap(GLenum w) {
 }
 
 bool uses_mipmaps(GLenum min_filter) { return min_filter != GL_NEAREST && min_filter != GL_LINEAR; }
+
+raster::TexSwizzle raster_swizzle(const GLenum (&swizzle)[4]) {
+  raster::TexSwizzle out{};
+  for (int c = 0; c < 4; ++c) {
+    switch (swizzle[c]) {
+      case GL_RED: out[c] = 0; break;
+      case GL_GREEN: out[c] = 1; break;
+      case GL_BLUE: out[c] = 2; break;
+      case GL_ALPHA: out[c] = 3; break;
+      case GL_ZERO: out[c] = raster::kSwizzleZero; break;
+      default: out[c] = raster::kSwizzleOne; break;
+    }
+  }
+  return out;
+}
+
+// A colour snapshot's texels swizzled in place, so that every sampler reads them as they are;
+// the texture environment keeps the base format. sRGB levels decode R, G and B after the swizzle
+// as before it, unless it moves alpha into them or them into alpha: then they are decoded first,
+// to 8 bits.
+void swizzle_texels(raster::TextureImage& image, const raster::TexSwizzle& swizzle) {
+  const bool mixes_alpha = swizzle[0] == 3 || swizzle[1] == 3 || swizzle[2] == 3 || swizzle[3] < 3;
+  const std::array<float, 256>& decode = raster::srgb_decode_table();
+  for (raster::TextureLevel& level : image.levels) {
+    const bool decode_first = level.srgb && mixes_alpha;
+    for (uint32_t& texel : level.texels) {
+      if (decode_first) {
+        uint32_t linear = texel & 0xff000000u;
+        for (int c = 0; c < 3; ++c)
+          linear |= uint32_t(std::lround(decode[(texel >> (8 * c)) & 0xffu] * 255.f)) << (8 * c);
+        texel = linear;
+      }
+      texel = raster::swizzle_texel(swizzle, texel);
+    }
+    if (decode_first) level.srgb = false;
+  }
+  image.env_format = image.base_format;
+  image.base_format = raster::TexBaseFormat::RGBA;
+}
 
 // A rectangle texture sampled through a sampler object: complete only without mipmap filters
 // and repeating wrap modes (the values glTexParameter refuses for it).
@@ -135,7 +178,12 @@ raster::Sampler TextureObject::sampler(const TexParams* sampling) const {
   // GL 1.5 3.8.8: the border colour is taken as a texel of the texture's internal format.
   std::copy(params.border_color, params.border_color + 4, s.border_color);
   const size_t base = size_t(params.base_level);
-  if (base < levels.size()) reduce_to_base_format(s.border_color, levels[base].base);
+  if (base < levels.size()) {
+    reduce_to_base_format(s.border_color, levels[base].base);
+    // A depth texture's border is a depth: its sampler swizzles what the depth mode makes of it.
+    if (!texture_format(levels[base].internal_format).value_or(TextureFormat{}).depth)
+      raster::swizzle_rgba(raster_swizzle(params.swizzle), s.border_color);
+  }
   // A 1D texture has no t: its one row is read whatever t is (no border above or below).
   if (target == GL_TEXTURE_1D) s.wrap_t = raster::TexWrap::Repeat;
   s.min_lod = params.min_lod;
@@ -221,6 +269,11 @@ std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(SnapshotKey 
       out.texels.insert(out.texels.end(), texels.begin(), texels.end());
     }
   }
+  const raster::TexSwizzle swizzle = raster_swizzle(params.swizzle);
+  if (swizzle != raster::kIdentitySwizzle) {
+    if (image->depth) image->depth_swizzle = swizzle;
+    else swizzle_texels(*image, swizzle);
+  }
   return image;
 }
 
@@ -243,6 +296,7 @@ void TextureObject::box_changed(int level, int face, const TexelBox& box) {
 // Only the context's thread copies snapshot_: held by no one else, no draw can be reading it.
 bool TextureObject::patch_snapshot(int level, int face, const TexelBox& box) {
   if (!snapshot_valid_ || !snapshot_ || snapshot_.use_count() != 1) return false;
+  if (snapshot_->env_format) return false;  // swizzled texels: rebuilt whole
   const int64_t l = int64_t(level) - clamped_level_param(GL_TEXTURE_BASE_LEVEL, params.base_level);  // as snapshot()
   if (l < 0 || l >= int64_t(snapshot_->levels.size())) return false;
   const TextureLevelData& in = face_levels(face)[size_t(level)];

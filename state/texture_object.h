@@ -35,6 +35,7 @@ struct TexParams {
   // GL 1.4 depth textures and shadow comparison
   GLenum depth_mode = GL_LUMINANCE, compare_mode = GL_NONE, compare_func = GL_LEQUAL;
   GLenum srgb_decode = GL_DECODE_EXT;  // EXT_texture_sRGB_decode: SKIP_DECODE_EXT reads sRGB texels as stored
+  GLenum swizzle[4] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};  // EXT_texture_swizzle
   GLint crop_rect[4] = {0, 0, 0, 0};  // OES_draw_texture (OpenGL ES 1.1): u, v, width, height
 };
 

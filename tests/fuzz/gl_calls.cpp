@@ -88,11 +88,13 @@ constexpr GLenum kTexParamNames[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTE
                                      GL_TEXTURE_MAX_LOD,    GL_TEXTURE_BASE_LEVEL,  GL_TEXTURE_MAX_LEVEL,
                                      GL_TEXTURE_LOD_BIAS,   GL_GENERATE_MIPMAP,     GL_TEXTURE_PRIORITY,
                                      GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC,
-                                     GL_TEXTURE_BORDER_COLOR};
+                                     GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_SRGB_DECODE_EXT, GL_TEXTURE_SWIZZLE_R,
+                                     GL_TEXTURE_SWIZZLE_A,  GL_TEXTURE_SWIZZLE_RGBA};
 constexpr GLenum kTexParamValues[] = {GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST_MIPMAP_NEAREST,
                                       GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER,
                                       GL_MIRRORED_REPEAT, GL_TRUE, GL_FALSE, GL_LUMINANCE, GL_INTENSITY,
-                                      GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL, GL_NONE};
+                                      GL_COMPARE_R_TO_TEXTURE, GL_LEQUAL, GL_NONE, GL_SKIP_DECODE_EXT, GL_RED,
+                                      GL_ALPHA, GL_ONE};
 constexpr GLenum kTexEnvNames[] = {GL_TEXTURE_ENV_MODE, GL_COMBINE_RGB,  GL_COMBINE_ALPHA, GL_SOURCE0_RGB,
                                    GL_SOURCE1_ALPHA,    GL_OPERAND0_RGB, GL_OPERAND2_ALPHA, GL_RGB_SCALE,
                                    GL_ALPHA_SCALE,      GL_TEXTURE_ENV_COLOR, GL_TEXTURE_LOD_BIAS};
