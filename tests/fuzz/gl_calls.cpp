@@ -589,12 +589,12 @@ const GlCall kCalls[] = {
     {"glGenSamplers",
      [](FuzzInput& in, ClientMemory&) {
        GLuint names[2] = {};
-       glGenSamplers(in.integer(-1, 2), names);
+       glGenSamplers(in.bounded_size(2), names);
      }},
     {"glDeleteSamplers",
      [](FuzzInput& in, ClientMemory&) {
        const GLuint names[2] = {in.name(), in.name()};
-       glDeleteSamplers(in.integer(-1, 2), names);
+       glDeleteSamplers(in.bounded_size(2), names);
      }},
     {"glBindSampler", [](FuzzInput& in, ClientMemory&) { glBindSampler(GLuint(in.integer(-1, 9)), in.name()); }},
     {"glSamplerParameteri",
