@@ -22,6 +22,13 @@ constexpr size_t kMaxRetainedTextureBytes = size_t{256} << 20;
 constexpr size_t kMaxPlaneChunks = 64;  // 12 MiB of varying planes
 // Below this many binned commands the calling thread does the work alone.
 constexpr size_t kSmallScene = 64;
+// Nor are primitives whose bounding boxes cover fewer pixels than this on average handed to
+// other threads: a primitive binned on one core and rasterized on another crosses between their
+// caches (its PrimSetup, about 560 bytes, one way, and the lines of the scene's storage the other
+// way when it is reused), which on this project's 2-core VM cost more than rasterizing a few
+// pixels: small_tris (1.6 pixels a triangle) took 110-150 ms a frame with two threads against
+// 73 with one.
+constexpr size_t kSharedPixelsPerPrim = 32;
 
 }  // namespace
 
@@ -35,6 +42,7 @@ void Scene::reset(const Framebuffer& fb) {
   draws_.clear();
   prims_.resize(kMaxPrims);
   prim_count_ = 0;
+  bounded_pixels_ = 0;
   clears_.clear();
   bins_.assign(static_cast<size_t>(tiles_x_) * tiles_y_, {});
   touched_tiles_.clear();
@@ -96,6 +104,9 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
       used = true;
     }
   if (!used) return;
+  // (Lines and points cost more per pixel than triangles: wireframe ran faster shared.)
+  const size_t pixels = static_cast<size_t>(r.x1 - r.x0) * static_cast<size_t>(r.y1 - r.y0);
+  bounded_pixels_ += prim.kind == CoverageKind::Triangle ? pixels : std::max(pixels, kSharedPixelsPerPrim);
   if (prim_count_ == prims_.size()) prims_.resize(prims_.size() + kMaxPrims);  // (full() stops binning before)
   PrimSetup& stored = prims_[prim_count_++];
   copy_prim(stored, prim, used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes)));
@@ -165,7 +176,7 @@ void Scene::run_tile(int tile) const {
 
 void Scene::execute(WorkerPool& pool) {
   if (commands_ > 0) {
-    if (commands_ < kSmallScene) {
+    if (!worth_sharing()) {
       for (const int t : touched_tiles_) run_tile(t);
     } else {
       pool.run(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
@@ -176,7 +187,11 @@ void Scene::execute(WorkerPool& pool) {
   if (!draws_.empty()) retain_textures(*draws_.back());
 }
 
-bool Scene::worth_starting(const WorkerPool& pool) const { return commands_ >= kSmallScene && pool.threads() > 1; }
+bool Scene::worth_sharing() const {
+  return commands_ >= kSmallScene && (!clears_.empty() || bounded_pixels_ >= kSharedPixelsPerPrim * prim_count_);
+}
+
+bool Scene::worth_starting(const WorkerPool& pool) const { return worth_sharing() && pool.threads() > 1; }
 
 void Scene::start(WorkerPool& pool) {
   pool.start(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
@@ -198,6 +213,7 @@ void Scene::drop_commands() {
   for (const int t : touched_tiles_) bins_[t].clear();
   touched_tiles_.clear();
   prim_count_ = 0;
+  bounded_pixels_ = 0;
   clears_.clear();
   commands_ = 0;
   retained_images_.clear();

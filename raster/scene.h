@@ -55,6 +55,9 @@ class Scene {
  private:
   static constexpr uint32_t kClearBit = 0x80000000u;
 
+  // Whether the commands are worth spreading over threads: not a small scene, nor one of
+  // primitives too small to be worth moving to another core (scene.cpp).
+  bool worth_sharing() const;
   void run_tile(int tile) const;
   void retain_textures(const DrawRecord& draw);
   // Drops the executed commands and what they kept alive; the draws stay.
@@ -71,6 +74,7 @@ class Scene {
   // its draw uses (a whole PrimSetup is large: copying all of it took a tenth of small triangles).
   std::vector<PrimSetup> prims_;
   size_t prim_count_ = 0;
+  size_t bounded_pixels_ = 0;  // the queued primitives' bounding boxes' pixels, summed
   std::vector<ClearRecord> clears_;
   std::vector<std::vector<uint32_t>> bins_;
   std::vector<int> touched_tiles_;

@@ -5,6 +5,10 @@
 #include <memory>
 #include <random>
 
+#include "raster/draw_record.h"
+#include "raster/scene.h"
+#include "raster/setup.h"
+#include "raster/worker_pool.h"
 #include "tests/raster/test_support.h"
 
 namespace pineda::raster::test {
@@ -128,6 +132,71 @@ void render_many_scenes(Renderer& r, OwnedFramebuffer& fb) {
 }
 
 TEST(Scene, ScenesRunningWhileTheNextBinsGiveIdenticalImages) { expect_same_for_thread_counts(render_many_scenes, 3); }
+
+// Triangles of about two pixels each, in scenes that fill several times over: the binning
+// thread rasterizes them itself (Scene::worth_sharing), with the same result.
+void render_tiny_triangles(Renderer& r, OwnedFramebuffer& fb) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> pos(-1.f, 1.f), unit(0.f, 1.f), tiny(-0.01f, 0.01f);
+  r.set_framebuffer(fb.fb);
+  clear_all(r, 0.3f, 1.0, 0);
+  DrawState s = state_for(kW, kH);
+  s.depth_test = true;
+  s.blend = true;
+  s.blend_state.src_rgb = BlendFactor::SrcAlpha;
+  s.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+  s.stencil_test = true;
+  s.stencil_front.depth_pass = StencilOp::IncrWrap;
+  std::vector<ClipVertex> v;
+  for (int i = 0; i < 5000; ++i) {
+    const float cx = pos(rng), cy = pos(rng), z = unit(rng) * 2 - 1;
+    for (int k = 0; k < 3; ++k)
+      v.push_back(vertex(cx + tiny(rng), cy + tiny(rng), z, 1.f, unit(rng), unit(rng), unit(rng), unit(rng)));
+  }
+  r.draw(s, Primitive::Triangles, v);
+  r.flush();
+}
+
+TEST(Scene, TinyTrianglesGiveIdenticalImages) {
+  OwnedFramebuffer one(kW, kH), two(kW, kH);
+  Renderer r1(1), r2(2);
+  render_tiny_triangles(r1, one);
+  render_tiny_triangles(r2, two);
+  EXPECT_NE(one.color, OwnedFramebuffer(kW, kH).color);
+  EXPECT_EQ(one.color, two.color);
+  EXPECT_EQ(one.depth, two.depth);
+  EXPECT_EQ(one.stencil_buf, two.stencil_buf);
+}
+
+// A scene of 200 triangles with legs of `size` pixels: whether the pool's threads take it.
+bool scene_of_triangles_is_shared(double size) {
+  OwnedFramebuffer fb(256, 256);
+  WorkerPool pool(2);
+  Scene scene;
+  scene.reset(fb.fb);
+  scene.begin_draw(make_draw_record(state_for(256, 256), fb.fb));
+  SetupParams params;
+  params.clip = {0, 0, 256, 256};
+  for (int i = 0; i < 200; ++i) {
+    const double x = 10 + i % 20 * 11, y = 10 + i / 20 * 11;
+    WinVert v[3];
+    const double corners[3][2] = {{x, y}, {x + size, y}, {x, y + size}};
+    for (int k = 0; k < 3; ++k) {
+      v[k].fx = corners[k][0];
+      v[k].fy = corners[k][1];
+      v[k].x = static_cast<int64_t>(v[k].fx * kSubpixelOne);
+      v[k].y = static_cast<int64_t>(v[k].fy * kSubpixelOne);
+    }
+    PrimSetup prim;
+    if (setup_triangle(v[0], v[1], v[2], params, prim)) scene.add_prim(prim);
+  }
+  return scene.worth_starting(pool);
+}
+
+TEST(Scene, OnlyPrimitivesWorthMovingGoToOtherThreads) {
+  EXPECT_FALSE(scene_of_triangles_is_shared(2.0));  // bounding boxes of 3x3 pixels
+  EXPECT_TRUE(scene_of_triangles_is_shared(10.0));  // of 11x11
+}
 
 TEST(Scene, DrawStateAndVerticesAreCopied) {
   OwnedFramebuffer fb(16, 16);
