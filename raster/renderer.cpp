@@ -1,6 +1,7 @@
 #include "raster/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "raster/clear.h"
 #include "raster/draw_record.h"
@@ -12,6 +13,7 @@
 #include "raster/reference_lines_points.h"
 #include "raster/reference_mode.h"
 #include "raster/scene.h"
+#include "raster/small_prim_sharing.h"
 #include "raster/worker_pool.h"
 
 namespace pineda::raster {
@@ -38,6 +40,12 @@ struct Renderer::Impl {
   alignas(64) Scene scene;    // binning
   alignas(64) Scene running;  // executed by the pool's threads while `scene` bins the next commands
   alignas(64) bool running_started = false;  // (the binning thread's: off `running`'s lines)
+  // Scenes of small primitives: which way they go, and when the last one was handed off (a
+  // scene's time runs from the previous hand-off of such a scene to its own; none at first and
+  // after a flush).
+  SmallPrimSharing small_prim_sharing;
+  std::chrono::steady_clock::time_point last_small_hand_off;
+  bool timing_small = false, last_small_shared = false;
   std::vector<PreparedWindow> windows;  // room for a programmable draw's vertices; only grows
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
@@ -116,6 +124,8 @@ void Renderer::for_each_piece(size_t count, size_t grain, const std::function<vo
 
 void Renderer::flush() {
   impl_->finish_running();
+  impl_->timing_small = false;
+  impl_->scene.share_small_prims(impl_->small_prim_sharing.share());
   impl_->scene.execute(impl_->pool);
   impl_->scene.forget_draws();
 }
@@ -126,14 +136,33 @@ void Renderer::flush() {
 void Renderer::submit() {
   Impl& r = *impl_;
   r.finish_running();
+  const bool small = r.pool.threads() > 1 && r.scene.small_prims();
+  const bool share = r.small_prim_sharing.share();
+  const size_t prims = r.scene.prim_count();
+  r.scene.share_small_prims(share);
+  // Runs after the scene is executed or started: the time of its hand-off goes to its way.
+  auto time_small_scene = [&] {
+    if (!small) {
+      r.timing_small = false;
+      return;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (r.timing_small && r.last_small_shared == share)
+      r.small_prim_sharing.record(share, std::chrono::duration<double, std::nano>(now - r.last_small_hand_off).count(), prims);
+    r.last_small_hand_off = now;
+    r.last_small_shared = share;
+    r.timing_small = true;
+  };
   if (!r.scene.worth_starting(r.pool)) {
     r.scene.execute(r.pool);
+    time_small_scene();
     return;
   }
   std::swap(r.scene, r.running);  // the emptied scene bins on, with the current draw
   r.scene.continue_draw(r.running);
   r.running.start(r.pool);
   r.running_started = true;
+  time_small_scene();
 }
 
 }  // namespace pineda::raster

@@ -22,12 +22,9 @@ constexpr size_t kMaxRetainedTextureBytes = size_t{256} << 20;
 constexpr size_t kMaxPlaneChunks = 64;  // 12 MiB of varying planes
 // Below this many binned commands the calling thread does the work alone.
 constexpr size_t kSmallScene = 64;
-// Nor are primitives whose bounding boxes cover fewer pixels than this on average handed to
-// other threads: a primitive binned on one core and rasterized on another crosses between their
-// caches (its PrimSetup, about 560 bytes, one way, and the lines of the scene's storage the other
-// way when it is reused), which on this project's 2-core VM cost more than rasterizing a few
-// pixels: small_tris (1.6 pixels a triangle) took 110-150 ms a frame with two threads against
-// 73 with one.
+// Primitives whose bounding boxes cover fewer pixels than this on average are small
+// (small_prims): handing them to another core may cost more than rasterizing them
+// (small_prim_sharing.h).
 constexpr size_t kSharedPixelsPerPrim = 32;
 
 }  // namespace
@@ -187,9 +184,9 @@ void Scene::execute(WorkerPool& pool) {
   if (!draws_.empty()) retain_textures(*draws_.back());
 }
 
-bool Scene::worth_sharing() const {
-  return commands_ >= kSmallScene && (!clears_.empty() || bounded_pixels_ >= kSharedPixelsPerPrim * prim_count_);
-}
+bool Scene::small_prims() const { return clears_.empty() && bounded_pixels_ < kSharedPixelsPerPrim * prim_count_; }
+
+bool Scene::worth_sharing() const { return commands_ >= kSmallScene && (share_small_prims_ || !small_prims()); }
 
 bool Scene::worth_starting(const WorkerPool& pool) const { return worth_sharing() && pool.threads() > 1; }
 

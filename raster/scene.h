@@ -47,6 +47,12 @@ class Scene {
   // has threads of its own); finish waits for them and empties the scene wholly (the other
   // scene goes on with the current draw: continue_draw). The scene must not move in between.
   bool worth_starting(const WorkerPool& pool) const;
+  // Whether the queued primitives are small (their bounding boxes average under 32 pixels, no
+  // clear among them), and whether such a scene is spread over threads all the same
+  // (small_prim_sharing.h; default: no).
+  bool small_prims() const;
+  void share_small_prims(bool share) { share_small_prims_ = share; }
+  size_t prim_count() const { return prim_count_; }
   void start(WorkerPool& pool);
   void finish(WorkerPool& pool);
   // The current draw of `from`, shared, so that a draw interrupted by a full scene goes on here.
@@ -55,8 +61,8 @@ class Scene {
  private:
   static constexpr uint32_t kClearBit = 0x80000000u;
 
-  // Whether the commands are worth spreading over threads: not a small scene, nor one of
-  // primitives too small to be worth moving to another core (scene.cpp).
+  // Whether the commands are worth spreading over threads: not a small scene, nor one of small
+  // primitives unless told to share them.
   bool worth_sharing() const;
   void run_tile(int tile) const;
   void retain_textures(const DrawRecord& draw);
@@ -75,6 +81,7 @@ class Scene {
   std::vector<PrimSetup> prims_;
   size_t prim_count_ = 0;
   size_t bounded_pixels_ = 0;  // the queued primitives' bounding boxes' pixels, summed
+  bool share_small_prims_ = false;
   std::vector<ClearRecord> clears_;
   std::vector<std::vector<uint32_t>> bins_;
   std::vector<int> touched_tiles_;
