@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "raster/cache_line_vector.h"
 #include "state/context.h"
 #include "state/drawable.h"
 
@@ -48,10 +49,10 @@ struct Surface {
   int width = 0, height = 0;
   bool largest_pbuffer = false;
   EGLint swap_interval = 1;
-  std::vector<uint8_t> color;
-  std::vector<uint8_t> sample_color;  // a multisampled config's 4 colour planes (color is their resolve)
-  std::vector<uint32_t> depth;
-  std::vector<uint8_t> stencil;
+  pineda::raster::CacheLineVector<uint8_t> color;
+  pineda::raster::CacheLineVector<uint8_t> sample_color;  // a multisampled config's 4 colour planes (color is their resolve)
+  pineda::raster::CacheLineVector<uint32_t> depth;
+  pineda::raster::CacheLineVector<uint8_t> stencil;
   pineda::Drawable drawable;
   const ThreadState* bound_thread = nullptr;  // guarded by the registry mutex
   // A window or pixmap surface (X11 platform): its buffers and presentation are GLX's

@@ -10,6 +10,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "raster/cache_line_vector.h"
 #include "state/context.h"
 #include "state/drawable.h"
 
@@ -70,11 +71,11 @@ struct DrawableObject {
   bool allocated = false;
   uint8_t* pixels = nullptr;  // the front buffer
   std::unique_ptr<SharedImage> shm;
-  std::vector<uint8_t> color;
-  std::vector<uint8_t> back;
-  std::vector<uint8_t> sample_color;  // a multisampled config's 4 colour planes (back is their resolve)
-  std::vector<uint32_t> depth;
-  std::vector<uint8_t> stencil;
+  pineda::raster::CacheLineVector<uint8_t> color;
+  pineda::raster::CacheLineVector<uint8_t> back;
+  pineda::raster::CacheLineVector<uint8_t> sample_color;  // a multisampled config's 4 colour planes (back is their resolve)
+  pineda::raster::CacheLineVector<uint32_t> depth;
+  pineda::raster::CacheLineVector<uint8_t> stencil;
   pineda::Drawable drawable;
 
   int bindings = 0;  // threads that have it current as draw or read; guarded by the registry

@@ -15,6 +15,7 @@
 
 #include "driver/osmesa_pixels.h"
 #include "glapi/flush_listener.h"
+#include "raster/cache_line_vector.h"
 #include "state/context.h"
 #include "state/drawable.h"
 
@@ -32,9 +33,9 @@ struct osmesa_context final : pineda::glapi::FlushListener {
   // The binding; `user.pixels` is null until the first OSMesaMakeCurrent.
   pineda::osmesa::UserImage user;
   GLint row_length = 0;  // OSMESA_ROW_LENGTH in pixels; 0: the width
-  std::vector<uint8_t> copy;  // RGBA8, for the formats not rendered in place
-  std::vector<uint32_t> depth;
-  std::vector<uint8_t> stencil;
+  pineda::raster::CacheLineVector<uint8_t> copy;  // RGBA8, for the formats not rendered in place
+  pineda::raster::CacheLineVector<uint32_t> depth;
+  pineda::raster::CacheLineVector<uint8_t> stencil;
   pineda::Drawable drawable;
 
   const void* owner = nullptr;  // the thread it is current to; guarded by a mutex

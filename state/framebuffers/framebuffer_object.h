@@ -19,6 +19,7 @@
 #include <set>
 #include <vector>
 
+#include "raster/cache_line_vector.h"
 #include "state/draw_buffer_list.h"
 #include "state/drawable.h"
 #include "state/framebuffers/renderable_format.h"
@@ -44,7 +45,7 @@ struct Attachment {
   bool cube = false;
   GLint layer = 0;  // 3D texture slice
   // A depth texture's depth values as integers of its bits, and the texture version imported.
-  std::vector<uint32_t> depth_copy;
+  raster::CacheLineVector<uint32_t> depth_copy;
   uint64_t depth_copy_version = ~uint64_t{0};
 };
 

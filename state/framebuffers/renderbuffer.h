@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "raster/cache_line_vector.h"
 #include "state/framebuffers/renderable_format.h"
 
 namespace pineda {
@@ -16,9 +17,9 @@ namespace pineda {
 // respecify or delete the renderbuffer while rendering that this context queued still writes
 // the old pixels, which the views and the context keep alive until then (Drawable::kept_storage).
 struct RenderbufferPixels {
-  std::vector<uint32_t> color;  // RGBA8, R in the lowest byte, bottom row first
-  std::vector<uint32_t> depth;
-  std::vector<uint8_t> stencil;
+  raster::CacheLineVector<uint32_t> color;  // RGBA8, R in the lowest byte, bottom row first
+  raster::CacheLineVector<uint32_t> depth;
+  raster::CacheLineVector<uint8_t> stencil;
 };
 
 struct Renderbuffer {

@@ -9,13 +9,15 @@
 #include <memory>
 #include <vector>
 
+#include "raster/cache_line_vector.h"
+
 namespace pineda {
 
 template <typename T>
 class SharedTexels {
  public:
   SharedTexels() = default;
-  SharedTexels(const SharedTexels& other) : v_(other.v_ ? std::make_shared<std::vector<T>>(*other.v_) : nullptr) {}
+  SharedTexels(const SharedTexels& other) : v_(other.v_ ? std::make_shared<raster::CacheLineVector<T>>(*other.v_) : nullptr) {}
   SharedTexels& operator=(const SharedTexels& other) {
     if (this != &other) *this = SharedTexels(other);
     return *this;
@@ -34,9 +36,9 @@ class SharedTexels {
   const T* begin() const { return data(); }
   const T* end() const { return data() + size(); }
 
-  void assign(size_t n, T value) { v_ = std::make_shared<std::vector<T>>(n, value); }
+  void assign(size_t n, T value) { v_ = std::make_shared<raster::CacheLineVector<T>>(n, value); }
   void resize(size_t n, T value = T{}) {
-    auto next = std::make_shared<std::vector<T>>(begin(), begin() + std::min(n, size()));
+    auto next = std::make_shared<raster::CacheLineVector<T>>(begin(), begin() + std::min(n, size()));
     next->resize(n, value);
     v_ = std::move(next);
   }
@@ -45,7 +47,7 @@ class SharedTexels {
   std::shared_ptr<const void> owner() const { return v_; }
 
  private:
-  std::shared_ptr<std::vector<T>> v_;
+  std::shared_ptr<raster::CacheLineVector<T>> v_;
 };
 
 }  // namespace pineda
