@@ -177,7 +177,7 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   const int nv = program.varying_floats();
   float (*varyings)[kLanes] = row.varyings[k];
   const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
-  const bool frag_coord = program.reads_frag_coord();
+  const unsigned frag_coord = program.frag_coord_components();
   alignas(64) float ox[kLanes], oy[kLanes], w[kLanes];
   for (int j = 0; j < 4; ++j) {
     const Quad& q = quads[j < n ? j : 0];  // unused lanes repeat quad 0: derivatives stay finite
@@ -186,6 +186,8 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   }
   static const VaryingInterpolator interpolate = select_varying_interpolator(simd_path_from_environment());
   interpolate(p.varying_planes, nv, p.inv_w, p.perspective, ox, oy, varyings, w);
+  // Only the components the program reads (glmark2's conditionals, function and loop scenes read
+  // gl_FragCoord.xy: the depth's per-lane doubles took half of begin_block there).
   if (frag_coord || point) {
     for (int j = 0; j < 4; ++j) {
       const Quad& q = quads[j < n ? j : 0];
@@ -194,9 +196,11 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
         const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
         block.frag_coord[0][lane] = fx;
         block.frag_coord[1][lane] = fy;
-        double z = p.z0 + p.dzdx * static_cast<double>(q.ox[i]) + p.dzdy * static_cast<double>(q.oy[i]);
-        z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
-        block.frag_coord[2][lane] = static_cast<float>(z / d.depth_max);
+        if (frag_coord & 4u) {
+          double z = p.z0 + p.dzdx * static_cast<double>(q.ox[i]) + p.dzdy * static_cast<double>(q.oy[i]);
+          z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+          block.frag_coord[2][lane] = static_cast<float>(z / d.depth_max);
+        }
         block.frag_coord[3][lane] = w[lane];
         if (point && point[2] > 0.f) {
           block.point_coord[0][lane] = 0.5f + (fx - point[0]) / point[2];

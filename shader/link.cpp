@@ -255,6 +255,9 @@ LinkResult link(const std::vector<const CompiledShader*>& vertex, const std::vec
       }
       (*stage)->prepare();
     }
+  if (linked_program->fragment_)
+    for (const ir::Inst& in : linked_program->fragment_->code.insts)
+      if (in.op == ir::Op::LoadFragCoord && in.i0 >= 0 && in.i0 < 4) linked_program->frag_coord_components_ |= 1u << in.i0;
   const char* dump_env = std::getenv("PINEDA_DUMP_IR");
   if (dump_env && dump_env[0] == '1') std::fprintf(stderr, "%s", dump_ir(*linked_program).c_str());
   result.program = std::move(linked_program);

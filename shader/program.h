@@ -174,6 +174,9 @@ class Program {
   virtual bool broadcasts_color() const = 0;     // writes gl_FragColor: color[0] is every draw buffer's
   virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
   virtual bool reads_frag_coord() const = 0;          // reads("gl_FragCoord"), without the lookup
+  // Bit c set: the optimized fragment stage reads gl_FragCoord's component c (the caller fills
+  // FragmentBlock::frag_coord[c] only for those).
+  virtual unsigned frag_coord_components() const = 0;
   virtual bool reads_point_coord() const = 0;         // reads("gl_PointCoord"), without the lookup
 
   // `uniforms` has uniform_floats() values; `textures` may be null when no sampler is used.

@@ -44,6 +44,7 @@ class CountingProgram final : public shader::Program {
   bool reads(const char*) const override { return false; }
   bool reads_frag_coord() const override { return false; }
   bool reads_point_coord() const override { return false; }
+  unsigned frag_coord_components() const override { return 0; }
   void run_vertices(const float*, const shader::TextureAccess*, shader::VertexBatch&) const override {}
   void run_vertex_batches(const float*, const shader::TextureAccess*, shader::VertexBatch*, int) const override {}
   void run_fragments(const float* u, const shader::TextureAccess* t, shader::FragmentBlock& block) const override {

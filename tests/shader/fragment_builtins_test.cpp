@@ -70,6 +70,18 @@ TEST(FragmentBuiltins, ProgramWithoutFragCoordDoesNotReadIt) {
   EXPECT_FALSE(p->reads("gl_PointCoord"));
 }
 
+TEST(FragmentBuiltins, FragCoordComponentsReadAfterOptimization) {
+  auto xy = link_ok("", "void main() { gl_FragColor = vec4(gl_FragCoord.x * gl_FragCoord.y); }\n");
+  ASSERT_TRUE(xy);
+  EXPECT_EQ(xy->frag_coord_components(), 3u);
+  auto zw = link_ok("", "void main() { vec4 c = gl_FragCoord; gl_FragColor = vec4(c.z, c.w, 0.0, 1.0); }\n");
+  ASSERT_TRUE(zw);
+  EXPECT_EQ(zw->frag_coord_components(), 12u);
+  auto none = link_ok("", "void main() { vec4 c = gl_FragCoord; gl_FragColor = vec4(1.0); }\n");
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->frag_coord_components(), 0u);
+}
+
 TEST(FragmentBuiltins, FragDataAndDepth) {
   auto p = link_ok("", "varying vec4 v;\nvoid main() {\n"
                        "  gl_FragData[0] = v; gl_FragData[2] = v * 2.0;\n"
