@@ -6,10 +6,8 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include <atomic>
-#include <thread>
-
 #include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/other_thread_context.h"
 
 namespace pineda::test {
 namespace {
@@ -138,36 +136,21 @@ TEST(SharedRenderbufferThreadsTest, StorageRespecifiedWhileAnotherContextHasRend
   glBindRenderbuffer(GL_RENDERBUFFER, rb);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 64, 64);
 
-  std::atomic<int> step{0};
-  bool other_ok = false;
   Rgba after{};
   GLenum other_error = GL_NO_ERROR;
-  std::thread other([&] {
-    GlSurface surface({.width = 16, .height = 16, .force_egl = !owner.is_osmesa(), .share = &owner});
-    if (!surface.ok()) {
-      step = 1;
-      return;
-    }
-    other_ok = true;
+  auto queue = [&] {
     framebuffer_of(rb);
     glViewport(0, 0, 64, 64);
     clear_color_to(1, 0, 0);
-    glBegin(GL_TRIANGLES);  // queued, not yet run
-    glVertex2f(-1, -1);
-    glVertex2f(3, -1);
-    glVertex2f(-1, 3);
-    glEnd();
-    step = 1;
-    while (step.load() != 2) std::this_thread::yield();
+    queue_full_triangle();
+  };
+  auto finish = [&] {
     clear_color_to(0, 0, 1);
     after = read_rgba(15, 15);
     other_error = glGetError();
-    surface.release();
-  });
-  while (step.load() != 1) std::this_thread::yield();
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 16, 16);
-  step = 2;
-  other.join();
+  };
+  const bool other_ok = change_while_another_thread_has_queued(
+      owner, queue, [] { glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 16, 16); }, finish);
   ASSERT_TRUE(other_ok);
   EXPECT_EQ(after, (Rgba{0, 0, 255, 255}));
   EXPECT_EQ(other_error, GLenum(GL_NO_ERROR));

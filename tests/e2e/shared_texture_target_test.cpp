@@ -6,12 +6,11 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include <atomic>
 #include <functional>
-#include <thread>
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
+#include "tests/e2e/support/other_thread_context.h"
 
 namespace pineda::test {
 namespace {
@@ -39,15 +38,8 @@ struct OtherThreadResult {
 // triangle into `texture`, lets the owner run `change` meanwhile, then re-attaches the texture,
 // clears it to blue and reads it back.
 OtherThreadResult render_while_changed(const GlSurface& owner, GLuint texture, const std::function<void()>& change) {
-  std::atomic<int> step{0};
   OtherThreadResult result;
-  std::thread other([&] {
-    GlSurface surface({.width = 16, .height = 16, .force_egl = !owner.is_osmesa(), .share = &owner});
-    if (!surface.ok()) {
-      step = 1;
-      return;
-    }
-    result.started = true;
+  auto queue = [&] {
     GLuint fb = 0;
     glGenFramebuffers(1, &fb);
     glBindFramebuffer(GL_FRAMEBUFFER, fb);
@@ -55,24 +47,16 @@ OtherThreadResult render_while_changed(const GlSurface& owner, GLuint texture, c
     glViewport(0, 0, 64, 64);
     glClearColor(1, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    glBegin(GL_TRIANGLES);  // queued, not yet run
-    glVertex2f(-1, -1);
-    glVertex2f(3, -1);
-    glVertex2f(-1, 3);
-    glEnd();
-    step = 1;
-    while (step.load() != 2) std::this_thread::yield();
+    queue_full_triangle();
+  };
+  auto finish = [&] {
     attach_texture(texture);
     glClearColor(0, 0, 1, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     result.after = read_rgba(7, 7);
     result.error_after = glGetError();
-    surface.release();
-  });
-  while (step.load() != 1) std::this_thread::yield();
-  change();
-  step = 2;
-  other.join();
+  };
+  result.started = change_while_another_thread_has_queued(owner, queue, change, finish);
   return result;
 }
 
