@@ -176,12 +176,26 @@ void Scene::execute(WorkerPool& pool) {
     if (!worth_sharing()) {
       for (const int t : touched_tiles_) run_tile(t);
     } else {
+      order_for_threads();
       pool.run(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
     }
   }
   drop_commands();
   if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
   if (!draws_.empty()) retain_textures(*draws_.back());
+}
+
+// Threads take tiles in this order, one after another: the even columns, then the odd ones,
+// so that tiles rendered at the same time are not side by side. Side-by-side tiles share a cache
+// line at each row's edges unless the rows start on lines (an OSMesa buffer the application
+// allocated, a width that is not a multiple of 16 pixels): overdraw at 1000x768, two threads,
+// ran no faster than one. Each tile's commands keep their order, so the image is the same.
+void Scene::order_for_threads() {
+  const int tiles_x = tiles_x_;
+  std::sort(touched_tiles_.begin(), touched_tiles_.end(), [tiles_x](int a, int b) {
+    const int ka = (a % tiles_x & 1) * (1 << 30) + a, kb = (b % tiles_x & 1) * (1 << 30) + b;
+    return ka < kb;
+  });
 }
 
 bool Scene::small_prims() const { return clears_.empty() && bounded_pixels_ < kSharedPixelsPerPrim * prim_count_; }
@@ -191,6 +205,7 @@ bool Scene::worth_sharing() const { return commands_ >= kSmallScene && (share_sm
 bool Scene::worth_starting(const WorkerPool& pool) const { return worth_sharing() && pool.threads() > 1; }
 
 void Scene::start(WorkerPool& pool) {
+  order_for_threads();
   pool.start(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
 }
 

@@ -65,6 +65,7 @@ class Scene {
   // primitives unless told to share them.
   bool worth_sharing() const;
   void run_tile(int tile) const;
+  void order_for_threads();  // of touched_tiles_ (scene.cpp)
   void retain_textures(const DrawRecord& draw);
   // Drops the executed commands and what they kept alive; the draws stay.
   void drop_commands();
