@@ -243,7 +243,6 @@ LinkResult link(const std::vector<const CompiledShader*>& vertex, const std::vec
   linked_program->draw_buffers_ = iface.draw_buffers;
   linked_program->broadcasts_color_ = iface.broadcasts_color;
   linked_program->reads_ = iface.reads;
-  linked_program->reads_frag_coord_ = iface.reads.count("gl_FragCoord") != 0;
   linked_program->reads_point_coord_ = iface.reads.count("gl_PointCoord") != 0;
   for (auto* stage : {&linked_program->vertex_, &linked_program->fragment_})
     if (*stage) {

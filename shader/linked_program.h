@@ -23,7 +23,6 @@ class LinkedProgram final : public Program {
   int draw_buffers_ = 0;
   bool broadcasts_color_ = false;
   std::set<std::string> reads_;
-  bool reads_frag_coord_ = false;
   unsigned frag_coord_components_ = 0;
   bool reads_point_coord_ = false;
   std::optional<StageCode> vertex_;
@@ -41,7 +40,6 @@ class LinkedProgram final : public Program {
   int draw_buffers_written() const override { return draw_buffers_; }
   bool broadcasts_color() const override { return broadcasts_color_; }
   bool reads(const char* builtin) const override { return reads_.count(builtin) != 0; }
-  bool reads_frag_coord() const override { return reads_frag_coord_; }
   unsigned frag_coord_components() const override { return frag_coord_components_; }
   bool reads_point_coord() const override { return reads_point_coord_; }
   void run_vertices(const float* uniforms, const TextureAccess* textures, VertexBatch& batch) const override;

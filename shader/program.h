@@ -173,7 +173,6 @@ class Program {
   virtual int draw_buffers_written() const = 0;  // 1 for gl_FragColor, else highest gl_FragData + 1
   virtual bool broadcasts_color() const = 0;     // writes gl_FragColor: color[0] is every draw buffer's
   virtual bool reads(const char* builtin) const = 0;  // "gl_FragCoord", "gl_FrontFacing", "gl_PointCoord"
-  virtual bool reads_frag_coord() const = 0;          // reads("gl_FragCoord"), without the lookup
   // Bit c set: the optimized fragment stage reads gl_FragCoord's component c (the caller fills
   // FragmentBlock::frag_coord[c] only for those).
   virtual unsigned frag_coord_components() const = 0;

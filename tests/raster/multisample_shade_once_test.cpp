@@ -42,7 +42,6 @@ class CountingProgram final : public shader::Program {
   int draw_buffers_written() const override { return 1; }
   bool broadcasts_color() const override { return true; }
   bool reads(const char*) const override { return false; }
-  bool reads_frag_coord() const override { return false; }
   bool reads_point_coord() const override { return false; }
   unsigned frag_coord_components() const override { return 0; }
   void run_vertices(const float*, const shader::TextureAccess*, shader::VertexBatch&) const override {}
