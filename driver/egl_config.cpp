@@ -17,9 +17,10 @@ namespace {
 // every API.
 constexpr EGLint kRenderable = EGL_OPENGL_BIT | (driver::kHasGLES1 ? EGL_OPENGL_ES_BIT : 0) |
                                (driver::kHasGLES2 ? EGL_OPENGL_ES2_BIT : 0);
-// EGL_CONFORMANT claims only desktop OpenGL, as before ES: the ES 1.1 context lacks paletted
-// compressed textures, which ES 1.1 requires.
-constexpr EGLint kConformant = EGL_OPENGL_BIT;
+// EGL_CONFORMANT claims desktop OpenGL and, since it has every feature ES 1.1 requires (paletted
+// compressed textures were the last), OpenGL ES 1.1; ES 2.0 is not claimed until it has been
+// checked against its own list the same way.
+constexpr EGLint kConformant = EGL_OPENGL_BIT | (driver::kHasGLES1 ? EGL_OPENGL_ES_BIT : 0);
 constexpr Config kConfigs[] = {
     {1, 8, 8, 8, 8, 0, 0, EGL_PBUFFER_BIT, kRenderable},  {2, 8, 8, 8, 8, 0, 8, EGL_PBUFFER_BIT, kRenderable},
     {3, 8, 8, 8, 8, 16, 0, EGL_PBUFFER_BIT, kRenderable}, {4, 8, 8, 8, 8, 24, 0, EGL_PBUFFER_BIT, kRenderable},

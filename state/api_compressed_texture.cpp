@@ -1,22 +1,28 @@
-// GL 1.3 compressed texture images (ARB_texture_compression). Pineda supports no specific
-// compressed format (NUM_COMPRESSED_TEXTURE_FORMATS is 0), so these calls only ever give the
-// spec's errors, checked in Mesa's order: the target (INVALID_ENUM), then the format, which
-// cannot be a supported one (INVALID_ENUM); glGetCompressedTexImage: the target, the level
-// (INVALID_VALUE), then the image, never compressed (INVALID_OPERATION). The generic formats
-// (GL_COMPRESSED_RGB...) are taken by glTexImage and stored uncompressed (texture_format.h).
+// GL 1.3 compressed texture images (ARB_texture_compression). Desktop GL contexts support no
+// specific compressed format (NUM_COMPRESSED_TEXTURE_FORMATS is 0), so there these calls only
+// ever give the spec's errors, checked in Mesa's order: the target (INVALID_ENUM), then the
+// format, which cannot be a supported one (INVALID_ENUM); glGetCompressedTexImage: the target,
+// the level (INVALID_VALUE), then the image, never compressed (INVALID_OPERATION). The generic
+// formats (GL_COMPRESSED_RGB...) are taken by glTexImage and stored uncompressed
+// (texture_format.h). An OpenGL ES 1.1 context has the paletted formats (state/es1/).
 #include <functional>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
+#include "state/es1/paletted_texture.h"
 #include "state/get_values.h"
 #include "state/texture_target.h"
 
 namespace pineda {
 
-bool query_compressed_formats(unsigned pname, GetValues& out) {
+bool query_compressed_formats(const Context& ctx, unsigned pname, GetValues& out) {
+  const int count = ctx.es1() ? kPalettedFormatCount : 0;
   switch (pname) {
-    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out = get_ints({0}); return true;
-    case GL_COMPRESSED_TEXTURE_FORMATS: out = get_enums({}); return true;  // the empty list
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out = get_ints({double(count)}); return true;
+    case GL_COMPRESSED_TEXTURE_FORMATS:
+      out = GetValues{GetKind::Enum, {}};
+      for (int i = 0; i < count; ++i) out.v.push_back(paletted_format_at(i));
+      return true;
     default: return false;
   }
 }
@@ -43,7 +49,10 @@ void compressed_image(Context& ctx, GLenum target, int dims, bool proxy_ok) {
 void CompressedTexImage1D(Context& ctx, GLenum target, GLint, GLenum, GLsizei, GLint, GLsizei, const void*) {
   compressed_image(ctx, target, 1, true);
 }
-void CompressedTexImage2D(Context& ctx, GLenum target, GLint, GLenum, GLsizei, GLsizei, GLint, GLsizei, const void*) {
+void CompressedTexImage2D(Context& ctx, GLenum target, GLint level, GLenum internalformat, GLsizei width,
+                          GLsizei height, GLint border, GLsizei image_size, const void* data) {
+  if (ctx.es1() && paletted_format(internalformat))
+    return paletted_tex_image(ctx, target, level, internalformat, width, height, border, image_size, data);
   compressed_image(ctx, target, 2, true);
 }
 void CompressedTexImage3D(Context& ctx, GLenum target, GLint, GLenum, GLsizei, GLsizei, GLsizei, GLint, GLsizei,
@@ -53,8 +62,10 @@ void CompressedTexImage3D(Context& ctx, GLenum target, GLint, GLenum, GLsizei, G
 void CompressedTexSubImage1D(Context& ctx, GLenum target, GLint, GLint, GLsizei, GLenum, GLsizei, const void*) {
   compressed_image(ctx, target, 1, false);
 }
-void CompressedTexSubImage2D(Context& ctx, GLenum target, GLint, GLint, GLint, GLsizei, GLsizei, GLenum, GLsizei,
-                             const void*) {
+void CompressedTexSubImage2D(Context& ctx, GLenum target, GLint, GLint, GLint, GLsizei, GLsizei, GLenum format,
+                             GLsizei, const void*) {
+  if (ctx.es1() && image_target_of(target, 2, false) && paletted_format(format))  // OpenGL ES 1.1 3.7.3
+    return ctx.record_error(GL_INVALID_OPERATION, "a paletted texture cannot be replaced in part");
   compressed_image(ctx, target, 2, false);
 }
 void CompressedTexSubImage3D(Context& ctx, GLenum target, GLint, GLint, GLint, GLint, GLsizei, GLsizei, GLsizei,

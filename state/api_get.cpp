@@ -253,7 +253,7 @@ bool query(Context& ctx, GLenum pname, Values& out) {
   if (query_point_parameters(ctx, pname, out)) return true;
   if (query_stencil_back(ctx, pname, out)) return true;
   if (query_draw_buffers(ctx, pname, out)) return true;
-  if (query_compressed_formats(pname, out)) return true;
+  if (query_compressed_formats(ctx, pname, out)) return true;
   if (query_debug(ctx, pname, out)) return true;
   if (query_program_state(ctx, pname, out)) return true;
   if (ctx.es1() && query_es1(ctx, pname, out)) return true;

@@ -38,6 +38,6 @@ bool query_es2(Context& ctx, unsigned pname, GetValues& out);
 bool query_debug(Context& ctx, unsigned pname, GetValues& out);
 
 // NUM_COMPRESSED_TEXTURE_FORMATS and COMPRESSED_TEXTURE_FORMATS (api_compressed_texture.cpp).
-bool query_compressed_formats(unsigned pname, GetValues& out);
+bool query_compressed_formats(const Context& ctx, unsigned pname, GetValues& out);
 
 }  // namespace pineda

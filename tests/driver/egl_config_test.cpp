@@ -58,7 +58,7 @@ TEST_F(EglConfig, EveryConfigIsRgba8888PbufferOpenGL) {
     EXPECT_EQ(attrib(c, EGL_SURFACE_TYPE), EGL_PBUFFER_BIT);
     const EGLint apis = EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT | (offers_gles2() ? EGL_OPENGL_ES2_BIT : 0);
     EXPECT_EQ(attrib(c, EGL_RENDERABLE_TYPE), apis);
-    EXPECT_EQ(attrib(c, EGL_CONFORMANT), EGL_OPENGL_BIT);
+    EXPECT_EQ(attrib(c, EGL_CONFORMANT), EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT);
     EXPECT_EQ(attrib(c, EGL_COLOR_BUFFER_TYPE), EGL_RGB_BUFFER);
     EXPECT_EQ(attrib(c, EGL_CONFIG_CAVEAT), EGL_NONE);
     const EGLint samples = attrib(c, EGL_SAMPLES);

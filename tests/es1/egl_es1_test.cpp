@@ -71,7 +71,7 @@ TEST_F(EglEs1, EveryConfigRendersGLES1AndES2) {
     EXPECT_TRUE(eglGetConfigAttrib(dpy, c, EGL_RENDERABLE_TYPE, &renderable));
     EXPECT_TRUE(eglGetConfigAttrib(dpy, c, EGL_CONFORMANT, &conformant));
     EXPECT_EQ(renderable, EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT | EGL_OPENGL_ES2_BIT);
-    EXPECT_EQ(conformant, EGL_OPENGL_BIT);
+    EXPECT_EQ(conformant, EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT);
   }
   const EGLint es[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES_BIT, EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_NONE};
   const EGLint both[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT | EGL_OPENGL_ES_BIT, EGL_SURFACE_TYPE,
