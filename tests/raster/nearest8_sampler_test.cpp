@@ -129,5 +129,47 @@ TEST(Nearest8Sampler, BlocksGiveTheQuadSamplersTexelsOnEveryPath) {
   EXPECT_EQ(select_nearest8_block_sampler(nearest(TexWrap::MirroredRepeat, TexWrap::Repeat)), nullptr);
 }
 
+// Blocks as a magnified or mildly minified draw gives them (a pixel's neighbours a fraction of
+// a texel to two texels apart, near every edge): the quad sampler's texels on every path.
+TEST(Nearest8Sampler, NearbyBlocksGiveTheQuadSamplersTexels) {
+  std::mt19937 rng(5);
+  const TexWrap wraps[] = {TexWrap::Repeat, TexWrap::ClampToEdge};
+  int blocks = 0;
+  for (const auto& [w, h] : {std::pair{16, 4}, {17, 5}, {64, 64}, {300, 7}, {15, 40}})
+    for (TexWrap ws : wraps)
+      for (TexWrap wt : wraps) {
+        const TextureImage image = random_level(w, h, rng);
+        const Sampler sampler = nearest(ws, wt);
+        const QuadSampler quad = select_nearest8_sampler(image, sampler);
+        for (int n = 0; n < 200; ++n) {
+          // Texels per pixel: 0.3 to 2.2, so that some blocks span more than the window.
+          const float scale = 0.3f + 1.9f * static_cast<float>(rng() % 1000) / 1000.f;
+          const float s0 = -0.1f + 1.2f * static_cast<float>(rng() % 1000) / 1000.f;
+          const float t0 = -0.1f + 1.2f * static_cast<float>(rng() % 1000) / 1000.f;
+          alignas(64) float s[16], t[16];
+          for (int q = 0; q < 4; ++q)  // a block: four quads along a row (8x2 pixels)
+            for (int i = 0; i < 4; ++i) {
+              s[4 * q + i] = s0 + scale * static_cast<float>(2 * q + (i & 1)) / static_cast<float>(w);
+              t[4 * q + i] = t0 + scale * static_cast<float>(i >> 1) / static_cast<float>(h);
+            }
+          for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
+            const BlockSampler block = select_nearest8_block_sampler(sampler, path);
+            alignas(64) float out[4][16];
+            float* const channels[4] = {out[0], out[1], out[2], out[3]};
+            block(image, BlockLevels{}, s, t, channels);
+            for (int q = 0; q < 4; ++q) {
+              F4 expected[4];
+              quad(image, sampler, load4(&s[4 * q]), load4(&t[4 * q]), expected);
+              for (int c = 0; c < 4; ++c)
+                for (int i = 0; i < 4; ++i)
+                  ASSERT_EQ(out[c][4 * q + i], expected[c][i]) << "path " << int(path) << " lane " << 4 * q + i;
+            }
+            ++blocks;
+          }
+        }
+      }
+  EXPECT_EQ(blocks, 5 * 4 * 200 * 3);
+}
+
 }  // namespace
 }  // namespace pineda::raster
