@@ -13,8 +13,10 @@
 namespace pineda::fuzz {
 namespace {
 
+// The paletted ones: an OpenGL ES 1.1 context's (EGL calls make one current).
 constexpr GLenum kCompressedFormats[] = {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, GL_COMPRESSED_RGB, GL_COMPRESSED_RGBA,
-                                         GL_COMPRESSED_RGB_FXT1_3DFX, GL_RGBA, GL_COMPRESSED_LUMINANCE};
+                                         GL_COMPRESSED_RGB_FXT1_3DFX, GL_RGBA, GL_COMPRESSED_LUMINANCE,
+                                         GL_PALETTE4_RGB8_OES, GL_PALETTE8_RGBA4_OES};
 constexpr GLenum kTargets1D[] = {GL_TEXTURE_1D, GL_PROXY_TEXTURE_1D};
 constexpr GLenum kTargets2D[] = {GL_TEXTURE_2D, GL_PROXY_TEXTURE_2D, GL_TEXTURE_CUBE_MAP_NEGATIVE_X,
                                  GL_PROXY_TEXTURE_CUBE_MAP, GL_TEXTURE_RECTANGLE_ARB, GL_PROXY_TEXTURE_RECTANGLE_ARB};
@@ -46,7 +48,7 @@ void compressed_image_1d(FuzzInput& in, ClientMemory& memory, Call call) {
 template <typename Call>
 void compressed_image_2d(FuzzInput& in, ClientMemory& memory, Call call) {
   const GLenum target = in.enumeration(kTargets2D), format = in.enumeration(kCompressedFormats);
-  const GLint level = in.integer(0, 4), border = in.integer(0, 1);
+  const GLint level = in.integer(-3, 4), border = in.integer(0, 1);  // (a paletted image's levels: 0 or negative)
   const CheckedSize w = in.checked_size(17), h = in.checked_size(17);
   const CompressedData data = compressed_data(in, memory);
   call(target, level, format, w.value, h.value, border, data.size, data.data);
