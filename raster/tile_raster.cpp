@@ -138,8 +138,13 @@ void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& cl
 
 // Lines, points and triangles covering part of a tile: a bit mask per row of the tile, then quads.
 struct TileMask {
+  // Only the area's rows are cleared: a line's or small triangle's area is often a few rows of
+  // a tile (wireframe, one thread: 5.26-5.53 ms a frame before, 5.25-5.36 after).
+  explicit TileMask(const PixelRect& a) : area(a) {
+    std::memset(rows, 0, sizeof rows[0] * static_cast<size_t>(std::max(a.y1 - a.y0, 0)));
+  }
   PixelRect area;
-  uint64_t rows[kTileSize] = {};
+  uint64_t rows[kTileSize];  // rows[y - area.y0], for y in [area.y0, area.y1)
   void set(int x, int y) { rows[y - area.y0] |= uint64_t{1} << (x - area.x0); }
 };
 
