@@ -7,6 +7,7 @@
 #include "state/es2/es2_rules.h"
 #include "state/context.h"
 #include "state/es1/es1_enums.h"
+#include "state/es1/tex_image_rules.h"
 #include "state/framebuffers/packed_depth_stencil.h"
 #include "state/enum_translate.h"
 #include "state/limits.h"
@@ -425,6 +426,7 @@ void TexImage1D(Context& ctx, GLenum target, GLint level, GLint internalformat, 
 
 void TexImage2D(Context& ctx, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                 GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (ctx.es1() && !es1_tex_image_allowed(ctx, internalformat, border, format, type)) return;
   if (ctx.es2()) {
     if (!es2_tex_image_allowed(ctx, internalformat, border, format, type)) return;
     internalformat = es2_storage_format(internalformat);

@@ -50,11 +50,11 @@ bool es2_capability(GLenum cap) {
 
 bool es2_tex_sub_image_allowed(Context& ctx, GLenum format, GLenum type) {
   if (!known_format(format) || !known_type(type)) {
-    ctx.record_error(GL_INVALID_ENUM, "format or type is not one OpenGL ES 2.0 takes");
+    ctx.record_error(GL_INVALID_ENUM, "format or type is not one OpenGL ES takes");
     return false;
   }
   if (!valid_pair(format, type)) {
-    ctx.record_error(GL_INVALID_OPERATION, "format and type are not a combination of OpenGL ES 2.0 table 3.4");
+    ctx.record_error(GL_INVALID_OPERATION, "format and type are not a combination of OpenGL ES table 3.4");
     return false;
   }
   return true;
@@ -62,7 +62,7 @@ bool es2_tex_sub_image_allowed(Context& ctx, GLenum format, GLenum type) {
 
 bool es2_tex_image_allowed(Context& ctx, GLint internalformat, GLint border, GLenum format, GLenum type) {
   if (!known_format(format) || !known_type(type)) {
-    ctx.record_error(GL_INVALID_ENUM, "format or type is not one OpenGL ES 2.0 takes");
+    ctx.record_error(GL_INVALID_ENUM, "format or type is not one OpenGL ES takes");
     return false;
   }
   if (border != 0) {
@@ -72,11 +72,11 @@ bool es2_tex_image_allowed(Context& ctx, GLint internalformat, GLint border, GLe
   // Also for the sized formats of later versions (Mesa's order; piglit's
   // oes_packed_depth_stencil-depth-stencil-texture_gles2 expects it for DEPTH24_STENCIL8).
   if (GLenum(internalformat) != format) {
-    ctx.record_error(GL_INVALID_OPERATION, "internalformat differs from format (OpenGL ES 2.0 3.7.1)");
+    ctx.record_error(GL_INVALID_OPERATION, "internalformat differs from format (OpenGL ES 1.1 and 2.0 3.7.1)");
     return false;
   }
   if (!valid_pair(format, type)) {
-    ctx.record_error(GL_INVALID_OPERATION, "format and type are not a combination of OpenGL ES 2.0 table 3.4");
+    ctx.record_error(GL_INVALID_OPERATION, "format and type are not a combination of OpenGL ES table 3.4");
     return false;
   }
   return true;

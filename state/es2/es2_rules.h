@@ -21,7 +21,8 @@ bool es2_capability(GLenum cap);
 // glTexImage2D: false (error recorded) unless `internalformat` equals `format` (else
 // INVALID_OPERATION, as Mesa, also for sized formats) and the pair
 // format/type is one ES 2.0 lists (table 3.4, OES_depth_texture, OES_packed_depth_stencil,
-// EXT_texture_format_BGRA8888); border must be 0.
+// EXT_texture_format_BGRA8888); border must be 0. OpenGL ES 1.1 has the same rules, over the
+// enums its context takes (es1_tex_image_allowed).
 bool es2_tex_image_allowed(Context& ctx, GLint internalformat, GLint border, GLenum format, GLenum type);
 
 // glTexSubImage2D: the same format/type pairs.

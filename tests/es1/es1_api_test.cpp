@@ -138,5 +138,24 @@ TEST_F(Es1Api, ActiveTextureTakesFourUnits) {
   EXPECT_EQ(v, 4);
 }
 
+// ES 1.1 3.7.1 on glTexImage2D: one of five base internal formats, equal to format, a pair of
+// table 3.4, no border; each error as Mesa's ES 1.1 context records it (llvmpipe, side by side).
+TEST_F(Es1Api, TexImage2DTakesOnlyWhatES11Allows) {
+  const GLubyte texels[4 * 4 * 4] = {};
+  glBindTexture(GL_TEXTURE_2D, 1);
+  auto image = [&](GLint internalformat, GLenum format, GLenum type, GLint border) {
+    glTexImage2D(GL_TEXTURE_2D, 0, internalformat, 2, 2, border, format, type, texels);
+    return glGetError();
+  };
+  EXPECT_EQ(image(GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, 0), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(image(GL_LUMINANCE_ALPHA, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, 0), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(image(GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, 0), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(image(3, GL_RGB, GL_UNSIGNED_BYTE, 0), GLenum(GL_INVALID_VALUE));  // desktop GL's component count
+  EXPECT_EQ(image(GL_PALETTE4_RGB8_OES, GL_PALETTE4_RGB8_OES, GL_UNSIGNED_BYTE, 0), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(image(GL_RGBA, GL_RGB, GL_UNSIGNED_BYTE, 0), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(image(GL_RGB, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, 0), GLenum(GL_INVALID_OPERATION));
+  EXPECT_EQ(image(GL_RGB, GL_RGB, GL_UNSIGNED_BYTE, 1), GLenum(GL_INVALID_VALUE));
+}
+
 }  // namespace
 }  // namespace pineda::es1_test
