@@ -1,7 +1,7 @@
 // OES_compressed_paletted_texture: decoding a palette and its indices into ordinary levels.
 // A 4-bit index's first texel is the high nibble of its byte; a level's indices start on a byte
-// and rows are not padded (what llvmpipe reads). Errors in Mesa's order: level, border, then
-// an imageSize other than the palette and every level's indices (all GL_INVALID_VALUE).
+// and rows are not padded (what llvmpipe reads). Errors in Mesa's order: level, border, width and
+// height, then an imageSize other than the palette and every level's indices (all GL_INVALID_VALUE).
 #include "state/es1/paletted_texture.h"
 
 #include <algorithm>
