@@ -99,8 +99,10 @@ void BindRenderbuffer(Context& ctx, GLenum target, GLuint renderbuffer) {
 }
 
 void RenderbufferStorage(Context& ctx, GLenum target, GLenum internalformat, GLsizei width, GLsizei height) {
-  if (ctx.es2() && target == GL_RENDERBUFFER && !es2_renderbuffer_format(internalformat))
-    return ctx.record_error(GL_INVALID_ENUM, "internalformat is not a renderable format of OpenGL ES 2.0");
+  // OpenGL ES 1.1's GL_OES_framebuffer_object takes the same formats (those of the extensions its
+  // context has: the others are refused as enums it does not define).
+  if ((ctx.es1() || ctx.es2()) && target == GL_RENDERBUFFER && !es2_renderbuffer_format(internalformat))
+    return ctx.record_error(GL_INVALID_ENUM, "internalformat is not a renderable format of OpenGL ES");
   storage(ctx, target, 0, internalformat, width, height);
 }
 
