@@ -1,12 +1,27 @@
 // The OpenGL ES entry points that desktop GL's headers do not declare (GLES/gl.h cannot be
 // included beside GL/gl.h): ES 1.1's fixed-point calls without the OES suffix and its
 // single-precision ones, OES_draw_texture, OES_point_size_array, the OES blend and buffer
-// names, and the KHR/EXT names of debug output and robustness.
+// names, OES_framebuffer_object's names, and the KHR/EXT names of debug output and robustness.
 #pragma once
 #include <GL/gl.h>
 #include <GL/glext.h>
 
 extern "C" {
+void glBindFramebufferOES(GLenum target, GLuint framebuffer);
+void glBindRenderbufferOES(GLenum target, GLuint renderbuffer);
+GLenum glCheckFramebufferStatusOES(GLenum target);
+void glDeleteFramebuffersOES(GLsizei n, const GLuint *framebuffers);
+void glDeleteRenderbuffersOES(GLsizei n, const GLuint *renderbuffers);
+void glFramebufferRenderbufferOES(GLenum target, GLenum attachment, GLenum renderbuffertarget, GLuint renderbuffer);
+void glFramebufferTexture2DOES(GLenum target, GLenum attachment, GLenum textarget, GLuint texture, GLint level);
+void glGenFramebuffersOES(GLsizei n, GLuint *framebuffers);
+void glGenRenderbuffersOES(GLsizei n, GLuint *renderbuffers);
+void glGenerateMipmapOES(GLenum target);
+void glGetFramebufferAttachmentParameterivOES(GLenum target, GLenum attachment, GLenum pname, GLint *params);
+void glGetRenderbufferParameterivOES(GLenum target, GLenum pname, GLint *params);
+GLboolean glIsFramebufferOES(GLuint framebuffer);
+GLboolean glIsRenderbufferOES(GLuint renderbuffer);
+void glRenderbufferStorageOES(GLenum target, GLenum internalformat, GLsizei width, GLsizei height);
 void glAlphaFuncx(GLenum func, GLfixed ref);
 void glBindVertexArrayOES(GLuint array);
 void glBlendEquationOES(GLenum mode);
