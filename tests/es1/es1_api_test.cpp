@@ -30,11 +30,10 @@ TEST_F(Es1Api, Strings) {
   EXPECT_EQ(gl_string(GL_EXTENSIONS),
             "GL_EXT_blend_minmax GL_EXT_multi_draw_arrays GL_EXT_texture_lod_bias GL_OES_blend_equation_separate "
             "GL_OES_blend_func_separate GL_OES_blend_subtract GL_OES_byte_coordinates GL_OES_compressed_paletted_texture "
-            "GL_OES_draw_texture "
-            "GL_OES_element_index_uint GL_OES_fixed_point GL_OES_framebuffer_object GL_OES_packed_depth_stencil "
-            "GL_OES_point_size_array GL_OES_point_sprite GL_OES_read_format "
-            "GL_OES_single_precision "
-            "GL_OES_stencil_wrap GL_OES_texture_env_crossbar GL_OES_texture_mirrored_repeat GL_OES_texture_npot ");
+            "GL_OES_depth24 GL_OES_draw_texture GL_OES_element_index_uint GL_OES_fixed_point GL_OES_framebuffer_object "
+            "GL_OES_packed_depth_stencil GL_OES_point_size_array GL_OES_point_sprite GL_OES_read_format "
+            "GL_OES_rgb8_rgba8 GL_OES_single_precision GL_OES_stencil8 GL_OES_stencil_wrap GL_OES_texture_env_crossbar "
+            "GL_OES_texture_mirrored_repeat GL_OES_texture_npot ");
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 

@@ -1,6 +1,7 @@
-// GL_OES_framebuffer_object and GL_OES_packed_depth_stencil in OpenGL ES 1.1: render into a
-// texture through a framebuffer object with a packed depth-stencil renderbuffer, then draw the
-// texture in the window (the same pixels and answers as llvmpipe's ES 1.1, run side by side).
+// GL_OES_framebuffer_object in OpenGL ES 1.1, with GL_OES_packed_depth_stencil and the sized
+// formats of OES_rgb8_rgba8, OES_depth24 and OES_stencil8: render into a texture through a
+// framebuffer object with a packed depth-stencil renderbuffer, then draw the texture in the
+// window (the same pixels and answers as llvmpipe's ES 1.1, run side by side).
 #define GL_GLEXT_PROTOTYPES
 #include <GLES/gl.h>
 #include <GLES/glext.h>
@@ -61,12 +62,55 @@ TEST_F(Es1FramebufferObject, CompleteWithTheirState) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// The extension's formats and those of OES_rgb8_rgba8, OES_depth24 and OES_stencil8 (as
+// Mesa's ES 1.1); an unsized format is none.
 TEST_F(Es1FramebufferObject, OnlyESRenderableFormats) {
-  glRenderbufferStorageOES(GL_RENDERBUFFER_OES, GL_RGBA, 8, 8);  // unsized: not an ES renderbuffer format
+  glRenderbufferStorageOES(GL_RENDERBUFFER_OES, GL_RGBA, 8, 8);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
-  glRenderbufferStorageOES(GL_RENDERBUFFER_OES, GL_RGB565_OES, 8, 8);
-  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-  glRenderbufferStorageOES(GL_RENDERBUFFER_OES, GL_DEPTH_COMPONENT16_OES, 8, 8);
+  for (const GLenum format : {GL_RGB565_OES, GL_RGBA4_OES, GL_RGB5_A1_OES, GL_DEPTH_COMPONENT16_OES, GL_RGB8_OES,
+                              GL_RGBA8_OES, GL_DEPTH_COMPONENT24_OES, GL_STENCIL_INDEX8_OES}) {
+    glRenderbufferStorageOES(GL_RENDERBUFFER_OES, format, 8, 8);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << format;
+    GLint stored = 0;
+    glGetRenderbufferParameterivOES(GL_RENDERBUFFER_OES, GL_RENDERBUFFER_INTERNAL_FORMAT_OES, &stored);
+    EXPECT_EQ(GLenum(stored), format);
+  }
+}
+
+// Colour, depth and stencil in three renderbuffers of the sized formats.
+TEST_F(Es1FramebufferObject, SeparateSizedRenderbuffers) {
+  GLuint buffers[3];
+  glGenRenderbuffersOES(3, buffers);
+  const GLenum formats[3] = {GL_RGBA8_OES, GL_DEPTH_COMPONENT24_OES, GL_STENCIL_INDEX8_OES};
+  const GLenum points[3] = {GL_COLOR_ATTACHMENT0_OES, GL_DEPTH_ATTACHMENT_OES, GL_STENCIL_ATTACHMENT_OES};
+  for (int i = 0; i < 3; ++i) {
+    glBindRenderbufferOES(GL_RENDERBUFFER_OES, buffers[i]);
+    glRenderbufferStorageOES(GL_RENDERBUFFER_OES, formats[i], 8, 8);
+    glFramebufferRenderbufferOES(GL_FRAMEBUFFER_OES, points[i], GL_RENDERBUFFER_OES, buffers[i]);
+  }
+  ASSERT_EQ(glCheckFramebufferStatusOES(GL_FRAMEBUFFER_OES), GLenum(GL_FRAMEBUFFER_COMPLETE_OES));
+  glViewport(0, 0, 8, 8);
+  glClearColor(0, 0, 0, 1);
+  glClearStencil(0);
+  glClearDepthf(1.f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  const GLfloat near_quad[] = {-1, -1, -0.5f, 1, -1, -0.5f, -1, 1, -0.5f, 1, 1, -0.5f};
+  const GLfloat far_quad[] = {-1, -1, 0.5f, 1, -1, 0.5f, -1, 1, 0.5f, 1, 1, 0.5f};
+  glColor4f(1, 0, 0, 1);
+  glVertexPointer(3, GL_FLOAT, 0, near_quad);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glColor4f(0, 1, 0, 1);  // behind: fails the depth test, its stencil stays 1
+  glVertexPointer(3, GL_FLOAT, 0, far_quad);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glStencilFunc(GL_EQUAL, 1, 0xff);
+  glDisable(GL_DEPTH_TEST);
+  glColor4f(0, 0, 1, 1);  // where the stencil is 1: everywhere
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  EXPECT_EQ(pixel(3, 3), (Pixel{0, 0, 255, 255}));
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
