@@ -87,6 +87,28 @@ TEST(Nearest8Sampler, GivesTheGeneralSamplersTexels) {
   EXPECT_EQ(compared, 5 * 16 * 200 * 16);
 }
 
+// One block of coordinates through the 16-lane sampler on every instruction-set path, each
+// lane against the quad sampler's texel; counts the blocks compared.
+void compare_block_with_quad_sampler(const TextureImage& image, const Sampler& sampler, const float* s, const float* t,
+                                     int& compared) {
+  const QuadSampler quad = select_nearest8_sampler(image, sampler);
+  for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
+    const BlockSampler block = select_nearest8_block_sampler(sampler, path);
+    ASSERT_NE(block, nullptr);
+    alignas(64) float out[4][16];
+    float* const channels[4] = {out[0], out[1], out[2], out[3]};
+    block(image, BlockLevels{}, s, t, channels);
+    for (int q = 0; q < 4; ++q) {
+      F4 expected[4];
+      quad(image, sampler, load4(&s[4 * q]), load4(&t[4 * q]), expected);
+      for (int c = 0; c < 4; ++c)
+        for (int i = 0; i < 4; ++i)
+          ASSERT_EQ(out[c][4 * q + i], expected[c][i]) << "path " << int(path) << " lane " << 4 * q + i;
+    }
+    ++compared;
+  }
+}
+
 // The 16-lane form on every instruction-set path: the quad sampler's texels.
 TEST(Nearest8Sampler, BlocksGiveTheQuadSamplersTexelsOnEveryPath) {
   std::mt19937 rng(11);
@@ -101,28 +123,14 @@ TEST(Nearest8Sampler, BlocksGiveTheQuadSamplersTexelsOnEveryPath) {
       for (TexWrap wt : wraps) {
         const TextureImage image = random_level(w, h, rng);
         const Sampler sampler = nearest(ws, wt);
-        const QuadSampler quad = select_nearest8_sampler(image, sampler);
         for (int n = 0; n < 50; ++n) {
           alignas(64) float s[16], t[16];
           for (int i = 0; i < 16; ++i) {
             s[i] = n % 4 == 0 ? special[rng() % std::size(special)] : near(rng);
             t[i] = n % 3 == 0 ? special[rng() % std::size(special)] : near(rng);
           }
-          for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
-            const BlockSampler block = select_nearest8_block_sampler(sampler, path);
-            ASSERT_NE(block, nullptr);
-            alignas(64) float out[4][16];
-            float* const channels[4] = {out[0], out[1], out[2], out[3]};
-            block(image, BlockLevels{}, s, t, channels);
-            for (int q = 0; q < 4; ++q) {
-              F4 expected[4];
-              quad(image, sampler, load4(&s[4 * q]), load4(&t[4 * q]), expected);
-              for (int c = 0; c < 4; ++c)
-                for (int i = 0; i < 4; ++i)
-                  ASSERT_EQ(out[c][4 * q + i], expected[c][i]) << "path " << int(path) << " lane " << 4 * q + i;
-            }
-            ++blocks;
-          }
+          compare_block_with_quad_sampler(image, sampler, s, t, blocks);
+          if (::testing::Test::HasFatalFailure()) return;
         }
       }
   EXPECT_EQ(blocks, 4 * 9 * 50 * 3);
@@ -140,7 +148,6 @@ TEST(Nearest8Sampler, NearbyBlocksGiveTheQuadSamplersTexels) {
       for (TexWrap wt : wraps) {
         const TextureImage image = random_level(w, h, rng);
         const Sampler sampler = nearest(ws, wt);
-        const QuadSampler quad = select_nearest8_sampler(image, sampler);
         for (int n = 0; n < 200; ++n) {
           // Texels per pixel: 0.3 to 2.2, so that some blocks span more than the window.
           const float scale = 0.3f + 1.9f * static_cast<float>(rng() % 1000) / 1000.f;
@@ -152,20 +159,8 @@ TEST(Nearest8Sampler, NearbyBlocksGiveTheQuadSamplersTexels) {
               s[4 * q + i] = s0 + scale * static_cast<float>(2 * q + (i & 1)) / static_cast<float>(w);
               t[4 * q + i] = t0 + scale * static_cast<float>(i >> 1) / static_cast<float>(h);
             }
-          for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
-            const BlockSampler block = select_nearest8_block_sampler(sampler, path);
-            alignas(64) float out[4][16];
-            float* const channels[4] = {out[0], out[1], out[2], out[3]};
-            block(image, BlockLevels{}, s, t, channels);
-            for (int q = 0; q < 4; ++q) {
-              F4 expected[4];
-              quad(image, sampler, load4(&s[4 * q]), load4(&t[4 * q]), expected);
-              for (int c = 0; c < 4; ++c)
-                for (int i = 0; i < 4; ++i)
-                  ASSERT_EQ(out[c][4 * q + i], expected[c][i]) << "path " << int(path) << " lane " << 4 * q + i;
-            }
-            ++blocks;
-          }
+          compare_block_with_quad_sampler(image, sampler, s, t, blocks);
+          if (::testing::Test::HasFatalFailure()) return;
         }
       }
   EXPECT_EQ(blocks, 5 * 4 * 200 * 3);
