@@ -43,6 +43,7 @@ void allocate(Surface& s) {
   s.drawable.alpha_bits = s.config->alpha;
   // EGL pbuffers render to their back buffer (EGL_RENDER_BUFFER is EGL_BACK_BUFFER).
   s.drawable.double_buffered = true;
+  s.drawable.track_cleared_tiles(true);
 }
 
 }  // namespace
@@ -160,7 +161,7 @@ EGLBoolean SwapBuffers(EGLDisplay dpy, EGLSurface surface) {
   }
   // A pbuffer has nothing to present; swapping completes the rendering (and the frame can
   // be captured).
-  t.context->gl->finish();
+  t.context->gl->finish_for_reading();
   const raster::Framebuffer& fb = s->drawable.framebuffer;
   if (fb.samples > 1) raster::resolve_color(fb, s->drawable.resolved);
   driver::capture_frame(fb.samples > 1 ? s->drawable.resolved : fb.color, s->width, s->height);

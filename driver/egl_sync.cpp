@@ -30,7 +30,7 @@ EGLSync CreateSync(EGLDisplay dpy, EGLenum type, const EGLAttrib* attrib_list) {
   EGLSync handle = sync.get();
   display->syncs.emplace(handle, std::move(sync));
   lock.unlock();
-  t.context->gl->finish();
+  t.context->gl->finish_for_reading();
   return succeed(handle);
 }
 

@@ -163,7 +163,7 @@ void show_front(Surface& s) {
 
 EGLint swap_native(Surface& s, pineda::Context& gl) {
   glx::DrawableObject& d = *s.native;
-  gl.finish();
+  gl.finish_for_reading();
   // A pixmap surface is single-buffered: swapping has no effect.
   if (d.kind != glx::DrawableKind::Window) return EGL_SUCCESS;
   int width = 0, height = 0;

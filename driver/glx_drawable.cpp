@@ -78,6 +78,8 @@ void allocate_buffers(DrawableObject& d, int width, int height) {
   d.drawable.blue_bits = d.config->blue;
   d.drawable.alpha_bits = d.config->alpha;
   d.drawable.double_buffered = double_buffered;
+  // A single-buffered drawable's colour buffer is the one X reads back (glXWaitX).
+  d.drawable.track_cleared_tiles(double_buffered);
 }
 
 namespace {

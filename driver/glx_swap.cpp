@@ -50,7 +50,7 @@ PINEDA_GLX_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
   }
   ThreadState& t = thread_state();
   const bool mine = t.draw == d || t.read == d;
-  if (mine) t.context->gl->finish();  // the implicit glFlush
+  if (mine) t.context->gl->finish_for_reading();  // the implicit glFlush
   // Single-buffered drawables and pixmaps are unaffected.
   if (d->drawable.double_buffered) swap_and_present(*d);
   else if (mine) flush_front(t, false);

@@ -8,6 +8,8 @@ namespace pineda::raster {
 
 enum class ColorFormat : uint8_t { RGBA8, BGRA8 };
 
+class ClearedTiles;
+
 // A target that keeps fewer bits or components than its four bytes (RGB565, RGBA4, RGB8,
 // luminance, ...; framebuffer objects): every written pixel is reduced to what the format
 // holds before it is stored, so that blending, reads and sampling see the format's values.
@@ -70,6 +72,9 @@ struct Framebuffer {
   // The draw buffer `color` is: a window's glDrawBuffers passes write one draw buffer at a
   // time, and each takes its own blend enable and colour mask (DrawState::use_target_write).
   int color_index = 0;
+  // Set (by the buffers' owner) only where nothing but the renderer writes these buffers
+  // between flushes (cleared_tiles.h); single-sampled, one colour target.
+  ClearedTiles* cleared_tiles = nullptr;
 
   const ColorBuffer& target_color(int i) const { return i == 0 ? color : more_color[static_cast<size_t>(i - 1)]; }
   // The same framebuffer with draw buffer i as its only colour buffer.
@@ -79,6 +84,7 @@ struct Framebuffer {
     one.color_targets = 1;
     one.more_color = {};
     one.color_index = color_index + i;
+    one.cleared_tiles = nullptr;
     return one;
   }
 };

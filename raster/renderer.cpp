@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "raster/clear.h"
+#include "raster/cleared_tiles.h"
 #include "raster/draw_record.h"
 #include "raster/float_modes.h"
 #include "raster/fragment_pipeline.h"
@@ -123,6 +124,11 @@ void Renderer::for_each_piece(size_t count, size_t grain, const std::function<vo
 }
 
 void Renderer::flush() {
+  flush_for_reading();
+  if (impl_->fb.cleared_tiles) impl_->fb.cleared_tiles->forget();
+}
+
+void Renderer::flush_for_reading() {
   impl_->finish_running();
   impl_->timing_small = false;
   impl_->scene.share_small_prims(impl_->small_prim_sharing.share());

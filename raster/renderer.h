@@ -49,8 +49,12 @@ class Renderer {
   // a thread; a multiple of the vertices one vertex-shader run takes.
   static constexpr size_t kVerticesPerPiece = 1024;
 
-  // Executes everything queued; afterwards the framebuffer's memory is up to date.
+  // Executes everything queued; afterwards the framebuffer's memory is up to date, and the
+  // caller may write it (which tiles hold a clear's value is forgotten: cleared_tiles.h).
   void flush();
+  // As flush, for a caller that only reads the framebuffer's memory afterwards (glFinish, a
+  // swap, glReadPixels): what is known of cleared tiles is kept.
+  void flush_for_reading();
 
  private:
   void submit();  // a full scene: executed, on the pool's threads while binning goes on

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "raster/cleared_tiles.h"
 #include "raster/float_modes.h"
 #include "raster/multisample.h"
 #include "raster/raster_limits.h"
@@ -155,12 +156,24 @@ void Scene::run_tile(int tile) const {
   const PixelRect rect = intersect({tx * kTileSize, ty * kTileSize, (tx + 1) * kTileSize, (ty + 1) * kTileSize},
                                    render_area());
   const bool multisampled = fb_.samples > 1;
+  ClearedTile* known = fb_.cleared_tiles && !multisampled && fb_.color_targets == 1
+                           ? &fb_.cleared_tiles->tile(static_cast<size_t>(tile))
+                           : nullptr;
   for (const uint32_t cmd : bins_[tile]) {
     if (cmd & kClearBit) {
       use_shader_modes(false);
-      if (multisampled) apply_clear_samples(clears_[cmd & ~kClearBit], fb_, rect);
-      else apply_clear(clears_[cmd & ~kClearBit], fb_, rect);
+      const ClearRecord& clear = clears_[cmd & ~kClearBit];
+      if (multisampled) {
+        apply_clear_samples(clear, fb_, rect);
+      } else if (known) {
+        ClearRecord left = clear;
+        skip_cleared_buffers(left, rect, *known);
+        apply_clear(left, fb_, rect);
+      } else {
+        apply_clear(clear, fb_, rect);
+      }
     } else {
+      if (known) *known = {};  // whatever the primitive writes
       const PrimSetup& prim = prims_[cmd];
       const DrawRecord& draw = *draws_[prim.draw];
       use_shader_modes(draw.state.shader != nullptr);
@@ -173,6 +186,7 @@ void Scene::run_tile(int tile) const {
 
 void Scene::execute(WorkerPool& pool) {
   if (commands_ > 0) {
+    if (fb_.cleared_tiles) fb_.cleared_tiles->prepare(bins_.size());
     if (!worth_sharing()) {
       for (const int t : touched_tiles_) run_tile(t);
     } else {
@@ -205,6 +219,7 @@ bool Scene::worth_sharing() const { return commands_ >= kSmallScene && (share_sm
 bool Scene::worth_starting(const WorkerPool& pool) const { return worth_sharing() && pool.threads() > 1; }
 
 void Scene::start(WorkerPool& pool) {
+  if (fb_.cleared_tiles) fb_.cleared_tiles->prepare(bins_.size());
   order_for_threads();
   pool.start(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
 }

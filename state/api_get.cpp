@@ -357,8 +357,8 @@ GLenum GetError(Context& ctx) { return ctx.take_error(); }
 // GL_ARB_robustness / GL_KHR_robustness / GL_EXT_robustness: a software context is never lost.
 GLenum GetGraphicsResetStatusARB(Context&) { return GL_NO_ERROR; }
 
-void Flush(Context& ctx) { ctx.finish(); }
-void Finish(Context& ctx) { ctx.finish(); }
+void Flush(Context& ctx) { ctx.finish_for_reading(); }
+void Finish(Context& ctx) { ctx.finish_for_reading(); }
 
 }  // namespace pineda::gl
 

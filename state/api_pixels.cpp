@@ -94,7 +94,7 @@ void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, 
   if (!pack_pixels(ctx, pixels, client_image_extent(ctx.pack, width, height, 1, false, format, type), client_bytes) ||
       !pixels)
     return;
-  ctx.finish();
+  ctx.finish_for_reading();
   const raster::Framebuffer fb = ctx.read_framebuffer();
   // Pixels outside the framebuffer are undefined in GL; Pineda leaves the memory untouched.
   const int x0 = std::max(x, 0), x1 = std::min<int64_t>(int64_t(x) + width, fb.width);

@@ -34,7 +34,7 @@ bool query_result(Context& ctx, GLuint id, GLenum pname, uint64_t& out) {
   }
   QueryObject* q = finished_query(ctx, id);
   if (!q) return false;
-  ctx.finish();  // the queued draws have counted: the result is available from here on
+  ctx.finish_for_reading();  // the queued draws have counted: the result is available from here on
   out = pname == GL_QUERY_RESULT_AVAILABLE ? GL_TRUE : (q->counter ? q->counter->passed.load() : 0);
   return true;
 }

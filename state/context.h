@@ -172,7 +172,11 @@ class Context {
   void record_list_command(ListCommand command) { compilation.list->commands.push_back(std::move(command)); }
 
   raster::Renderer& renderer() { return *renderer_; }
+  // The queued rendering done; the caller may then write the framebuffer's memory.
   void finish() { renderer_->flush(); }
+  // The same for a caller that only reads it (glFinish, swaps, glReadPixels): tiles known to
+  // hold a clear's value stay known (raster/cleared_tiles.h).
+  void finish_for_reading() { renderer_->flush_for_reading(); }
 
   // ---- state, read and written by the state/ implementation files ----
  private:

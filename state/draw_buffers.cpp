@@ -82,7 +82,7 @@ bool same_buffers(const raster::Framebuffer& a, const raster::Framebuffer& b) {
     if (!same_color(a.target_color(i), b.target_color(i))) return false;
   return a.width == b.width && a.height == b.height && a.depth.base == b.depth.base &&
          a.depth.stride == b.depth.stride && a.depth.bits == b.depth.bits && a.stencil.base == b.stencil.base &&
-         a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits;
+         a.stencil.stride == b.stencil.stride && a.stencil.bits == b.stencil.bits && a.cleared_tiles == b.cleared_tiles;
 }
 
 }  // namespace
@@ -103,6 +103,7 @@ void Context::bind_framebuffer(bool always) {
       case Target::Front: fb.color = d->front_color(); break;
       case Target::Back: case Target::Both: break;
     }
+    if (fb.color.base != d->framebuffer.color.base) fb.cleared_tiles = nullptr;  // a front buffer
   }
   // Binding the same buffers again would only flush the queued rendering.
   if (always || !same_buffers(fb, renderer_->framebuffer())) {
@@ -115,6 +116,7 @@ void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer
   const raster::Framebuffer& bound = renderer_->framebuffer();
   if (bound.color.base == color.base && bound.color.stride == color.stride && bound.color_index == draw_buffer) return;
   raster::Framebuffer fb = draw_drawable()->framebuffer;
+  if (color.base != fb.color.base) fb.cleared_tiles = nullptr;  // a front buffer
   fb.color = color;
   fb.color_index = draw_buffer;
   renderer_->set_framebuffer(fb);

@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "raster/cleared_tiles.h"
 #include "raster/framebuffer.h"
 
 namespace pineda {
@@ -28,6 +29,17 @@ struct Drawable {
   // A framebuffer object's view: the storage it points into (renderbuffer pixels, texture
   // levels), kept alive while the view or the renderer uses it.
   std::vector<std::shared_ptr<const void>> kept_storage;
+
+  // Called by the driver for newly allocated buffers: a new record of which tiles hold a
+  // clear's value (raster/cleared_tiles.h), kept with the storage, where nothing but the
+  // renderer writes the colour, depth and stencil buffers (`only_renderer_writes`); else none.
+  void track_cleared_tiles(bool only_renderer_writes) {
+    std::shared_ptr<raster::ClearedTiles> tiles;
+    if (only_renderer_writes && framebuffer.samples == 1) tiles = std::make_shared<raster::ClearedTiles>();
+    framebuffer.cleared_tiles = tiles.get();
+    kept_storage.clear();
+    if (tiles) kept_storage.push_back(std::move(tiles));
+  }
 
   const raster::ColorBuffer& front_color() const { return front.base ? front : framebuffer.color; }
 };

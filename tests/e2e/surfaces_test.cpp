@@ -5,12 +5,8 @@ namespace pineda::test {
 namespace {
 
 std::vector<uint8_t> draw_scene(GlSurface& surface) {
-  EXPECT_TRUE(surface.make_current());
+  make_current_with_pixel_projection(surface);
   const int w = surface.width(), h = surface.height();
-  glViewport(0, 0, w, h);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, w, 0, h, -1, 1);
   glClearColor(0.1f, 0.2f, 0.3f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);

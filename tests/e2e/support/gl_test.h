@@ -22,6 +22,15 @@ inline Rgba read_rgba(int x, int y) {
   return {p[0], p[1], p[2], p[3]};
 }
 
+// Makes `surface` current, its viewport the whole surface and one unit one pixel (projection).
+inline void make_current_with_pixel_projection(GlSurface& surface) {
+  EXPECT_TRUE(surface.make_current());
+  glViewport(0, 0, surface.width(), surface.height());
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, surface.width(), 0, surface.height(), -1, 1);
+}
+
 class GlTest : public ::testing::Test {
  protected:
   virtual SurfaceSpec spec() const { return {}; }
