@@ -195,6 +195,10 @@ void GeometryStage::draw_line(ClipVert a, ClipVert b, const Style& style) {
   if (!clip_line(a, b, view)) return;
   const WinVert wa = to_window(a, style.back_facing), wb = to_window(b, style.back_facing);
   if (!has_window_position(wa) || !has_window_position(wb)) return;
+  draw_window_line(wa, wb, style);
+}
+
+void GeometryStage::draw_window_line(const WinVert& wa, const WinVert& wb, const Style& style) {
   if (rectangle_lines_) return draw_line_rectangle(wa, wb, style);
   PrimSetup prim;
   const bool covered = line_smooth_ ? setup_smooth_line(wa, wb, smooth_size(line_width_, kMaxLineWidth), params(style), prim)
@@ -286,6 +290,14 @@ void GeometryStage::point(const ClipVertex& v) {
 
 void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) {
   if (!active_ || !finite_position(a) || !finite_position(b)) return;
+  // A line inside the view volume, clipping would leave as it is: its ends' window vertices
+  // come from the cache, so a strip's vertices are taken to the window once, not twice (the
+  // same positions and front attributes draw_line computes). Conditions as polygon()'s.
+  if (vertex_base_ && flat_ranges_.empty() && !reference_) {
+    const WinVert* wa = cached_view_window(a);
+    const WinVert* wb = wa ? cached_view_window(b) : nullptr;
+    if (wb) return draw_window_line(*wa, *wb, style_for(provoking, false));
+  }
   ClipVert ca = to_clip(a), cb = to_clip(b);
   flatten_varyings(ca, provoking);
   flatten_varyings(cb, provoking);
@@ -334,6 +346,7 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
   if (slot.index != index) {
     slot.index = index;
     slot.usable = false;
+    slot.in_view = -1;
     if (finite_position(v)) {
       // Only the position and clip distances are clipped: the attributes are read where they
       // are (a programmable vertex's varyings stay in the draw's array).
@@ -351,6 +364,20 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
     }
   }
   return slot.usable ? &slot.window : nullptr;
+}
+
+// cached_window for a vertex inside the view volume, null otherwise.
+const WinVert* GeometryStage::cached_view_window(const ClipVertex& v) {
+  const WinVert* w = cached_window(v);
+  if (!w) return nullptr;
+  WindowSlot& slot = window_cache_[static_cast<size_t>(&v - vertex_base_) & (window_cache_.size() - 1)];
+  if (slot.in_view < 0) {
+    ClipVolume view;
+    view.user_planes = volume_.user_planes;
+    clip_position(v, cache_clip_);
+    slot.in_view = clip_outcode(cache_clip_, view) == 0 ? 1 : 0;
+  }
+  return slot.in_view ? w : nullptr;
 }
 
 // polygon() for a triangle of cached vertices that is culled or filled front facing without

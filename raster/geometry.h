@@ -75,12 +75,14 @@ class GeometryStage final : public PrimitiveSink {
   Style style_for(const ClipVertex& provoking, bool back_facing) const;
   void emit(const PrimSetup& prim);
   void draw_line(ClipVert a, ClipVert b, const Style& style);
+  void draw_window_line(const WinVert& a, const WinVert& b, const Style& style);
   void draw_line_rectangle(const WinVert& a, const WinVert& b, const Style& style);
   void draw_point(const ClipVert& v, const Style& style, float size);
   void draw_sample_point(const WinVert& v, const Style& style, float size);
   float point_size_of(const ClipVertex& v) const;  // derived, before rounding
   double polygon_offset(const std::vector<WinVert>& window, bool enabled) const;
   const WinVert* cached_window(const ClipVertex& v);
+  const WinVert* cached_view_window(const ClipVertex& v);
   bool fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking);
   template <typename Vertex>
   bool fill_window_triangle(const Vertex* const (&w)[3], const ClipVertex& provoking);
@@ -109,6 +111,7 @@ class GeometryStage final : public PrimitiveSink {
   struct WindowSlot {
     size_t index = SIZE_MAX;
     bool usable = false;
+    int8_t in_view = -1;  // inside the view volume (which lines are clipped to); -1: not known yet
     WinVert window;
   };
   static constexpr size_t kWindowCacheSlots = 1024;
