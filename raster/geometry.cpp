@@ -1,7 +1,6 @@
 #include "raster/geometry.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 #include "raster/fragment_ops.h"
@@ -38,8 +37,8 @@ constexpr double kResolvableDepthSteps = 2.0;
 
 }  // namespace
 
-GeometryStage::GeometryStage(Scene& scene, std::function<void()> on_full, bool reference)
-    : scene_(scene), on_full_(std::move(on_full)), reference_(reference) {
+GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::function<void()> on_full, bool reference)
+    : scene_(scene), on_full_(std::move(on_full)), reference_(reference), window_cache_(window_cache) {
   const DrawState& s = scene_.current_draw().state;
   const Viewport& vp = s.viewport;
   if (vp.width <= 0 || vp.height <= 0) return;
@@ -341,12 +340,9 @@ void GeometryStage::window_positions(size_t begin, size_t end, PreparedWindow* o
 const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
   const size_t index = static_cast<size_t>(&v - vertex_base_);
   if (index >= vertex_count_) return nullptr;
-  if (window_cache_.empty()) window_cache_.resize(std::min(kWindowCacheSlots, std::bit_ceil(vertex_count_)));
-  WindowSlot& slot = window_cache_[index & (window_cache_.size() - 1)];
-  if (slot.index != index) {
-    slot.index = index;
-    slot.usable = false;
-    slot.in_view = -1;
+  bool fresh = false;
+  WindowSlot& slot = window_cache_.slot(index, fresh);
+  if (fresh) {
     if (finite_position(v)) {
       // Only the position and clip distances are clipped: the attributes are read where they
       // are (a programmable vertex's varyings stay in the draw's array).
@@ -370,7 +366,8 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
 const WinVert* GeometryStage::cached_view_window(const ClipVertex& v) {
   const WinVert* w = cached_window(v);
   if (!w) return nullptr;
-  WindowSlot& slot = window_cache_[static_cast<size_t>(&v - vertex_base_) & (window_cache_.size() - 1)];
+  bool fresh = false;
+  WindowSlot& slot = window_cache_.slot(static_cast<size_t>(&v - vertex_base_), fresh);  // cached_window's
   if (slot.in_view < 0) {
     ClipVolume view;
     view.user_planes = volume_.user_planes;

@@ -9,6 +9,7 @@
 #include "raster/primitive.h"
 #include "raster/scene.h"
 #include "raster/setup.h"
+#include "raster/window_cache.h"
 #include "raster/window_transform.h"
 
 namespace pineda::raster {
@@ -17,7 +18,8 @@ class GeometryStage final : public PrimitiveSink {
  public:
   // Uses the scene's current draw; `on_full` is called when the scene asks to be executed.
   // `reference`: primitives are rasterized at once by the reference path, not binned.
-  GeometryStage(Scene& scene, std::function<void()> on_full, bool reference = false);
+  // `window_cache`: the renderer's, which this draw's vertices take over (window_cache.h).
+  GeometryStage(Scene& scene, WindowCache& window_cache, std::function<void()> on_full, bool reference = false);
 
   void point(const ClipVertex& v) override;
   void line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) override;
@@ -35,6 +37,7 @@ class GeometryStage final : public PrimitiveSink {
   void set_vertices(std::span<const ClipVertex> vertices) {
     vertex_base_ = vertices.data();
     vertex_count_ = vertices.size();
+    window_cache_.begin_draw(vertex_count_);
   }
 
   // A programmable draw: vertex i of `vertices` has the varyings at varyings + i * count,
@@ -105,17 +108,7 @@ class GeometryStage final : public PrimitiveSink {
   std::vector<ClipVert> in_, clipped_, scratch_;
   std::vector<WinVert> window_;
 
-  // Post-transform cache of fixed-function draws: the front-colour window vertex of vertex
-  // `index` in slot index & (size - 1), usable when the vertex lies inside the clip volume
-  // (shared vertices of a mesh are transformed to the window once, not once per triangle).
-  struct WindowSlot {
-    size_t index = SIZE_MAX;
-    bool usable = false;
-    int8_t in_view = -1;  // inside the view volume (which lines are clipped to); -1: not known yet
-    WinVert window;
-  };
-  static constexpr size_t kWindowCacheSlots = 1024;
-  std::vector<WindowSlot> window_cache_;
+  WindowCache& window_cache_;
   size_t vertex_count_ = 0;
   ClipVert cache_clip_;  // the vertex being cached (large: not on the stack per call)
   // The cached triangles' setup, reused: a PrimSetup is large, and setup_triangle writes the

@@ -48,6 +48,7 @@ struct Renderer::Impl {
   std::chrono::steady_clock::time_point last_small_hand_off;
   bool timing_small = false, last_small_shared = false;
   std::vector<PreparedWindow> windows;  // room for a programmable draw's vertices; only grows
+  WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
@@ -86,7 +87,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     record.sample_routine = nullptr;  // multisampled: the reference routine on each sample plane
   }
   scene.begin_draw(std::move(record));
-  GeometryStage geometry(scene, [this] { submit(); }, impl_->reference);
+  GeometryStage geometry(scene, impl_->window_cache, [this] { submit(); }, impl_->reference);
   geometry.set_vertices(vertices);
   if (state.shader) {
     geometry.set_varyings(vertices.data(), varyings);

@@ -90,5 +90,33 @@ TEST(WindowCache, GivesThePixelsOfTheGeneralPath) {
   expect_cache_matches_general_path(s, "flat, clockwise front");
 }
 
+// The cache is the renderer's, kept from draw to draw (window_cache.h): a draw whose vertices sit
+// at the same indices as the previous draw's, elsewhere, gets its own windows.
+TEST(WindowCache, ADrawNeverTakesThePreviousDrawsWindows) {
+  for (const Primitive mode : {Primitive::Triangles, Primitive::LineStrip}) {
+    auto draw = [&](Renderer& r, float x0) {
+      const std::vector<ClipVertex> v = {window_vertex(x0, 10, kW, kH), window_vertex(x0 + 30, 12, kW, kH),
+                                         window_vertex(x0 + 5, 50, kW, kH)};
+      r.draw(state_for(kW, kH), mode, v);
+    };
+    OwnedFramebuffer both(kW, kH), second(kW, kH);
+    Renderer r{1}, fresh{1};
+    r.set_framebuffer(both.fb);
+    fresh.set_framebuffer(second.fb);
+    clear_all(r);
+    clear_all(fresh);
+    draw(r, 5.f);
+    r.flush();
+    const int first_only = both.count_nonzero_red();
+    clear_all(r);
+    draw(r, 50.f);  // the same indices, 45 pixels to the right
+    draw(fresh, 50.f);
+    r.flush();
+    fresh.flush();
+    EXPECT_GT(first_only, 0);
+    EXPECT_EQ(both.color, second.color) << (mode == Primitive::Triangles ? "triangles" : "line strip");
+  }
+}
+
 }  // namespace
 }  // namespace pineda::raster::test
