@@ -60,6 +60,18 @@ void fill_rows32(uint8_t* base, ptrdiff_t stride_bytes, const PixelRect& r, uint
   }
 }
 
+// As fill_rows32 for bytes (stencil values), 16 per store: a 64-byte row as `memset` calls took
+// 2% of stencil_reflection's frame.
+void fill_rows8(uint8_t* base, ptrdiff_t stride_bytes, const PixelRect& r, uint8_t value) {
+  const __m128i v = _mm_set1_epi8(static_cast<char>(value));
+  for (int y = r.y0; y < r.y1; ++y) {
+    uint8_t* row = base + static_cast<ptrdiff_t>(y) * stride_bytes;
+    int x = r.x0;
+    for (; x + 16 <= r.x1; x += 16) _mm_storeu_si128(reinterpret_cast<__m128i*>(row + x), v);
+    for (; x < r.x1; ++x) row[x] = value;
+  }
+}
+
 // As fill_rows32, but only the bits of `write` change.
 void fill_rows32_masked(uint8_t* base, ptrdiff_t stride_bytes, const PixelRect& r, uint32_t value, uint32_t write) {
   const uint32_t v = value & write;
@@ -108,12 +120,9 @@ void apply_clear(const ClearRecord& clear, const Framebuffer& fb, const PixelRec
   }
   if (clear.stencil) {
     const uint8_t m = clear.stencil_write_mask;
+    if (m == 0xff) return fill_rows8(fb.stencil.base, fb.stencil.stride, r, clear.stencil_value);
     for (int y = r.y0; y < r.y1; ++y) {
       uint8_t* row = fb.stencil.base + static_cast<ptrdiff_t>(y) * fb.stencil.stride;
-      if (m == 0xff) {
-        std::memset(row + r.x0, clear.stencil_value, static_cast<size_t>(r.x1 - r.x0));
-        continue;
-      }
       for (int x = r.x0; x < r.x1; ++x) row[x] = static_cast<uint8_t>((row[x] & ~m) | (clear.stencil_value & m));
     }
   }
