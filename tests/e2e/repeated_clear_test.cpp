@@ -73,7 +73,7 @@ TEST_F(RepeatedClearTest, DrawPixelsOfEachBuffer) {
 
 TEST_F(RepeatedClearTest, Bitmap) {
   expect_cleared_after([] {
-    const std::vector<GLubyte> ones(16 * 2, 0xff);
+    const std::vector<GLubyte> ones(16 * 4, 0xff);  // rows of 2 bytes padded to GL_UNPACK_ALIGNMENT 4
     glColor3f(0, 1, 0);
     glRasterPos2i(140, 90);
     glBitmap(16, 16, 0, 0, 0, 0, ones.data());
