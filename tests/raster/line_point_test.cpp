@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "tests/raster/test_support.h"
 
@@ -93,6 +95,45 @@ TEST(Lines, DiagonalStripHasOnePixelPerColumn) {
   for (int y = 0; y < kS; ++y)
     for (int x = 0; x < kS; ++x) max = std::max(max, c.at(x, y));
   EXPECT_EQ(max, 1);
+}
+
+// One-pixel lines in 24 directions from the middle of a 200x200 framebuffer, across 64x64 tiles
+// and both ways along each axis: one pixel per column (row) whose centre the line passes, each
+// within half a pixel of the line there. (Their quads go to the fragment routine quad row by
+// quad row as the line passes them: tile_raster.cpp's QuadRowCollector.)
+TEST(Lines, OnePixelLinesAcrossTilesInEveryDirection) {
+  constexpr int kSize = 200;
+  for (int k = 0; k < 24; ++k) {
+    const double angle = 2 * 3.14159265358979 * (k + 0.3) / 24;
+    // Ends near pixel corners, inside no pixel's diamond: the columns are the half-open range.
+    const double x0 = 100.05, y0 = 100.05;
+    const double x1 = std::floor(100 + 90 * std::cos(angle)) + 0.05, y1 = std::floor(100 + 90 * std::sin(angle)) + 0.05;
+    OwnedFramebuffer fb(kSize, kSize);
+    Renderer r{1};
+    r.set_framebuffer(fb.fb);
+    clear_all(r);
+    r.draw(state_for(kSize, kSize), Primitive::Lines,
+           std::vector<ClipVertex>{window_vertex(x0, y0, kSize, kSize), window_vertex(x1, y1, kSize, kSize)});
+    r.flush();
+    const bool x_major = std::fabs(x1 - x0) >= std::fabs(y1 - y0);
+    const double a0 = x_major ? x0 : y0, a1 = x_major ? x1 : y1, b0 = x_major ? y0 : x0, b1 = x_major ? y1 : x1;
+    int expected = 0;
+    for (int m = 0; m < kSize; ++m) {
+      const double c = m + 0.5;
+      if (c < std::min(a0, a1) || c >= std::max(a0, a1)) continue;
+      ++expected;
+      const double minor = b0 + (c - a0) * (b1 - b0) / (a1 - a0);
+      int found = 0;
+      for (int n = 0; n < kSize; ++n) {
+        if (!(x_major ? fb.pixel(m, n) : fb.pixel(n, m))[0]) continue;
+        ++found;
+        EXPECT_LE(std::fabs(n + 0.5 - minor), 0.5 + 1.0 / 128) << "direction " << k << ", at " << m;
+      }
+      EXPECT_EQ(found, 1) << "direction " << k << ", at " << m;
+    }
+    EXPECT_EQ(fb.count_nonzero_red(), expected) << "direction " << k;
+    EXPECT_GT(expected, 60) << "direction " << k;
+  }
 }
 
 TEST(Lines, WideLinesAreSpansAcrossTheMajorAxis) {
