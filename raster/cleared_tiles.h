@@ -16,7 +16,7 @@ namespace pineda::raster {
 // What one tile's buffers hold: for each buffer, whether all its pixels hold the value.
 struct ClearedTile {
   bool color = false, depth = false, stencil = false;
-  uint8_t rgba[4] = {0, 0, 0, 0};
+  uint32_t rgba = 0;  // ClearRecord::rgba's four bytes
   uint32_t depth_value = 0;
   uint8_t stencil_value = 0;
 };

@@ -25,6 +25,11 @@ struct MarkedFramebuffer {
     fb.depth[static_cast<size_t>(y) * kTilesW + x] = 1234;
     fb.stencil_buf[static_cast<size_t>(y) * kTilesW + x] = 9;
   }
+  // A clear, run by a flush that keeps what is known of cleared tiles (as glFinish's does).
+  void clear_for_reading(float red, double depth, int stencil) {
+    clear_all(r, red, depth, stencil);
+    r.flush_for_reading();
+  }
   bool marked(int x, int y) const {
     return fb.pixel(x, y)[1] == 77 && fb.depth_at(x, y) == 1234 && fb.stencil_at(x, y) == 9;
   }
@@ -32,12 +37,10 @@ struct MarkedFramebuffer {
 
 TEST(ClearedTiles, TheSameClearSkipsTilesKnownToHoldItsValue) {
   MarkedFramebuffer m;
-  clear_all(m.r, 1.f, 1.0, 3);
-  m.r.flush_for_reading();
+  m.clear_for_reading(1.f, 1.0, 3);
   m.mark(10, 10);    // tile (0, 0)
   m.mark(140, 90);   // tile (2, 1), partial
-  clear_all(m.r, 1.f, 1.0, 3);
-  m.r.flush_for_reading();
+  m.clear_for_reading(1.f, 1.0, 3);
   EXPECT_TRUE(m.marked(10, 10));
   EXPECT_TRUE(m.marked(140, 90));
   EXPECT_EQ(m.fb.pixel(11, 10)[0], 255);
@@ -48,8 +51,7 @@ TEST(ClearedTiles, APlainFlushForgetsWhatIsKnown) {
   clear_all(m.r, 1.f, 1.0, 3);
   m.r.flush();
   m.mark(10, 10);
-  clear_all(m.r, 1.f, 1.0, 3);
-  m.r.flush_for_reading();
+  m.clear_for_reading(1.f, 1.0, 3);
   EXPECT_FALSE(m.marked(10, 10));
   EXPECT_EQ(m.fb.pixel(10, 10)[1], 0);
   EXPECT_EQ(m.fb.depth_at(10, 10), 0xffffffu);
@@ -58,11 +60,9 @@ TEST(ClearedTiles, APlainFlushForgetsWhatIsKnown) {
 
 TEST(ClearedTiles, AnotherValueIsWritten) {
   MarkedFramebuffer m;
-  clear_all(m.r, 1.f, 1.0, 3);
-  m.r.flush_for_reading();
+  m.clear_for_reading(1.f, 1.0, 3);
   m.mark(10, 10);
-  clear_all(m.r, 0.f, 0.5, 4);
-  m.r.flush_for_reading();
+  m.clear_for_reading(0.f, 0.5, 4);
   EXPECT_EQ(m.fb.pixel(10, 10)[0], 0);
   EXPECT_EQ(m.fb.pixel(10, 10)[1], 0);
   EXPECT_EQ(m.fb.depth_at(10, 10), 0x800000u);  // 0.5 of 24 bits, rounded
@@ -78,8 +78,7 @@ TEST(ClearedTiles, APrimitiveInATileMakesItUnknown) {
   m.r.flush_for_reading();
   m.mark(40, 40);  // tile (0, 0), outside the triangle
   m.mark(100, 40);  // tile (1, 0)
-  clear_all(m.r, 1.f, 1.0, 3);
-  m.r.flush_for_reading();
+  m.clear_for_reading(1.f, 1.0, 3);
   EXPECT_FALSE(m.marked(40, 40));
   EXPECT_TRUE(m.marked(100, 40));
   EXPECT_EQ(m.fb.pixel(5, 5)[1], 0);  // the triangle's white is cleared
@@ -106,8 +105,7 @@ TEST(ClearedTiles, ScissoredOrMaskedClearsLeaveTheirTilesUnknown) {
   m.mark(40, 40);
   m.mark(100, 40);
   m.mark(140, 40);  // tile (2, 0): still known
-  clear_all(m.r, 1.f, 1.0, 3);
-  m.r.flush_for_reading();
+  m.clear_for_reading(1.f, 1.0, 3);
   EXPECT_FALSE(m.marked(40, 40));
   EXPECT_FALSE(m.marked(100, 40));
   EXPECT_TRUE(m.marked(140, 40));
