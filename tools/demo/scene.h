@@ -37,5 +37,6 @@ std::unique_ptr<Scene> createEs1Fixed(int width, int height);
 std::unique_ptr<Scene> createSmooth(int width, int height);
 std::unique_ptr<Scene> createEs2FboLit(int width, int height);
 std::unique_ptr<Scene> createGl21Shaded(int width, int height);
+std::unique_ptr<Scene> createMsaa(int width, int height);
 
 }  // namespace pineda::demo

@@ -10,6 +10,7 @@ const std::vector<SceneEntry>& allScenes() {
       {"es1_fixed", createEs1Fixed, tools::ContextApi::ES11},
       {"es2_fbo_lit", createEs2FboLit, tools::ContextApi::ES20},
       {"gl21_shaded", createGl21Shaded, tools::ContextApi::GL21},
+      {"msaa", createMsaa, tools::ContextApi::GL21},
   };
   return scenes;
 }
