@@ -19,7 +19,10 @@ timed ctest ctest --test-dir "$root/build" -j"$jobs" --output-on-failure
 
 timed "piglit glx" timeout 600 python3 "$root/conformance/run.py" --platform glx --lib-dir "$root/build/lib" \
   --group 'spec@!opengl 1.0' --group 'spec@!opengl 1.1' --group 'spec@!opengl 1.2' \
-  --group 'spec@!opengl 1.3' --group 'spec@!opengl 1.4' --group 'spec@!opengl 1.5' --expected-total 373
+  --group 'spec@!opengl 1.3' --group 'spec@!opengl 1.4' --group 'spec@!opengl 1.5' \
+  --group 'spec@arb_framebuffer_object' --group 'spec@ext_framebuffer_object' --group 'spec@ext_packed_depth_stencil' \
+  --group 'spec@arb_pixel_buffer_object' --group 'spec@ext_framebuffer_blit' --group 'spec@arb_depth_texture' \
+  --expected-total 649
 # OpenGL ES 2.0, GLSL ES 1.00, GL 2.0/2.1 and GLSL 1.10/1.20, headless (5096 tests).
 timed "piglit headless" timeout 900 python3 "$root/conformance/run.py" --platform surfaceless_egl --lib-dir "$root/build/lib" \
   --group 'spec@!opengl es 2.0' --group 'spec@glsl-es-1.00' \
