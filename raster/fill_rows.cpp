@@ -40,7 +40,7 @@ constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 namespace pineda::raster::fill_avx512 {
 namespace {
 constexpr bool kDoubles8 = true;  // 512-bit vectors of 8 doubles
-constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;  // rows of 8 lanes
+constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;  // (rows of 8 lanes, 16-column windows)
 #include "raster/fill_rows_body.inc"
 }  // namespace
 }  // namespace pineda::raster::fill_avx512

@@ -5,6 +5,7 @@
 // orders, and MODULATE of an RGBA or RGB texture (bilinear, mipmapped or not).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <random>
 #include <string>
@@ -38,17 +39,26 @@ struct Config {
   bool mipmapped = false;
   TexFilter mip_filter = TexFilter::LinearMipmapLinear;  // the minification filter when mipmapped
   TexBaseFormat texture_format = TexBaseFormat::RGBA;
+  // Level 0's sides when not mipmapped; pixel_mapped: about one texel per pixel (0.5 to 1.9,
+  // and exactly one on every other triangle, as in a copy of the framebuffer) anywhere on it.
+  int texture_width = 16, texture_height = 16;
+  bool pixel_mapped = false;
 };
 
 std::shared_ptr<const TextureImage> random_texture(const Config& c) {
   std::mt19937 rng(11);
   auto image = std::make_shared<TextureImage>();
   image->base_format = c.texture_format;
+  if (!c.mipmapped) {
+    TextureLevel level{c.texture_width, c.texture_height, {}};
+    for (int i = 0; i < c.texture_width * c.texture_height; ++i) level.texels.push_back(static_cast<uint32_t>(rng()));
+    image->levels.push_back(std::move(level));
+    return image;
+  }
   for (int size = 16; size >= 1; size /= 2) {
     TextureLevel level{size, size, {}};
     for (int i = 0; i < size * size; ++i) level.texels.push_back(static_cast<uint32_t>(rng()));
     image->levels.push_back(std::move(level));
-    if (!c.mipmapped) break;
   }
   return image;
 }
@@ -69,6 +79,13 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
   params.planes = c.textured ? kColorPlanes + kTexPlanesPerUnit : kColorPlanes;
   while (prims.size() < 60) {
     WinVert v[3];
+    // Texels per pixel and where the pixel (0, 0) lands on the texture, for pixel_mapped.
+    double scale = 1.0, s0 = 0.0, t0 = 0.0;
+    if (c.pixel_mapped) {
+      scale = prims.size() % 2 ? 1.0 : 0.5 + unit(rng) * 1.4;
+      s0 = std::floor(unit(rng) * c.texture_width * 1.2) - 0.1 * c.texture_width;
+      t0 = std::floor(unit(rng) * c.texture_height * 1.2) - 0.1 * c.texture_height;
+    }
     // Small and large triangles: a centre, then vertices around it.
     const double cx = px(rng), cy = py(rng), r = prims.size() % 3 == 0 ? size(rng) * 4.0 : size(rng);
     for (WinVert& vert : v) {
@@ -82,6 +99,11 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
       // s, t, q: a few repeats of the texture across a triangle, q near 1
       for (int k = 4; k < 6; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 5.0 - 2.0);
       vert.attr[6] = static_cast<float>(0.5 + unit(rng));
+      if (c.pixel_mapped) {
+        vert.attr[4] = static_cast<float>((s0 + vert.fx * scale) / c.texture_width);
+        vert.attr[5] = static_cast<float>((t0 + vert.fy * scale) / c.texture_height);
+        vert.attr[6] = 1.f;
+      }
     }
     if (c.one_color)
       for (int k = 0; k < 4; ++k) v[1].attr[k] = v[2].attr[k] = v[0].attr[k];
@@ -289,6 +311,26 @@ TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
   c.mask_alpha = true;
   c.depth = true;
   expect_same_as_generic(c, "textured, flat, BGRA, alpha masked");
+}
+
+// A level of 2^18 texels or more, about a texel per pixel: the AVX-512 rows read it through a
+// window of 16 columns by 2 rows (bilinear8_lanes.inc) where the row fits, near its right and top
+// edges too, and gather elsewhere (a repeat's wrap, steep minification).
+TEST(FillRows, PixelMappedLargeTexturesMatchTheGenericRoutine) {
+  Config c;
+  c.textured = true;
+  c.pixel_mapped = true;
+  c.texture_width = 520;
+  c.texture_height = 510;
+  c.blend = true;
+  c.depth = false;
+  expect_same_as_generic_each_wrap(c, "pixel mapped, blend");
+  c.texture_width = 1030;
+  c.texture_height = 257;
+  c.blend = false;
+  c.depth = true;
+  c.texture_format = TexBaseFormat::RGB;
+  expect_same_as_generic_each_wrap(c, "pixel mapped, wide, RGB");
 }
 
 TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
