@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench_scene.h"
+#include "demo/multisample_target.h"
 #include "demo/shader_program.h"
 
 namespace pineda::bench {
@@ -103,19 +104,11 @@ class GlslMsaa final : public BenchScene {
       fan_.insert(fan_.end(), tri, tri + 9);
     }
 
-    glGenRenderbuffers(2, renderbuffers_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, width_, height_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH_COMPONENT24, width_, height_);
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[1]);
+    framebuffer_ = demo::makeMultisampleTarget("glsl_msaa", width_, height_, 4).framebuffer;
   }
 
   int width_, height_;
-  GLuint program_ = 0, texture_ = 0, framebuffer_ = 0, renderbuffers_[2] = {0, 0};
+  GLuint program_ = 0, texture_ = 0, framebuffer_ = 0;
   GLint shift_ = -1;
   std::vector<GLfloat> fan_;
 };

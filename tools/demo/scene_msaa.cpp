@@ -8,9 +8,9 @@
 #include <GL/glext.h>
 
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
+#include "multisample_target.h"
 #include "scene.h"
 #include "shader_program.h"
 
@@ -40,21 +40,7 @@ void main() {
 class Msaa final : public Scene {
  public:
   Msaa(int width, int height) : width_(width), height_(height) {
-    glGenRenderbuffers(2, renderbuffers_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_RGBA8, width, height);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, 4, GL_DEPTH_COMPONENT24, width, height);
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[1]);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      std::fprintf(stderr, "msaa: the multisampled framebuffer is incomplete\n");
-    GLint samples = 0;
-    glGetIntegerv(GL_SAMPLES, &samples);
-    if (samples != 4) std::fprintf(stderr, "msaa: GL_SAMPLES is %d, not 4\n", samples);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    framebuffer_ = makeMultisampleTarget("msaa", width, height, 4).framebuffer;
     disc_program_ = linkProgram("msaa", kDiscVertex, kDiscFragment);
   }
 
@@ -154,7 +140,7 @@ class Msaa final : public Scene {
   }
 
   int width_, height_;
-  GLuint renderbuffers_[2] = {}, framebuffer_ = 0, disc_program_ = 0;
+  GLuint framebuffer_ = 0, disc_program_ = 0;
 };
 
 }  // namespace
