@@ -106,7 +106,8 @@ void choose_config(FuzzInput& in, ClientMemory&) {
   const bool into_array = in.boolean();
   if (!eglChooseConfig(dpy, in.byte() % 8 ? list.data() : nullptr, into_array ? configs.data() : nullptr, size, &found))
     return;
-  if (into_array)
+  // A negative size (the fuzzer's extremes) returns no config, and clamping to it would not.
+  if (into_array && size > 0)
     session.configs.insert(session.configs.end(), configs.begin(), configs.begin() + std::clamp(found, 0, size));
 }
 
