@@ -10,9 +10,9 @@ namespace pineda::raster {
 
 // Round to nearest, no flush to zero, every exception masked: what a thread starts with.
 constexpr unsigned kDefaultFloatModes = 0x1F80;
-// The default modes with flush to zero and denormals are zero: where shaders run
-// (shader::ir::FlushDenormals).
-constexpr unsigned kShaderFloatModes = kDefaultFloatModes | 0x8040;
+// Flush to zero and denormals are zero: where shaders run (shader::ir::FlushDenormals).
+constexpr unsigned kFlushDenormalModes = 0x8040;
+constexpr unsigned kShaderFloatModes = kDefaultFloatModes | kFlushDenormalModes;
 
 class ScopedFloatModes {
  public:

@@ -1,5 +1,6 @@
 #include "raster/reference_lines_points.h"
 
+#include "raster/float_modes.h"
 #include "raster/fragment_extras.h"
 #include "raster/raster_limits.h"
 #include "raster/reference_fragment.h"
@@ -12,6 +13,8 @@ uint64_t reference_lines_points(const PrimSetup& prim, const DrawRecord& draw, c
   const PixelRect& b = prim.bounds;
   if (b.empty()) return 0;
   uint64_t passed = 0;
+  // The modes a tile runs the draw under (Scene::run_tile): shaders expect them set.
+  const ScopedFloatModes modes(draw.state.shader ? kShaderFloatModes : kDefaultFloatModes);
   // The tile rasterizer's line masks are one tile wide.
   for (int ty = b.y0 >> kTileShift; ty <= (b.y1 - 1) >> kTileShift; ++ty)
     for (int tx = b.x0 >> kTileShift; tx <= (b.x1 - 1) >> kTileShift; ++tx) {

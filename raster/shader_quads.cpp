@@ -225,6 +225,7 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
   block.uniform_values = uniform_values;
+  block.denormals_flushed = true;  // a tile runs shader draws with them flushed (Scene::run_tile)
   return true;
 }
 

@@ -86,8 +86,10 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
 
 }  // namespace
 
-bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t, float* const out[4]) const {
-  // (sample_block_at_one_level's route for one level and every lane live, without its checks.)
+bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t, shader::LaneMask live,
+                                        float* const out[4]) const {
+  // (sample_block_at_one_level's route for one level, without its checks: the quads without a
+  // live lane read the level as the others.)
   if (unit >= 0 && unit < kMaxTextureImageUnits && (chosen_ & (1u << unit)) && fast_[static_cast<size_t>(unit)].level_zero_image) {
     const FastSamplers& f = fast_[static_cast<size_t>(unit)];
     f.block(*f.level_zero_image, BlockLevels{}, s, t, out);
@@ -98,7 +100,7 @@ bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t
   if (!image || !kind_matches(*image, SamplerKind::Tex2D)) return false;
   const FastSamplers& f = fast_samplers(unit, *image);
   return f.block && sample_block_at_one_level(f.block, *image, tu->sampler, s, t, shader::LodMode::Implicit, nullptr,
-                                              0xFFFF, out);
+                                              live, out);
 }
 
 const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {

@@ -19,7 +19,8 @@ class UnitTextureAccess final : public shader::TextureAccess {
   // A unit without a complete texture of the sampler's kind reads (0, 0, 0, 1).
   void sample(int unit, shader::SamplerKind kind, const float (*coords)[shader::kLanes], shader::LodMode mode,
               const float* lod, shader::LaneMask live, float (*out)[shader::kLanes]) const override;
-  bool sample_2d_block(int unit, const float* s, const float* t, float* const out[4]) const override;
+  bool sample_2d_block(int unit, const float* s, const float* t, shader::LaneMask live,
+                       float* const out[4]) const override;
 
  private:
   // The fast quad and block samplers of a unit's image for 2D lookups (null: none fits).

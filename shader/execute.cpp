@@ -175,7 +175,7 @@ bool compiled_code_fits(Stage kind, int blocks, RunMask mask) {
 }
 
 RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
-  const ir::FlushDenormals flush;
+  const ir::FlushDenormals flush(io.denormals_flushed);
   alignas(64) float stack_spill[kStackLaneFloats];
   std::unique_ptr<float[]> heap_spill;
   float* spill = stack_spill;

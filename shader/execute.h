@@ -16,8 +16,8 @@ class CompiledStage;
 // (TextureAccess::sample_2d_block), if the lookup and the textures allow it: true when done.
 inline bool sample_whole_2d_block(const TextureAccess* textures, const ir::TextureLookup& t, const float* const coord[4],
                                   const float* sampler, LaneMask block_mask, LaneMask needed, float* const dst[4]) {
-  return textures && t.kind == SamplerKind::Tex2D && t.mode == LodMode::Implicit && (block_mask & needed) == 0xFFFF &&
-         textures->sample_2d_block(sampler_unit(sampler[0]), coord[0], coord[1], dst);
+  return textures && t.kind == SamplerKind::Tex2D && t.mode == LodMode::Implicit && block_mask == 0xFFFF && needed &&
+         textures->sample_2d_block(sampler_unit(sampler[0]), coord[0], coord[1], needed, dst);
 }
 
 // A run executes one instruction over the lanes of several fragment blocks together
@@ -76,6 +76,7 @@ struct LaneIo {
   // Per block: the lanes whose results are used (texture lookups read only these).
   LaneMask needed[kMaxBlocksPerRun] = {0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
   const float* slot_lanes = nullptr;  // the stage's compute_uniform_ops values; null: computed per run
+  bool denormals_flushed = false;     // VertexBatch::denormals_flushed
 };
 
 // Runs `stage` over the lanes of `mask` of `blocks` blocks or vertex batches (1, 2 or 4);

@@ -47,15 +47,15 @@ static_assert(sizeof(kOpNames) / sizeof(kOpNames[0]) == static_cast<size_t>(Op::
 
 #ifdef PINEDA_HAS_MXCSR
 // A tile sets the flush modes once for a run of programmable draws (raster::Scene::run_tile):
-// then the shader's runs find them set, and the MXCSR writes are left out.
-FlushDenormals::FlushDenormals() : saved_(_mm_getcsr()) {
+// then the shader's runs are told so, or find them set, and the MXCSR writes are left out.
+FlushDenormals::FlushDenormals(bool already_set) : saved_(already_set ? 0x8040u : _mm_getcsr()) {
   if ((saved_ & 0x8040) != 0x8040) _mm_setcsr(saved_ | 0x8040);  // FTZ | DAZ
 }
 FlushDenormals::~FlushDenormals() {
   if ((saved_ & 0x8040) != 0x8040) _mm_setcsr(saved_);
 }
 #else
-FlushDenormals::FlushDenormals() : saved_(0) {}
+FlushDenormals::FlushDenormals(bool) : saved_(0) {}
 FlushDenormals::~FlushDenormals() {}
 #endif
 

@@ -20,6 +20,7 @@ void LinkedProgram::run_vertex_batches(const float* uniforms, const TextureAcces
   io.uniforms = uniforms;
   io.textures = textures;
   io.slot_lanes = batches[0].uniform_values;
+  io.denormals_flushed = batches[0].denormals_flushed;
   RunMask mask = 0;
   for (int k = 0; k < count; ++k) {
     const int lanes = batches[k].count > kLanes ? kLanes : (batches[k].count < 0 ? 0 : batches[k].count);
@@ -61,6 +62,7 @@ void LinkedProgram::run_fragment_blocks(const float* uniforms, const TextureAcce
   io.uniforms = uniforms;
   io.textures = textures;
   io.slot_lanes = blocks[0].uniform_values;
+  io.denormals_flushed = blocks[0].denormals_flushed;
   RunMask mask = 0;
   int first_live = -1;
   for (int k = 0; k < count; ++k) {

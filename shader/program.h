@@ -104,6 +104,9 @@ struct VertexBatch {
   float* outputs = nullptr;       // [kOutFirstVarying + varying_floats][kLanes]
   // Program::vertex_uniform_values() of this draw's uniforms, or null (computed per run).
   const float* uniform_values = nullptr;
+  // The caller runs with denormals flushed (MXCSR's FTZ and DAZ set): a run leaves the modes
+  // alone (it reads the first batch's).
+  bool denormals_flushed = false;
 };
 
 // Texture lookups go back to raster/ through this interface, 16 lanes at a time.
@@ -123,11 +126,12 @@ class TextureAccess {
   // the shadow reference in r for Shadow*); out[c][lane]: RGBA after the texture's base format.
   virtual void sample(int unit, SamplerKind kind, const float (*coords)[kLanes], LodMode mode,
                       const float* lod, LaneMask live, float (*out)[kLanes]) const = 0;
-  // The same as sample(unit, Tex2D, {s, t}, Implicit, nullptr, every lane, out) by a shorter
-  // route where the unit's texture has one (out[c] may be s or t); false, with nothing written,
-  // where it has none.
-  virtual bool sample_2d_block(int unit, const float* s, const float* t, float* const out[4]) const {
-    (void)unit, (void)s, (void)t, (void)out;
+  // The same as sample(unit, Tex2D, {s, t}, Implicit, nullptr, live, out) by a shorter route
+  // where the unit's texture has one (out[c] may be s or t), except that the quads without a
+  // live lane may read any texel (all 16 lanes are written); false, with nothing written, where
+  // it has none.
+  virtual bool sample_2d_block(int unit, const float* s, const float* t, LaneMask live, float* const out[4]) const {
+    (void)unit, (void)s, (void)t, (void)live, (void)out;
     return false;
   }
 };
@@ -146,6 +150,7 @@ struct FragmentBlock {
   // Program::fragment_uniform_values() of this draw's uniforms, or null (computed per block).
   const float* uniform_values = nullptr;
   const float* varyings = nullptr;    // [varying float][kLanes], already perspective-divided
+  bool denormals_flushed = false;     // as VertexBatch's (a run reads the first block's)
   LaneMask front_facing = 0;
   // Each row of lanes on a 64-byte line: the executors read and write whole rows, and a row
   // across two lines made every colour store two (glsl_lit spent a tenth of its time there).

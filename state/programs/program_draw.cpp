@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "raster/draw_record.h"
+#include "raster/float_modes.h"
 #include "raster/renderer.h"
 #include "raster/shader_draw.h"
 #include "raster/shader_textures.h"
@@ -184,6 +185,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const std::vector<float> uniform_values = program.vertex_uniform_values(uniforms);
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
+    // Set once for the piece rather than by each run (batches' denormals_flushed).
+    const raster::ScopedFloatModes modes(raster::ScopedFloatModes::current() | raster::kFlushDenormalModes);
     std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
     for (size_t first = begin; first < end; first += kRunVertices) {
       const size_t count = std::min(kRunVertices, end - first);
@@ -225,6 +228,7 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         batches[b].inputs = in.data() + static_cast<size_t>(b) * in_floats;
         batches[b].outputs = result.data() + static_cast<size_t>(b) * out_floats;
         batches[b].uniform_values = uniform_values.empty() ? nullptr : uniform_values.data();
+        batches[b].denormals_flushed = true;
       }
       program.run_vertex_batches(uniforms, &textures, batches, batch_count);
       for (size_t i = 0; i < count; ++i) {
