@@ -109,6 +109,9 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
     d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth ||
                    state.line_smooth || fades_points;
     d.routine = shade_program_quads;
+    for (size_t u = 0; u < state.texture_units.size(); ++u)
+      if (const TextureUnit& unit = state.texture_units[u]; unit.image)
+        d.shader_samplers[u] = choose_fast_samplers(*unit.image, unit.sampler, path);
   }
   // Multisampled: a fill routine (fill_rows.h) on each sample plane outruns one shading per
   // pixel followed by the generic quad operations per sample (2x2 quads, one lane per pixel), so

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "raster/draw_state.h"
+#include "raster/fast_samplers.h"
 #include "raster/framebuffer.h"
 #include "raster/prim_setup.h"
 #include "raster/sample_quad_tests.h"
@@ -45,6 +46,8 @@ struct DrawRecord {
   std::array<uint8_t, kMaxTextureUnits> tex_plane{};  // first plane (s, t, q) of each enabled unit, in order
   std::array<int8_t, kMaxTextureUnits> r_plane{-1, -1, -1, -1};  // its r plane, -1 when not read
   std::array<QuadSampler, kMaxTextureUnits> fast_sampler{};  // of each enabled unit, in order; null: sample_quad
+  // A programmable draw: each texture image unit's samplers for its 2D lookups (shader_textures.h).
+  std::array<FastSamplers, kMaxTextureImageUnits> shader_samplers{};
   // One unit, its fast sampler, MODULATE of an RGB or RGBA texture: the quad is textured in lanes.
   bool modulate_in_lanes = false;
   // modulate_in_lanes without mipmaps (LINEAR minification): no level of detail, so the fill

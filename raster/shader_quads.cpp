@@ -371,7 +371,7 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   const float* uniform_values = sd.fragment_uniform_values();
   const auto targets = target_views<kTargets>(d, fb);
-  const UnitTextureAccess textures(d.state.texture_units);
+  const UnitTextureAccess textures(d.state.texture_units, &d.shader_samplers);
   uint32_t passed = 0;
   RowBlocks row;
   const bool early = early_tests(d, *sd.program);
@@ -409,7 +409,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
   std::array<std::conditional_t<kTargets, TargetViews, NoTargets>, kMaxSamples> targets;
   for (int s = 0; s < kMaxSamples; ++s)
     if (t.draw[s]) targets[size_t(s)] = target_views<kTargets>(*t.draw[s], t.plane[s]);
-  const UnitTextureAccess textures(d.state.texture_units);
+  const UnitTextureAccess textures(d.state.texture_units, &d.shader_samplers);
   // Alpha to coverage makes every sample's record alpha-test (multisample.cpp).
   const bool early = early_tests(d, *sd.program) && !d.sample_draws;
   uint32_t passed = 0;

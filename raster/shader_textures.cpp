@@ -90,10 +90,13 @@ bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t
                                         float* const out[4]) const {
   // (sample_block_at_one_level's route for one level, without its checks: the quads without a
   // live lane read the level as the others.)
-  if (unit >= 0 && unit < kMaxTextureImageUnits && (chosen_ & (1u << unit)) && fast_[static_cast<size_t>(unit)].level_zero_image) {
-    const FastSamplers& f = fast_[static_cast<size_t>(unit)];
-    f.block(*f.level_zero_image, BlockLevels{}, s, t, out);
-    return true;
+  if (unit >= 0 && unit < kMaxTextureImageUnits) {
+    const FastSamplers* known = chosen_samplers_ ? &(*chosen_samplers_)[static_cast<size_t>(unit)]
+                                : (chosen_ & (1u << unit)) ? &fast_[static_cast<size_t>(unit)] : nullptr;
+    if (known && known->level_zero_image) {
+      known->block(*known->level_zero_image, BlockLevels{}, s, t, out);
+      return true;
+    }
   }
   const TextureUnit* tu = unit >= 0 && unit < kMaxTextureImageUnits ? &units_[unit] : nullptr;
   const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
@@ -103,22 +106,28 @@ bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t
                                               live, out);
 }
 
-const UnitTextureAccess::FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {
+const FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {
+  if (chosen_samplers_) return (*chosen_samplers_)[static_cast<size_t>(unit)];
   FastSamplers& f = fast_[static_cast<size_t>(unit)];
   if (!(chosen_ & (1u << unit))) {
     static const SimdPath path = simd_path_from_environment();  // as the shader executor chooses its copy
-    const Sampler& sampler = units_[static_cast<size_t>(unit)].sampler;
-    f.quad = select_bilinear8_sampler(image, sampler);
-    // (The block samplers scale coordinates by the size: none for a rectangle.)
-    const bool planar = image.kind == TexKind::Planar;
-    f.block = f.quad && planar ? select_bilinear8_block_sampler(sampler, path) : nullptr;
-    if (!f.quad) {
-      f.quad = select_nearest8_sampler(image, sampler);
-      f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
-    }
-    f.level_zero_image = f.block && reads_level_zero(sampler) && kind_matches(image, SamplerKind::Tex2D) ? &image : nullptr;
+    f = choose_fast_samplers(image, units_[static_cast<size_t>(unit)].sampler, path);
     chosen_ |= 1u << unit;
   }
+  return f;
+}
+
+FastSamplers choose_fast_samplers(const TextureImage& image, const Sampler& sampler, SimdPath path) {
+  FastSamplers f{};
+  f.quad = select_bilinear8_sampler(image, sampler);
+  // (The block samplers scale coordinates by the size: none for a rectangle.)
+  const bool planar = image.kind == TexKind::Planar;
+  f.block = f.quad && planar ? select_bilinear8_block_sampler(sampler, path) : nullptr;
+  if (!f.quad) {
+    f.quad = select_nearest8_sampler(image, sampler);
+    f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
+  }
+  f.level_zero_image = f.block && reads_level_zero(sampler) && kind_matches(image, SamplerKind::Tex2D) ? &image : nullptr;
   return f;
 }
 

@@ -264,8 +264,12 @@ void jit::call_texture(const Frame* frame, const FrameTextureLookup* t) {
                              t->lookup.lod == ir::kNone ? nullptr : lanes(t->lod), frame->mask, frame->needed, dst);
 }
 
+bool runs_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask) {
+  return stage.compiled && compiled_code_fits(kind, blocks, mask);
+}
+
 RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io) {
-  if (stage.compiled && compiled_code_fits(kind, blocks, mask)) return run_compiled(stage, kind, blocks, mask, io);
+  if (runs_compiled(stage, kind, blocks, mask)) return run_compiled(stage, kind, blocks, mask, io);
   static const Executors run = choose_executors();
   if (blocks >= 4) return run.four(stage, kind, mask, io);
   return blocks == 2 ? run.two(stage, kind, mask, io) : run.one(stage, kind, mask, io);

@@ -79,8 +79,12 @@ struct LaneIo {
   bool denormals_flushed = false;     // VertexBatch::denormals_flushed
 };
 
-// Runs `stage` over the lanes of `mask` of `blocks` blocks or vertex batches (1, 2 or 4);
-// returns the lanes that executed discard.
+// Runs `stage` over the lanes of `mask` of `blocks` blocks or vertex batches (1, 2 or 4; 3
+// where runs_compiled says so); returns the lanes that executed discard.
 RunMask execute(const StageCode& stage, Stage kind, int blocks, RunMask mask, const LaneIo& io);
+
+// Whether execute() takes the compiled code for this run: it runs the blocks one at a time,
+// any number of them (the interpreter runs 1, 2 or 4 together).
+bool runs_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask);
 
 }  // namespace pineda::shader

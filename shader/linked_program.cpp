@@ -10,7 +10,9 @@ void LinkedProgram::run_vertex_batches(const float* uniforms, const TextureAcces
                                        int count) const {
   if (!vertex_ || count <= 0) return;
   const int per_run = blocks_per_run(*vertex_);
-  if (count > per_run || count == 3) {  // three run as two and one: a padding batch would need outputs
+  // The interpreter runs three as two and one (a padding batch would need outputs); compiled
+  // code takes any number.
+  if (count > per_run || (count == 3 && !runs_compiled(*vertex_, Stage::Vertex, count, 0))) {
     const int first = count > per_run ? per_run : 2;
     run_vertex_batches(uniforms, textures, batches, first);
     run_vertex_batches(uniforms, textures, batches + first, count - first);
@@ -74,9 +76,9 @@ void LinkedProgram::run_fragment_blocks(const float* uniforms, const TextureAcce
     mask |= static_cast<RunMask>(blocks[k].run ? blocks[k].run : quads) << (k * kLanes);
   }
   if (first_live < 0) return;
-  // Three blocks run as four: the fourth repeats the first live one's inputs, reads no texture
-  // and its results go nowhere.
-  const int run = count == 3 ? 4 : count;
+  // Three blocks run as four in the interpreter: the fourth repeats the first live one's inputs,
+  // reads no texture and its results go nowhere. Compiled code runs blocks one by one.
+  const int run = count == 3 && !runs_compiled(*fragment_, Stage::Fragment, count, mask) ? 4 : count;
   FragmentBlock pad;
   if (run > count) {
     pad = blocks[first_live];
