@@ -1,5 +1,6 @@
 // A fixed set of threads that, together with the calling thread, runs the items of a job.
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -33,6 +34,11 @@ class WorkerPool {
  private:
   void worker_loop();
   void drain(std::unique_lock<std::mutex>& lock);
+  // Before a thread blocks on a condition variable it polls `ready` for a short while (the
+  // mutex not held): handing a job to a sleeping thread (a futex wake, then the scheduler's
+  // wake-up) cost more than rasterizing a scene of a thousand small triangles on this VM.
+  template <class Ready>
+  static bool poll_briefly(const Ready& ready);
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;
@@ -41,9 +47,12 @@ class WorkerPool {
   std::function<void(int)> job_;
   int count_ = 0;
   int next_ = 0;
-  int finished_ = 0;
-  uint64_t generation_ = 0;
-  bool stop_ = false;
+  // Written under the mutex; read without it while polling.
+  std::atomic<int> finished_{0};
+  std::atomic<uint64_t> generation_{0};
+  std::atomic<bool> stop_{false};
+  // Workers blocked on wake_ (under the mutex): start() wakes them only if there are some.
+  int sleeping_ = 0;
 };
 
 // threads <= 0: PINEDA_THREADS if set to a positive number, otherwise one per core.
