@@ -3,38 +3,76 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace pineda::raster {
 namespace {
+
+constexpr int kCounted = SmallPrimSharing::kWarmUpScenes + 1;  // scenes of a new way until one counts
+
+// Scenes of one way until a sample of it counts.
+void measure(SmallPrimSharing& s, bool shared, double ns, size_t prims) {
+  for (int i = 0; i < kCounted; ++i) s.record(shared, ns, prims);
+}
 
 TEST(SmallPrimSharing, MeasuresBothWaysFirst) {
   SmallPrimSharing s;
   EXPECT_FALSE(s.share());  // rasterized where binned until measured
-  s.record(false, 100000.0, 1000);
+  measure(s, false, 100000.0, 1000);
   EXPECT_TRUE(s.share());  // then shared until measured
-  s.record(true, 300000.0, 1000);
+  measure(s, true, 300000.0, 1000);
   EXPECT_FALSE(s.share());  // 100 ns a primitive where binned against 300 shared
   EXPECT_DOUBLE_EQ(s.ns_per_prim(false), 100.0);
   EXPECT_DOUBLE_EQ(s.ns_per_prim(true), 300.0);
 }
 
+TEST(SmallPrimSharing, TheFirstScenesOfANewWayDoNotCount) {
+  SmallPrimSharing s;
+  measure(s, false, 100000.0, 1000);
+  // A thread taking scenes over starts cold: those samples are left out, the way is held.
+  for (int i = 0; i < SmallPrimSharing::kWarmUpScenes; ++i) {
+    EXPECT_TRUE(s.share());
+    s.record(true, 900000.0, 1000);
+    EXPECT_DOUBLE_EQ(s.ns_per_prim(true), 0.0);
+  }
+  s.record(true, 60000.0, 1000);
+  EXPECT_DOUBLE_EQ(s.ns_per_prim(true), 60.0);
+  EXPECT_TRUE(s.share());  // 60 ns shared against 100 where binned
+  // Back where binned: again only from the third scene on.
+  s.record(false, 500000.0, 1000);
+  s.record(false, 500000.0, 1000);
+  EXPECT_DOUBLE_EQ(s.ns_per_prim(false), 100.0);
+  s.record(false, 500000.0, 1000);
+  EXPECT_DOUBLE_EQ(s.ns_per_prim(false), 200.0);  // a quarter of the way to 500
+}
+
 TEST(SmallPrimSharing, TakesTheFasterWayAndRetriesTheOther) {
   SmallPrimSharing s;
-  s.record(false, 100000.0, 1000);
-  s.record(true, 50000.0, 1000);
-  int shared = 0, local = 0;
+  measure(s, false, 100000.0, 1000);
+  measure(s, true, 50000.0, 1000);
+  std::vector<int> local_runs;  // lengths of the runs of scenes rasterized where binned
+  int shared = 0, run = 0;
   for (int i = 0; i < 4 * SmallPrimSharing::kRetryEvery; ++i) {
     const bool way = s.share();
-    (way ? shared : local) += 1;
+    if (way) {
+      ++shared;
+      if (run) local_runs.push_back(run);
+      run = 0;
+    } else {
+      ++run;
+    }
     s.record(way, way ? 50000.0 : 100000.0, 1000);
   }
-  EXPECT_EQ(local, 4);  // one retry in every kRetryEvery scenes
-  EXPECT_EQ(shared, 4 * SmallPrimSharing::kRetryEvery - 4);
+  // Each retry runs until one sample counts (three scenes), then sharing until the next retry
+  // is due: 64 counted samples after the last, two more scenes for sharing's own warm-up.
+  EXPECT_EQ(local_runs, (std::vector<int>{kCounted, kCounted, kCounted}));
+  EXPECT_EQ(shared, 4 * SmallPrimSharing::kRetryEvery - 3 * kCounted);
 }
 
 TEST(SmallPrimSharing, FollowsAChangeOfTheMachine) {
   SmallPrimSharing s;
-  s.record(false, 70000.0, 1000);
-  s.record(true, 50000.0, 1000);
+  measure(s, false, 70000.0, 1000);
+  measure(s, true, 50000.0, 1000);
   EXPECT_TRUE(s.share());
   // Sharing becomes dear (another tenant): the running average moves by a quarter a sample.
   s.record(true, 150000.0, 1000);
@@ -44,7 +82,7 @@ TEST(SmallPrimSharing, FollowsAChangeOfTheMachine) {
 
 TEST(SmallPrimSharing, IgnoresEmptyScenes) {
   SmallPrimSharing s;
-  s.record(false, 1000.0, 0);
+  for (int i = 0; i < kCounted; ++i) s.record(false, 1000.0, 0);
   EXPECT_FALSE(s.share());
   EXPECT_DOUBLE_EQ(s.ns_per_prim(false), 0.0);
 }
