@@ -136,10 +136,13 @@ class TextureAccess {
   }
 };
 
-// One 4x4 block of fragments (value-initialize it, FragmentBlock{}, for zeros: the arrays have
-// no initializers, so that raster/ fills only what a program reads). Lane i is pixel (x0 + (i & 1) + 2 * ((i >> 2) & 1),
-// y0 + ((i >> 1) & 1) + 2 * (i >> 3)): lanes 4q..4q+3 form 2x2 quad q, so derivatives
-// (dFdx: lane ^ 1, dFdy: lane ^ 2) and implicit LOD come from real neighbours.
+// One block of 16 fragments (value-initialize it, FragmentBlock{}, for zeros: the arrays have
+// no initializers, so that raster/ fills only what a program reads): four 2x2 quads, lanes
+// 4q..4q+3 forming quad q, lane 4q + i its pixel (x_q + (i & 1), y_q + (i >> 1)), so that
+// derivatives (dFdx: lane ^ 1, dFdy: lane ^ 2) and implicit LOD come from real neighbours. Which
+// quads make a block is the caller's choice: raster/ takes up to four quads of one pixel-row
+// pair of a primitive, adjacent or not (a 4x4 square would be quads (x0, y0), (x0 + 2, y0),
+// (x0, y0 + 2), (x0 + 2, y0 + 2)).
 struct FragmentBlock {
   LaneMask live = 0;                  // in: covered; out: covered and not discarded
   // Lanes to run. 0: every lane of a quad with a live pixel. A caller that fills the lanes of
