@@ -29,14 +29,24 @@ std::shared_ptr<const TextureImage> random_mipmapped(int size, std::mt19937& ran
 
 // Quads 0 and 1 magnified (a 64th of a texel per pixel), quads 2 and 3 minified (8 texels per
 // pixel): a mipmapped texture reads level 0 for the first two and level 3 for the others.
-void two_kinds_of_quads(float s[kLanes], float t[kLanes]) {
+// coords[0] and [1] are s and t; r and q stay zero.
+void two_kinds_of_quads(float coords[4][kLanes]) {
   for (int q = 0; q < 4; ++q) {
     const float step = q < 2 ? 1.f / (64.f * 64.f) : 8.f / 64.f;
     for (int i = 0; i < 4; ++i) {
-      s[4 * q + i] = 0.3f + 0.1f * static_cast<float>(q) + step * static_cast<float>(i & 1);
-      t[4 * q + i] = 0.6f - 0.05f * static_cast<float>(q) + step * static_cast<float>(i >> 1);
+      coords[0][4 * q + i] = 0.3f + 0.1f * static_cast<float>(q) + step * static_cast<float>(i & 1);
+      coords[1][4 * q + i] = 0.6f - 0.05f * static_cast<float>(q) + step * static_cast<float>(i >> 1);
     }
   }
+}
+
+// Unit u's fast samplers chosen for the draw, as DrawRecord::shader_samplers holds them.
+std::array<FastSamplers, kMaxTextureImageUnits> chosen_for(const std::array<TextureUnit, kMaxTextureImageUnits>& units,
+                                                          int u) {
+  std::array<FastSamplers, kMaxTextureImageUnits> chosen{};
+  chosen[static_cast<size_t>(u)] = choose_fast_samplers(*units[static_cast<size_t>(u)].image,
+                                                        units[static_cast<size_t>(u)].sampler, SimdPath::Best);
+  return chosen;
 }
 
 struct Lanes {
@@ -59,13 +69,10 @@ TEST(ShaderTextures, BlockRouteChoosesTheLevelFromTheLiveQuadsAlone) {
   std::array<TextureUnit, kMaxTextureImageUnits> units;
   units[2].image = random_mipmapped(64, random);
   units[2].sampler.min_filter = TexFilter::LinearMipmapNearest;
-  alignas(64) float s[kLanes], t[kLanes];
-  two_kinds_of_quads(s, t);
-  float coords[4][kLanes] = {};
-  std::memcpy(coords[0], s, sizeof s);
-  std::memcpy(coords[1], t, sizeof t);
-  std::array<FastSamplers, kMaxTextureImageUnits> chosen{};
-  chosen[2] = choose_fast_samplers(*units[2].image, units[2].sampler, SimdPath::Best);
+  alignas(64) float coords[4][kLanes] = {};
+  two_kinds_of_quads(coords);
+  const float *s = coords[0], *t = coords[1];
+  const std::array<FastSamplers, kMaxTextureImageUnits> chosen = chosen_for(units, 2);
   ASSERT_NE(chosen[2].block, nullptr);
   EXPECT_EQ(chosen[2].level_zero_image, nullptr);  // mipmapped: the level depends on the quads
   for (const bool with_chosen : {false, true}) {
@@ -91,13 +98,10 @@ TEST(ShaderTextures, LevelZeroRouteWritesEveryLaneAndMatchesSampleOnLiveQuads) {
   units[0].image = random_mipmapped(64, random);
   units[0].sampler.min_filter = TexFilter::Linear;
   units[0].sampler.wrap_s = units[0].sampler.wrap_t = TexWrap::ClampToEdge;
-  alignas(64) float s[kLanes], t[kLanes];
-  two_kinds_of_quads(s, t);
-  float coords[4][kLanes] = {};
-  std::memcpy(coords[0], s, sizeof s);
-  std::memcpy(coords[1], t, sizeof t);
-  std::array<FastSamplers, kMaxTextureImageUnits> chosen{};
-  chosen[0] = choose_fast_samplers(*units[0].image, units[0].sampler, SimdPath::Best);
+  alignas(64) float coords[4][kLanes] = {};
+  two_kinds_of_quads(coords);
+  const float *s = coords[0], *t = coords[1];
+  const std::array<FastSamplers, kMaxTextureImageUnits> chosen = chosen_for(units, 0);
   ASSERT_EQ(chosen[0].level_zero_image, units[0].image.get());
   for (const bool with_chosen : {false, true}) {
     const UnitTextureAccess textures(units, with_chosen ? &chosen : nullptr);
