@@ -24,6 +24,9 @@ struct Renderer::Impl {
       : reference(reference_mode), simd(simd_path), pool(reference ? 1 : resolve_thread_count(threads)) {
     scene.reset(fb);
     running.reset(fb);
+    // Each scene is read by the pool's threads between its turns at binning.
+    scene.prefetch_writes(pool.threads() > 1);
+    running.prefetch_writes(pool.threads() > 1);
   }
   const bool reference;  // PINEDA_REFERENCE at creation: primitives drawn at once, per pixel
   const SimdPath simd;   // PINEDA_SIMD at creation

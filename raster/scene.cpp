@@ -6,6 +6,7 @@
 #include "raster/cleared_tiles.h"
 #include "raster/float_modes.h"
 #include "raster/multisample.h"
+#include "raster/prefetch_for_write.h"
 #include "raster/raster_limits.h"
 #include "raster/tile_raster.h"
 #include "raster/worker_pool.h"
@@ -68,6 +69,9 @@ void Scene::retain_textures(const DrawRecord& draw) {
 
 namespace {
 
+// How many primitives ahead add_prim asks for the lines it will write (prefetch_for_write.h).
+constexpr size_t kWriteAhead = 6;
+
 // The first `bytes` of `from` into `to`, in whole 16-byte pieces (sizeof(PrimSetup) is a
 // multiple of 16): vector moves, where a memcpy of a variable size became `rep movs` here, whose
 // start-up cost per primitive was most of add_prim's time.
@@ -106,8 +110,11 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
   const size_t pixels = static_cast<size_t>(r.x1 - r.x0) * static_cast<size_t>(r.y1 - r.y0);
   bounded_pixels_ += prim.kind == CoverageKind::Triangle ? pixels : std::max(pixels, kSharedPixelsPerPrim);
   if (prim_count_ == prims_.size()) prims_.resize(prims_.size() + kMaxPrims);  // (full() stops binning before)
+  const size_t bytes = used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes));
+  if (prefetch_writes_ && prim_count_ + kWriteAhead < prims_.size())
+    prefetch_for_write(&prims_[prim_count_ + kWriteAhead], bytes);
   PrimSetup& stored = prims_[prim_count_++];
-  copy_prim(stored, prim, used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes)));
+  copy_prim(stored, prim, bytes);
   stored.draw = static_cast<uint32_t>(draws_.size() - 1);
   if (count <= 0) return;
   const size_t n = static_cast<size_t>(count);
@@ -116,6 +123,8 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
     planes_used_ = 0;
   }
   Plane* dst = plane_chunks_.back().get() + planes_used_;
+  if (prefetch_writes_ && planes_used_ + (kWriteAhead + 1) * n <= kPlaneChunk)
+    prefetch_for_write(dst + kWriteAhead * n, n * sizeof(Plane));
   std::copy(varying_planes, varying_planes + n, dst);
   planes_used_ += n;
   stored.varying_planes = dst;

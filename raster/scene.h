@@ -53,6 +53,9 @@ class Scene {
   bool small_prims() const;
   void share_small_prims(bool share) { share_small_prims_ = share; }
   size_t prim_count() const { return prim_count_; }
+  // Whether binning asks ahead for the lines it will write (prefetch_for_write.h): worth it when
+  // other threads read the scene's memory between its turns at binning.
+  void prefetch_writes(bool ahead) { prefetch_writes_ = ahead; }
   void start(WorkerPool& pool);
   void finish(WorkerPool& pool);
   // The current draw of `from`, shared, so that a draw interrupted by a full scene goes on here.
@@ -83,6 +86,7 @@ class Scene {
   size_t prim_count_ = 0;
   size_t bounded_pixels_ = 0;  // the queued primitives' bounding boxes' pixels, summed
   bool share_small_prims_ = false;
+  bool prefetch_writes_ = false;
   std::vector<ClearRecord> clears_;
   std::vector<std::vector<uint32_t>> bins_;
   std::vector<int> touched_tiles_;
