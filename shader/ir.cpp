@@ -46,13 +46,20 @@ static_assert(sizeof(kOpNames) / sizeof(kOpNames[0]) == static_cast<size_t>(Op::
 }  // namespace
 
 #ifdef PINEDA_HAS_MXCSR
-// A tile sets the flush modes once for a run of programmable draws (raster::Scene::run_tile):
-// then the shader's runs are told so, or find them set, and the MXCSR writes are left out.
-FlushDenormals::FlushDenormals(bool already_set) : saved_(already_set ? 0x8040u : _mm_getcsr()) {
-  if ((saved_ & 0x8040) != 0x8040) _mm_setcsr(saved_ | 0x8040);  // FTZ | DAZ
+namespace {
+// Round to nearest, flush to zero and denormals are zero, every exception masked
+// (raster::kShaderFloatModes); the status flags (the low six bits) do not count.
+constexpr unsigned kShaderModes = 0x9FC0, kStatusFlags = 0x3F;
+}  // namespace
+
+// A tile sets the modes once for a run of programmable draws (raster::Scene::run_tile), the
+// vertex stage once per piece: then the shader's runs are told so, or find them set, and the
+// MXCSR writes are left out.
+FlushDenormals::FlushDenormals(bool already_set) : saved_(already_set ? kShaderModes : _mm_getcsr()) {
+  if ((saved_ & ~kStatusFlags) != kShaderModes) _mm_setcsr(kShaderModes);
 }
 FlushDenormals::~FlushDenormals() {
-  if ((saved_ & 0x8040) != 0x8040) _mm_setcsr(saved_);
+  if ((saved_ & ~kStatusFlags) != kShaderModes) _mm_setcsr(saved_);
 }
 #else
 FlushDenormals::FlushDenormals(bool) : saved_(0) {}

@@ -113,6 +113,9 @@ inline float lane_smoothstep(float e0, float e1, float x) {
 
 // Denormals are flushed to zero (inputs and results) while shaders run and while their
 // constants fold, as GPUs and GLSL allow: same values either way, and no slow denormal path.
+// The rest of the modes are the defaults (round to nearest, exceptions masked), whatever the
+// application set: its rounding mode would otherwise change results and split the tiers (the
+// compiled tier makes floor's zeros +0 by adding +0), an exception it unmasked would trap.
 class FlushDenormals {
  public:
   // already_set: the caller runs with them set (raster::Scene::run_tile does for shader draws),

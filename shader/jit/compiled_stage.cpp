@@ -578,13 +578,11 @@ class Generator {
     x_.vblendmps(d, 1, b, a);
   }
   // d = ir::lane_trunc(a) or ir::lane_floor(a): the rounded value, except that a zero result is
-  // +0 (the lane routines convert through an integer) and NaN keeps its bits. d is written last.
+  // +0 as the lane routines give it (they convert through an integer): adding +0 turns -0 into +0
+  // (round to nearest, as shaders run) and leaves every other value, a NaN a NaN. d is written last.
   void round_to(int d, int a, uint8_t mode) {
     x_.vrndscaleps(kScratch, a, mode);
-    x_.vcmpps(1, kScratch, kZeroReg, Cmp::Eq);
-    x_.vmovaps(kScratch, kZeroReg, 1);
-    x_.vcmpps(2, a, a, Cmp::Unord);
-    x_.vblendmps(d, 2, kScratch, a);
+    x_.vaddps(d, kScratch, kZeroReg);
   }
   void compare(int d, int a, int b, Cmp pred) {
     x_.vcmpps(1, a, b, pred);

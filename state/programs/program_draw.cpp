@@ -185,8 +185,9 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const std::vector<float> uniform_values = program.vertex_uniform_values(uniforms);
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
-    // Set once for the piece rather than by each run (batches' denormals_flushed).
-    const raster::ScopedFloatModes modes(raster::ScopedFloatModes::current() | raster::kFlushDenormalModes);
+    // The shaders' modes (shader::ir::FlushDenormals), set once for the piece rather than by
+    // each run (batches' denormals_flushed).
+    const raster::ScopedFloatModes modes(raster::kShaderFloatModes);
     std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
     for (size_t first = begin; first < end; first += kRunVertices) {
       const size_t count = std::min(kRunVertices, end - first);

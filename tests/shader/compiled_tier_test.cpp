@@ -4,6 +4,7 @@
 // through call-outs (texture-free ones here; images cover texture lookups), and with
 // `if (c) discard;` (the discarded lanes too).
 #include <gtest/gtest.h>
+#include <xmmintrin.h>
 
 #include <bit>
 #include <cstring>
@@ -138,6 +139,26 @@ TEST_F(CompiledTier, EveryOperationGivesTheInterpretersBits) {
       }
     }
   }
+}
+
+// The caller's rounding mode (an application's) reaches neither tier: runs set round to nearest
+// (ir::FlushDenormals), under which the compiled rounding's zeros are +0 as the interpreter's.
+TEST_F(CompiledTier, TheCallersRoundingModeDoesNotSplitTheTiers) {
+  struct RoundingDown {
+    const unsigned saved = _mm_getcsr();
+    RoundingDown() { _mm_setcsr((saved & ~0x6000u) | 0x2000u); }
+    ~RoundingDown() { _mm_setcsr(saved); }
+  } rounding_down;
+  for (Stage kind : {Stage::Fragment, Stage::Vertex})
+    for (Op op : {Op::Floor, Op::Trunc, Op::Fract, Op::Ceil, Op::Add, Op::Mul}) {
+      ir::Code code;
+      const Operand a = load(code, kind, 0);
+      const Operand b = ir::op_arity(op) == 2 ? load(code, kind, 1) : ir::kNone;
+      const Operand d = code.new_register();
+      code.insts.push_back(ir::Inst{op, d, a, b, ir::kNone, 0, 0});
+      store(code, kind, d, 0);
+      expect_same_bits(std::move(code), kind, {}, ir::op_name(op));
+    }
 }
 
 TEST_F(CompiledTier, LoadsAndStoresOfEveryKind) {
