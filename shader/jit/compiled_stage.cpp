@@ -522,6 +522,12 @@ class Generator {
         break;
     }
     if (in.op == Op::Gather) sync_indexed_registers(at, in, false);
+    // A run of uniform gathers with one index (the elements of a matrix in a uniform array:
+    // glsl_skinned's bones) clamps it once: kScratch holds it from the gather just before (nothing
+    // between two instructions' emissions uses kScratch).
+    const ir::Inst* before = at > 0 ? &insts_[static_cast<size_t>(at - 1)] : nullptr;
+    gather_index_ready_ = in.op == Op::GatherUniform && before && before->op == Op::GatherUniform &&
+                          before->a == in.a && before->i1 == in.i1 && before->d != in.a;
     finish_sources(at, in);
     // The destination's old value ends here; the sequence below writes d last.
     const int dv = id(in.d);
@@ -616,7 +622,7 @@ class Generator {
         x_.vcmpps(1, a, kZeroReg, Cmp::Gt);
         return x_.vmovaps(d, kScratch, 1, true);
       case Op::GatherUniform:  // uniforms[i0 + clamp_index(a, i1)]
-        clamped_index(a, in.i1);
+        if (!gather_index_ready_) clamped_index(a, in.i1);
         x_.kxnorw(3, 3, 3);
         return x_.vgatherdps(d, 3, kUniforms, kScratch, in.i0 * 4);
       case Op::Gather:  // register i0 + clamp_index(a, i1), from its home
@@ -680,6 +686,7 @@ class Generator {
   std::vector<bool> dirty_;
   std::vector<bool> zeroed_home_;  // unwritten registers whose home a call-out reads
   int last_neighbour_read_ = -1;   // the last derivative or texture lookup
+  bool gather_index_ready_ = false;  // kScratch holds this GatherUniform's clamped index
   int masked_from_ = 0;            // the first structure instruction (but discard_if_at's)
   int max_depth_ = 0;
   std::vector<Op> stack_;          // the open frames while generating: IfBegin, FuncBegin or LoopBegin

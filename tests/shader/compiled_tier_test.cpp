@@ -179,6 +179,31 @@ TEST_F(CompiledTier, LoadsAndStoresOfEveryKind) {
   expect_same_bits(std::move(code), Stage::Fragment, {1, 2, 3, 4, 5, 6.5f, 7, 8, -9}, "loads");
 }
 
+// Uniform gathers in a run with one index share its clamping; a gather that writes its own index
+// register, or one with another limit, ends the run.
+TEST_F(CompiledTier, RunsOfUniformGathersWithOneIndex) {
+  ir::Code code;
+  const Operand i = load(code, Stage::Fragment, 0);
+  Operand g[5];
+  for (Operand& r : g) r = code.new_register();
+  auto gather = [&](Operand d, int32_t first, int32_t limit) {
+    code.insts.push_back(ir::Inst{Op::GatherUniform, d, i, ir::kNone, ir::kNone, first, limit});
+  };
+  gather(g[0], 0, 7);
+  gather(g[1], 1, 7);
+  gather(g[2], 2, 7);
+  gather(i, 3, 7);  // the index register's new value: an element
+  gather(g[3], 4, 7);
+  gather(g[4], 5, 3);
+  for (int k = 0; k < 3; ++k) {
+    const Operand sum = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Add, sum, g[k], g[k + 1], ir::kNone, 0, 0});
+    store(code, Stage::Fragment, sum, k);
+  }
+  store(code, Stage::Fragment, g[4], 3);
+  expect_same_bits(std::move(code), Stage::Fragment, {0.5f, 3, 7, 1, 2, 6, 4, 5, 2.5f, 0, 1, 3, 9, -1, 2, 8}, "gathers");
+}
+
 // Sixty values live at once (more than the registers) and a call-out among them.
 TEST_F(CompiledTier, SpilledValuesAndCallOutsKeepTheirBits) {
   ir::Code code;
