@@ -107,6 +107,39 @@ TEST(Bilinear8BlockSampler, CompactBlocksGiveTheQuadSamplersTexelsOnEveryPath) {
   EXPECT_EQ(quads, 6 * 2 * 3 * 200 * 4);
 }
 
+// Blocks as the rasterizer fills them, four quads side by side (8 pixels by 2), at up to 1.9
+// texels a pixel along each axis: the AVX-512 copy's 8x8 window and its gathers.
+TEST(Bilinear8BlockSampler, RowsOfFourQuadsGiveTheQuadSamplersTexelsOnEveryPath) {
+  std::mt19937 random(47);
+  int quads = 0;
+  for (auto [w, h] : {std::pair{37, 29}, {16, 4}, {17, 2}, {9, 5}, {300, 3}, {15, 40}, {64, 64}}) {
+    TextureImage image;
+    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
+    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+    image.levels.push_back({w, h, std::move(texels)});
+    for (TexWrap wrap : {TexWrap::Repeat, TexWrap::ClampToEdge})
+      for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+        for (int trial = 0; trial < 200; ++trial) {
+          Sampler sampler;
+          sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
+          sampler.wrap_s = sampler.wrap_t = wrap;
+          const float s0 = std::uniform_real_distribution<float>(-1.f, w + 1.f)(random) / w;
+          const float t0 = std::uniform_real_distribution<float>(-1.f, h + 1.f)(random) / h;
+          const float ds = std::uniform_real_distribution<float>(-1.9f, 1.9f)(random) / w;
+          const float dt = std::uniform_real_distribution<float>(-1.9f, 1.9f)(random) / h;
+          alignas(64) float s[kBlockLanes], t[kBlockLanes];
+          for (int i = 0; i < kBlockLanes; ++i) {
+            const int x = (i & 1) + 2 * (i >> 2), y = (i >> 1) & 1;
+            s[i] = s0 + ds * x;
+            t[i] = t0 + dt * y;
+          }
+          ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
+          quads += 4;
+        }
+  }
+  EXPECT_EQ(quads, 7 * 2 * 3 * 200 * 4);
+}
+
 // Coordinates the sampler must make sane or that sit on its roundings' edges (NaN, infinities,
 // values past +-1e6, zeros of either sign, subnormals, the float just below 1), mixed with
 // ordinary ones in blocks whose other lanes lie close together, so that the AVX-512 copy's window
