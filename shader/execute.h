@@ -76,7 +76,7 @@ struct LaneIo {
   // Per block: the lanes whose results are used (texture lookups read only these).
   LaneMask needed[kMaxBlocksPerRun] = {0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
   const float* slot_lanes = nullptr;  // the stage's compute_uniform_ops values; null: computed per run
-  bool denormals_flushed = false;     // VertexBatch::denormals_flushed
+  bool denormals_flushed = false;     // the first batch's or block's denormals_flushed
 };
 
 // Runs `stage` over the lanes of `mask` of `blocks` blocks or vertex batches (1, 2 or 4; 3

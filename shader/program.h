@@ -104,8 +104,8 @@ struct VertexBatch {
   float* outputs = nullptr;       // [kOutFirstVarying + varying_floats][kLanes]
   // Program::vertex_uniform_values() of this draw's uniforms, or null (computed per run).
   const float* uniform_values = nullptr;
-  // The caller runs with denormals flushed (MXCSR's FTZ and DAZ set): a run leaves the modes
-  // alone (it reads the first batch's).
+  // The caller runs under the shader modes (ir::FlushDenormals: round to nearest, FTZ and DAZ,
+  // exceptions masked): a run leaves the modes alone (it reads the first batch's).
   bool denormals_flushed = false;
 };
 
