@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <random>
+#include <utility>
 
 #include "raster/sampler_bilinear8.h"
 #include "raster/sampler_bilinear_block.h"
@@ -37,6 +39,30 @@ void expect_quad_samplers_texels(const TextureImage& image, const Sampler& sampl
       for (int c = 0; c < 4; ++c)
         ASSERT_EQ(block[c][4 * q + i], quad[c][i])
             << level.width << "x" << level.height << " s " << s[4 * q + i] << " t " << t[4 * q + i] << " channel " << c;
+  }
+}
+
+// Levels of each size with random texels, sampled with either wrap on every path, 200 blocks
+// each, whose coordinates `fill(w, h, trial, s, t)` writes; counts the quads compared.
+template <class Fill>
+void expect_blocks_of_levels(std::mt19937& random, std::initializer_list<std::pair<int, int>> sizes, int& quads,
+                             const Fill& fill) {
+  for (auto [w, h] : sizes) {
+    TextureImage image;
+    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
+    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
+    image.levels.push_back({w, h, std::move(texels)});
+    for (TexWrap wrap : {TexWrap::Repeat, TexWrap::ClampToEdge})
+      for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
+        for (int trial = 0; trial < 200; ++trial) {
+          Sampler sampler;
+          sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
+          sampler.wrap_s = sampler.wrap_t = wrap;
+          alignas(64) float s[kBlockLanes], t[kBlockLanes];
+          fill(w, h, trial, s, t);
+          ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
+          quads += 4;
+        }
   }
 }
 
@@ -77,33 +103,20 @@ TEST(Bilinear8BlockSampler, EdgesGiveTheQuadSamplersTexelsOnEveryPath) {
 TEST(Bilinear8BlockSampler, CompactBlocksGiveTheQuadSamplersTexelsOnEveryPath) {
   std::mt19937 random(31);
   int quads = 0;
-  for (auto [w, h] : {std::pair{37, 29}, {8, 8}, {9, 5}, {300, 3}, {7, 40}, {64, 64}}) {
-    TextureImage image;
-    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
-    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-    image.levels.push_back({w, h, std::move(texels)});
-    for (TexWrap wrap : {TexWrap::Repeat, TexWrap::ClampToEdge})
-      for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
-        for (int trial = 0; trial < 200; ++trial) {
-          Sampler sampler;
-          sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
-          sampler.wrap_s = sampler.wrap_t = wrap;
-          // The block's corner anywhere from a texel before the level to one past it; steps of up
-          // to 2.2 texels per pixel (3 steps: up to 6.6 texels across, 7.6 with the second tap).
-          const float s0 = std::uniform_real_distribution<float>(-1.f, w + 1.f)(random) / w;
-          const float t0 = std::uniform_real_distribution<float>(-1.f, h + 1.f)(random) / h;
-          const float ds = std::uniform_real_distribution<float>(-2.2f, 2.2f)(random) / w;
-          const float dt = std::uniform_real_distribution<float>(trial % 2 ? -2.2f : -0.9f, trial % 2 ? 2.2f : 0.9f)(random) / h;
-          alignas(64) float s[kBlockLanes], t[kBlockLanes];
-          for (int i = 0; i < kBlockLanes; ++i) {
-            const int x = (i & 1) | ((i >> 1) & 2), y = ((i >> 1) & 1) | ((i >> 2) & 2);  // quads of 2x2
-            s[i] = s0 + ds * x;
-            t[i] = t0 + dt * y;
-          }
-          ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
-          quads += 4;
-        }
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_blocks_of_levels(random, {{37, 29}, {8, 8}, {9, 5}, {300, 3}, {7, 40}, {64, 64}}, quads,
+                                                  [&](int w, int h, int trial, float* s, float* t) {
+    // The block's corner anywhere from a texel before the level to one past it; steps of up
+    // to 2.2 texels per pixel (3 steps: up to 6.6 texels across, 7.6 with the second tap).
+    const float s0 = std::uniform_real_distribution<float>(-1.f, w + 1.f)(random) / w;
+    const float t0 = std::uniform_real_distribution<float>(-1.f, h + 1.f)(random) / h;
+    const float ds = std::uniform_real_distribution<float>(-2.2f, 2.2f)(random) / w;
+    const float dt = std::uniform_real_distribution<float>(trial % 2 ? -2.2f : -0.9f, trial % 2 ? 2.2f : 0.9f)(random) / h;
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const int x = (i & 1) | ((i >> 1) & 2), y = ((i >> 1) & 1) | ((i >> 2) & 2);  // quads of 2x2
+      s[i] = s0 + ds * x;
+      t[i] = t0 + dt * y;
+    }
+  }));
   EXPECT_EQ(quads, 6 * 2 * 3 * 200 * 4);
 }
 
@@ -112,31 +125,18 @@ TEST(Bilinear8BlockSampler, CompactBlocksGiveTheQuadSamplersTexelsOnEveryPath) {
 TEST(Bilinear8BlockSampler, RowsOfFourQuadsGiveTheQuadSamplersTexelsOnEveryPath) {
   std::mt19937 random(47);
   int quads = 0;
-  for (auto [w, h] : {std::pair{37, 29}, {16, 4}, {17, 2}, {9, 5}, {300, 3}, {15, 40}, {64, 64}}) {
-    TextureImage image;
-    std::vector<uint32_t> texels(static_cast<size_t>(w * h));
-    for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-    image.levels.push_back({w, h, std::move(texels)});
-    for (TexWrap wrap : {TexWrap::Repeat, TexWrap::ClampToEdge})
-      for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
-        for (int trial = 0; trial < 200; ++trial) {
-          Sampler sampler;
-          sampler.min_filter = sampler.mag_filter = TexFilter::Linear;
-          sampler.wrap_s = sampler.wrap_t = wrap;
-          const float s0 = std::uniform_real_distribution<float>(-1.f, w + 1.f)(random) / w;
-          const float t0 = std::uniform_real_distribution<float>(-1.f, h + 1.f)(random) / h;
-          const float ds = std::uniform_real_distribution<float>(-1.9f, 1.9f)(random) / w;
-          const float dt = std::uniform_real_distribution<float>(-1.9f, 1.9f)(random) / h;
-          alignas(64) float s[kBlockLanes], t[kBlockLanes];
-          for (int i = 0; i < kBlockLanes; ++i) {
-            const int x = (i & 1) + 2 * (i >> 2), y = (i >> 1) & 1;
-            s[i] = s0 + ds * x;
-            t[i] = t0 + dt * y;
-          }
-          ASSERT_NO_FATAL_FAILURE(expect_quad_samplers_texels(image, sampler, path, s, t));
-          quads += 4;
-        }
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_blocks_of_levels(random, {{37, 29}, {16, 4}, {17, 2}, {9, 5}, {300, 3}, {15, 40}, {64, 64}},
+                                                  quads, [&](int w, int h, int, float* s, float* t) {
+    const float s0 = std::uniform_real_distribution<float>(-1.f, w + 1.f)(random) / w;
+    const float t0 = std::uniform_real_distribution<float>(-1.f, h + 1.f)(random) / h;
+    const float ds = std::uniform_real_distribution<float>(-1.9f, 1.9f)(random) / w;
+    const float dt = std::uniform_real_distribution<float>(-1.9f, 1.9f)(random) / h;
+    for (int i = 0; i < kBlockLanes; ++i) {
+      const int x = (i & 1) + 2 * (i >> 2), y = (i >> 1) & 1;
+      s[i] = s0 + ds * x;
+      t[i] = t0 + dt * y;
+    }
+  }));
   EXPECT_EQ(quads, 7 * 2 * 3 * 200 * 4);
 }
 
