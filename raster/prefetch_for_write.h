@@ -4,7 +4,7 @@
 // and stores waiting on those one after another had stalled binning (glsl_skinned, two
 // threads: a third of the binning thread's time at the entry of setup_triangle, the first
 // stores after add_prim's). Asked for ahead, the transfers overlap. A hint only: nothing read
-// or written changes; a no-op where the CPU lacks the instruction.
+// or written changes. Callers check the CPU once (Scene::prefetch_writes).
 #pragma once
 #include <cpuid.h>
 
@@ -17,10 +17,8 @@ inline bool cpu_has_prefetchw() {
   return __get_cpuid(0x80000001u, &eax, &ebx, &ecx, &edx) && (ecx & bit_PRFCHW);
 }
 
-// The lines holding [p, p + bytes).
+// The lines holding [p, p + bytes); only where cpu_has_prefetchw().
 inline void prefetch_for_write(const void* p, size_t bytes) {
-  static const bool has = cpu_has_prefetchw();
-  if (!has || bytes == 0) return;
   constexpr size_t kLine = 64;
   const auto* first = static_cast<const char*>(p);
   const auto begin = reinterpret_cast<size_t>(first) & ~(kLine - 1);

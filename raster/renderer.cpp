@@ -10,6 +10,7 @@
 #include "raster/fragment_pipeline.h"
 #include "raster/geometry.h"
 #include "raster/multisample.h"
+#include "raster/prefetch_for_write.h"
 #include "raster/primitive.h"
 #include "raster/reference_lines_points.h"
 #include "raster/reference_mode.h"
@@ -25,8 +26,9 @@ struct Renderer::Impl {
     scene.reset(fb);
     running.reset(fb);
     // Each scene is read by the pool's threads between its turns at binning.
-    scene.prefetch_writes(pool.threads() > 1);
-    running.prefetch_writes(pool.threads() > 1);
+    const bool prefetch = pool.threads() > 1 && cpu_has_prefetchw();
+    scene.prefetch_writes(prefetch);
+    running.prefetch_writes(prefetch);
   }
   const bool reference;  // PINEDA_REFERENCE at creation: primitives drawn at once, per pixel
   const SimdPath simd;   // PINEDA_SIMD at creation

@@ -54,7 +54,8 @@ class Scene {
   void share_small_prims(bool share) { share_small_prims_ = share; }
   size_t prim_count() const { return prim_count_; }
   // Whether binning asks ahead for the lines it will write (prefetch_for_write.h): worth it when
-  // other threads read the scene's memory between its turns at binning.
+  // other threads read the scene's memory between its turns at binning; only where the CPU has
+  // PREFETCHW.
   void prefetch_writes(bool ahead) { prefetch_writes_ = ahead; }
   void start(WorkerPool& pool);
   void finish(WorkerPool& pool);

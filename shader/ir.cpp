@@ -3,10 +3,8 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
-#if defined(__SSE__) || defined(__x86_64__)
-#include <xmmintrin.h>
-#define PINEDA_HAS_MXCSR 1
-#endif
+
+#include "raster/float_modes.h"  // the shader modes, and PINEDA_HAS_MXCSR where there is MXCSR
 
 // lane_pow.inc and lane_sin_cos.inc work on 32-byte double vectors in helpers that are always inlined.
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -47,9 +45,8 @@ static_assert(sizeof(kOpNames) / sizeof(kOpNames[0]) == static_cast<size_t>(Op::
 
 #ifdef PINEDA_HAS_MXCSR
 namespace {
-// Round to nearest, flush to zero and denormals are zero, every exception masked
-// (raster::kShaderFloatModes); the status flags (the low six bits) do not count.
-constexpr unsigned kShaderModes = 0x9FC0, kStatusFlags = 0x3F;
+constexpr unsigned kShaderModes = raster::kShaderFloatModes;
+constexpr unsigned kStatusFlags = 0x3F;  // MXCSR's exception flags: they do not count
 }  // namespace
 
 // A tile sets the modes once for a run of programmable draws (raster::Scene::run_tile), the
