@@ -1,5 +1,5 @@
 // The colour write of a shader block when nothing is left to decide per pixel but coverage: up
-// to four adjacent quads (8x2 pixels) of an RGBA8 or BGRA8 buffer, every channel written, no
+// to four quads (adjacent: 8x2 pixels, or anywhere) of an RGBA8 or BGRA8 buffer, every channel written, no
 // reduction, either no blending or SRC_ALPHA / ONE_MINUS_SRC_ALPHA. The same conversion
 // (clamp, round to nearest even) and blend arithmetic per pixel as write_quad (quad_ops.h,
 // blend_over.h), 16 lanes at a time.
@@ -17,5 +17,13 @@ using BlockWriter = void (*)(const float (*color)[16], const uint32_t shift[4], 
                              uint8_t* row1, uint16_t live);
 
 BlockWriter select_block_writer(SimdPath path);
+
+// The same for four quads anywhere, no two at one place: rows[2j] and rows[2j + 1] are quad j's
+// first and second row at its left pixel (only its live pixels are read and written; a row
+// without any should point at 8 bytes anywhere: its moves are masked off).
+using QuadsWriter = void (*)(const float (*color)[16], const uint32_t shift[4], bool blend_over, uint8_t* const rows[8],
+                             uint16_t live);
+
+QuadsWriter select_quads_writer(SimdPath path);
 
 }  // namespace pineda::raster

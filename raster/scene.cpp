@@ -8,6 +8,7 @@
 #include "raster/multisample.h"
 #include "raster/prefetch_for_write.h"
 #include "raster/raster_limits.h"
+#include "raster/shader_quads.h"
 #include "raster/tile_raster.h"
 #include "raster/worker_pool.h"
 
@@ -168,8 +169,15 @@ void Scene::run_tile(int tile) const {
   ClearedTile* known = fb_.cleared_tiles && !multisampled && fb_.color_targets == 1
                            ? &fb_.cleared_tiles->tile(static_cast<size_t>(tile))
                            : nullptr;
+  // Consecutive primitives of a programmable draw share shader blocks (shader_quads.h).
+  ShaderQuadBatch batch;
+  auto flush = [&] {
+    if (const DrawRecord* draw = batch.draw())
+      if (const uint32_t passed = batch.flush()) draw->state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);
+  };
   for (const uint32_t cmd : bins_[tile]) {
     if (cmd & kClearBit) {
+      flush();
       use_shader_modes(false);
       const ClearRecord& clear = clears_[cmd & ~kClearBit];
       if (multisampled) {
@@ -185,12 +193,15 @@ void Scene::run_tile(int tile) const {
       if (known) *known = {};  // whatever the primitive writes
       const PrimSetup& prim = prims_[cmd];
       const DrawRecord& draw = *draws_[prim.draw];
+      if (&draw != batch.draw()) flush();
       use_shader_modes(draw.state.shader != nullptr);
       const uint64_t passed =
-          multisampled ? rasterize_samples_in_tile(prim, draw, fb_, rect) : rasterize_in_tile(prim, draw, fb_, rect);
+          multisampled ? rasterize_samples_in_tile(prim, draw, fb_, rect)
+                       : rasterize_in_tile(prim, draw, fb_, rect, ShaderQuadBatch::takes(draw) ? &batch : nullptr);
       if (passed) draw.state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);
     }
   }
+  flush();
 }
 
 void Scene::execute(WorkerPool& pool) {

@@ -108,4 +108,9 @@ BlockWriter select_block_writer(SimdPath path) {
   return uses_avx2(path) ? &block_lanes_avx2::write_block : &block_lanes_sse2::write_block;
 }
 
+QuadsWriter select_quads_writer(SimdPath path) {
+  if (uses_avx512(path)) return &block_lanes_avx512::write_quads;
+  return uses_avx2(path) ? &block_lanes_avx2::write_quads : &block_lanes_sse2::write_quads;
+}
+
 }  // namespace pineda::raster

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
+#include <optional>
 #include <type_traits>
+#include <utility>
 
 #include "raster/block_depth.h"
 #include "raster/block_write.h"
@@ -75,9 +78,12 @@ void plane_depths(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy, uint32_
   else write_quad<true, false>(d, fb, x, y, mask, col);
 }
 
+// A quad to shade: its place, its pixels, and the primitive it belongs to (a block may hold
+// quads of several primitives of one draw, from several rows).
 struct Quad {
-  int x = 0;
+  int x = 0, y = 0;
   unsigned mask = 0;
+  const PrimSetup* prim = nullptr;
   F4 ox, oy;  // pixel centres relative to the primitive's reference point
 };
 
@@ -91,13 +97,16 @@ struct TargetViews {
 };
 struct NoTargets {};
 
-// Up to four blocks of row y shaded together (shader::Program::run_fragment_blocks): each
-// block's quads, its fragment inputs, and what it needs after the run.
+// Up to four blocks shaded together (shader::Program::run_fragment_blocks): each block's
+// quads, its fragment inputs, and what it needs after the run.
 struct RowBlocks {
   static constexpr int kMax = shader::kMaxBlocksPerRun;
   int count = 0;
   Quad quads[kMax][4];
   int quad_count[kMax] = {};
+  // Block k's quads all of prim[k] (null: of several), and in one row left to right (one_row[k]).
+  const PrimSetup* prim[kMax] = {};
+  bool one_row[kMax] = {};
   shader::FragmentBlock blocks[kMax];
   alignas(64) float varyings[kMax][shader::kMaxVaryingFloats][kLanes];
 };
@@ -106,29 +115,53 @@ bool early_tests(const DrawRecord& d, const shader::Program& program) {
   return (d.key.depth || d.key.stencil) && !program.writes_depth() && !program.uses_discard() && !d.state.alpha_test;
 }
 
-// Depth and stencil of the quad at (x, y) before shading (early_tests): its pixels that pass.
-// Adds them to `passed` when the draw counts samples.
-unsigned early_depth_stencil(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, const Quad& q,
-                             unsigned mask, uint32_t& passed) {
+// Depth and stencil of quad q before shading (early_tests): its pixels that pass. Adds them to
+// `passed` when the draw counts samples.
+unsigned early_depth_stencil(const DrawRecord& d, const Framebuffer& fb, const Quad& q, unsigned mask,
+                             uint32_t& passed) {
+  const PrimSetup& p = *q.prim;
   if (!d.key.stencil) {  // the fixed-function routines' depth test: the same depths and results
-    mask = depth_only(d, p, fb, q.x, y, mask, q.ox, q.oy);
+    mask = depth_only(d, p, fb, q.x, q.y, mask, q.ox, q.oy);
   } else {
     uint32_t plane_z[4];
     plane_depths(d, p, q.ox, q.oy, plane_z);
-    mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, plane_z);
+    mask = depth_stencil_lanes(d, p, fb, q.x, q.y, mask, plane_z);
   }
   if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(mask));
   return mask;
 }
 
-// The early tests of block k of `row` (early_tests): four adjacent quads inside the buffer and
-// one tile without stencil at once (block_depth.h), others quad by quad.
-void early_tests_of_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, RowBlocks& row, int k,
-                          uint32_t& passed) {
+// Fills in block k's prim and one_row from its quads.
+void describe_block(RowBlocks& row, int k) {
+  const Quad* quads = row.quads[k];
+  const int n = row.quad_count[k];
+  bool one_prim = true, one_row = true;
+  for (int j = 1; j < n; ++j) {
+    one_prim &= quads[j].prim == quads[0].prim;
+    one_row &= quads[j].y == quads[0].y && quads[j].x > quads[j - 1].x;
+  }
+  row.prim[k] = one_prim ? quads[0].prim : nullptr;
+  row.one_row[k] = one_row;
+}
+
+// Whether block k's quads are side by side, left to right, in one row.
+bool adjacent_quads(const RowBlocks& row, int k) {
+  if (!row.one_row[k]) return false;
+  const Quad* quads = row.quads[k];
+  for (int j = 1; j < row.quad_count[k]; ++j)
+    if (quads[j].x != quads[0].x + 2 * j) return false;
+  return true;
+}
+
+// The early tests of block k of `row` (early_tests), in the quads' order: four adjacent quads
+// of one primitive inside the buffer and one tile without stencil at once (block_depth.h),
+// others quad by quad.
+void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks& row, int k, uint32_t& passed) {
   Quad* quads = row.quads[k];
   const int n = row.quad_count[k];
-  const int x = quads[0].x;
-  const bool adjacent = n == 4 && quads[1].x == x + 2 && quads[2].x == x + 4 && quads[3].x == x + 6;
+  const int x = quads[0].x, y = quads[0].y;
+  const PrimSetup& p = *quads[0].prim;
+  const bool adjacent = n == 4 && row.prim[k] && adjacent_quads(row, k);
   if (!d.key.stencil && adjacent && x >= 0 && x + 8 <= fb.width && y >= 0 && y + 2 <= fb.height &&
       (x & (kTileSize - 1)) + 8 <= kTileSize) {
     static const BlockDepthTest test = select_block_depth_test(simd_path_from_environment());
@@ -146,13 +179,45 @@ void early_tests_of_block(const DrawRecord& d, const PrimSetup& p, const Framebu
     }
     return;
   }
-  for (int q = 0; q < n; ++q) quads[q].mask = early_depth_stencil(d, p, fb, y, quads[q], quads[q].mask, passed);
+  for (int q = 0; q < n; ++q) quads[q].mask = early_depth_stencil(d, fb, quads[q], quads[q].mask, passed);
 }
 
-// Fills block k of `row` for up to four quads of row y (after any early tests); returns false
-// when no pixel is left to shade.
-bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y, const float* uniform_values,
-                 RowBlocks& row, int k) {
+// The varyings and 1/w of block k's lanes (unused quads repeat quad 0: derivatives stay finite),
+// each quad's from its own primitive's planes: one pass over all lanes per primitive.
+[[gnu::always_inline]] inline void interpolate_block(int nv, const RowBlocks& row, int k, float (*varyings)[kLanes],
+                                                   float* w) {
+  static const VaryingInterpolator interpolate = select_varying_interpolator(simd_path_from_environment());
+  const Quad* quads = row.quads[k];
+  const int n = row.quad_count[k];
+  alignas(64) float ox[kLanes], oy[kLanes];
+  for (int j = 0; j < 4; ++j) {
+    const Quad& q = quads[j < n ? j : 0];
+    store4(&ox[4 * j], q.ox);
+    store4(&oy[4 * j], q.oy);
+  }
+  auto run = [&](const PrimSetup& p, float (*out)[kLanes], float* out_w) {
+    interpolate(p.varying_planes, nv, p.inv_w, p.perspective, ox, oy, out, out_w);
+  };
+  run(*quads[0].prim, varyings, w);
+  if (row.prim[k]) return;
+  alignas(64) float other[shader::kMaxVaryingFloats][kLanes], other_w[kLanes];
+  for (int j = 1; j < n; ++j) {
+    const PrimSetup* p = quads[j].prim;
+    bool done = false;
+    for (int i = 0; i < j; ++i) done |= quads[i].prim == p;  // quad 0's came first
+    if (done) continue;
+    run(*p, other, other_w);
+    for (int i = j; i < n; ++i) {
+      if (quads[i].prim != p) continue;
+      for (int v = 0; v < nv; ++v) std::copy_n(&other[v][4 * i], 4, &varyings[v][4 * i]);
+      std::copy_n(&other_w[4 * i], 4, &w[4 * i]);
+    }
+  }
+}
+
+// Fills block k of `row` for its quads (after any early tests); returns false when no pixel is
+// left to shade.
+bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* uniform_values, RowBlocks& row, int k) {
   const ShaderDraw& sd = *d.state.shader;
   const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
@@ -165,35 +230,42 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
   // The blend reads the block's pixels once the shader has run: fetching their lines now
   // overlaps the misses with the shading (glsl_sprites, one thread: 81 to 71 ms a frame).
   if (d.key.blend && fb.color.base) {
-    const int x0 = quads[0].x, x1 = std::min(x0 + 7, fb.width - 1);  // x1: maybe on the next line
-    __builtin_prefetch(color_address(fb, x0, y), 1);
-    __builtin_prefetch(color_address(fb, x1, y), 1);
-    if (block.live & 0xCCCCu) {  // else the row above may lie past the buffer
-      __builtin_prefetch(color_address(fb, x0, y + 1), 1);
-      __builtin_prefetch(color_address(fb, x1, y + 1), 1);
+    const bool one_row = row.one_row[k];
+    for (int j = 0; j < (one_row ? 1 : n); ++j) {
+      const Quad& q = quads[j];
+      const int x1 = one_row ? std::min(q.x + 7, fb.width - 1) : q.x + 1;  // maybe on the next line
+      __builtin_prefetch(color_address(fb, q.x, q.y), 1);
+      __builtin_prefetch(color_address(fb, x1, q.y), 1);
+      if (one_row ? (block.live & 0xCCCCu) : (q.mask & 0xCu)) {  // else the row above may lie past the buffer
+        __builtin_prefetch(color_address(fb, q.x, q.y + 1), 1);
+        __builtin_prefetch(color_address(fb, x1, q.y + 1), 1);
+      }
     }
   }
 
   const int nv = program.varying_floats();
   float (*varyings)[kLanes] = row.varyings[k];
-  const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
-  const unsigned frag_coord = program.frag_coord_components();
-  alignas(64) float ox[kLanes], oy[kLanes], w[kLanes];
-  for (int j = 0; j < 4; ++j) {
-    const Quad& q = quads[j < n ? j : 0];  // unused lanes repeat quad 0: derivatives stay finite
-    store4(&ox[4 * j], q.ox);
-    store4(&oy[4 * j], q.oy);
+  alignas(64) float w[kLanes];
+  interpolate_block(nv, row, k, varyings, w);
+  if (row.prim[k]) {
+    block.front_facing = row.prim[k]->back_facing ? 0 : 0xffff;
+  } else {
+    block.front_facing = 0;
+    for (int j = 0; j < 4; ++j)
+      if (!quads[j < n ? j : 0].prim->back_facing) block.front_facing |= static_cast<shader::LaneMask>(0xfu << (4 * j));
   }
-  static const VaryingInterpolator interpolate = select_varying_interpolator(simd_path_from_environment());
-  interpolate(p.varying_planes, nv, p.inv_w, p.perspective, ox, oy, varyings, w);
   // Only the components the program reads (glmark2's conditionals, function and loop scenes read
   // gl_FragCoord.xy: the depth's per-lane doubles took half of begin_block there).
-  if (frag_coord || point) {
+  const unsigned frag_coord = program.frag_coord_components();
+  const bool point_coord = program.reads_point_coord();
+  if (frag_coord || point_coord) {
     for (int j = 0; j < 4; ++j) {
       const Quad& q = quads[j < n ? j : 0];
+      const PrimSetup& p = *q.prim;
+      const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
       for (int i = 0; i < 4; ++i) {
         const int lane = 4 * j + i;
-        const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(y + (i >> 1)) + 0.5f;
+        const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(q.y + (i >> 1)) + 0.5f;
         block.frag_coord[0][lane] = fx;
         block.frag_coord[1][lane] = fy;
         if (frag_coord & 4u) {
@@ -202,17 +274,13 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
           block.frag_coord[2][lane] = static_cast<float>(z / d.depth_max);
         }
         block.frag_coord[3][lane] = w[lane];
-        if (point && point[2] > 0.f) {
-          block.point_coord[0][lane] = 0.5f + (fx - point[0]) / point[2];
-          block.point_coord[1][lane] = 0.5f - (fy - point[1]) / point[2];
-        }
+        // Zeros where there is no sprite.
+        const bool sprite = point && point[2] > 0.f;
+        block.point_coord[0][lane] = sprite ? 0.5f + (fx - point[0]) / point[2] : 0.f;
+        block.point_coord[1][lane] = sprite ? 0.5f - (fy - point[1]) / point[2] : 0.f;
       }
     }
   }
-  // Zeros where there is no sprite, for the programs that read them (filling them for every
-  // block of every program took a fifth of begin_block).
-  if (program.reads_point_coord() && !(point && point[2] > 0.f))
-    std::fill(&block.point_coord[0][0], &block.point_coord[0][0] + 2 * kLanes, 0.f);
   // A colour buffer the program does not write reads as zeros.
   if (sd.color_output >= program.draw_buffers_written())
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
@@ -222,7 +290,6 @@ bool begin_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb,
     for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
       std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
   block.varyings = &varyings[0][0];
-  block.front_facing = p.back_facing ? 0 : 0xffff;
   block.run = 0xffff;  // the unused quads repeat quad 0
   block.uniform_values = uniform_values;
   block.denormals_flushed = true;  // a tile runs shader draws with them flushed (Scene::run_tile)
@@ -248,23 +315,34 @@ void shader_depths(const DrawRecord& d, const shader::FragmentBlock& block, int 
   }
 }
 
-// Whether block k of the row is adjacent quads whose live pixels all get written, each wholly
-// and in the same way (block_write.h): nothing but the colour and coverage is left to decide.
-bool writes_block_lanes(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
-                        bool write_color) {
-  if (!write_color || !no_late_tests) return false;
-  for (int j = 1; j < row.quad_count[k]; ++j)
-    if (row.quads[k][j].x != row.quads[k][0].x + 2 * j) return false;
+// How block k's colours get written: all at once (block_write.h) when its live pixels all get
+// written, each wholly and in the same way, nothing but the colour and coverage left to decide,
+// and no two quads at one place (the later one's blend reads the earlier one's write); else
+// quad by quad.
+enum class BlockWrite { PerQuad, Adjacent, Apart };
+
+BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
+                       bool write_color) {
   const DrawState& s = d.state;
-  return !d.key.extras && !s.alpha_test && !d.alpha_to_one && d.color_write_all && !fb.color.reduction.active &&
-         (!d.key.blend || (d.key.blend_over && !s.logic_op_enabled));
+  if (!write_color || !no_late_tests || d.key.extras || s.alpha_test || d.alpha_to_one || !d.color_write_all ||
+      fb.color.reduction.active || (d.key.blend && (!d.key.blend_over || s.logic_op_enabled)))
+    return BlockWrite::PerQuad;
+  if (adjacent_quads(row, k)) return BlockWrite::Adjacent;
+  if (row.one_row[k]) return BlockWrite::Apart;
+  const Quad* quads = row.quads[k];
+  const int n = row.quad_count[k];
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      if (quads[i].x == quads[j].x && quads[i].y == quads[j].y) return BlockWrite::PerQuad;
+  return BlockWrite::Apart;
 }
 
 // After the run: alpha test, late depth and stencil, colour writes of the `live` lanes of block
-// k (the block's own live lanes, or a sample's: shade_sample_quads); returns the samples that
-// passed a late depth test. `p` gives the depth; the colours are the block's.
+// k (the block's own live lanes, or a sample's: shade_sample_quads), quad by quad in order;
+// returns the samples that passed a late depth test. Each quad's primitive gives its depth, or
+// `sample_prim` (a sample's) when set; the colours are the block's.
 template <bool kTargets>
-uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int y,
+uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const Framebuffer& fb,
                       const std::conditional_t<kTargets, TargetViews, NoTargets>& targets, const RowBlocks& row, int k,
                       shader::LaneMask live_lanes, bool early) {
   const ShaderDraw& sd = *d.state.shader;
@@ -276,16 +354,33 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
   if constexpr (kTargets) write_color = targets.count > 0;
   uint32_t passed = 0;
   if constexpr (!kTargets) {
-    if (writes_block_lanes(d, fb, row, k, early || !tests, write_color)) {
-      static const BlockWriter write = select_block_writer(simd_path_from_environment());
-      const Quad& q = row.quads[k][0];
-      const auto live = static_cast<uint16_t>(live_lanes & ((1u << (4 * row.quad_count[k])) - 1u));
-      // The writer touches the live pixels alone; without any in the second row, that row may
-      // lie past the buffer, and is not addressed.
-      uint8_t* const row0 = color_address(fb, q.x, y);
-      uint8_t* const row1 = (live & 0xCCCCu) ? color_address(fb, q.x, y + 1) : row0;
-      write(block.color[sd.color_output], fb.color.format == ColorFormat::BGRA8 ? kBgraShift.at : kRgbaShift.at,
-            d.key.blend, row0, row1, live);
+    const BlockWrite how = block_write(d, fb, row, k, early || !tests, write_color);
+    if (how != BlockWrite::PerQuad) {
+      const int n = row.quad_count[k];
+      const auto live = static_cast<uint16_t>(live_lanes & ((1u << (4 * n)) - 1u));
+      const uint32_t* shift = fb.color.format == ColorFormat::BGRA8 ? kBgraShift.at : kRgbaShift.at;
+      // The writers touch the live pixels alone; a row without any may lie past the buffer, and
+      // is not addressed.
+      if (how == BlockWrite::Adjacent) {
+        static const BlockWriter write = select_block_writer(simd_path_from_environment());
+        const Quad& q = row.quads[k][0];
+        uint8_t* const row0 = color_address(fb, q.x, q.y);
+        uint8_t* const row1 = (live & 0xCCCCu) ? color_address(fb, q.x, q.y + 1) : row0;
+        write(block.color[sd.color_output], shift, d.key.blend, row0, row1, live);
+      } else {
+        static const QuadsWriter write = select_quads_writer(simd_path_from_environment());
+        // Rows without a pixel to write point at spare bytes: a masked move at an address it
+        // may not touch costs a microcode assist (glsl_sprites ran 2.5 times as long).
+        alignas(8) uint8_t spare[8];
+        uint8_t* rows[8];
+        std::fill_n(rows, 8, &spare[0]);
+        for (int j = 0; j < n; ++j) {
+          const Quad& q = row.quads[k][j];
+          if (live & (0x3u << (4 * j))) rows[2 * j] = color_address(fb, q.x, q.y);
+          if (live & (0xCu << (4 * j))) rows[2 * j + 1] = color_address(fb, q.x, q.y + 1);
+        }
+        write(block.color[sd.color_output], shift, d.key.blend, rows, live);
+      }
       return d.key.count_samples && !early ? static_cast<uint32_t>(__builtin_popcount(live)) : 0;
     }
   }
@@ -293,6 +388,8 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
     unsigned mask = (live_lanes >> (4 * j)) & 0xfu;
     if (!mask) continue;
     const Quad& q = row.quads[k][j];
+    const PrimSetup& p = sample_prim ? *sample_prim : *q.prim;
+    const int y = q.y;
     QuadColor col;
     for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * j]);
     if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
@@ -321,33 +418,6 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup& p, const Framebuffer
   return passed;
 }
 
-// The quads of a row that `keep(q, quad, n)` keeps (quad n of the block being filled; false:
-// no pixel of quad q to shade) in blocks of up to four: begin(k) fills block k (false: nothing
-// left in it to shade), run() shades the blocks so far and empties the row.
-template <class Keep, class Begin, class Run>
-[[gnu::always_inline]] inline void group_quads(RowBlocks& row, int x, F4 ox0, F4 oy, int count, const Keep& keep,
-                                               const Begin& begin, const Run& run) {
-  int n = 0;
-  for (int q = 0; q < count; ++q) {
-    Quad& quad = row.quads[row.count][n];
-    if (!keep(q, quad, n)) continue;
-    quad.x = x + 2 * q;
-    quad.ox = ox0 + splat(static_cast<float>(2 * q));
-    quad.oy = oy;
-    if (++n == 4 || q == count - 1) {
-      row.quad_count[row.count] = n;
-      if (begin(row.count)) ++row.count;
-      n = 0;
-      if (row.count == RowBlocks::kMax) run();
-    }
-  }
-  if (n) {
-    row.quad_count[row.count] = n;
-    if (begin(row.count)) ++row.count;
-  }
-  run();
-}
-
 template <bool kTargets>
 std::conditional_t<kTargets, TargetViews, NoTargets> target_views(const DrawRecord& d, const Framebuffer& fb) {
   std::conditional_t<kTargets, TargetViews, NoTargets> targets;
@@ -363,12 +433,114 @@ std::conditional_t<kTargets, TargetViews, NoTargets> target_views(const DrawReco
   return targets;
 }
 
+// The quads of one draw's rows from several primitives in order (ShaderQuadBatch), packed into
+// full blocks whatever their rows and primitives (small triangles cover a quad or two each),
+// shaded four blocks at a time, then tested and written in the order they came: a later quad at
+// the same pixel is tested and written after the earlier one, as unpacked.
+class QuadBlocks {
+ public:
+  QuadBlocks(const DrawRecord& d, const Framebuffer& fb, RowBlocks& row)
+      : d_(d), fb_(fb), sd_(*d.state.shader), row_(row), uniform_values_(sd_.fragment_uniform_values()),
+        textures_(d.state.texture_units, &d.shader_samplers),
+        early_(early_tests(d, *sd_.program)) {
+    row_.count = 0;
+  }
+
+  const DrawRecord& draw() const { return d_; }
+
+  void add_row(const PrimSetup& p, int x, int y, int count, const uint8_t* masks) {
+    const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
+    for (int q = 0; q < count; ++q) {
+      Quad& quad = row_.quads[row_.count][filling_];
+      quad.mask = masks[q];
+      if (d_.key.extras) quad.mask &= stipple_mask(d_, p, x + 2 * q, y);
+      if (!quad.mask) continue;
+      quad.x = x + 2 * q;
+      quad.y = y;
+      quad.prim = &p;
+      quad.ox = ox0 + splat(static_cast<float>(2 * q));
+      quad.oy = oy;
+      if (++filling_ == 4) close_block();
+    }
+  }
+
+  // Shades and writes everything added; returns the samples that passed since the last flush.
+  uint32_t flush() {
+    if (filling_) close_block();
+    run();
+    return std::exchange(passed_, 0);
+  }
+
+ private:
+  void close_block() {
+    const int k = row_.count;
+    row_.quad_count[k] = filling_;
+    filling_ = 0;
+    describe_block(row_, k);
+    if (early_) early_tests_of_block(d_, fb_, row_, k, passed_);
+    if (begin_block(d_, fb_, uniform_values_, row_, k)) ++row_.count;
+    if (row_.count == RowBlocks::kMax) run();
+  }
+
+  void run() {
+    if (!row_.count) return;
+    sd_.program->run_fragment_blocks(sd_.uniforms.data(), &textures_, row_.blocks, row_.count);
+    for (int k = 0; k < row_.count; ++k)
+      passed_ += finish_block<false>(d_, nullptr, fb_, NoTargets{}, row_, k, row_.blocks[k].live, early_);
+    row_.count = 0;
+  }
+
+  const DrawRecord& d_;
+  const Framebuffer& fb_;
+  const ShaderDraw& sd_;
+  RowBlocks& row_;
+  const float* uniform_values_;
+  const UnitTextureAccess textures_;
+  const bool early_;
+  int filling_ = 0;  // quads in block row_.count so far
+  uint32_t passed_ = 0;
+};
+
+
+// The quads of a row that `keep(q, quad, n)` keeps (quad n of the block being filled; false:
+// no pixel of quad q to shade) in blocks of up to four: begin(k) fills block k (false: nothing
+// left in it to shade), run() shades the blocks so far and empties the row.
+template <class Keep, class Begin, class Run>
+[[gnu::always_inline]] inline void group_quads(RowBlocks& row, const PrimSetup& p, int x, int y, int count,
+                                               const Keep& keep, const Begin& begin, const Run& run) {
+  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
+  int n = 0;
+  for (int q = 0; q < count; ++q) {
+    Quad& quad = row.quads[row.count][n];
+    if (!keep(q, quad, n)) continue;
+    quad.x = x + 2 * q;
+    quad.y = y;
+    quad.prim = &p;
+    quad.ox = ox0 + splat(static_cast<float>(2 * q));
+    quad.oy = oy;
+    if (++n == 4 || q == count - 1) {
+      row.quad_count[row.count] = n;
+      row.prim[row.count] = &p;
+      row.one_row[row.count] = true;
+      if (begin(row.count)) ++row.count;
+      n = 0;
+      if (row.count == RowBlocks::kMax) run();
+    }
+  }
+  if (n) {
+    row.quad_count[row.count] = n;
+    row.prim[row.count] = &p;
+    row.one_row[row.count] = true;
+    if (begin(row.count)) ++row.count;
+  }
+  run();
+}
+
 template <bool kTargets>
 uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                      const uint8_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return 0;
   const ShaderDraw& sd = *d.state.shader;
-  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   const float* uniform_values = sd.fragment_uniform_values();
   const auto targets = target_views<kTargets>(d, fb);
   const UnitTextureAccess textures(d.state.texture_units, &d.shader_samplers);
@@ -376,14 +548,14 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   RowBlocks row;
   const bool early = early_tests(d, *sd.program);
   auto begin = [&](int k) {
-    if (early) early_tests_of_block(d, p, fb, y, row, k, passed);
-    return begin_block(d, p, fb, y, uniform_values, row, k);
+    if (early) early_tests_of_block(d, fb, row, k, passed);
+    return begin_block(d, fb, uniform_values, row, k);
   };
   auto run = [&] {
     if (!row.count) return;
     sd.program->run_fragment_blocks(sd.uniforms.data(), &textures, row.blocks, row.count);
     for (int k = 0; k < row.count; ++k)
-      passed += finish_block<kTargets>(d, p, fb, y, targets, row, k, row.blocks[k].live, early);
+      passed += finish_block<kTargets>(d, nullptr, fb, targets, row, k, row.blocks[k].live, early);
     row.count = 0;
   };
   auto keep = [&](int q, Quad& quad, int) {
@@ -391,7 +563,7 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
     if (d.key.extras) quad.mask &= stipple_mask(d, p, x + 2 * q, y);
     return quad.mask != 0;
   };
-  group_quads(row, x, ox0, oy, count, keep, begin, run);
+  group_quads(row, p, x, y, count, keep, begin, run);
   return passed;
 }
 
@@ -402,7 +574,6 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
                             const uint16_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return 0;
   const ShaderDraw& sd = *d.state.shader;
-  const F4 oy = quad_row_oy(p, y), ox0 = quad_row_ox0(p, x);
   const float* uniform_values = sd.fragment_uniform_values();
   int first = 0;  // a sample the draw writes: its plane has the framebuffer's draw buffers
   while (first < kMaxSamples - 1 && !t.draw[first]) ++first;
@@ -425,7 +596,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
       }
       row.quads[k][q].mask = any_sample_mask(m);
     }
-    return begin_block(d, p, t.plane[first], y, uniform_values, row, k);
+    return begin_block(d, t.plane[first], uniform_values, row, k);
   };
   // After shading, without early tests: each sample's alpha test (its own threshold under alpha
   // to coverage), then every sample's stencil and depth at once; what passes is left to write.
@@ -462,7 +633,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
         live &= row.blocks[k].live;  // less the discarded fragments
         // The tests are done (early or late): finish_block writes (its alpha test passes again).
         if (live)
-          passed += finish_block<kTargets>(*t.draw[s], *t.prim[s], t.plane[s], y, targets[size_t(s)], row, k, live,
+          passed += finish_block<kTargets>(*t.draw[s], t.prim[s], t.plane[s], targets[size_t(s)], row, k, live,
                                            early || late);
       }
     }
@@ -474,7 +645,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
     if (d.key.extras) m &= static_cast<uint16_t>(stipple_mask(d, p, x + 2 * q, y) * 0x1111u);
     return any_sample_mask(m) != 0;
   };
-  group_quads(row, x, ox0, oy, count, keep, begin, run);
+  group_quads(row, p, x, y, count, keep, begin, run);
   return passed;
 }
 
@@ -488,6 +659,35 @@ uint32_t shade_program_sample_quads(const DrawRecord& d, const PrimSetup& p, con
 uint32_t shade_program_target_sample_quads(const DrawRecord& d, const PrimSetup& p, const SampleTargets& t, int x,
                                            int y, int count, const uint16_t* masks) {
   return shade_sample_quads<true>(d, p, t, x, y, count, masks);
+}
+
+struct ShaderQuadBatch::Blocks {
+  RowBlocks row;
+  std::optional<QuadBlocks> blocks;
+};
+
+ShaderQuadBatch::ShaderQuadBatch() = default;
+ShaderQuadBatch::~ShaderQuadBatch() = default;
+
+bool ShaderQuadBatch::takes(const DrawRecord& d) { return d.routine == shade_program_quads; }
+
+const DrawRecord* ShaderQuadBatch::draw() const {
+  return blocks_ && blocks_->blocks ? &blocks_->blocks->draw() : nullptr;
+}
+
+void ShaderQuadBatch::add_row(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
+                              const uint8_t* masks) {
+  if (!d.state.shader || !d.state.shader->program) return;
+  if (!blocks_) blocks_.reset(new Blocks);  // not make_unique: its value-initialization zeroed 50 KB a tile
+  if (!blocks_->blocks) blocks_->blocks.emplace(d, fb, blocks_->row);
+  blocks_->blocks->add_row(p, x, y, count, masks);
+}
+
+uint32_t ShaderQuadBatch::flush() {
+  if (!blocks_ || !blocks_->blocks) return 0;
+  const uint32_t passed = blocks_->blocks->flush();
+  blocks_->blocks.reset();
+  return passed;
 }
 
 uint32_t shade_program_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,

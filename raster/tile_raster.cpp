@@ -8,6 +8,7 @@
 #include "raster/raster_limits.h"
 #include "raster/sample_point.h"
 #include "raster/setup.h"
+#include "raster/shader_quads.h"
 #include "raster/smooth_coverage.h"
 
 namespace pineda::raster {
@@ -53,6 +54,7 @@ struct QuadSink {
   const PrimSetup& p;
   const DrawRecord& d;
   const Framebuffer& fb;
+  ShaderQuadBatch* batch = nullptr;  // set: the rows go there, to be shaded later
   mutable uint64_t samples_passed = 0;
   void row(int x, int y, int count, const uint8_t* masks) const {
     // Skip empty quads at both ends.
@@ -62,11 +64,14 @@ struct QuadSink {
       --count;
     }
     while (count > 0 && !masks[count - 1]) --count;
-    if (count > 0) samples_passed += d.routine(d, p, fb, x, y, count, masks);
+    if (count <= 0) return;
+    if (batch) batch->add_row(d, p, fb, x, y, count, masks);
+    else samples_passed += d.routine(d, p, fb, x, y, count, masks);
   }
 };
 
 constexpr int kMaxQuadsPerRow = kTileSize / 2;
+constexpr int kBatchedWidth = 8;  // pixels: the widest primitives whose quads go to a ShaderQuadBatch
 
 // Every quad of `block`, clipped to `clip`.
 template <class Sink>
@@ -356,12 +361,21 @@ bool triangle_may_touch(const PrimSetup& prim, const PixelRect& rect) {
   return classify(prim, rect) != BlockCover::None;
 }
 
-uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile) {
+uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile,
+                           ShaderQuadBatch* batch) {
   const PixelRect area = intersect(prim.bounds, tile);
   if (area.empty()) return 0;
-  const QuadSink sink{prim, draw, fb};
+  uint64_t passed = 0;
+  // Rows of more than a few quads fill their own blocks: packed with others', glsl_sprites
+  // (quads of 13 to 44 pixels) shaded 18% fewer blocks in the same time, and full-screen rows
+  // lost the writer of adjacent quads (glsl_procedural: 2% slower).
+  if (batch && area.x1 - area.x0 > kBatchedWidth) {
+    passed += batch->flush();
+    batch = nullptr;
+  }
+  const QuadSink sink{prim, draw, fb, batch};
   rasterize_area(prim, area, sink);
-  return sink.samples_passed;
+  return passed + sink.samples_passed;
 }
 
 void add_sample_masks(const PrimSetup& prim, const PixelRect& area, int sample, TileSampleMasks& out) {

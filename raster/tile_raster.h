@@ -9,8 +9,13 @@
 
 namespace pineda::raster {
 
-// Returns the samples that passed the depth test when the draw counts them, 0 otherwise.
-uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile);
+class ShaderQuadBatch;
+
+// Returns the samples that passed the depth test when the draw counts them, 0 otherwise. With a
+// batch (which must take the draw: ShaderQuadBatch::takes), the quads go there, and their samples
+// come from its flush.
+uint64_t rasterize_in_tile(const PrimSetup& prim, const DrawRecord& draw, const Framebuffer& fb, const PixelRect& tile,
+                           ShaderQuadBatch* batch = nullptr);
 
 // The quads of a tile a multisampled primitive covers: quad (r, q) is at (x0 + 2q, y0 + 2r),
 // and its bits 4s to 4s + 3 are sample s's quad mask (bit i: pixel (i & 1, i >> 1) of the quad).

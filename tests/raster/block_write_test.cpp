@@ -1,8 +1,9 @@
-// The block colour write: on every SIMD path, each live pixel gets what write_quad's
-// conversion (to_unorm8) and SRC_ALPHA / ONE_MINUS_SRC_ALPHA blend (blend_over8) give it, and
-// every other pixel keeps what it had.
+// The block colour writes (adjacent quads, and quads anywhere): on every SIMD path, each live
+// pixel gets what write_quad's conversion (to_unorm8) and SRC_ALPHA / ONE_MINUS_SRC_ALPHA blend
+// (blend_over8) give it, and every other pixel keeps what it had.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -19,6 +20,14 @@ namespace {
 using quad_ops::ChannelShift;
 using quad_ops::kBgraShift;
 using quad_ops::kRgbaShift;
+
+// What write_quad gives lane `lane`'s pixel over `before`.
+uint32_t expected_pixel(const float (*color)[16], int lane, const ChannelShift& shift, bool blend, uint32_t before) {
+  U4 packed = {0, 0, 0, 0};
+  for (int c = 0; c < 4; ++c) packed |= to_unorm8(splat(color[c][lane])) << shift.at[c];
+  if (blend) packed = blend_over8(packed, U4{} + before);
+  return packed[0];
+}
 
 TEST(BlockWrite, EveryPathWritesWhatTheQuadWriterWould) {
   std::mt19937 random(5);
@@ -56,10 +65,7 @@ TEST(BlockWrite, EveryPathWritesWhatTheQuadWriterWould) {
           ++pixels;
           continue;
         }
-        U4 packed = {0, 0, 0, 0};
-        for (int c = 0; c < 4; ++c) packed |= to_unorm8(splat(color[c][lane])) << shift.at[c];
-        if (blend) packed = blend_over8(packed, U4{} + before[y][x]);
-        ASSERT_EQ(rows[y][x], packed[0]) << "trial " << trial << " lane " << lane;
+        ASSERT_EQ(rows[y][x], expected_pixel(color, lane, shift, blend, before[y][x])) << "trial " << trial << " lane " << lane;
         ++pixels;
       }
     }
@@ -79,6 +85,79 @@ TEST(BlockWrite, TouchesOnlyTheLivePixels) {
       select_block_writer(path)(color, kRgbaShift.at, blend, row, row, 0x0003);
       EXPECT_EQ(pixels[0], 0xff0000ffu);
       EXPECT_EQ(pixels[1], 0xff0000ffu);
+    }
+  }
+}
+
+// Four quads anywhere in a 16x16 buffer, no two at one place, with random live lanes: each live
+// pixel gets what write_quad gives it, every other pixel of the buffer keeps what it had.
+TEST(QuadsWrite, EveryPathWritesWhatTheQuadWriterWould) {
+  std::mt19937 random(9);
+  std::uniform_real_distribution<float> value(-0.25f, 1.25f);
+  std::uniform_int_distribution<uint32_t> pixel;
+  std::uniform_int_distribution<int> place(0, 7);
+  int written = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    alignas(64) float color[4][16];
+    for (auto& channel : color)
+      for (float& v : channel) v = value(random);
+    const bool blend = trial % 2 == 1;
+    const ChannelShift& shift = trial % 4 < 2 ? kRgbaShift : kBgraShift;
+    const uint16_t live = trial < 50 ? 0xFFFF : static_cast<uint16_t>(pixel(random));
+    int qx[4], qy[4];
+    for (int j = 0; j < 4; ++j) {
+      bool taken = true;
+      while (taken) {
+        qx[j] = 2 * place(random);
+        qy[j] = 2 * place(random);
+        taken = false;
+        for (int i = 0; i < j; ++i) taken |= qx[i] == qx[j] && qy[i] == qy[j];
+      }
+    }
+    uint32_t before[16][16];
+    for (auto& row : before)
+      for (uint32_t& p : row) p = pixel(random);
+    for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
+      uint32_t image[16][16];
+      std::memcpy(image, before, sizeof image);
+      uint32_t spare[2] = {0x12345678u, 0x9abcdef0u};
+      uint8_t* rows[8];
+      for (int j = 0; j < 4; ++j)
+        for (int r = 0; r < 2; ++r)
+          rows[2 * j + r] = (live >> (4 * j + 2 * r)) & 3u ? reinterpret_cast<uint8_t*>(&image[qy[j] + r][qx[j]])
+                                                            : reinterpret_cast<uint8_t*>(spare);
+      select_quads_writer(path)(color, shift.at, blend, rows, live);
+      EXPECT_EQ(spare[0], 0x12345678u);
+      EXPECT_EQ(spare[1], 0x9abcdef0u);
+      uint32_t expected[16][16];
+      std::memcpy(expected, before, sizeof expected);
+      for (int lane = 0; lane < 16; ++lane) {
+        if (!((live >> lane) & 1)) continue;
+        const int j = lane / 4, x = qx[j] + (lane & 1), y = qy[j] + ((lane >> 1) & 1);
+        expected[y][x] = expected_pixel(color, lane, shift, blend, before[y][x]);
+        ++written;
+      }
+      for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) ASSERT_EQ(image[y][x], expected[y][x]) << "trial " << trial << " at " << x << "," << y;
+    }
+  }
+  EXPECT_GT(written, 300 * 3 * 6);
+}
+
+// A quad whose right pixel lies past the buffer: only the live one is read and written (the
+// sanitizer build catches any other byte).
+TEST(QuadsWrite, TouchesOnlyTheLivePixels) {
+  alignas(64) float color[4][16] = {};
+  for (int lane = 0; lane < 16; ++lane) color[1][lane] = color[3][lane] = 1.f;
+  for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
+    for (bool blend : {false, true}) {
+      std::vector<uint32_t> pixels(1, 0xff0000ffu);
+      uint32_t spare[2] = {};
+      uint8_t* rows[8];
+      std::fill_n(rows, 8, reinterpret_cast<uint8_t*>(spare));
+      rows[4] = reinterpret_cast<uint8_t*>(pixels.data());  // quad 2's first row, its left pixel alone
+      select_quads_writer(path)(color, kRgbaShift.at, blend, rows, 0x0100);
+      EXPECT_EQ(pixels[0], 0xff00ff00u);
     }
   }
 }
