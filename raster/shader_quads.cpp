@@ -317,12 +317,12 @@ void shader_depths(const DrawRecord& d, const shader::FragmentBlock& block, int 
 
 // How block k's colours get written: all at once (block_write.h) when its live pixels all get
 // written, each wholly and in the same way, nothing but the colour and coverage left to decide,
-// and no two quads at one place (the later one's blend reads the earlier one's write); else
-// quad by quad.
+// and no pixel live in two of its quads (the later one's blend reads the earlier one's write);
+// else quad by quad.
 enum class BlockWrite { PerQuad, Adjacent, Apart };
 
-BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, bool no_late_tests,
-                       bool write_color) {
+BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBlocks& row, int k, shader::LaneMask live,
+                       bool no_late_tests, bool write_color) {
   const DrawState& s = d.state;
   if (!write_color || !no_late_tests || d.key.extras || s.alpha_test || d.alpha_to_one || !d.color_write_all ||
       fb.color.reduction.active || (d.key.blend && (!d.key.blend_over || s.logic_op_enabled)))
@@ -333,7 +333,8 @@ BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBloc
   const int n = row.quad_count[k];
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
-      if (quads[i].x == quads[j].x && quads[i].y == quads[j].y) return BlockWrite::PerQuad;
+      if (quads[i].x == quads[j].x && quads[i].y == quads[j].y && ((live >> (4 * i)) & (live >> (4 * j)) & 0xfu))
+        return BlockWrite::PerQuad;
   return BlockWrite::Apart;
 }
 
@@ -354,7 +355,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
   if constexpr (kTargets) write_color = targets.count > 0;
   uint32_t passed = 0;
   if constexpr (!kTargets) {
-    const BlockWrite how = block_write(d, fb, row, k, early || !tests, write_color);
+    const BlockWrite how = block_write(d, fb, row, k, live_lanes, early || !tests, write_color);
     if (how != BlockWrite::PerQuad) {
       const int n = row.quad_count[k];
       const auto live = static_cast<uint16_t>(live_lanes & ((1u << (4 * n)) - 1u));
