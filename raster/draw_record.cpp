@@ -8,6 +8,7 @@
 #include "raster/fragment_pipeline.h"
 #include "raster/sample_quads.h"
 #include "raster/sampler_nearest8.h"
+#include "raster/shader_draw.h"
 #include "raster/shader_quads.h"
 
 namespace pineda::raster {
@@ -109,6 +110,11 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
     d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth ||
                    state.line_smooth || fades_points;
     d.routine = shade_program_quads;
+    if (const shader::Program* program = state.shader->program.get()) {
+      d.shader_facts = {program->varying_floats(), program->draw_buffers_written(), program->frag_coord_components(),
+                        program->reads_point_coord(), program->broadcasts_color(), program->writes_depth(),
+                        program->uses_discard()};
+    }
     for (size_t u = 0; u < state.texture_units.size(); ++u)
       if (const TextureUnit& unit = state.texture_units[u]; unit.image)
         d.shader_samplers[u] = choose_fast_samplers(*unit.image, unit.sampler, path);

@@ -111,8 +111,9 @@ struct RowBlocks {
   alignas(64) float varyings[kMax][shader::kMaxVaryingFloats][kLanes];
 };
 
-bool early_tests(const DrawRecord& d, const shader::Program& program) {
-  return (d.key.depth || d.key.stencil) && !program.writes_depth() && !program.uses_discard() && !d.state.alpha_test;
+bool early_tests(const DrawRecord& d) {
+  return (d.key.depth || d.key.stencil) && !d.shader_facts.writes_depth && !d.shader_facts.uses_discard &&
+         !d.state.alpha_test;
 }
 
 // Depth and stencil of quad q before shading (early_tests): its pixels that pass. Adds them to
@@ -219,7 +220,6 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
 // left to shade.
 bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* uniform_values, RowBlocks& row, int k) {
   const ShaderDraw& sd = *d.state.shader;
-  const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
   Quad* quads = row.quads[k];
   const int n = row.quad_count[k];
@@ -243,7 +243,8 @@ bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* unifor
     }
   }
 
-  const int nv = program.varying_floats();
+  const DrawRecord::ShaderFacts& facts = d.shader_facts;
+  const int nv = facts.varying_floats;
   float (*varyings)[kLanes] = row.varyings[k];
   alignas(64) float w[kLanes];
   interpolate_block(nv, row, k, varyings, w);
@@ -256,8 +257,8 @@ bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* unifor
   }
   // Only the components the program reads (glmark2's conditionals, function and loop scenes read
   // gl_FragCoord.xy: the depth's per-lane doubles took half of begin_block there).
-  const unsigned frag_coord = program.frag_coord_components();
-  const bool point_coord = program.reads_point_coord();
+  const unsigned frag_coord = facts.frag_coord_components;
+  const bool point_coord = facts.reads_point_coord;
   if (frag_coord || point_coord) {
     for (int j = 0; j < 4; ++j) {
       const Quad& q = quads[j < n ? j : 0];
@@ -282,12 +283,12 @@ bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* unifor
     }
   }
   // A colour buffer the program does not write reads as zeros.
-  if (sd.color_output >= program.draw_buffers_written())
+  if (sd.color_output >= facts.draw_buffers_written)
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
   if (sd.color_output != 0 && s.alpha_test)  // colour 0's alpha is tested even if never written
     std::fill(&block.color[0][3][0], &block.color[0][3][0] + kLanes, 0.f);
-  if (!program.broadcasts_color())  // else colour 0 serves every draw buffer
-    for (int i = program.draw_buffers_written(); i < fb.color_targets; ++i)
+  if (!facts.broadcasts_color)  // else colour 0 serves every draw buffer
+    for (int i = facts.draw_buffers_written; i < fb.color_targets; ++i)
       std::fill(&block.color[i][0][0], &block.color[i][0][0] + 4 * kLanes, 0.f);
   block.varyings = &varyings[0][0];
   block.run = 0xffff;  // the unused quads repeat quad 0
@@ -347,7 +348,6 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
                       const std::conditional_t<kTargets, TargetViews, NoTargets>& targets, const RowBlocks& row, int k,
                       shader::LaneMask live_lanes, bool early) {
   const ShaderDraw& sd = *d.state.shader;
-  const shader::Program& program = *sd.program;
   const DrawState& s = d.state;
   const shader::FragmentBlock& block = row.blocks[k];
   const bool tests = d.key.depth || d.key.stencil;
@@ -398,7 +398,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
     if (d.alpha_to_one) col.c[3] = splat(1.f);  // after alpha to coverage (the alpha test above)
     if (!early && tests) {
       uint32_t z[4];
-      if (program.writes_depth()) shader_depths(d, block, j, z);
+      if (d.shader_facts.writes_depth) shader_depths(d, block, j, z);
       else plane_depths(d, p, q.ox, q.oy, z);
       mask = depth_stencil_lanes(d, p, fb, q.x, y, mask, z);
     }
@@ -443,7 +443,7 @@ class QuadBlocks {
   QuadBlocks(const DrawRecord& d, const Framebuffer& fb, RowBlocks& row)
       : d_(d), fb_(fb), sd_(*d.state.shader), row_(row), uniform_values_(sd_.fragment_uniform_values()),
         textures_(d.state.texture_units, &d.shader_samplers),
-        early_(early_tests(d, *sd_.program)) {
+        early_(early_tests(d)) {
     row_.count = 0;
   }
 
@@ -547,7 +547,7 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   const UnitTextureAccess textures(d.state.texture_units, &d.shader_samplers);
   uint32_t passed = 0;
   RowBlocks row;
-  const bool early = early_tests(d, *sd.program);
+  const bool early = early_tests(d);
   auto begin = [&](int k) {
     if (early) early_tests_of_block(d, fb, row, k, passed);
     return begin_block(d, fb, uniform_values, row, k);
@@ -583,7 +583,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
     if (t.draw[s]) targets[size_t(s)] = target_views<kTargets>(*t.draw[s], t.plane[s]);
   const UnitTextureAccess textures(d.state.texture_units, &d.shader_samplers);
   // Alpha to coverage makes every sample's record alpha-test (multisample.cpp).
-  const bool early = early_tests(d, *sd.program) && !d.sample_draws;
+  const bool early = early_tests(d) && !d.sample_draws;
   uint32_t passed = 0;
   RowBlocks row;
   uint16_t sample_masks[RowBlocks::kMax][4];  // per quad of each block (sample_targets.h)
