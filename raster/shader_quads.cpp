@@ -340,7 +340,7 @@ BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBloc
 }
 
 // After the run: alpha test, late depth and stencil, colour writes of the `live` lanes of block
-// k (the block's own live lanes, or a sample's: shade_sample_quads), quad by quad in order;
+// k (the block's own live lanes, or a sample's: shade_sample_quads), in the quads' order;
 // returns the samples that passed a late depth test. Each quad's primitive gives its depth, or
 // `sample_prim` (a sample's) when set; the colours are the block's.
 template <bool kTargets>
@@ -501,7 +501,6 @@ class QuadBlocks {
   int filling_ = 0;  // quads in block row_.count so far
   uint32_t passed_ = 0;
 };
-
 
 // The quads of a row that `keep(q, quad, n)` keeps (quad n of the block being filled; false:
 // no pixel of quad q to shade) in blocks of up to four: begin(k) fills block k (false: nothing
@@ -679,6 +678,9 @@ const DrawRecord* ShaderQuadBatch::draw() const {
 void ShaderQuadBatch::add_row(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                               const uint8_t* masks) {
   if (!d.state.shader || !d.state.shader->program) return;
+  if (const DrawRecord* waiting = draw(); waiting && waiting != &d) {  // (Scene::run_tile flushes first)
+    if (const uint32_t passed = flush()) waiting->state.sample_counter->passed.fetch_add(passed, std::memory_order_relaxed);
+  }
   if (!blocks_) blocks_.reset(new Blocks);  // not make_unique: its value-initialization zeroed 50 KB a tile
   if (!blocks_->blocks) blocks_->blocks.emplace(d, fb, blocks_->row);
   blocks_->blocks->add_row(p, x, y, count, masks);

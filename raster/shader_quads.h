@@ -39,7 +39,7 @@ class ShaderQuadBatch {
   static bool takes(const DrawRecord& d);
   // The draw whose quads wait, or null.
   const DrawRecord* draw() const;
-  // A row of quads as a QuadRoutine takes it, of draw() or of any draw when nothing waits.
+  // A row of quads as a QuadRoutine takes it. Another draw's quads waiting are flushed first.
   void add_row(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y, int count,
                const uint8_t* masks);
   // Shades, tests and writes what waits; returns the samples that passed (of draw(), when it

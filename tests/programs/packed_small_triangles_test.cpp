@@ -121,5 +121,26 @@ TEST_F(PackedSmallTrianglesTest, StencilCountsEveryFragmentInOrder) {
   EXPECT_EQ(render(vertices, true), alone);
 }
 
+TEST_F(PackedSmallTrianglesTest, OcclusionQueriesCountTheSamePixels) {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  link_in_use(kVertex, kFragment, {{0, "position"}, {1, "color"}});
+  const std::vector<Vertex> vertices = triangles(5, 3000);
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  auto samples_passed = [&](bool one_draw) {
+    glBeginQuery(GL_SAMPLES_PASSED, query);
+    render(vertices, one_draw);
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint passed = 0;
+    glGetQueryObjectuiv(query, GL_QUERY_RESULT, &passed);
+    return passed;
+  };
+  const GLuint alone = samples_passed(false);
+  EXPECT_GT(alone, 500u);  // (each pixel at most three times: three depths, LESS)
+  EXPECT_EQ(samples_passed(true), alone);
+  glDeleteQueries(1, &query);
+}
+
 }  // namespace
 }  // namespace pineda::test
