@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "raster/simd_path.h"
+#include "shader/jit/emit_pow.h"
 #include "shader/jit/x86_encoder.h"
 
 namespace pineda::shader::jit {
@@ -190,7 +191,8 @@ class Generator {
         default:
           break;
       }
-      if (called_out(in.op)) call(i, stable_insts + i);
+      if (in.op == Op::Pow) power(i, stable_insts + i);
+      else if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
     }
     epilogue();
@@ -482,19 +484,79 @@ class Generator {
   void call(int at, const ir::Inst* stable) {
     flush_registers(at);
     for (Operand o : sources(*stable, at)) zero_home_if_unwritten(id(o), at);
+    if (stable->op == Op::Texture) emit_call(&call_texture, &lookups_[stable->i0]);
+    else emit_call(&call_out, &calls_[at]);
+  }
+  // function(frame, operands); then the fixed registers and k7 again.
+  template <typename Operands>
+  void emit_call(void (*function)(const Frame*, const Operands*), const Operands* operands) {
     x_.vzeroupper();
     x_.mov_load(rdi, {rsp, 0});
-    if (stable->op == Op::Texture) {
-      x_.mov_imm(rsi, reinterpret_cast<uint64_t>(&lookups_[stable->i0]));
-      x_.mov_imm(rax, reinterpret_cast<uint64_t>(&call_texture));
-    } else {
-      x_.mov_imm(rsi, reinterpret_cast<uint64_t>(&calls_[at]));
-      x_.mov_imm(rax, reinterpret_cast<uint64_t>(&call_out));
-    }
+    x_.mov_imm(rsi, reinterpret_cast<uint64_t>(operands));
+    x_.mov_imm(rax, reinterpret_cast<uint64_t>(function));
     x_.call(rax);
     fixed_registers();
     x_.mov_load(rdx, {rsp, 0});
     x_.kmovw_load(kMaskReg, {rdx, static_cast<int32_t>(offsetof(Frame, mask))});
+  }
+
+  // pow natively for whole exponents up to 256 (emit_pow.h); a block with another exponent in a
+  // running lane calls out, with every register-held value kept around the call.
+  void power(int at, const ir::Inst* stable) {
+    const ir::Inst& in = *stable;
+    uint32_t pinned = resident_sources(in, at);
+    PowRegisters r{};
+    r.x = use(in.a, at, pinned);
+    r.y = use(in.b, at, pinned);
+    const int old = masked(at) ? use(in.d, at, pinned) : -1;
+    // The call-out reads its operands (and under a mask the destination's old value) from their homes.
+    for (Operand o : sources(in, at)) {
+      const int v = id(o);
+      if (dirty_[static_cast<size_t>(v)]) {
+        x_.store(home(v), where_[static_cast<size_t>(v)]);
+        dirty_[static_cast<size_t>(v)] = false;
+      }
+    }
+    r.scratch[0] = kScratch;
+    r.scratch[1] = kScratch2;
+    for (int k = 2; k < 5; ++k) {
+      r.scratch[k] = allocate(at, pinned);
+      pinned |= 1u << r.scratch[k];
+    }
+    r.result = kMaskedResult;
+    r.one = kOneReg;
+    r.zero = kZeroReg;
+    r.running_mask = kMaskReg;
+    const size_t needs_call = emit_pow_needs_call_out(x_, r);
+    emit_pow_of_whole_exponents(x_, r);
+    const size_t done = x_.jump();
+    x_.patch_jump(needs_call);
+    for (int reg = 0; reg < kValueRegisters; ++reg) {
+      const int v = holder_[static_cast<size_t>(reg)];
+      if (v >= 0 && dirty_[static_cast<size_t>(v)]) x_.store(home(v), reg);
+    }
+    emit_call(&call_out, &calls_[at]);
+    for (int reg = 0; reg < kValueRegisters; ++reg) {
+      const int v = holder_[static_cast<size_t>(reg)];
+      if (v >= 0) x_.load(reg, home(v));
+    }
+    x_.load(kMaskedResult, home(id(in.d)));
+    x_.patch_jump(done);
+
+    finish_sources(at, in);
+    const int dv = id(in.d);
+    if (where_[static_cast<size_t>(dv)] >= 0) release(where_[static_cast<size_t>(dv)]);
+    const int d = allocate(at, resident_sources(in, at));
+    if (old >= 0) x_.vblendmps(d, kMaskReg, old, kMaskedResult);
+    else x_.vmovaps(d, kMaskedResult);
+    hold(d, dv, at);
+  }
+  // Register d holds value dv, written by instruction `at`.
+  void hold(int d, int dv, int at) {
+    holder_[static_cast<size_t>(d)] = dv;
+    where_[static_cast<size_t>(dv)] = d;
+    dirty_[static_cast<size_t>(dv)] = true;
+    if (next_read(dv, at) < 0) release(d);
   }
 
   void native(int at, const ir::Inst& in) {
@@ -539,10 +601,7 @@ class Generator {
     } else {
       emit(in, d, a, b, c);
     }
-    holder_[static_cast<size_t>(d)] = dv;
-    where_[static_cast<size_t>(dv)] = d;
-    dirty_[static_cast<size_t>(dv)] = true;
-    if (next_read(dv, at) < 0) release(d);
+    hold(d, dv, at);
   }
   // Sources read for the last time here free their registers (the destination may take one).
   void finish_sources(int at, const ir::Inst& in) {

@@ -17,10 +17,10 @@ void X86Encoder::modrm_mem(int reg, Mem m) {
   emit32(static_cast<uint32_t>(m.disp));
 }
 
-void X86Encoder::evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask, bool zeroing) {
+void X86Encoder::evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask, bool zeroing, bool w) {
   const uint8_t p0 = static_cast<uint8_t>(inverted_bit(reg, 3) << 7 | inverted_bit(rm, 4) << 6 | inverted_bit(rm, 3) << 5 |
                                           inverted_bit(reg, 4) << 4 | map);
-  const uint8_t p1 = static_cast<uint8_t>((~vvvv & 15) << 3 | 1 << 2 | pp);
+  const uint8_t p1 = static_cast<uint8_t>((w ? 0x80 : 0) | (~vvvv & 15) << 3 | 1 << 2 | pp);
   const uint8_t p2 = static_cast<uint8_t>((zeroing ? 0x80 : 0) | kLength512 | inverted_bit(vvvv, 4) << 3 | (mask & 7));
   emit({0x62, p0, p1, p2, opcode, static_cast<uint8_t>(0xC0 | (reg & 7) << 3 | (rm & 7))});
 }
@@ -42,6 +42,10 @@ void X86Encoder::vcmpps(int k, int a, int b, Cmp pred, int mask) {
 void X86Encoder::vex_k(uint8_t opcode, int l, int k, int a, int b) {
   emit({0xC4, 0xE1, static_cast<uint8_t>((~a & 15) << 3 | l << 2), opcode,
         static_cast<uint8_t>(0xC0 | (k & 7) << 3 | (b & 7))});
+}
+
+void X86Encoder::kshiftrw(int k, int a, uint8_t bits) {  // VEX.L0.66.0F3A.W1 30 /r ib
+  emit({0xC4, 0xE3, 0xF9, 0x30, static_cast<uint8_t>(0xC0 | (k & 7) << 3 | (a & 7)), bits});
 }
 
 void X86Encoder::vsib(uint8_t opcode, int reg, int mask, Gpr base, int index, int32_t disp) {
@@ -129,6 +133,18 @@ void X86Encoder::dec32(Mem m) {
 
 size_t X86Encoder::jump_if_zero() {
   emit({0x0F, 0x84});
+  emit32(0);
+  return bytes_.size();
+}
+
+size_t X86Encoder::jump_if_not_zero() {
+  emit({0x0F, 0x85});
+  emit32(0);
+  return bytes_.size();
+}
+
+size_t X86Encoder::jump() {
+  bytes_.push_back(0xE9);
   emit32(0);
   return bytes_.size();
 }

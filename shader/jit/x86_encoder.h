@@ -18,6 +18,8 @@ struct Mem {
 
 // vcmpps predicates (imm8), the ones C's comparison operators on floats compile to.
 enum class Cmp : uint8_t { Eq = 0x00, Lt = 0x01, Le = 0x02, Unord = 0x03, Neq = 0x04, Ge = 0x0D, Gt = 0x0E };
+// vpcmpd / vpcmpud predicates (imm8).
+enum class IntCmp : uint8_t { Eq = 0, Lt = 1, Le = 2, Ne = 4, Ge = 5, Gt = 6 };
 
 class X86Encoder {
  public:
@@ -30,7 +32,34 @@ class X86Encoder {
   void vdivps(int d, int a, int b) { evex_rrr(0x5E, 1, 0, d, a, b); }
   void vsqrtps(int d, int a) { evex_rrr(0x51, 1, 0, d, 0, a); }
   void vpandd(int d, int a, int b) { evex_rrr(0xDB, 1, 1, d, a, b); }
-  void vpxord(int d, int a, int b) { evex_rrr(0xEF, 1, 1, d, a, b); }
+  void vpxord(int d, int a, int b, int mask = 0) { evex_rrr(0xEF, 1, 1, d, a, b, mask); }
+  void vpabsd(int d, int a) { evex_rrr(0x1E, 2, 1, d, 0, a); }
+  // k = a & b != 0 per lane, within `mask`.
+  void vptestmd(int k, int a, int b, int mask = 0) { evex_rrr(0x27, 2, 1, k, a, b, mask); }
+  void vpmovd2m(int k, int a) { evex_rrr(0x39, 2, 2, k, 0, a); }  // k = the lanes' sign bits
+  // k = cmp(a, b) on signed (vpcmpd) or unsigned (vpcmpud) lanes, within `mask`.
+  void vpcmpd(int k, int a, int b, IntCmp pred, int mask = 0) {
+    evex_rrr(0x1F, 3, 1, k, a, b, mask);
+    bytes_.push_back(static_cast<uint8_t>(pred));
+  }
+  void vpcmpud(int k, int a, int b, IntCmp pred, int mask = 0) {
+    evex_rrr(0x1E, 3, 1, k, a, b, mask);
+    bytes_.push_back(static_cast<uint8_t>(pred));
+  }
+  // Eight doubles per zmm: d = a * b or a / b (`mask`'s low 8 bits merge).
+  void vmulpd(int d, int a, int b, int mask = 0) { evex_rrr(0x59, 1, 1, d, a, b, mask, false, true); }
+  void vdivpd(int d, int a, int b, int mask = 0) { evex_rrr(0x5E, 1, 1, d, a, b, mask, false, true); }
+  void vcvtps2pd(int d, int a) { evex_rrr(0x5A, 1, 0, d, 0, a); }              // zmm d = ymm a's 8 floats
+  void vcvtpd2ps(int d, int a) { evex_rrr(0x5A, 1, 1, d, 0, a, 0, false, true); }  // ymm d = zmm a's 8 doubles
+  void vextractf32x8(int d, int a, uint8_t half) {  // ymm d = half `half` of zmm a
+    evex_rrr(0x1B, 3, 1, a, 0, d);
+    bytes_.push_back(half);
+  }
+  void vinsertf32x8(int d, int a, int b, uint8_t half) {  // d = a with half `half` from ymm b
+    evex_rrr(0x1A, 3, 1, d, a, b);
+    bytes_.push_back(half);
+  }
+  void vpbroadcastq(int d, Gpr s) { evex_rrr(0x7C, 2, 1, d, 0, s, 0, false, true); }  // every 64-bit lane = s
   void vcvttps2dq(int d, int a) { evex_rrr(0x5B, 1, 2, d, 0, a); }
   void vcvtdq2ps(int d, int a) { evex_rrr(0x5B, 1, 0, d, 0, a); }
   // imm8 0x09: floor, 0x0B: truncate (and no precision exception).
@@ -43,6 +72,10 @@ class X86Encoder {
   void vpaddd(int d, int a, int b) { evex_rrr(0xFE, 1, 1, d, a, b); }
   void vpslld(int d, int a, uint8_t bits) {
     evex_rrr(0x72, 1, 1, 6, d, a);
+    bytes_.push_back(bits);
+  }
+  void vpsrld(int d, int a, uint8_t bits) {
+    evex_rrr(0x72, 1, 1, 2, d, a);
     bytes_.push_back(bits);
   }
   // d = base[index lane * 4 + disp] in the lanes of mask k (1..7), which it clears.
@@ -69,6 +102,7 @@ class X86Encoder {
   void kmovw(int k, int a) { vex_k(0x90, 0, k, 0, a); }
   void kandw(int k, int a, int b) { vex_k(0x41, 1, k, a, b); }
   void kandnw(int k, int a, int b) { vex_k(0x42, 1, k, a, b); }  // k = ~a & b
+  void kshiftrw(int k, int a, uint8_t bits);
 
   // General-purpose.
   void push(Gpr r);
@@ -86,6 +120,8 @@ class X86Encoder {
   // Jumps with 32-bit displacements: the displacement is patched once the target is known
   // (patch_jump), or given for a backward target (jump_back).
   size_t jump_if_zero();           // jz
+  size_t jump_if_not_zero();       // jnz
+  size_t jump();                   // jmp
   size_t jump_if_not_greater();    // jle
   void jump_back(size_t target);   // jmp
   void patch_jump(size_t site);    // the jump at `site` goes to the current end of the code
@@ -99,7 +135,9 @@ class X86Encoder {
   void emit32(uint32_t v);
   // map: 1 = 0F, 2 = 0F38, 3 = 0F3A; pp: 0 none, 1 = 66, 2 = F3. `reg` and `vvvv` are register numbers
   // (0-31); rm a register (0-31).
-  void evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask = 0, bool zeroing = false);
+  // `w`: EVEX.W (64-bit elements).
+  void evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask = 0, bool zeroing = false,
+                bool w = false);
   void evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m);
   void modrm_mem(int reg, Mem m);
   void vsib(uint8_t opcode, int reg, int mask, Gpr base, int index, int32_t disp);

@@ -83,15 +83,16 @@ Block random_block(std::mt19937& random) {
 // comparison, conversion and write treats all NaNs alike), so any NaN matches any NaN.
 bool is_nan(uint32_t bits) { return (bits & 0x7F800000u) == 0x7F800000u && (bits & 0x007FFFFFu) != 0; }
 
-// Both tiers over many random blocks of special values; the stage must have compiled.
-void expect_same_bits(ir::Code code, Stage kind, const std::vector<float>& uniforms, const char* what) {
+// Both tiers over many random blocks (of special values by default); the stage must have compiled.
+void expect_same_bits(ir::Code code, Stage kind, const std::vector<float>& uniforms, const char* what,
+                      Block (*make_block)(std::mt19937&) = random_block) {
   StageCode stage;
   stage.code = std::move(code);
   stage.prepare();
   ASSERT_NE(stage.compiled, nullptr) << what;
   std::mt19937 random(7);
   for (int trial = 0; trial < 200; ++trial) {
-    const Block block = random_block(random);
+    const Block block = make_block(random);
     const std::vector<uint32_t> interpreted = run(stage, kind, block, uniforms, false);
     const std::vector<uint32_t> compiled = run(stage, kind, block, uniforms, true);
     for (size_t i = 0; i < interpreted.size(); ++i) {
@@ -159,6 +160,70 @@ TEST_F(CompiledTier, TheCallersRoundingModeDoesNotSplitTheTiers) {
       store(code, kind, d, 0);
       expect_same_bits(std::move(code), kind, {}, ir::op_name(op));
     }
+}
+
+// pow with whole exponents up to 256 runs natively (emit_pow.h), other exponents call out:
+// varying 1 holds the exponents, per lane or one for the block, whole or not, and the edges.
+Block block_of_exponents(std::mt19937& random) {
+  static constexpr uint32_t kEdges[] = {0x00000000, 0x80000000, 0x3F800000, 0xBF800000, 0x40000000, 0x41F80000,
+                                        0x42000000, 0x42040000, 0x437F0000, 0x43800000, 0xC3800000, 0x43808000,
+                                        0xC3808000, 0x40200000, 0x00000001, 0x80000001, 0x7FC00000, 0x7F800000,
+                                        0xFF800000, 0x4F000000, 0xCF000000, 0x4B800000, 0x4F32D05E, 0xC1A00000};
+  Block b = random_block(random);
+  float* y = &b.varyings[kLanes];
+  const int kind = std::uniform_int_distribution<int>(0, 3)(random);
+  std::uniform_int_distribution<int> whole(-256, 256);
+  const float edge = std::bit_cast<float>(kEdges[std::uniform_int_distribution<size_t>(0, std::size(kEdges) - 1)(random)]);
+  const float shared = static_cast<float>(whole(random));
+  for (int l = 0; l < kLanes; ++l) {
+    if (kind == 0) y[l] = static_cast<float>(whole(random));  // whole, per lane
+    if (kind == 1) y[l] = shared;                             // whole, one for the block
+    if (kind == 2) y[l] = edge;
+    if (kind == 3) y[l] = l == 5 ? 0.5f : shared;  // one lane calls out
+  }
+  // x: the specials, and magnitudes near 1 whose powers stay finite.
+  for (int l = 0; l < kLanes; l += 2)
+    b.varyings[static_cast<size_t>(l)] = std::uniform_real_distribution<float>(-1.5f, 1.5f)(random);
+  return b;
+}
+
+TEST_F(CompiledTier, PowOfWholeExponentsNativelyAndOthersByCallOut) {
+  for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
+    ir::Code code;
+    const Operand x = load(code, kind, 0), y = load(code, kind, 1);
+    const Operand d = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Pow, d, x, y, ir::kNone, 0, 0});
+    store(code, kind, d, 0);
+    expect_same_bits(std::move(code), kind, {}, "pow", block_of_exponents);
+  }
+  // Inside a branch (the running lanes take the result), with more values live across it than
+  // registers: the call-out keeps them.
+  ir::Code code;
+  const Operand x = load(code, Stage::Fragment, 0), y = load(code, Stage::Fragment, 1), c = load(code, Stage::Fragment, 2);
+  std::vector<Operand> live;
+  for (int i = 0; i < 32; ++i) {
+    live.push_back(code.new_register());
+    code.insts.push_back(ir::Inst{Op::Mad, live.back(), x, c, code.constant(0.5f * static_cast<float>(i)), 0, 0});
+  }
+  const Operand test = code.new_register(), p = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Mov, p, c, ir::kNone, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Lt, test, c, code.constant(0.5f), ir::kNone, 0, 0});
+  const size_t begin = code.insts.size();
+  code.insts.push_back(ir::Inst{Op::IfBegin, ir::kNone, test, ir::kNone, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Pow, p, live[3], y, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Pow, live[7], x, y, ir::kNone, 0, 0});
+  code.insts[begin].i0 = static_cast<int32_t>(code.insts.size());
+  code.insts.push_back(ir::Inst{Op::EndIf});
+  Operand sum = p;
+  for (Operand v : live) {
+    const Operand next = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Add, next, sum, v, ir::kNone, 0, 0});
+    sum = next;
+  }
+  store(code, Stage::Fragment, sum, 0);
+  store(code, Stage::Fragment, p, 1);
+  store(code, Stage::Fragment, live[7], 2);
+  expect_same_bits(std::move(code), Stage::Fragment, {}, "pow in a branch", block_of_exponents);
 }
 
 TEST_F(CompiledTier, LoadsAndStoresOfEveryKind) {
