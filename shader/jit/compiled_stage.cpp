@@ -8,7 +8,7 @@
 #include <cstring>
 
 #include "raster/simd_path.h"
-#include "shader/jit/emit_pow.h"
+#include "shader/jit/emit_library_ops.h"
 #include "shader/jit/x86_encoder.h"
 
 namespace pineda::shader::jit {
@@ -191,7 +191,7 @@ class Generator {
         default:
           break;
       }
-      if (in.op == Op::Pow) power(i, stable_insts + i);
+      if (in.op == Op::Pow || in.op == Op::Sin || in.op == Op::Cos) library_op(i, stable_insts + i);
       else if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
     }
@@ -500,14 +500,14 @@ class Generator {
     x_.kmovw_load(kMaskReg, {rdx, static_cast<int32_t>(offsetof(Frame, mask))});
   }
 
-  // pow natively for whole exponents up to 256 (emit_pow.h); a block with another exponent in a
-  // running lane calls out, with every register-held value kept around the call.
-  void power(int at, const ir::Inst* stable) {
+  // pow, sin and cos natively where their lanes allow (emit_library_ops.h); a block with a
+  // running lane that needs another way calls out, every register-held value kept around the call.
+  void library_op(int at, const ir::Inst* stable) {
     const ir::Inst& in = *stable;
     uint32_t pinned = resident_sources(in, at);
-    PowRegisters r{};
+    LibraryOpRegisters r{};
     r.x = use(in.a, at, pinned);
-    r.y = use(in.b, at, pinned);
+    r.y = in.op == Op::Pow ? use(in.b, at, pinned) : r.x;
     const int old = masked(at) ? use(in.d, at, pinned) : -1;
     // The call-out reads its operands (and under a mask the destination's old value) from their homes.
     for (Operand o : sources(in, at)) {
@@ -519,7 +519,7 @@ class Generator {
     }
     r.scratch[0] = kScratch;
     r.scratch[1] = kScratch2;
-    for (int k = 2; k < 5; ++k) {
+    for (int k = 2; k < (in.op == Op::Pow ? kPowScratch : kSinCosScratch); ++k) {
       r.scratch[k] = allocate(at, pinned);
       pinned |= 1u << r.scratch[k];
     }
@@ -527,8 +527,14 @@ class Generator {
     r.one = kOneReg;
     r.zero = kZeroReg;
     r.running_mask = kMaskReg;
-    const size_t needs_call = emit_pow_needs_call_out(x_, r);
-    emit_pow_of_whole_exponents(x_, r);
+    size_t needs_call;
+    if (in.op == Op::Pow) {
+      needs_call = emit_pow_needs_call_out(x_, r);
+      emit_pow_of_whole_exponents(x_, r);
+    } else {
+      needs_call = emit_sin_cos_needs_call_out(x_, r);
+      emit_sin_cos_reduced(x_, r, in.op == Op::Cos);
+    }
     const size_t done = x_.jump();
     x_.patch_jump(needs_call);
     for (int reg = 0; reg < kValueRegisters; ++reg) {

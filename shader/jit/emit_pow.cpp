@@ -1,4 +1,4 @@
-#include "shader/jit/emit_pow.h"
+#include "shader/jit/emit_library_ops.h"
 
 #include <cstdint>
 
@@ -17,7 +17,7 @@ void broadcast32(X86Encoder& x, int d, uint32_t bits) {
 
 }  // namespace
 
-size_t emit_pow_needs_call_out(X86Encoder& x, const PowRegisters& r) {
+size_t emit_pow_needs_call_out(X86Encoder& x, const LibraryOpRegisters& r) {
   const int magnitude = r.scratch[0], t = r.scratch[1];
   // Whole: y converts to an integer and back unchanged (NaN and |y| >= 2^31 do not: those give
   // 0x80000000, whose unsigned magnitude is past 256 anyway).
@@ -32,7 +32,7 @@ size_t emit_pow_needs_call_out(X86Encoder& x, const PowRegisters& r) {
   return x.jump_if_not_zero();
 }
 
-void emit_pow_of_whole_exponents(X86Encoder& x, const PowRegisters& r) {
+void emit_pow_of_whole_exponents(X86Encoder& x, const LibraryOpRegisters& r) {
   const int magnitude = r.scratch[0];
   const int square[2] = {r.scratch[1], r.scratch[2]}, power[2] = {r.scratch[3], r.scratch[4]};
   // The lanes of other exponents take no bits: the loop ends at the highest bit of the others.

@@ -25,10 +25,10 @@ void X86Encoder::evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, in
   emit({0x62, p0, p1, p2, opcode, static_cast<uint8_t>(0xC0 | (reg & 7) << 3 | (rm & 7))});
 }
 
-void X86Encoder::evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m) {
+void X86Encoder::evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m, bool w) {
   const uint8_t p0 = static_cast<uint8_t>(inverted_bit(reg, 3) << 7 | 1 << 6 | inverted_bit(m.base, 3) << 5 |
                                           inverted_bit(reg, 4) << 4 | map);
-  const uint8_t p1 = static_cast<uint8_t>(15 << 3 | 1 << 2 | pp);
+  const uint8_t p1 = static_cast<uint8_t>((w ? 0x80 : 0) | 15 << 3 | 1 << 2 | pp);
   const uint8_t p2 = static_cast<uint8_t>(kLength512 | 1 << 3);
   emit({0x62, p0, p1, p2, opcode});
   modrm_mem(reg, m);

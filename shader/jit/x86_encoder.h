@@ -49,6 +49,14 @@ class X86Encoder {
   // Eight doubles per zmm: d = a * b or a / b (`mask`'s low 8 bits merge).
   void vmulpd(int d, int a, int b, int mask = 0) { evex_rrr(0x59, 1, 1, d, a, b, mask, false, true); }
   void vdivpd(int d, int a, int b, int mask = 0) { evex_rrr(0x5E, 1, 1, d, a, b, mask, false, true); }
+  void vaddpd(int d, int a, int b) { evex_rrr(0x58, 1, 1, d, a, b, 0, false, true); }
+  void vsubpd(int d, int a, int b) { evex_rrr(0x5C, 1, 1, d, a, b, 0, false, true); }
+  void vblendmpd(int d, int mask, int a, int b) { evex_rrr(0x65, 2, 1, d, a, b, mask, false, true); }  // d = mask ? b : a
+  // Integer forms on 64-bit lanes.
+  void vpaddq(int d, int a, int b) { evex_rrr(0xD4, 1, 1, d, a, b, 0, false, true); }
+  void vpxorq(int d, int a, int b, int mask = 0) { evex_rrr(0xEF, 1, 1, d, a, b, mask, false, true); }
+  void vptestmq(int k, int a, int b) { evex_rrr(0x27, 2, 1, k, a, b, 0, false, true); }
+  void broadcast64(int d, Mem m) { evex_rm(0x19, 2, 1, d, m, true); }  // vbroadcastsd zmm, m64
   void vcvtps2pd(int d, int a) { evex_rrr(0x5A, 1, 0, d, 0, a); }              // zmm d = ymm a's 8 floats
   void vcvtpd2ps(int d, int a) { evex_rrr(0x5A, 1, 1, d, 0, a, 0, false, true); }  // ymm d = zmm a's 8 doubles
   void vextractf32x8(int d, int a, uint8_t half) {  // ymm d = half `half` of zmm a
@@ -138,7 +146,7 @@ class X86Encoder {
   // `w`: EVEX.W (64-bit elements).
   void evex_rrr(uint8_t opcode, int map, int pp, int reg, int vvvv, int rm, int mask = 0, bool zeroing = false,
                 bool w = false);
-  void evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m);
+  void evex_rm(uint8_t opcode, int map, int pp, int reg, Mem m, bool w = false);
   void modrm_mem(int reg, Mem m);
   void vsib(uint8_t opcode, int reg, int mask, Gpr base, int index, int32_t disp);
   void vex_k(uint8_t opcode, int l, int k, int a, int b);

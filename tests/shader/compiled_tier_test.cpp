@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <xmmintrin.h>
 
+#include <array>
 #include <bit>
 #include <cstring>
 #include <random>
@@ -162,7 +163,7 @@ TEST_F(CompiledTier, TheCallersRoundingModeDoesNotSplitTheTiers) {
     }
 }
 
-// pow with whole exponents up to 256 runs natively (emit_pow.h), other exponents call out:
+// pow with whole exponents up to 256 runs natively (emit_library_ops.h), other exponents call out:
 // varying 1 holds the exponents, per lane or one for the block, whole or not, and the edges.
 Block block_of_exponents(std::mt19937& random) {
   static constexpr uint32_t kEdges[] = {0x00000000, 0x80000000, 0x3F800000, 0xBF800000, 0x40000000, 0x41F80000,
@@ -224,6 +225,40 @@ TEST_F(CompiledTier, PowOfWholeExponentsNativelyAndOthersByCallOut) {
   store(code, Stage::Fragment, p, 1);
   store(code, Stage::Fragment, live[7], 2);
   expect_same_bits(std::move(code), Stage::Fragment, {}, "pow in a branch", block_of_exponents);
+}
+
+// sin and cos of |x| < 2^17 run natively, a block with a farther, infinite or NaN x in a lane
+// calls out: varying 0 holds angles of every size up to the edge, with multiples of pi/4 and
+// zeros, denormals and the edge itself.
+Block block_of_angles(std::mt19937& random) {
+  Block b = random_block(random);
+  const int kind = std::uniform_int_distribution<int>(0, 3)(random);
+  const float scale = std::array{4.0f, 100.0f, 131071.0f, 8.0f}[static_cast<size_t>(kind)];
+  for (int l = 0; l < kLanes; ++l) {
+    float& x = b.varyings[static_cast<size_t>(l)];
+    x = std::uniform_real_distribution<float>(-scale, scale)(random);
+    if (kind == 3) x = static_cast<float>(l - 8) * 0.785398163f;  // near multiples of pi/4
+  }
+  if (kind == 1) {
+    b.varyings[1] = std::bit_cast<float>(0x80000001u);
+    b.varyings[2] = -0.0f;
+    b.varyings[3] = std::bit_cast<float>(0x47FFFFFFu);  // the largest below 2^17
+  }
+  if (kind == 2 && std::uniform_int_distribution<int>(0, 1)(random))
+    b.varyings[6] = std::bit_cast<float>(kSpecialBits[std::uniform_int_distribution<size_t>(13, 19)(random)]);  // calls out
+  return b;
+}
+
+TEST_F(CompiledTier, SinAndCosNativelyBelowTwoToTheSeventeenth) {
+  for (Op op : {Op::Sin, Op::Cos})
+    for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
+      ir::Code code;
+      const Operand x = load(code, kind, 0);
+      const Operand d = code.new_register();
+      code.insts.push_back(ir::Inst{op, d, x, ir::kNone, ir::kNone, 0, 0});
+      store(code, kind, d, 0);
+      expect_same_bits(std::move(code), kind, {}, ir::op_name(op), block_of_angles);
+    }
 }
 
 TEST_F(CompiledTier, LoadsAndStoresOfEveryKind) {
