@@ -26,7 +26,7 @@ constexpr uint8_t kFloor = 0x09, kTruncate = 0x0B;  // vrndscaleps modes
 
 // zmm0-26 hold values; 27 takes a result that a mask then blends in; 28 and 29 are scratch; 30
 // holds 1.0 and 31 zero throughout. k7 holds the running lanes (kept in Frame::mask too: calls
-// clobber mask registers); operations use k1-k3.
+// clobber mask registers); operations use k1-k3, the library functions k1-k6.
 constexpr int kValueRegisters = 27;
 constexpr int kMaskedResult = 27, kScratch = 28, kScratch2 = 29, kOneReg = 30, kZeroReg = 31;
 constexpr int kMaskReg = 7;
@@ -500,8 +500,8 @@ class Generator {
     x_.kmovw_load(kMaskReg, {rdx, static_cast<int32_t>(offsetof(Frame, mask))});
   }
 
-  // pow, sin and cos natively where their lanes allow (emit_library_ops.h); a block with a
-  // running lane that needs another way calls out, every register-held value kept around the call.
+  // pow, sin and cos natively (emit_library_ops.h); a block whose running lanes need what the
+  // emitted code leaves out calls out, every register-held value kept around the call.
   void library_op(int at, const ir::Inst* stable) {
     const ir::Inst& in = *stable;
     uint32_t pinned = resident_sources(in, at);
@@ -527,14 +527,7 @@ class Generator {
     r.one = kOneReg;
     r.zero = kZeroReg;
     r.running_mask = kMaskReg;
-    size_t needs_call;
-    if (in.op == Op::Pow) {
-      needs_call = emit_pow_needs_call_out(x_, r);
-      emit_pow_of_whole_exponents(x_, r);
-    } else {
-      needs_call = emit_sin_cos_needs_call_out(x_, r);
-      emit_sin_cos_reduced(x_, r, in.op == Op::Cos);
-    }
+    const size_t needs_call = in.op == Op::Pow ? emit_pow(x_, r) : emit_sin_cos(x_, r, in.op == Op::Cos);
     const size_t done = x_.jump();
     x_.patch_jump(needs_call);
     for (int reg = 0; reg < kValueRegisters; ++reg) {

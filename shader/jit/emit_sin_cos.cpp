@@ -1,16 +1,17 @@
 #include <cstdint>
 
 #include "shader/jit/emit_library_ops.h"
+#include "shader/jit/emit_series.h"
+#include "shader/jit/lane_series.h"
 
 namespace pineda::shader::jit {
 
 namespace {
 
-#include "shader/lane_pow.inc"  // LaneTypes, for lane_sin_cos.inc
-#include "shader/lane_sin_cos.inc"
+using lane_series::kSinCosSeries;
 
 // The constants the code broadcasts, as lane_sin_cos.inc's sin_cos_reduced spells them.
-enum SinCosConstant { kTwoOverPi, kShifter, kHalfPi1, kHalfPi2, kHalfPi3, kSin0, kCos0 = kSin0 + 9, kIntegerOne = kCos0 + 10,
+enum SinCosConstant { kTwoOverPi, kRoundingShifter, kHalfPi1, kHalfPi2, kHalfPi3, kSin0, kCos0 = kSin0 + 9, kIntegerOne = kCos0 + 10,
                       kIntegerTwo, kSignBit64, kSinCosConstants };
 struct SinCosTable {
   double value[kSinCosConstants];
@@ -18,7 +19,7 @@ struct SinCosTable {
 constexpr SinCosTable make_sin_cos_table() {
   SinCosTable t{};
   t.value[kTwoOverPi] = 0.636619772367581343075535053490057448;
-  t.value[kShifter] = 6755399441055744.0;
+  t.value[kRoundingShifter] = 6755399441055744.0;
   t.value[kHalfPi1] = 1.57079632673412561417e+00;
   t.value[kHalfPi2] = 6.07710050630396597660e-11;
   t.value[kHalfPi3] = 2.02226624871116645580e-21;
@@ -37,7 +38,7 @@ void sin_cos_half(X86Encoder& x, const LibraryOpRegisters& r, int half, bool cos
   const int xd = s[0], shifted = s[1], k = s[2], reduced = s[3], z = s[4], z2 = s[5], z4 = s[6], z8 = s[7], t = s[8],
             u = s[9], sine = s[10];
   x.mov_imm(rax, reinterpret_cast<uint64_t>(&kSinCosTable));
-  auto constant = [&](int reg, int index) { x.broadcast64(reg, {rax, 8 * index}); };
+  auto constant = [&](int reg, int index) { emit_table_constant(x, reg, index); };
   if (half == 0) {
     x.vcvtps2pd(xd, r.x);
   } else {
@@ -47,7 +48,7 @@ void sin_cos_half(X86Encoder& x, const LibraryOpRegisters& r, int half, bool cos
   // x = k (pi/2) + r.
   constant(t, kTwoOverPi);
   x.vmulpd(t, xd, t);
-  constant(u, kShifter);
+  constant(u, kRoundingShifter);
   x.vaddpd(shifted, t, u);
   x.vsubpd(k, shifted, u);
   for (int part = 0; part < 3; ++part) {
@@ -59,36 +60,17 @@ void sin_cos_half(X86Encoder& x, const LibraryOpRegisters& r, int half, bool cos
   x.vmulpd(z2, z, z);
   x.vmulpd(z4, z2, z2);
   x.vmulpd(z8, z4, z4);
-  // d = c[i] + c[i + 1] z, of the series from `first`.
-  auto pair = [&](int d, int first) {
-    constant(t, first + 1);
-    x.vmulpd(t, t, z);
-    constant(d, first);
-    x.vaddpd(d, d, t);
-  };
-  // d = ((c0 + c1 z) + (c2 + c3 z) z2) + ((c4 + c5 z) + (c6 + c7 z) z2) z4, c from `first`.
-  const int p0 = xd, p1 = k;  // free from here
-  auto eight_terms = [&](int d, int first) {
-    pair(d, first);
-    pair(u, first + 2);
-    x.vmulpd(u, u, z2);
-    x.vaddpd(d, d, u);
-    pair(p1, first + 4);
-    pair(u, first + 6);
-    x.vmulpd(u, u, z2);
-    x.vaddpd(p1, p1, u);
-    x.vmulpd(p1, p1, z4);
-    x.vaddpd(d, d, p1);
-  };
+  const int p0 = xd;  // free from here, as k
+  const SeriesRegisters series{z, z2, z4, t, u, k};
   // sin r = r ((eight terms) + s8 z8).
-  eight_terms(p0, kSin0);
+  emit_eight_terms(x, series, p0, kSin0);
   constant(t, kSin0 + 8);
   x.vmulpd(t, t, z8);
   x.vaddpd(p0, p0, t);
   x.vmulpd(sine, reduced, p0);
   // cos r = (eight terms) + (c8 + c9 z) z8.
-  eight_terms(p0, kCos0);
-  pair(u, kCos0 + 8);
+  emit_eight_terms(x, series, p0, kCos0);
+  emit_pair(x, series, u, kCos0 + 8);
   x.vmulpd(u, u, z8);
   x.vaddpd(p0, p0, u);
   // The quadrant, k mod 4 from the shifted sum's low bits (cos x = sin(x + pi/2)): odd picks
@@ -109,7 +91,7 @@ void sin_cos_half(X86Encoder& x, const LibraryOpRegisters& r, int half, bool cos
 
 }  // namespace
 
-size_t emit_sin_cos_needs_call_out(X86Encoder& x, const LibraryOpRegisters& r) {
+size_t emit_sin_cos(X86Encoder& x, const LibraryOpRegisters& r, bool cosine) {
   const int magnitude = r.scratch[0], limit = r.scratch[1];
   x.mov_imm32(rax, 0x7FFFFFFFu);
   x.vpbroadcastd(magnitude, rax);
@@ -118,14 +100,12 @@ size_t emit_sin_cos_needs_call_out(X86Encoder& x, const LibraryOpRegisters& r) {
   x.vpbroadcastd(limit, rax);
   x.vpcmpd(1, magnitude, limit, IntCmp::Ge, r.running_mask);
   x.kortestw(1, 1);
-  return x.jump_if_not_zero();
-}
-
-void emit_sin_cos_reduced(X86Encoder& x, const LibraryOpRegisters& r, bool cosine) {
+  const size_t far = x.jump_if_not_zero();
   sin_cos_half(x, r, 0, cosine, r.result);
   const int high = r.scratch[9];
   sin_cos_half(x, r, 1, cosine, high);
   x.vinsertf32x8(r.result, r.result, high, 1);
+  return far;
 }
 
 }  // namespace pineda::shader::jit

@@ -58,6 +58,17 @@ class X86Encoder {
   void vptestmq(int k, int a, int b) { evex_rrr(0x27, 2, 1, k, a, b, 0, false, true); }
   void broadcast64(int d, Mem m) { evex_rm(0x19, 2, 1, d, m, true); }  // vbroadcastsd zmm, m64
   void vcvtps2pd(int d, int a) { evex_rrr(0x5A, 1, 0, d, 0, a); }              // zmm d = ymm a's 8 floats
+  void vcvtdq2pd(int d, int a) { evex_rrr(0xE6, 1, 2, d, 0, a); }              // zmm d = ymm a's 8 integers
+  // k = cmp(a, b) on doubles (the vcmpps predicates).
+  void vcmppd(int k, int a, int b, Cmp pred) {
+    evex_rrr(0xC2, 1, 1, k, a, b, 0, false, true);
+    bytes_.push_back(static_cast<uint8_t>(pred));
+  }
+  void vmovapd(int d, int a, int mask) { evex_rrr(0x28, 1, 1, d, 0, a, mask, false, true); }  // d = a where mask
+  void vpsllq(int d, int a, uint8_t bits) {
+    evex_rrr(0x73, 1, 1, 6, d, a, 0, false, true);
+    bytes_.push_back(bits);
+  }
   void vcvtpd2ps(int d, int a) { evex_rrr(0x5A, 1, 1, d, 0, a, 0, false, true); }  // ymm d = zmm a's 8 doubles
   void vextractf32x8(int d, int a, uint8_t half) {  // ymm d = half `half` of zmm a
     evex_rrr(0x1B, 3, 1, a, 0, d);
@@ -68,7 +79,7 @@ class X86Encoder {
     bytes_.push_back(half);
   }
   void vpbroadcastq(int d, Gpr s) { evex_rrr(0x7C, 2, 1, d, 0, s, 0, false, true); }  // every 64-bit lane = s
-  void vcvttps2dq(int d, int a) { evex_rrr(0x5B, 1, 2, d, 0, a); }
+  void vcvttps2dq(int d, int a, int mask = 0, bool zeroing = false) { evex_rrr(0x5B, 1, 2, d, 0, a, mask, zeroing); }
   void vcvtdq2ps(int d, int a) { evex_rrr(0x5B, 1, 0, d, 0, a); }
   // imm8 0x09: floor, 0x0B: truncate (and no precision exception).
   void vrndscaleps(int d, int a, uint8_t imm) {
@@ -77,7 +88,9 @@ class X86Encoder {
   }
   void vpminud(int d, int a, int b) { evex_rrr(0x3B, 2, 1, d, a, b); }
   void vpbroadcastd(int d, Gpr s) { evex_rrr(0x7C, 2, 1, d, 0, s); }  // every lane = the low 32 bits of s
-  void vpaddd(int d, int a, int b) { evex_rrr(0xFE, 1, 1, d, a, b); }
+  void vpaddd(int d, int a, int b, int mask = 0) { evex_rrr(0xFE, 1, 1, d, a, b, mask); }
+  void vpsubd(int d, int a, int b, int mask = 0) { evex_rrr(0xFA, 1, 1, d, a, b, mask); }
+  void vpord(int d, int a, int b) { evex_rrr(0xEB, 1, 1, d, a, b); }
   void vpslld(int d, int a, uint8_t bits) {
     evex_rrr(0x72, 1, 1, 6, d, a);
     bytes_.push_back(bits);

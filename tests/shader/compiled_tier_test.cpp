@@ -163,8 +163,9 @@ TEST_F(CompiledTier, TheCallersRoundingModeDoesNotSplitTheTiers) {
     }
 }
 
-// pow with whole exponents up to 256 runs natively (emit_library_ops.h), other exponents call out:
-// varying 1 holds the exponents, per lane or one for the block, whole or not, and the edges.
+// pow runs natively (emit_library_ops.h) but for blocks whose lanes need both of its ways (whole
+// exponents up to 256, and the others): varying 1 holds the exponents, per lane or one for the
+// block, whole or not, and the edges.
 Block block_of_exponents(std::mt19937& random) {
   static constexpr uint32_t kEdges[] = {0x00000000, 0x80000000, 0x3F800000, 0xBF800000, 0x40000000, 0x41F80000,
                                         0x42000000, 0x42040000, 0x437F0000, 0x43800000, 0xC3800000, 0x43808000,
@@ -172,15 +173,19 @@ Block block_of_exponents(std::mt19937& random) {
                                         0xFF800000, 0x4F000000, 0xCF000000, 0x4B800000, 0x4F32D05E, 0xC1A00000};
   Block b = random_block(random);
   float* y = &b.varyings[kLanes];
-  const int kind = std::uniform_int_distribution<int>(0, 3)(random);
+  const int kind = std::uniform_int_distribution<int>(0, 5)(random);
   std::uniform_int_distribution<int> whole(-256, 256);
+  std::uniform_real_distribution<float> real(-40.0f, 40.0f);
+  const float shared_real = real(random);
   const float edge = std::bit_cast<float>(kEdges[std::uniform_int_distribution<size_t>(0, std::size(kEdges) - 1)(random)]);
   const float shared = static_cast<float>(whole(random));
   for (int l = 0; l < kLanes; ++l) {
     if (kind == 0) y[l] = static_cast<float>(whole(random));  // whole, per lane
     if (kind == 1) y[l] = shared;                             // whole, one for the block
     if (kind == 2) y[l] = edge;
-    if (kind == 3) y[l] = l == 5 ? 0.5f : shared;  // one lane calls out
+    if (kind == 3) y[l] = l == 5 ? 0.5f : shared;  // lanes of both ways: a call-out
+    if (kind == 4) y[l] = real(random);             // 2^(y log2|x|), per lane
+    if (kind == 5) y[l] = shared_real;              // and one for the block
   }
   // x: the specials, and magnitudes near 1 whose powers stay finite.
   for (int l = 0; l < kLanes; l += 2)
@@ -188,7 +193,7 @@ Block block_of_exponents(std::mt19937& random) {
   return b;
 }
 
-TEST_F(CompiledTier, PowOfWholeExponentsNativelyAndOthersByCallOut) {
+TEST_F(CompiledTier, PowNativelyButForBlocksOfBothWays) {
   for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
     ir::Code code;
     const Operand x = load(code, kind, 0), y = load(code, kind, 1);
