@@ -191,7 +191,8 @@ class Generator {
         default:
           break;
       }
-      if (in.op == Op::Pow || in.op == Op::Sin || in.op == Op::Cos) library_op(i, stable_insts + i);
+      if (in.op == Op::Pow || in.op == Op::Exp || in.op == Op::Exp2 || in.op == Op::Sin || in.op == Op::Cos)
+        library_op(i, stable_insts + i);
       else if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
     }
@@ -519,7 +520,8 @@ class Generator {
     }
     r.scratch[0] = kScratch;
     r.scratch[1] = kScratch2;
-    for (int k = 2; k < (in.op == Op::Pow ? kPowScratch : kSinCosScratch); ++k) {
+    const int scratch = in.op == Op::Pow ? kPowScratch : in.op == Op::Sin || in.op == Op::Cos ? kSinCosScratch : kExpScratch;
+    for (int k = 2; k < scratch; ++k) {
       r.scratch[k] = allocate(at, pinned);
       pinned |= 1u << r.scratch[k];
     }
@@ -527,9 +529,23 @@ class Generator {
     r.one = kOneReg;
     r.zero = kZeroReg;
     r.running_mask = kMaskReg;
-    const size_t needs_call = in.op == Op::Pow ? emit_pow(x_, r) : emit_sin_cos(x_, r, in.op == Op::Cos);
+    const size_t needs_call = in.op == Op::Pow                         ? emit_pow(x_, r)
+                              : in.op == Op::Exp || in.op == Op::Exp2 ? emit_exp(x_, r, in.op == Op::Exp)
+                                                                      : emit_sin_cos(x_, r, in.op == Op::Cos);
+    if (needs_call) emit_call_out_keeping_registers(at, needs_call);
+    finish_sources(at, in);
+    const int dv = id(in.d);
+    if (where_[static_cast<size_t>(dv)] >= 0) release(where_[static_cast<size_t>(dv)]);
+    const int d = allocate(at, resident_sources(in, at));
+    if (old >= 0) x_.vblendmps(d, kMaskReg, old, kMaskedResult);
+    else x_.vmovaps(d, kMaskedResult);
+    hold(d, dv, at);
+  }
+  // The jump at `site` goes to a call-out of instruction `at` (its result into kMaskedResult),
+  // around which every register-held value is kept; the code before it goes on after.
+  void emit_call_out_keeping_registers(int at, size_t site) {
     const size_t done = x_.jump();
-    x_.patch_jump(needs_call);
+    x_.patch_jump(site);
     for (int reg = 0; reg < kValueRegisters; ++reg) {
       const int v = holder_[static_cast<size_t>(reg)];
       if (v >= 0 && dirty_[static_cast<size_t>(v)]) x_.store(home(v), reg);
@@ -539,16 +555,8 @@ class Generator {
       const int v = holder_[static_cast<size_t>(reg)];
       if (v >= 0) x_.load(reg, home(v));
     }
-    x_.load(kMaskedResult, home(id(in.d)));
+    x_.load(kMaskedResult, home(id(insts_[static_cast<size_t>(at)].d)));
     x_.patch_jump(done);
-
-    finish_sources(at, in);
-    const int dv = id(in.d);
-    if (where_[static_cast<size_t>(dv)] >= 0) release(where_[static_cast<size_t>(dv)]);
-    const int d = allocate(at, resident_sources(in, at));
-    if (old >= 0) x_.vblendmps(d, kMaskReg, old, kMaskedResult);
-    else x_.vmovaps(d, kMaskedResult);
-    hold(d, dv, at);
   }
   // Register d holds value dv, written by instruction `at`.
   void hold(int d, int dv, int at) {

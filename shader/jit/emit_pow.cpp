@@ -12,7 +12,7 @@ using lane_series::kPowSeries;
 
 // The constants the logarithm path broadcasts, as lane_pow.inc spells them.
 enum PowConstant { kLog2Series, kExp2Series = kLog2Series + 10, kDoubleOne = kExp2Series + 14, kShifter, kRangeHigh,
-                   kRangeLow, kExponentBias, kPowConstants };
+                   kRangeLow, kExponentBias, kLog2OfE, kPowConstants };
 struct PowTable {
   double value[kPowConstants];
 };
@@ -25,6 +25,7 @@ constexpr PowTable make_pow_table() {
   t.value[kRangeHigh] = 200.0;
   t.value[kRangeLow] = -200.0;
   t.value[kExponentBias] = __builtin_bit_cast(double, uint64_t{1023});
+  t.value[kLog2OfE] = 1.44269504088896340735992468100189214;  // lane_exp's kLog2e
   return t;
 }
 alignas(64) constexpr PowTable kPowTable = make_pow_table();
@@ -93,6 +94,46 @@ void powers_by_squaring(X86Encoder& x, const LibraryOpRegisters& r, const int po
   x.patch_jump(no_reciprocal);
 }
 
+// exponent_range then exp2_in_double: out = 2^e for e in a double register (clobbered), with the
+// table's address in rax; uses scratch[1] and [4] to [10].
+void exp2_in_range(X86Encoder& x, const LibraryOpRegisters& r, int e, int out) {
+  const int* s = r.scratch;
+  const int t = s[1];
+  // exponent_range: within [-200, 200], NaN as 0.
+  emit_table_constant(x, s[5], kRangeHigh);
+  x.vcmppd(5, e, s[5], Cmp::Gt);
+  x.vmovapd(e, s[5], 5);
+  emit_table_constant(x, s[5], kRangeLow);
+  x.vcmppd(5, e, s[5], Cmp::Lt);
+  x.vmovapd(e, s[5], 5);
+  x.vcmppd(5, e, e, Cmp::Unord);
+  x.vmovapd(e, r.zero, 5);
+  // exp2_in_double: 2^e = 2^n 2^f.
+  const int shifted = s[4], f = e, f2 = s[6], f4 = s[7], f8 = s[8];
+  emit_table_constant(x, s[5], kShifter);
+  x.vaddpd(shifted, e, s[5]);
+  x.vsubpd(s[6], shifted, s[5]);
+  x.vsubpd(f, e, s[6]);
+  x.vmulpd(f2, f, f);
+  x.vmulpd(f4, f2, f2);
+  x.vmulpd(f8, f4, f4);
+  const SeriesRegisters exp_series{f, f2, f4, s[9], s[10], s[5]};
+  emit_eight_terms(x, exp_series, out, kExp2Series);
+  emit_pair(x, exp_series, t, kExp2Series + 8);
+  emit_pair(x, exp_series, s[10], kExp2Series + 10);
+  x.vmulpd(s[10], s[10], f2);
+  x.vaddpd(t, t, s[10]);
+  emit_pair(x, exp_series, s[10], kExp2Series + 12);
+  x.vmulpd(s[10], s[10], f4);
+  x.vaddpd(t, t, s[10]);
+  x.vmulpd(t, t, f8);
+  x.vaddpd(out, out, t);
+  emit_table_constant(x, s[5], kExponentBias);
+  x.vpaddq(s[5], shifted, s[5]);
+  x.vpsllq(s[5], s[5], 52);
+  x.vmulpd(out, out, s[5]);
+}
+
 // pow_by_logarithm over every lane: 2^(y log2|x|) into power[0] and power[1].
 void powers_by_logarithm(X86Encoder& x, const LibraryOpRegisters& r, const int power[2]) {
   const int* s = r.scratch;
@@ -136,39 +177,7 @@ void powers_by_logarithm(X86Encoder& x, const LibraryOpRegisters& r, const int p
     widen_half(x, s[5], r.y, half, false, s[6]);
     const int e = sum;
     x.vmulpd(e, s[5], e);  // y log2|x|
-    // exponent_range: within [-200, 200], NaN as 0.
-    emit_table_constant(x, s[5], kRangeHigh);
-    x.vcmppd(5, e, s[5], Cmp::Gt);
-    x.vmovapd(e, s[5], 5);
-    emit_table_constant(x, s[5], kRangeLow);
-    x.vcmppd(5, e, s[5], Cmp::Lt);
-    x.vmovapd(e, s[5], 5);
-    x.vcmppd(5, e, e, Cmp::Unord);
-    x.vmovapd(e, r.zero, 5);
-    // exp2_in_double: 2^e = 2^n 2^f.
-    const int shifted = s[4], f = e, f2 = s[6], f4 = s[7], f8 = s[8];
-    emit_table_constant(x, s[5], kShifter);
-    x.vaddpd(shifted, e, s[5]);
-    x.vsubpd(s[6], shifted, s[5]);
-    x.vsubpd(f, e, s[6]);
-    x.vmulpd(f2, f, f);
-    x.vmulpd(f4, f2, f2);
-    x.vmulpd(f8, f4, f4);
-    const SeriesRegisters exp_series{f, f2, f4, s[9], s[10], s[5]};
-    emit_eight_terms(x, exp_series, power[half], kExp2Series);
-    emit_pair(x, exp_series, t, kExp2Series + 8);
-    emit_pair(x, exp_series, s[10], kExp2Series + 10);
-    x.vmulpd(s[10], s[10], f2);
-    x.vaddpd(t, t, s[10]);
-    emit_pair(x, exp_series, s[10], kExp2Series + 12);
-    x.vmulpd(s[10], s[10], f4);
-    x.vaddpd(t, t, s[10]);
-    x.vmulpd(t, t, f8);
-    x.vaddpd(power[half], power[half], t);
-    emit_table_constant(x, s[5], kExponentBias);
-    x.vpaddq(s[5], shifted, s[5]);
-    x.vpsllq(s[5], s[5], 52);
-    x.vmulpd(power[half], power[half], s[5]);
+    exp2_in_range(x, r, e, power[half]);
   }
 }
 
@@ -266,6 +275,31 @@ size_t emit_pow(X86Encoder& x, const LibraryOpRegisters& r) {
   x.patch_jump(powers_done);
   finish_pow(x, r, power);
   return mixed;
+}
+
+size_t emit_exp(X86Encoder& x, const LibraryOpRegisters& r, bool natural) {
+  const int* s = r.scratch;
+  const int power[2] = {s[11], s[12]};
+  x.mov_imm(rax, reinterpret_cast<uint64_t>(&kPowTable));
+  for (int half = 0; half < 2; ++half) {
+    widen_half(x, s[3], r.x, half, false, s[6]);
+    if (natural) {
+      emit_table_constant(x, s[5], kLog2OfE);
+      x.vmulpd(s[3], s[3], s[5]);
+    }
+    exp2_in_range(x, r, s[3], power[half]);
+  }
+  x.vcvtpd2ps(r.result, power[0]);
+  x.vcvtpd2ps(s[1], power[1]);
+  x.vinsertf32x8(r.result, r.result, s[1], 1);
+  broadcast32(x, s[1], kMagnitudeMask);
+  broadcast32(x, s[2], kSmallestNormal);
+  x.vpandd(s[3], r.result, s[1]);
+  x.vpcmpd(1, s[3], s[2], IntCmp::Ge);
+  x.vmovaps(r.result, r.result, 1, true);
+  x.vcmpps(1, r.x, r.x, Cmp::Unord);  // NaN: x itself
+  x.vmovaps(r.result, r.x, 1);
+  return 0;
 }
 
 }  // namespace pineda::shader::jit

@@ -254,16 +254,36 @@ Block block_of_angles(std::mt19937& random) {
   return b;
 }
 
+// d = op(varying 0) in both stages, over blocks from make_block.
+void expect_unary_same_bits(Op op, Block (*make_block)(std::mt19937&)) {
+  for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
+    ir::Code code;
+    const Operand x = load(code, kind, 0);
+    const Operand d = code.new_register();
+    code.insts.push_back(ir::Inst{op, d, x, ir::kNone, ir::kNone, 0, 0});
+    store(code, kind, d, 0);
+    expect_same_bits(std::move(code), kind, {}, ir::op_name(op), make_block);
+  }
+}
+
 TEST_F(CompiledTier, SinAndCosNativelyBelowTwoToTheSeventeenth) {
-  for (Op op : {Op::Sin, Op::Cos})
-    for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
-      ir::Code code;
-      const Operand x = load(code, kind, 0);
-      const Operand d = code.new_register();
-      code.insts.push_back(ir::Inst{op, d, x, ir::kNone, ir::kNone, 0, 0});
-      store(code, kind, d, 0);
-      expect_same_bits(std::move(code), kind, {}, ir::op_name(op), block_of_angles);
-    }
+  expect_unary_same_bits(Op::Sin, block_of_angles);
+  expect_unary_same_bits(Op::Cos, block_of_angles);
+}
+
+// exp and exp2 run natively for every x: varying 0 holds values across the range where the
+// results go from 0 through the denormals (flushed) to infinity.
+Block block_of_exponentials(std::mt19937& random) {
+  Block b = random_block(random);
+  const float scale = std::array{2.0f, 20.0f, 160.0f}[std::uniform_int_distribution<size_t>(0, 2)(random)];
+  for (int l = 0; l < kLanes; l += 2)
+    b.varyings[static_cast<size_t>(l)] = std::uniform_real_distribution<float>(-scale, scale)(random);
+  return b;
+}
+
+TEST_F(CompiledTier, ExpAndExp2Natively) {
+  expect_unary_same_bits(Op::Exp, block_of_exponentials);
+  expect_unary_same_bits(Op::Exp2, block_of_exponentials);
 }
 
 TEST_F(CompiledTier, LoadsAndStoresOfEveryKind) {
