@@ -50,7 +50,8 @@ void widen_half(X86Encoder& x, int d, int v, int half, bool integers, int scratc
 }
 
 // pow_by_multiplying for lanes whose every running exponent is whole, |n| <= 256 (k1), then
-// finish_power's reciprocal for negative ones: the powers into power[0] and power[1].
+// finish_power's reciprocal for negative ones: the powers into power[0] and power[1]; k3 the
+// lanes of negative exponents, k4 of odd ones.
 void powers_by_squaring(X86Encoder& x, const LibraryOpRegisters& r, const int power[2]) {
   const int* s = r.scratch;
   const int magnitude = s[0], ones = s[2], square[2] = {s[4], s[6]};
@@ -59,6 +60,7 @@ void powers_by_squaring(X86Encoder& x, const LibraryOpRegisters& r, const int po
   x.vcvttps2dq(s[1], r.y);
   x.vpmovd2m(3, s[1]);  // negative exponents: the reciprocal at the end
   broadcast32(x, ones, 1);
+  x.vptestmd(4, s[1], ones);  // odd ones
   broadcast32(x, s[3], kMagnitudeMask);
   x.vpandd(s[3], r.x, s[3]);
   x.vcvtps2pd(square[0], s[3]);
@@ -181,18 +183,57 @@ void powers_by_logarithm(X86Encoder& x, const LibraryOpRegisters& r, const int p
   }
 }
 
-// finish_power's rounding and flush, then lane_pow's special values in its order.
-void finish_pow(X86Encoder& x, const LibraryOpRegisters& r, const int power[2]) {
+// finish_power's rounding to float and flush below FLT_MIN, into the result; leaves scratch[1]
+// the magnitude mask and scratch[2] FLT_MIN's bits.
+void round_powers(X86Encoder& x, const LibraryOpRegisters& r, const int power[2]) {
   const int* s = r.scratch;
-  const int abs_bits = s[1], smallest = s[2], xa = s[3], ya = s[4], whole = s[5], infinity = s[6], t = s[7];
   x.vcvtpd2ps(r.result, power[0]);
   x.vcvtpd2ps(s[1], power[1]);
   x.vinsertf32x8(r.result, r.result, s[1], 1);
-  broadcast32(x, abs_bits, kMagnitudeMask);
-  broadcast32(x, smallest, kSmallestNormal);
-  x.vpandd(xa, r.result, abs_bits);
-  x.vpcmpd(1, xa, smallest, IntCmp::Ge);
+  broadcast32(x, s[1], kMagnitudeMask);
+  broadcast32(x, s[2], kSmallestNormal);
+  x.vpandd(s[3], r.result, s[1]);
+  x.vpcmpd(1, s[3], s[2], IntCmp::Ge);
   x.vmovaps(r.result, r.result, 1, true);
+}
+
+// lane_pow's special values for lanes whose exponents are whole and at most 256 in magnitude
+// (negative ones in k3, odd ones in k4), after round_powers: what remains of its sequence there.
+void finish_whole_powers(X86Encoder& x, const LibraryOpRegisters& r) {
+  const int* s = r.scratch;
+  const int abs_bits = s[1], smallest = s[2], xa = s[3], infinity = s[4], t = s[5];
+  x.vpandd(xa, r.x, abs_bits);
+  broadcast32(x, infinity, kInfinity);
+  // Zero (or denormal) x: 0, or inf for a negative exponent; infinite x: the other way round.
+  x.vpcmpd(1, xa, smallest, IntCmp::Lt);
+  x.kandnw(2, 3, 1);
+  x.vmovaps(r.result, r.zero, 2);
+  x.kandw(2, 3, 1);
+  x.vmovaps(r.result, infinity, 2);
+  x.vpcmpd(1, xa, infinity, IntCmp::Eq);
+  x.kandnw(2, 3, 1);
+  x.vmovaps(r.result, infinity, 2);
+  x.kandw(2, 3, 1);
+  x.vmovaps(r.result, r.zero, 2);
+  x.vpmovd2m(1, r.x);  // a negative x to an odd power is negative
+  x.kandw(1, 1, 4);
+  broadcast32(x, t, kSignMask);
+  x.vpxord(r.result, r.result, t, 1);
+  x.vpcmpd(1, xa, infinity, IntCmp::Gt);  // NaN x: NaN
+  broadcast32(x, t, kQuietNan);
+  x.vmovaps(r.result, t, 1);
+  // x exactly 1, or y zero (or denormal): 1.
+  x.vpcmpd(1, r.x, r.one, IntCmp::Eq);
+  x.vpandd(t, r.y, abs_bits);
+  x.vpcmpd(2, t, smallest, IntCmp::Lt);
+  x.korw(1, 1, 2);
+  x.vmovaps(r.result, r.one, 1);
+}
+
+// lane_pow's special values in its order, for any exponents, after round_powers.
+void finish_powers(X86Encoder& x, const LibraryOpRegisters& r) {
+  const int* s = r.scratch;
+  const int abs_bits = s[1], smallest = s[2], xa = s[3], ya = s[4], whole = s[5], infinity = s[6], t = s[7];
 
   x.vpandd(ya, r.y, abs_bits);
   x.vpandd(xa, r.x, abs_bits);
@@ -269,11 +310,14 @@ size_t emit_pow(X86Encoder& x, const LibraryOpRegisters& r) {
   x.kortestw(3, 3);
   const size_t mixed = x.jump_if_not_zero();
   powers_by_logarithm(x, r, power);
-  const size_t powers_done = x.jump();
+  round_powers(x, r, power);
+  finish_powers(x, r);
+  const size_t done = x.jump();
   x.patch_jump(all_multiplied);
   powers_by_squaring(x, r, power);
-  x.patch_jump(powers_done);
-  finish_pow(x, r, power);
+  round_powers(x, r, power);
+  finish_whole_powers(x, r);
+  x.patch_jump(done);
   return mixed;
 }
 
