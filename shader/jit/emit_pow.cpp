@@ -197,6 +197,23 @@ void round_powers(X86Encoder& x, const LibraryOpRegisters& r, const int power[2]
   x.vmovaps(r.result, r.result, 1, true);
 }
 
+// Zero (or denormal) x: 0, or inf for a negative exponent (mask register `negative`); infinite
+// x: the other way round. Leaves the zero x lanes in mask register `zero`, the infinite ones in
+// `infinite` (which may be `zero`: then the infinite ones); `pick` is clobbered.
+void pick_zero_and_infinite_x(X86Encoder& x, const LibraryOpRegisters& r, int xa, int smallest, int infinity,
+                              int negative, int zero, int infinite, int pick) {
+  x.vpcmpd(zero, xa, smallest, IntCmp::Lt);
+  x.kandnw(pick, negative, zero);
+  x.vmovaps(r.result, r.zero, pick);
+  x.kandw(pick, negative, zero);
+  x.vmovaps(r.result, infinity, pick);
+  x.vpcmpd(infinite, xa, infinity, IntCmp::Eq);
+  x.kandnw(pick, negative, infinite);
+  x.vmovaps(r.result, infinity, pick);
+  x.kandw(pick, negative, infinite);
+  x.vmovaps(r.result, r.zero, pick);
+}
+
 // lane_pow's special values for lanes whose exponents are whole and at most 256 in magnitude
 // (negative ones in k3, odd ones in k4), after round_powers: what remains of its sequence there.
 void finish_whole_powers(X86Encoder& x, const LibraryOpRegisters& r) {
@@ -204,17 +221,7 @@ void finish_whole_powers(X86Encoder& x, const LibraryOpRegisters& r) {
   const int abs_bits = s[1], smallest = s[2], xa = s[3], infinity = s[4], t = s[5];
   x.vpandd(xa, r.x, abs_bits);
   broadcast32(x, infinity, kInfinity);
-  // Zero (or denormal) x: 0, or inf for a negative exponent; infinite x: the other way round.
-  x.vpcmpd(1, xa, smallest, IntCmp::Lt);
-  x.kandnw(2, 3, 1);
-  x.vmovaps(r.result, r.zero, 2);
-  x.kandw(2, 3, 1);
-  x.vmovaps(r.result, infinity, 2);
-  x.vpcmpd(1, xa, infinity, IntCmp::Eq);
-  x.kandnw(2, 3, 1);
-  x.vmovaps(r.result, infinity, 2);
-  x.kandw(2, 3, 1);
-  x.vmovaps(r.result, r.zero, 2);
+  pick_zero_and_infinite_x(x, r, xa, smallest, infinity, 3, 1, 1, 2);
   x.vpmovd2m(1, r.x);  // a negative x to an odd power is negative
   x.kandw(1, 1, 4);
   broadcast32(x, t, kSignMask);
@@ -251,17 +258,7 @@ void finish_powers(X86Encoder& x, const LibraryOpRegisters& r) {
   x.vptestmd(6, ya, ya);
   x.kandw(5, 5, 6);  // y negative
   broadcast32(x, infinity, kInfinity);
-  // Zero (or denormal) x: 0, or inf for a negative exponent; infinite x: the other way round.
-  x.vpcmpd(1, xa, smallest, IntCmp::Lt);
-  x.kandnw(6, 5, 1);
-  x.vmovaps(r.result, r.zero, 6);
-  x.kandw(6, 5, 1);
-  x.vmovaps(r.result, infinity, 6);
-  x.vpcmpd(3, xa, infinity, IntCmp::Eq);
-  x.kandnw(6, 5, 3);
-  x.vmovaps(r.result, infinity, 6);
-  x.kandw(6, 5, 3);
-  x.vmovaps(r.result, r.zero, 6);
+  pick_zero_and_infinite_x(x, r, xa, smallest, infinity, 5, 1, 3, 6);
   // A negative x to an odd power is negative.
   x.vpmovd2m(6, r.x);
   x.kandw(4, 6, 4);
