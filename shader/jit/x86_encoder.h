@@ -78,7 +78,6 @@ class X86Encoder {
     evex_rrr(0x1A, 3, 1, d, a, b);
     bytes_.push_back(half);
   }
-  void vpbroadcastq(int d, Gpr s) { evex_rrr(0x7C, 2, 1, d, 0, s, 0, false, true); }  // every 64-bit lane = s
   void vcvttps2dq(int d, int a, int mask = 0, bool zeroing = false) { evex_rrr(0x5B, 1, 2, d, 0, a, mask, zeroing); }
   void vcvtdq2ps(int d, int a) { evex_rrr(0x5B, 1, 0, d, 0, a); }
   // imm8 0x09: floor, 0x0B: truncate (and no precision exception).
