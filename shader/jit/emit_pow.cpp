@@ -330,14 +330,7 @@ size_t emit_exp(X86Encoder& x, const LibraryOpRegisters& r, bool natural) {
     }
     exp2_in_range(x, r, s[3], power[half]);
   }
-  x.vcvtpd2ps(r.result, power[0]);
-  x.vcvtpd2ps(s[1], power[1]);
-  x.vinsertf32x8(r.result, r.result, s[1], 1);
-  broadcast32(x, s[1], kMagnitudeMask);
-  broadcast32(x, s[2], kSmallestNormal);
-  x.vpandd(s[3], r.result, s[1]);
-  x.vpcmpd(1, s[3], s[2], IntCmp::Ge);
-  x.vmovaps(r.result, r.result, 1, true);
+  round_powers(x, r, power);  // exp_magnitude's rounding and flush are finish_power's
   x.vcmpps(1, r.x, r.x, Cmp::Unord);  // NaN: x itself
   x.vmovaps(r.result, r.x, 1);
   return 0;
