@@ -111,9 +111,13 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
                    state.line_smooth || fades_points;
     d.routine = shade_program_quads;
     if (const shader::Program* program = state.shader->program.get()) {
-      d.shader_facts = {program->varying_floats(), program->draw_buffers_written(), program->frag_coord_components(),
-                        program->reads_point_coord(), program->broadcasts_color(), program->writes_depth(),
-                        program->uses_discard()};
+      d.shader_facts = {.varying_floats = program->varying_floats(),
+                        .draw_buffers_written = program->draw_buffers_written(),
+                        .frag_coord_components = program->frag_coord_components(),
+                        .reads_point_coord = program->reads_point_coord(),
+                        .broadcasts_color = program->broadcasts_color(),
+                        .writes_depth = program->writes_depth(),
+                        .uses_discard = program->uses_discard()};
     }
     for (size_t u = 0; u < state.texture_units.size(); ++u)
       if (const TextureUnit& unit = state.texture_units[u]; unit.image)

@@ -509,15 +509,9 @@ class Generator {
     LibraryOpRegisters r{};
     r.x = use(in.a, at, pinned);
     r.y = in.op == Op::Pow ? use(in.b, at, pinned) : r.x;
+    // (A call-out reads the operands, and under a mask the destination's old value, from their
+    // homes: emit_call_out_keeping_registers stores them there with every other held value.)
     const int old = masked(at) ? use(in.d, at, pinned) : -1;
-    // The call-out reads its operands (and under a mask the destination's old value) from their homes.
-    for (Operand o : sources(in, at)) {
-      const int v = id(o);
-      if (dirty_[static_cast<size_t>(v)]) {
-        x_.store(home(v), where_[static_cast<size_t>(v)]);
-        dirty_[static_cast<size_t>(v)] = false;
-      }
-    }
     r.scratch[0] = kScratch;
     r.scratch[1] = kScratch2;
     const int scratch = in.op == Op::Pow ? kPowScratch : in.op == Op::Sin || in.op == Op::Cos ? kSinCosScratch : kExpScratch;
