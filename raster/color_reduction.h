@@ -8,7 +8,7 @@
 namespace pineda::raster {
 
 // kRequantize[bits][v]: the 8-bit value v rounded to `bits` bits and widened back to 8 (the
-// same rounding as texture storage: state/texture_format.cpp).
+// same rounding as texture storage: state/textures/texture_format.cpp).
 inline constexpr auto kRequantize = [] {
   std::array<std::array<uint8_t, 256>, 9> table{};
   for (uint32_t bits = 0; bits <= 8; ++bits)

@@ -7,7 +7,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/blend_function.h"
-#include "state/buffer_get.h"
+#include "state/buffers/buffer_get.h"
 #include "state/accum.h"
 #include "state/capabilities.h"
 #include "state/render_mode_get.h"

@@ -5,7 +5,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/color_material.h"
 #include "state/context.h"
-#include "state/pixel_state.h"
+#include "state/pixels/pixel_state.h"
 
 namespace pineda::gl {
 namespace {

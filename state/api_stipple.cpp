@@ -3,7 +3,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
-#include "state/pixel_buffer.h"
+#include "state/buffers/pixel_buffer.h"
 #include "state/stipple_image.h"
 
 namespace pineda::gl {

@@ -13,13 +13,13 @@
 #include "state/multisample.h"
 #include "state/color_index.h"
 #include "state/draw_buffer_list.h"
-#include "state/evaluator.h"
-#include "state/pixel_state.h"
+#include "state/evaluators/evaluator.h"
+#include "state/pixels/pixel_state.h"
 #include "state/programs/program_state.h"
 #include "state/stencil_faces.h"
 #include "state/vertex_extras_state.h"
-#include "state/tex_env_state.h"
-#include "state/texture_object.h"
+#include "state/textures/tex_env_state.h"
+#include "state/textures/texture_object.h"
 
 namespace pineda {
 

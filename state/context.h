@@ -21,25 +21,25 @@
 #include "raster/vertex_transform.h"
 #include "state/accum.h"
 #include "state/attrib_stack.h"
-#include "state/buffer_object.h"
+#include "state/buffers/buffer_object.h"
 #include "state/color_index.h"
 #include "state/debug/debug_output.h"
-#include "state/display_list.h"
+#include "state/lists/display_list.h"
 #include "state/draw_buffer_list.h"
 #include "state/gl_error.h"
 #include "state/multisample.h"
 #include "state/drawable.h"
-#include "state/evaluator.h"
+#include "state/evaluators/evaluator.h"
 #include "state/framebuffers/framebuffer_object.h"
-#include "state/pixel_state.h"
+#include "state/pixels/pixel_state.h"
 #include "state/programs/program_state.h"
 #include "state/query_object.h"
 #include "state/select_feedback.h"
 #include "state/share_group.h"
 #include "state/stencil_faces.h"
-#include "state/tex_env_state.h"
+#include "state/textures/tex_env_state.h"
 #include "state/transformed_vertices.h"
-#include "state/texture_object.h"
+#include "state/textures/texture_object.h"
 #include "state/vertex_extras_state.h"
 #include "state/vertex_arrays/vertex_array_object.h"
 
@@ -67,7 +67,7 @@ struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_rows = 0, skip_pixels = 0;
   GLint image_height = 0, skip_images = 0;  // 3D images only
   GLboolean swap_bytes = GL_FALSE, lsb_first = GL_FALSE;
-  // PIXEL_PACK_BUFFER / PIXEL_UNPACK_BUFFER (state/pixel_buffer.h): kept with the pixel store
+  // PIXEL_PACK_BUFFER / PIXEL_UNPACK_BUFFER (state/buffers/pixel_buffer.h): kept with the pixel store
   // state, as PushClientAttrib saves it.
   std::shared_ptr<BufferObject> buffer;
 };

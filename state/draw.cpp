@@ -10,7 +10,7 @@
 #include "state/programs/program_draw.h"
 #include "state/point_parameters.h"
 #include "state/select_feedback.h"
-#include "state/vertex_fetch.h"
+#include "state/vertex_arrays/vertex_fetch.h"
 #include "state/vertex_extras_snapshot.h"
 
 namespace pineda {

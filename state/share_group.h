@@ -7,11 +7,11 @@
 #include <memory>
 #include <mutex>
 
-#include "state/buffer_object.h"
-#include "state/display_list.h"
+#include "state/buffers/buffer_object.h"
+#include "state/lists/display_list.h"
 #include "state/framebuffers/renderbuffer.h"
 #include "state/programs/program_objects.h"
-#include "state/texture_object.h"
+#include "state/textures/texture_object.h"
 #include "state/textures/sampler_object.h"
 
 namespace pineda {

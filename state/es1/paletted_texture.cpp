@@ -11,7 +11,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
-#include "state/texture_target.h"
+#include "state/textures/texture_target.h"
 
 namespace pineda {
 namespace {

@@ -6,7 +6,7 @@
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
 #include "state/limits.h"
-#include "state/texture_target.h"
+#include "state/textures/texture_target.h"
 
 namespace pineda::gl {
 namespace {

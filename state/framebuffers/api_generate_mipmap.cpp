@@ -2,7 +2,7 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
-#include "state/texture_target.h"
+#include "state/textures/texture_target.h"
 
 namespace pineda::gl {
 

@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "state/context.h"
-#include "state/pixel_transfer.h"
+#include "state/pixels/pixel_transfer.h"
 
 namespace pineda {
 

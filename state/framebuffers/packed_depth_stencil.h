@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "state/pixel_format.h"
+#include "state/pixels/pixel_format.h"
 
 namespace pineda {
 

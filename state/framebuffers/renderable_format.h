@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "raster/framebuffer.h"
-#include "state/texture_format.h"
+#include "state/textures/texture_format.h"
 
 namespace pineda {
 

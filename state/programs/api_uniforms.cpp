@@ -6,7 +6,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
-#include "state/pixel_buffer.h"
+#include "state/buffers/pixel_buffer.h"
 #include "state/programs/program_lookup.h"
 #include "state/programs/sampler_units.h"
 

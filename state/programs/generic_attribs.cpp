@@ -4,7 +4,7 @@
 #include <cstring>
 
 #include "state/context.h"
-#include "state/vertex_fetch.h"
+#include "state/vertex_arrays/vertex_fetch.h"
 
 namespace pineda {
 namespace {

@@ -13,8 +13,8 @@
 #include "state/context.h"
 #include "state/programs/builtin_uniforms.h"
 #include "state/select_feedback.h"
-#include "state/texture_target.h"
-#include "state/vertex_fetch.h"
+#include "state/textures/texture_target.h"
+#include "state/vertex_arrays/vertex_fetch.h"
 
 namespace pineda {
 namespace {

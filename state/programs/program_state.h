@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "shader/program.h"
-#include "state/buffer_object.h"
+#include "state/buffers/buffer_object.h"
 #include "state/programs/program_objects.h"
 
 namespace pineda {

@@ -6,7 +6,7 @@
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
-#include "state/pixel_state.h"
+#include "state/pixels/pixel_state.h"
 #include "state/textures/sampler_object.h"
 #include "state/textures/sampling_params.h"
 

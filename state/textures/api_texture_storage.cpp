@@ -9,9 +9,9 @@
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/framebuffers/framebuffer_object.h"
-#include "state/tex_image_checks.h"
-#include "state/texture_format.h"
-#include "state/texture_target.h"
+#include "state/textures/tex_image_checks.h"
+#include "state/textures/texture_format.h"
+#include "state/textures/texture_target.h"
 
 namespace pineda::gl {
 namespace {

@@ -7,7 +7,7 @@
 #include <map>
 #include <memory>
 
-#include "state/texture_object.h"
+#include "state/textures/texture_object.h"
 
 namespace pineda {
 

@@ -6,7 +6,7 @@
 #include <GL/gl.h>
 
 #include "state/gl_error.h"
-#include "state/texture_object.h"
+#include "state/textures/texture_object.h"
 
 namespace pineda {
 

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "state/buffer_object.h"
+#include "state/buffers/buffer_object.h"
 
 namespace pineda {
 

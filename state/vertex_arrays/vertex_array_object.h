@@ -11,7 +11,7 @@
 #include <memory>
 
 #include "raster/texture.h"
-#include "state/buffer_object.h"
+#include "state/buffers/buffer_object.h"
 #include "state/object_names.h"
 #include "state/programs/program_state.h"
 #include "state/vertex_arrays/client_array.h"

@@ -1,0 +1,74 @@
+#include "state/pixels/pixel_rect_draw.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raster/pixel_rect.h"
+#include "state/draw.h"
+
+namespace pineda {
+namespace {
+
+// The framebuffer columns (or rows) whose centres fall in an image of `size` pixels that
+// starts at `origin` and is zoomed by `zoom`, with the image pixel of each: pixel centre c + 0.5
+// maps to floor((c + 0.5 - origin) / zoom). Clipped to [0, limit).
+struct Span {
+  int first = 0;
+  std::vector<int> source;  // image index per framebuffer column from `first`, or -1
+};
+
+Span zoomed_span(double origin, double zoom, int size, int limit) {
+  Span span;
+  if (zoom == 0.0 || size <= 0 || !std::isfinite(origin) || !std::isfinite(zoom)) return span;
+  const double a = origin, b = origin + zoom * size;
+  const double lo = std::max(std::floor(std::min(a, b) - 1.0), 0.0);
+  const double hi = std::min(std::ceil(std::max(a, b) + 1.0), double(limit));
+  if (lo >= hi) return span;
+  span.first = int(lo);
+  span.source.resize(size_t(hi - lo));
+  for (size_t k = 0; k < span.source.size(); ++k) {
+    const double i = std::floor((span.first + double(k) + 0.5 - origin) / zoom);
+    span.source[k] = i >= 0 && i < size ? int(i) : -1;
+  }
+  return span;
+}
+
+}  // namespace
+
+void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
+  if (!ctx.draw_drawable()) return;
+  // Once per colour buffer glDrawBuffer selects, after the queued primitives.
+  ctx.render_to_draw_buffers([&] {
+    ctx.finish();
+    const raster::Framebuffer& fb = ctx.renderer().framebuffer();
+    const RasterPosition& rp = ctx.raster_pos;
+    raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord, rp.distance);
+    const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
+    const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
+    for (size_t r = 0; r < rows.source.size(); ++r) {
+      const int j = rows.source[r];
+      if (j < 0) continue;
+      const int y = rows.first + int(r);
+      for (size_t c = 0; c < cols.source.size(); ++c) {
+        const int i = cols.source[c];
+        const int x = cols.first + int(c);
+        if (i < 0 || !writer.inside(x, y)) continue;
+        const size_t k = size_t(j) * image.width + i;
+        if (!image.present.empty() && !image.present[k]) continue;
+        switch (image.kind) {
+          case PixelRectImage::Kind::Color: writer.fragment(x, y, &image.color[4 * k], rp.window[2]); break;
+          case PixelRectImage::Kind::Depth: writer.fragment(x, y, rp.color, image.depth[k]); break;
+          case PixelRectImage::Kind::Stencil:
+            writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
+            break;
+          case PixelRectImage::Kind::DepthStencil:
+            writer.depth(x, y, image.depth[k]);
+            writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));
+            break;
+        }
+      }
+    }
+  });
+}
+
+}  // namespace pineda
