@@ -219,8 +219,9 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   if (tex.target == GL_TEXTURE_RECTANGLE_ARB)
     if (const GlError error = rectangle_parameter_error(pname, v[0]); error != GL_NO_ERROR) return error;
   if (is_sampling_param(pname)) {
+    const TexParams before = p;
     if (const GlError error = set_sampling_param(p, pname, v); error != GL_NO_ERROR) return error;
-    tex.changed();
+    tex.sampling_changed(before);
     return GL_NO_ERROR;
   }
   switch (pname) {

@@ -64,6 +64,14 @@ struct TextureObject {
     other_snapshot_valid_ = false;
     ++version;
   }
+  // After a sampling parameter (textures/sampling_params.h) changed from `before`: each draw
+  // takes the sampler anew, so the snapshot is rebuilt only when its key changed (a program
+  // setting its wrap modes and filters before every draw copied its whole texture each time).
+  void sampling_changed(const TexParams& before) {
+    if (snapshot_key(before) == snapshot_key(params)) return;
+    snapshot_.reset();
+    snapshot_valid_ = false;
+  }
   // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
   // it when it is the base level and generation is on.
   void level_changed(int level, int face = 0);

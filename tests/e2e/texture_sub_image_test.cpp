@@ -1,6 +1,7 @@
 // glTexSubImage and glCopyTexSubImage while draws use the texture: a queued draw samples the
 // texels it was recorded with, every later draw the replaced ones, whichever level, cube face
 // or 3D slice was replaced (the sampled image is patched in place once no draw holds it).
+#include <GL/gl.h>
 #include <GL/glext.h>
 
 #include <vector>
