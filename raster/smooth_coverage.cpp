@@ -54,11 +54,18 @@ double square_in_rectangle(double x, double y, const SmoothShape& line) {
     const bool along = plane < 2;
     const double s = plane & 1 ? -1.0 : 1.0, limit = half[along ? 0 : 1];
     auto value = [&](int i) { return s * (along ? px[i] * ux + py[i] * uy : px[i] * uy - py[i] * ux) - limit; };
+    // A polygon wholly inside the plane is kept as it is, one wholly outside is gone: most
+    // squares are inside or outside the line, and only those across an edge are clipped.
+    double v[8];
+    int outside = 0;
+    for (int i = 0; i < n; ++i) outside += (v[i] = value(i)) > 0.0;
+    if (outside == 0) continue;
+    if (outside == n) return 0.0;
     double qx[8], qy[8];
     int m = 0;
     for (int i = 0; i < n; ++i) {
       const int j = (i + 1) % n;
-      const double vi = value(i), vj = value(j);
+      const double vi = v[i], vj = v[j];
       if (vi <= 0.0) {
         qx[m] = px[i];
         qy[m++] = py[i];
