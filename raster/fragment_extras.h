@@ -74,12 +74,13 @@ inline void apply_color_sum_and_fog(const DrawRecord& d, const PrimSetup& p, F4 
 }
 
 // GL 1.5 section 3.12: the coverage of an antialiased primitive, and a multisampled point's
-// fade (section 3.3), multiply the fragment's alpha, after fog. `alpha` holds the quad at (x, y).
-inline void apply_coverage(const PrimSetup& p, int x, int y, F4& alpha) {
+// fade (section 3.3), multiply the fragment's alpha, after fog. `alpha` holds the quad at (x, y);
+// only the pixels of `mask` are worked out (the others will not be written).
+inline void apply_coverage(const PrimSetup& p, int x, int y, unsigned mask, F4& alpha) {
   if (p.sample_point.fade != 1.f) alpha *= p.sample_point.fade;
   if (!(p.smooth.size > 0.0)) return;
   float coverage[4];
-  smooth_quad_coverage(p, x, y, coverage);
+  smooth_quad_coverage(p, x, y, mask, coverage);
   alpha *= load4(coverage);
 }
 

@@ -40,7 +40,7 @@ template <bool kTex, bool kDepth, bool kStencil, bool kBlend, bool kFlat, bool k
     const F4 ox = ox0 + splat(static_cast<float>(2 * q));
     auto colors = [&] {
       QuadColor col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
-      if constexpr (kExtras) apply_coverage(p, qx, y, col.c[3]);
+      if constexpr (kExtras) apply_coverage(p, qx, y, mask, col.c[3]);
       if constexpr (kExtras) {  // no alpha test here: alpha to one comes after it, and after coverage
         if (early_tests && d.alpha_to_one) col.c[3] = splat(1.f);
       }

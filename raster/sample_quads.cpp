@@ -58,14 +58,14 @@ template <bool kTex, bool kFlat, bool kExtras>
       if (!live) continue;
       col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
       if constexpr (kExtras) {
-        apply_coverage(p, qx, y, col.c[3]);
+        apply_coverage(p, qx, y, 0xfu, col.c[3]);
         if (d.alpha_to_one) col.c[3] = splat(1.f);
       }
       writes(col);
       continue;
     }
     col = quad_colors<kTex, kFlat, kExtras>(d, p, ox, oy);
-    if constexpr (kExtras) apply_coverage(p, qx, y, col.c[3]);
+    if constexpr (kExtras) apply_coverage(p, qx, y, 0xfu, col.c[3]);
     for (int s = 0; s < kMaxSamples; ++s) {
       if (!t.draw[s]) continue;
       unsigned mask = sample_quad_mask(cover, s);

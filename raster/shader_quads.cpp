@@ -302,7 +302,7 @@ bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* unifor
 unsigned alpha_test_quad(const DrawRecord& d, const PrimSetup& p, const shader::FragmentBlock& block, int j, int x,
                          int y, unsigned mask) {
   F4 alpha = load4(&block.color[0][3][4 * j]);
-  if (d.key.extras) apply_coverage(p, x, y, alpha);
+  if (d.key.extras) apply_coverage(p, x, y, mask, alpha);
   for (int i = 0; i < 4; ++i)
     if (!alpha_passes(d, clamp01(alpha[i]))) mask &= ~(1u << i);
   return mask;
@@ -393,7 +393,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
     const int y = q.y;
     QuadColor col;
     for (int c = 0; c < 4; ++c) col.c[c] = load4(&block.color[sd.color_output][c][4 * j]);
-    if (d.key.extras) apply_coverage(p, q.x, y, col.c[3]);
+    if (d.key.extras) apply_coverage(p, q.x, y, mask, col.c[3]);
     if (s.alpha_test) mask = alpha_test_quad(d, p, block, j, q.x, y, mask);
     if (d.alpha_to_one) col.c[3] = splat(1.f);  // after alpha to coverage (the alpha test above)
     if (!early && tests) {
@@ -410,7 +410,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
       for (int t = 0; t < targets.count; ++t) {
         QuadColor out;
         for (int c = 0; c < 4; ++c) out.c[c] = load4(&block.color[targets.output[size_t(t)]][c][4 * j]);
-        if (d.key.extras) apply_coverage(p, q.x, y, out.c[3]);
+        if (d.key.extras) apply_coverage(p, q.x, y, mask, out.c[3]);
         if (d.alpha_to_one) out.c[3] = splat(1.f);
         write_colors(*targets.record[size_t(t)], targets.view[size_t(t)], q.x, y, mask, out);
       }

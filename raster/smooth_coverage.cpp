@@ -39,17 +39,34 @@ double square_in_disc(double x, double y, double r) {
   return std::clamp(area, 0.0, 1.0);
 }
 
-double square_in_rectangle(double x, double y, const SmoothShape& line) {
+LineFrame::LineFrame(const SmoothShape& line) {
   const double dx = line.x1 - line.x0, dy = line.y1 - line.y0;
   const double length = std::sqrt(dx * dx + dy * dy);
-  const double ux = dx / length, uy = dy / length;
+  ux = dx / length;
+  uy = dy / length;
+  mx = 0.5 * (line.x0 + line.x1);
+  my = 0.5 * (line.y0 + line.y1);
+  half_length = 0.5 * length;
+  half_width = 0.5 * line.size;
+  square_reach = 0.5 * (std::fabs(ux) + std::fabs(uy));
+}
+
+double square_in_rectangle(double x, double y, const LineFrame& line) {
+  const double ux = line.ux, uy = line.uy, mx = line.mx, my = line.my;
   // The square's corners relative to the middle of the line, clipped (Sutherland-Hodgman) to
   // |along| <= length / 2 and |across| <= width / 2 in the line's frame.
-  const double mx = 0.5 * (line.x0 + line.x1), my = 0.5 * (line.y0 + line.y1);
   double px[8] = {x - mx, x + 1 - mx, x + 1 - mx, x - mx}, py[8] = {y - my, y - my, y + 1 - my, y + 1 - my};
   int n = 4;
-  const double half[2] = {0.5 * length, 0.5 * line.size};
-  for (int plane = 0; plane < 4 && n > 0; ++plane) {
+  const double half[2] = {line.half_length, line.half_width};
+  // Most squares lie wholly inside or outside the rectangle; the square's centre in the line's
+  // frame tells, with a margin far above the rounding of the clipping below so that the answer
+  // is the one clipping would give: 0, or the square's own area.
+  const double margin = 1e-6;
+  const double cx = x + 0.5 - mx, cy = y + 0.5 - my;
+  const double along = std::fabs(cx * ux + cy * uy), across = std::fabs(cx * uy - cy * ux);
+  if (along - line.square_reach > half[0] + margin || across - line.square_reach > half[1] + margin) return 0.0;
+  const bool inside = along + line.square_reach + margin <= half[0] && across + line.square_reach + margin <= half[1];
+  for (int plane = 0; plane < 4 && n > 0 && !inside; ++plane) {
     // Keep s * (the coordinate along axis a) <= half[a].
     const bool along = plane < 2;
     const double s = plane & 1 ? -1.0 : 1.0, limit = half[along ? 0 : 1];
@@ -90,14 +107,18 @@ double square_in_rectangle(double x, double y, const SmoothShape& line) {
   return std::clamp(0.5 * twice_area, 0.0, 1.0);
 }
 
-double smooth_coverage(const PrimSetup& p, int x, int y) {
-  const SmoothShape& s = p.smooth;
-  if (p.kind == CoverageKind::Point) return square_in_disc(x - s.x0, y - s.y0, 0.5 * s.size);
-  return square_in_rectangle(x, y, s);
+SmoothCoverage::SmoothCoverage(const PrimSetup& p)
+    : shape_(p.smooth), point_(p.kind == CoverageKind::Point), line_(point_ ? SmoothShape{0, 0, 1, 0, 0} : p.smooth) {}
+
+double SmoothCoverage::at(int x, int y) const {
+  if (point_) return square_in_disc(x - shape_.x0, y - shape_.y0, 0.5 * shape_.size);
+  return square_in_rectangle(x, y, line_);
 }
 
-void smooth_quad_coverage(const PrimSetup& p, int x, int y, float out[4]) {
-  for (int i = 0; i < 4; ++i) out[i] = static_cast<float>(smooth_coverage(p, x + (i & 1), y + (i >> 1)));
+void smooth_quad_coverage(const PrimSetup& p, int x, int y, unsigned mask, float out[4]) {
+  const SmoothCoverage coverage(p);
+  for (int i = 0; i < 4; ++i)
+    out[i] = mask >> i & 1 ? static_cast<float>(coverage.at(x + (i & 1), y + (i >> 1))) : 1.f;
 }
 
 PixelRect smooth_bounds(const SmoothShape& s) {

@@ -307,11 +307,12 @@ void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const Sink& s
 template <class Sink>
 void rasterize_smooth(const PrimSetup& p, const PixelRect& area, const Sink& sink) {
   TileMask mask{area};
+  const SmoothCoverage coverage(p);
   for (int y = area.y0; y < area.y1; ++y) {
     int x0 = area.x0, x1 = area.x1;
     if (p.kind == CoverageKind::Line) smooth_row_span(p.smooth, y, x0, x1);
     for (int x = x0; x < x1; ++x)
-      if (smooth_coverage(p, x, y) > 0.0) mask.set(x, y);
+      if (coverage.at(x, y) > 0.0) mask.set(x, y);
   }
   emit_mask(mask, sink);
 }
