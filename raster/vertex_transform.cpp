@@ -3,93 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/vertex_lighting.h"
+
 namespace pineda::raster {
 namespace {
-
-struct MaterialColors {
-  glm::vec4 ambient, diffuse, specular, emission;
-  float shininess;
-};
-
-MaterialColors material_for(const Lighting& l, const Material& m, bool is_front, const float* color) {
-  MaterialColors c{m.ambient, m.diffuse, m.specular, m.emission, m.shininess};
-  const ColorMaterial& cm = l.color_material;
-  if (cm.enabled && (is_front ? cm.front : cm.back)) {
-    const glm::vec4 current(color[0], color[1], color[2], color[3]);
-    if (cm.ambient) c.ambient = current;
-    if (cm.diffuse) c.diffuse = current;
-    if (cm.specular) c.specular = current;
-    if (cm.emission) c.emission = current;
-  }
-  return c;
-}
-
-// The GL 1.x lighting equation (GL 1.5 spec, section 2.14.1) for one face. With a separate
-// specular colour the specular terms go to `specular` instead of the result.
-glm::vec4 light_vertex(const Lighting& l, const MaterialColors& m, const glm::vec3& eye_pos,
-                       const glm::vec3& normal, glm::vec3& specular) {
-  glm::vec3 color = glm::vec3(m.emission) + glm::vec3(m.ambient) * glm::vec3(l.model_ambient);
-  specular = glm::vec3(0.f);
-  for (const Light& light : l.lights) {
-    if (!light.enabled) continue;
-    glm::vec3 to_light;
-    float attenuation = 1.f;
-    if (light.position.w != 0.f) {
-      to_light = glm::vec3(light.position) / light.position.w - eye_pos;
-      const float d = glm::length(to_light);
-      const float denom = light.constant_attenuation + light.linear_attenuation * d +
-                          light.quadratic_attenuation * d * d;
-      attenuation = denom > 0.f ? 1.f / denom : 1.f;
-      if (d > 0.f) to_light /= d;
-    } else {
-      to_light = glm::normalize(glm::vec3(light.position));
-    }
-    float spot = 1.f;
-    if (light.spot_cutoff != 180.f) {
-      const float cos_angle = glm::dot(-to_light, glm::normalize(light.spot_direction));
-      const float cos_cutoff = std::cos(glm::radians(light.spot_cutoff));
-      spot = cos_angle >= cos_cutoff ? std::pow(std::max(cos_angle, 0.f), light.spot_exponent) : 0.f;
-    }
-    const float factor = attenuation * spot;
-    if (factor == 0.f) continue;
-    glm::vec3 contribution = glm::vec3(m.ambient) * glm::vec3(light.ambient);
-    glm::vec3 spec_contribution(0.f);
-    const float n_dot_l = glm::dot(normal, to_light);
-    if (n_dot_l > 0.f) {
-      contribution += n_dot_l * glm::vec3(m.diffuse) * glm::vec3(light.diffuse);
-      const glm::vec3 to_eye = l.local_viewer ? glm::normalize(-eye_pos) : glm::vec3(0, 0, 1);
-      const glm::vec3 half = to_light + to_eye;
-      const float half_len = glm::length(half);
-      if (half_len > 0.f) {
-        const float n_dot_h = glm::dot(normal, half / half_len);
-        if (n_dot_h > 0.f) {
-          const float spec = m.shininess == 0.f ? 1.f : std::pow(n_dot_h, m.shininess);
-          spec_contribution = spec * glm::vec3(m.specular) * glm::vec3(light.specular);
-        }
-      }
-    }
-    if (l.separate_specular) {
-      color += factor * contribution;
-      specular += factor * spec_contribution;
-    } else {
-      color += factor * (contribution + spec_contribution);
-    }
-  }
-  specular = glm::clamp(specular, 0.f, 1.f);
-  return glm::vec4(glm::clamp(color, 0.f, 1.f), std::clamp(m.diffuse.a, 0.f, 1.f));
-}
 
 void store(float* dst, const glm::vec4& v) {
   dst[0] = v.x;
   dst[1] = v.y;
   dst[2] = v.z;
   dst[3] = v.w;
-}
-
-void store3(float* dst, const glm::vec3& v) {
-  dst[0] = v.x;
-  dst[1] = v.y;
-  dst[2] = v.z;
 }
 
 // Which intermediate values the enabled stages read.
@@ -120,55 +43,153 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
   const Lighting& lighting = t.lighting;
   const VertexExtras& x = t.extras;
   const Needs needs = needs_of(t);
-  for (size_t i = 0; i < in.size(); ++i) {
-    const VertexInput& v = in[i];
-    ClipVertex& o = out[i];
-    const glm::vec4 obj(v.position[0], v.position[1], v.position[2], v.position[3]);
-    store(o.clip, t.modelview_projection * obj);
-    o.edge_flag = v.edge_flag;
-    const glm::vec4 eye4 = needs.eye ? t.modelview * obj : glm::vec4(0.f);
-    glm::vec3 normal(0.f);
-    if (needs.normal) {
-      normal = t.normal_matrix * glm::vec3(v.normal[0], v.normal[1], v.normal[2]);
-      normal *= t.rescale_factor;
-      if (t.normalize) {
-        const float len = glm::length(normal);
-        if (len > 0.f) normal /= len;
+  const PreparedLights prepared = lighting.enabled ? prepare_lights(lighting) : PreparedLights{};
+  const glm::mat4& mvp = t.modelview_projection;
+  const glm::mat4& mv = t.modelview;
+  const glm::mat3& nm = t.normal_matrix;
+  LaneVec4 obj, eye4;
+  LaneVec3 normal, eye_pos;
+  LaneMaterial material;
+  LaneVec4 color;
+  LaneVec3 specular;
+  const float* colors[kVertexLanes];
+  for (size_t base = 0; base < in.size(); base += kVertexLanes) {
+    const int n = static_cast<int>(std::min<size_t>(kVertexLanes, in.size() - base));
+    const VertexInput* v = &in[base];
+    ClipVertex* o = &out[base];
+    for (int i = 0; i < n; ++i) {
+      obj.x[i] = v[i].position[0];
+      obj.y[i] = v[i].position[1];
+      obj.z[i] = v[i].position[2];
+      obj.w[i] = v[i].position[3];
+    }
+    // m * (x, y, z, w) as GLM computes it: (m0 x + m1 y) + (m2 z + m3 w), column by column.
+    auto transform = [&](const glm::mat4& m, int row, Lanes& result) {
+      const float a = m[0][row], b = m[1][row], c = m[2][row], d = m[3][row];
+      for (int i = 0; i < n; ++i) result[i] = (a * obj.x[i] + b * obj.y[i]) + (c * obj.z[i] + d * obj.w[i]);
+    };
+    {
+      LaneVec4 clip;
+      transform(mvp, 0, clip.x);
+      transform(mvp, 1, clip.y);
+      transform(mvp, 2, clip.z);
+      transform(mvp, 3, clip.w);
+      for (int i = 0; i < n; ++i) {
+        o[i].clip[0] = clip.x[i];
+        o[i].clip[1] = clip.y[i];
+        o[i].clip[2] = clip.z[i];
+        o[i].clip[3] = clip.w[i];
+        o[i].edge_flag = v[i].edge_flag;
       }
+    }
+    if (needs.eye) {
+      transform(mv, 0, eye4.x);
+      transform(mv, 1, eye4.y);
+      transform(mv, 2, eye4.z);
+      transform(mv, 3, eye4.w);
+    } else {
+      for (int i = 0; i < n; ++i) eye4.x[i] = eye4.y[i] = eye4.z[i] = eye4.w[i] = 0.f;
+    }
+    if (needs.normal) {
+      const float r = t.rescale_factor;
+      LaneVec3 in_normal;
+      for (int i = 0; i < n; ++i) {
+        in_normal.x[i] = v[i].normal[0];
+        in_normal.y[i] = v[i].normal[1];
+        in_normal.z[i] = v[i].normal[2];
+      }
+      for (int i = 0; i < n; ++i) {
+        const float nx = in_normal.x[i], ny = in_normal.y[i], nz = in_normal.z[i];
+        float a = (nm[0][0] * nx + nm[1][0] * ny) + nm[2][0] * nz;
+        float b = (nm[0][1] * nx + nm[1][1] * ny) + nm[2][1] * nz;
+        float c = (nm[0][2] * nx + nm[1][2] * ny) + nm[2][2] * nz;
+        a *= r;
+        b *= r;
+        c *= r;
+        if (t.normalize) {  // a select, so that the loop vectorizes: x / 1 is x
+          const float len = std::sqrt(a * a + b * b + c * c);
+          const float divisor = len > 0.f ? len : 1.f;
+          a /= divisor;
+          b /= divisor;
+          c /= divisor;
+        }
+        normal.x[i] = a;
+        normal.y[i] = b;
+        normal.z[i] = c;
+      }
+    } else {
+      for (int i = 0; i < n; ++i) normal.x[i] = normal.y[i] = normal.z[i] = 0.f;
     }
 
     if (lighting.enabled) {
-      const glm::vec3 eye_pos = eye4.w != 0.f ? glm::vec3(eye4) / eye4.w : glm::vec3(eye4);
-      glm::vec3 specular;
-      store(o.color, light_vertex(lighting, material_for(lighting, lighting.front, true, v.color), eye_pos, normal,
-                                  specular));
-      store3(o.secondary, specular);
+      for (int i = 0; i < n; ++i) {
+        const float w = eye4.w[i];
+        const bool divide = w != 0.f;
+        eye_pos.x[i] = divide ? eye4.x[i] / w : eye4.x[i];
+        eye_pos.y[i] = divide ? eye4.y[i] / w : eye4.y[i];
+        eye_pos.z[i] = divide ? eye4.z[i] / w : eye4.z[i];
+      }
+      for (int i = 0; i < n; ++i) colors[i] = v[i].color;
+      auto store_lit = [&](float (ClipVertex::*rgba)[4], float (ClipVertex::*rgb)[3]) {
+        for (int i = 0; i < n; ++i) {
+          float* c = o[i].*rgba;
+          c[0] = color.x[i];
+          c[1] = color.y[i];
+          c[2] = color.z[i];
+          c[3] = color.w[i];
+          float* s = o[i].*rgb;
+          s[0] = specular.x[i];
+          s[1] = specular.y[i];
+          s[2] = specular.z[i];
+        }
+      };
+      lane_material(lighting, true, colors, n, material);
+      light_lanes(lighting, prepared, material, eye_pos, normal, n, color, specular);
+      store_lit(&ClipVertex::color, &ClipVertex::secondary);
       if (lighting.two_side) {
-        store(o.back_color, light_vertex(lighting, material_for(lighting, lighting.back, false, v.color), eye_pos,
-                                         -normal, specular));
-        store3(o.back_secondary, specular);
+        LaneVec3 back_normal;
+        for (int i = 0; i < n; ++i) {
+          back_normal.x[i] = -normal.x[i];
+          back_normal.y[i] = -normal.y[i];
+          back_normal.z[i] = -normal.z[i];
+        }
+        lane_material(lighting, false, colors, n, material);
+        light_lanes(lighting, prepared, material, eye_pos, back_normal, n, color, specular);
+        store_lit(&ClipVertex::back_color, &ClipVertex::back_secondary);
       } else {
-        std::copy(o.color, o.color + 4, o.back_color);
-        std::copy(o.secondary, o.secondary + 3, o.back_secondary);
+        for (int i = 0; i < n; ++i) {
+          std::copy(o[i].color, o[i].color + 4, o[i].back_color);
+          std::copy(o[i].secondary, o[i].secondary + 3, o[i].back_secondary);
+        }
       }
     } else {
-      for (int c = 0; c < 4; ++c) o.color[c] = o.back_color[c] = std::clamp(v.color[c], 0.f, 1.f);
-      if (x.color_sum)
-        for (int c = 0; c < 3; ++c) o.secondary[c] = o.back_secondary[c] = std::clamp(v.secondary_color[c], 0.f, 1.f);
-    }
-    if (x.fog) o.fog = std::fabs(x.fog_from_coord ? v.fog_coord : eye4.z);
-    if (x.point_attenuation)
-      o.point_size = derived_point_size(x.point, x.point.size_per_vertex ? v.point_size : x.point_size, std::fabs(eye4.z));
-    for (uint32_t planes = x.clip_planes; planes; planes &= planes - 1) {
-      const int p = __builtin_ctz(planes);
-      o.clip_distance[p] = glm::dot(x.clip_plane_eye[p], eye4);
+      for (int i = 0; i < n; ++i) {
+        for (int c = 0; c < 4; ++c) o[i].color[c] = o[i].back_color[c] = std::clamp(v[i].color[c], 0.f, 1.f);
+        if (x.color_sum)
+          for (int c = 0; c < 3; ++c)
+            o[i].secondary[c] = o[i].back_secondary[c] = std::clamp(v[i].secondary_color[c], 0.f, 1.f);
+      }
     }
 
-    for (int u = 0; u < t.texture_units; ++u) {
-      float coords[4] = {v.texcoord[u][0], v.texcoord[u][1], v.texcoord[u][2], v.texcoord[u][3]};
-      if (needs.texgen && x.texgen[u].any()) generate_texcoords(x.texgen[u], {obj, eye4, normal}, coords);
-      const glm::vec4 tc(coords[0], coords[1], coords[2], coords[3]);
-      store(o.texcoord[u], t.texture_matrix_identity[u] ? tc : t.texture_matrix[u] * tc);
+    for (int i = 0; i < n; ++i) {
+      const glm::vec4 eye(eye4.x[i], eye4.y[i], eye4.z[i], eye4.w[i]);
+      if (x.fog) o[i].fog = std::fabs(x.fog_from_coord ? v[i].fog_coord : eye.z);
+      if (x.point_attenuation)
+        o[i].point_size =
+            derived_point_size(x.point, x.point.size_per_vertex ? v[i].point_size : x.point_size, std::fabs(eye.z));
+      for (uint32_t planes = x.clip_planes; planes; planes &= planes - 1) {
+        const int p = __builtin_ctz(planes);
+        o[i].clip_distance[p] = glm::dot(x.clip_plane_eye[p], eye);
+      }
+      for (int u = 0; u < t.texture_units; ++u) {
+        float coords[4] = {v[i].texcoord[u][0], v[i].texcoord[u][1], v[i].texcoord[u][2], v[i].texcoord[u][3]};
+        if (needs.texgen && x.texgen[u].any()) {
+          const glm::vec4 position(obj.x[i], obj.y[i], obj.z[i], obj.w[i]);
+          generate_texcoords(x.texgen[u], {position, eye, glm::vec3(normal.x[i], normal.y[i], normal.z[i])}, coords);
+        }
+        const glm::vec4 tc(coords[0], coords[1], coords[2], coords[3]);
+        store(o[i].texcoord[u], t.texture_matrix_identity[u] ? tc : t.texture_matrix[u] * tc);
+      }
     }
   }
 }

@@ -52,9 +52,13 @@ void record_draw(Context& ctx, GLenum mode, std::vector<raster::VertexInput> ver
     if (c.inside_begin_end()) return c.record_error(GL_INVALID_OPERATION, "called between glBegin and glEnd");
     if (error != GL_NO_ERROR) return c.record_error(error);
     if (!sources.vertex || vertices.empty()) return;
-    c.fetched = vertices;
-    for (raster::VertexInput& v : c.fetched) merge_current(c, sources, v);
-    draw_vertices(c, mode, c.fetched, {});
+    // Copied and merged vertex by vertex, while each is in the cache.
+    if (c.fetched.size() < vertices.size()) c.fetched.resize(vertices.size());  // only grows
+    for (size_t i = 0; i < vertices.size(); ++i) {
+      c.fetched[i] = vertices[i];
+      merge_current(c, sources, c.fetched[i]);
+    }
+    draw_vertices(c, mode, std::span<const raster::VertexInput>(c.fetched.data(), vertices.size()), {});
     if (last_index) c.color_index.current_index = *last_index;
   });
 }
