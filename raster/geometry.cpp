@@ -342,7 +342,14 @@ const WinVert* GeometryStage::cached_window(const ClipVertex& v) {
   if (index >= vertex_count_) return nullptr;
   bool fresh = false;
   WindowSlot& slot = window_cache_.slot(index, fresh);
-  if (fresh) {
+  if (fresh && prepared_) {  // the position worked out ahead (WindowTransform::prepare's)
+    const PreparedWindow& p = prepared_[index];
+    if (p.usable) {
+      static_cast<WinPosition&>(slot.window) = p.position;  // with a programmable vertex's varyings
+      if (!shader_) plane_attributes(scene_.current_draw(), FrontAttributes{v}, slot.window);
+      slot.usable = true;
+    }
+  } else if (fresh) {
     if (finite_position(v)) {
       // Only the position and clip distances are clipped: the attributes are read where they
       // are (a programmable vertex's varyings stay in the draw's array).
@@ -380,7 +387,7 @@ const WinVert* GeometryStage::cached_view_window(const ClipVertex& v) {
 // polygon() for a triangle of cached vertices that is culled or filled front facing without
 // an offset; false leaves the triangle to polygon()'s general path (the same result).
 bool GeometryStage::fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking) {
-  if (prepared_) {
+  if (prepared_ && shader_) {
     const WinPosition* w[3];
     for (int i = 0; i < 3; ++i) {
       const size_t index = static_cast<size_t>(v[i] - vertex_base_);

@@ -94,16 +94,17 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   scene.begin_draw(std::move(record));
   GeometryStage geometry(scene, impl_->window_cache, [this] { submit(); }, impl_->reference);
   geometry.set_vertices(vertices);
-  if (state.shader) {
-    geometry.set_varyings(vertices.data(), varyings);
-    // A large draw's window positions, ahead of assembly and on every thread.
-    if (geometry.active() && vertices.size() >= kVerticesPerPiece) {
-      impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
-      PreparedWindow* windows = impl_->windows.data();
-      for_each_piece(vertices.size(), kVerticesPerPiece,
-                     [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin, impl_->simd); });
-      geometry.use_window_positions(windows);
-    }
+  if (state.shader) geometry.set_varyings(vertices.data(), varyings);
+  // A draw's window positions, ahead of assembly, in vector lanes and on every thread: a large
+  // programmable draw's; a fixed-function draw's unless small (its vertices were all just
+  // transformed anyway) or in reference mode.
+  const size_t ahead = state.shader ? kVerticesPerPiece : impl_->reference ? SIZE_MAX : kFixedFunctionVerticesAhead;
+  if (geometry.active() && vertices.size() >= ahead) {
+    impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
+    PreparedWindow* windows = impl_->windows.data();
+    for_each_piece(vertices.size(), kVerticesPerPiece,
+                   [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin, impl_->simd); });
+    geometry.use_window_positions(windows);
   }
   if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
   if (scene.full()) submit();
