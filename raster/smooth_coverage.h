@@ -17,6 +17,7 @@ struct LineFrame {
   double mx, my;                 // the middle
   double half_length, half_width;
   double square_reach;  // how far a unit square reaches from its centre along either axis
+  double steep, shallow;  // max and min of |ux| and |uy|
   explicit LineFrame(const SmoothShape& line);
 };
 

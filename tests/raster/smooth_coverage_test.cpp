@@ -26,6 +26,21 @@ TEST(SquareInRectangle, KnownAreas) {
   EXPECT_NEAR(square_in_rectangle(4, 4, wide), 1.0, 1e-12);
   EXPECT_NEAR(square_in_rectangle(4, 4, narrow), 0.75, 1e-12);
   EXPECT_NEAR(square_in_rectangle(5, 4, narrow), 0.125, 1e-12);
+  // A band |x - y| <= 1.5 (one side cuts the square, the other holds it): a corner triangle
+  // with legs 1/2 in, then out; and a side through two corners halves the square.
+  const SmoothShape band{0, 0, 10, 10, 1.5 * std::sqrt(2.0)}, band2{0, 0, 10, 10, 2.0 * std::sqrt(2.0)};
+  EXPECT_NEAR(square_in_rectangle(6, 4, band), 0.125, 1e-12);
+  EXPECT_NEAR(square_in_rectangle(5, 4, band), 0.875, 1e-12);
+  EXPECT_NEAR(square_in_rectangle(3, 5, band), 0.125, 1e-12);  // the other side
+  EXPECT_NEAR(square_in_rectangle(4, 5, band), 0.875, 1e-12);
+  EXPECT_NEAR(square_in_rectangle(6, 4, band2), 0.5, 1e-12);
+  EXPECT_NEAR(square_in_rectangle(7, 4, band2), 0.0, 1e-12);  // the side touches a corner only
+  // A shallow line 3 wide along y = x / 4: its upper side y = x / 4 + k crosses the left and
+  // right sides of the square [16, 17] x [y, y + 1], so the area below it is its mean height.
+  const double k = 1.5 * std::sqrt(17.0) / 4.0;
+  const SmoothShape shallow{0, 0, 40, 10, 3.0};
+  const double y_low = std::floor(16.5 / 4 + k);
+  EXPECT_NEAR(square_in_rectangle(16, y_low, shallow), 16.5 / 4 + k - y_low, 1e-12);
 }
 
 TEST(SquareInDisc, KnownAreas) {
