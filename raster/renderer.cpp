@@ -96,10 +96,12 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   // A draw's window positions, ahead of assembly, in vector lanes and on every thread: a large
-  // programmable draw's; a fixed-function draw's unless small (its vertices were all just
-  // transformed anyway) or in reference mode.
-  const size_t ahead = state.shader ? kVerticesPerPiece : impl_->reference ? SIZE_MAX : kFixedFunctionVerticesAhead;
-  if (geometry.active() && vertices.size() >= ahead) {
+  // programmable draw's; a fixed-function draw's unless small or very large (its vertices were
+  // all just transformed anyway) or in reference mode.
+  const bool ahead = state.shader ? vertices.size() >= kVerticesPerPiece
+                                  : !impl_->reference && vertices.size() >= kFixedFunctionVerticesAhead &&
+                                        vertices.size() <= kFixedFunctionVerticesAheadMax;
+  if (geometry.active() && ahead) {
     impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
     PreparedWindow* windows = impl_->windows.data();
     for_each_piece(vertices.size(), kVerticesPerPiece,

@@ -47,17 +47,29 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
   const glm::mat4& mvp = t.modelview_projection;
   const glm::mat4& mv = t.modelview;
   const glm::mat3& nm = t.normal_matrix;
-  LaneVec4 obj, eye4;
-  LaneVec3 normal, eye_pos;
+  LaneVec4 obj;
+  // Zero where not needed, as each vertex alone would have them (set once: no batch writes them).
+  LaneVec4 eye4{};
+  LaneVec3 normal{}, eye_pos;
   LaneMaterial material;
   LaneVec4 color;
   LaneVec3 specular;
   const float* colors[kVertexLanes];
+  const bool in_lanes = needs.eye || needs.normal;  // positions in lanes (else only clip positions)
+  const bool per_vertex_extras = x.fog || x.point_attenuation || x.clip_planes != 0 || t.texture_units > 0;
   for (size_t base = 0; base < in.size(); base += kVertexLanes) {
     const int n = static_cast<int>(std::min<size_t>(kVertexLanes, in.size() - base));
     const VertexInput* v = &in[base];
     ClipVertex* o = &out[base];
-    for (int i = 0; i < n; ++i) {
+    if (!in_lanes) {
+      // Only the clip position: turning the vertices into lanes and back would cost more than
+      // the lanes save. GLM's product, which the lanes below reproduce operation by operation.
+      for (int i = 0; i < n; ++i) {
+        store(o[i].clip, mvp * glm::vec4(v[i].position[0], v[i].position[1], v[i].position[2], v[i].position[3]));
+        o[i].edge_flag = v[i].edge_flag;
+      }
+    }
+    for (int i = 0; i < n && in_lanes; ++i) {
       obj.x[i] = v[i].position[0];
       obj.y[i] = v[i].position[1];
       obj.z[i] = v[i].position[2];
@@ -68,7 +80,7 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
       const float a = m[0][row], b = m[1][row], c = m[2][row], d = m[3][row];
       for (int i = 0; i < n; ++i) result[i] = (a * obj.x[i] + b * obj.y[i]) + (c * obj.z[i] + d * obj.w[i]);
     };
-    {
+    if (in_lanes) {
       LaneVec4 clip;
       transform(mvp, 0, clip.x);
       transform(mvp, 1, clip.y);
@@ -87,8 +99,6 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
       transform(mv, 1, eye4.y);
       transform(mv, 2, eye4.z);
       transform(mv, 3, eye4.w);
-    } else {
-      for (int i = 0; i < n; ++i) eye4.x[i] = eye4.y[i] = eye4.z[i] = eye4.w[i] = 0.f;
     }
     if (needs.normal) {
       const float r = t.rescale_factor;
@@ -117,8 +127,6 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
         normal.y[i] = b;
         normal.z[i] = c;
       }
-    } else {
-      for (int i = 0; i < n; ++i) normal.x[i] = normal.y[i] = normal.z[i] = 0.f;
     }
 
     if (lighting.enabled) {
@@ -171,6 +179,7 @@ void transform_vertices(const Transform& t, std::span<const VertexInput> in, std
       }
     }
 
+    if (!per_vertex_extras) continue;
     for (int i = 0; i < n; ++i) {
       const glm::vec4 eye(eye4.x[i], eye4.y[i], eye4.z[i], eye4.w[i]);
       if (x.fog) o[i].fog = std::fabs(x.fog_from_coord ? v[i].fog_coord : eye.z);
