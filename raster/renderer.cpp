@@ -96,11 +96,10 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   // A draw's window positions, ahead of assembly, in vector lanes and on every thread: a large
-  // programmable draw's; a fixed-function draw's unless small or very large (its vertices were
-  // all just transformed anyway) or in reference mode.
+  // programmable draw's; a fixed-function draw's unless small (its vertices were all just
+  // transformed anyway) or in reference mode.
   const bool ahead = state.shader ? vertices.size() >= kVerticesPerPiece
-                                  : !impl_->reference && vertices.size() >= kFixedFunctionVerticesAhead &&
-                                        vertices.size() <= kFixedFunctionVerticesAheadMax;
+                                  : !impl_->reference && vertices.size() >= kFixedFunctionVerticesAhead;
   if (geometry.active() && ahead) {
     impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
     PreparedWindow* windows = impl_->windows.data();

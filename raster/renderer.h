@@ -48,10 +48,8 @@ class Renderer {
   // The grain of the vertex stages: big enough that a piece costs far more than handing it to
   // a thread; a multiple of the vertices one vertex-shader run takes.
   static constexpr size_t kVerticesPerPiece = 1024;
-  // Fixed-function draws of this many vertices take their window positions ahead. Not larger
-  // ones: their prepared windows (64 bytes a vertex) outgrow the caches, and writing them and
-  // reading them back costs more than it saves (bench small_tris, 251k vertices: 80 -> 84 ms).
-  static constexpr size_t kFixedFunctionVerticesAhead = 64, kFixedFunctionVerticesAheadMax = 65536;
+  // Fixed-function draws of at least this many vertices take their window positions ahead.
+  static constexpr size_t kFixedFunctionVerticesAhead = 64;
 
   // Executes everything queued; afterwards the framebuffer's memory is up to date, and the
   // caller may write it (which tiles hold a clear's value is forgotten: cleared_tiles.h).
