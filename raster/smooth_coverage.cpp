@@ -141,6 +141,7 @@ double square_in_rectangle(double x, double y, const LineFrame& line) {
   return std::clamp(0.5 * twice_area, 0.0, 1.0);
 }
 
+// A point has no line frame: a unit line stands in (a zero-length one would divide by zero).
 SmoothCoverage::SmoothCoverage(const PrimSetup& p)
     : shape_(p.smooth), point_(p.kind == CoverageKind::Point), line_(point_ ? SmoothShape{0, 0, 1, 0, 0} : p.smooth) {}
 

@@ -16,7 +16,7 @@ struct LineFrame {
   double ux, uy;                 // along the line
   double mx, my;                 // the middle
   double half_length, half_width;
-  double square_reach;  // how far a unit square reaches from its centre along either axis
+  double square_reach;  // how far a unit square reaches from its centre along the line or across it
   double steep, shallow;  // max and min of |ux| and |uy|
   explicit LineFrame(const SmoothShape& line);
 };
@@ -44,7 +44,7 @@ class SmoothCoverage {
 inline double smooth_coverage(const PrimSetup& p, int x, int y) { return SmoothCoverage(p).at(x, y); }
 
 // The coverages of the 2x2 quad at (x, y): pixel i is (x + (i & 1), y + (i >> 1)). Pixels not in
-// `mask` (bit i: pixel i) are written nothing; get 1.
+// `mask` (bit i: pixel i) get 1: their coverage is not worked out.
 void smooth_quad_coverage(const PrimSetup& p, int x, int y, unsigned mask, float out[4]);
 
 // The pixels whose coverage can be above zero.
