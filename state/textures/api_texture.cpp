@@ -218,12 +218,8 @@ GlError set_tex_parameter(TextureObject& tex, GLenum pname, const GLfloat* v) {
   const GLenum e = enum_from_float(v[0]);
   if (tex.target == GL_TEXTURE_RECTANGLE_ARB)
     if (const GlError error = rectangle_parameter_error(pname, v[0]); error != GL_NO_ERROR) return error;
-  if (is_sampling_param(pname)) {
-    const TexParams before = p;
-    if (const GlError error = set_sampling_param(p, pname, v); error != GL_NO_ERROR) return error;
-    tex.sampling_changed(before);
-    return GL_NO_ERROR;
-  }
+  // No snapshot to drop: the snapshots check their keys (texture_object.h).
+  if (is_sampling_param(pname)) return set_sampling_param(p, pname, v);
   switch (pname) {
     case GL_TEXTURE_PRIORITY:
       p.priority = std::clamp(v[0], 0.f, 1.f);

@@ -204,8 +204,9 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexPar
   if (sampling && target == GL_TEXTURE_RECTANGLE_ARB && !rectangle_sampling(*sampling)) return nullptr;
   const SnapshotKey own = snapshot_key(params);
   if (!sampling || snapshot_key(*sampling) == own) {
-    if (!snapshot_valid_) {
+    if (!snapshot_valid_ || snapshot_key_ != own) {
       snapshot_ = build_snapshot(own);
+      snapshot_key_ = own;
       snapshot_valid_ = true;
     }
     return snapshot_;

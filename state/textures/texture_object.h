@@ -64,14 +64,6 @@ struct TextureObject {
     other_snapshot_valid_ = false;
     ++version;
   }
-  // After a sampling parameter (textures/sampling_params.h) changed from `before`: each draw
-  // takes the sampler anew, so the snapshot is rebuilt only when its key changed (a program
-  // setting its wrap modes and filters before every draw copied its whole texture each time).
-  void sampling_changed(const TexParams& before) {
-    if (snapshot_key(before) == snapshot_key(params)) return;
-    snapshot_.reset();
-    snapshot_valid_ = false;
-  }
   // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
   // it when it is the base level and generation is on.
   void level_changed(int level, int face = 0);
@@ -109,9 +101,11 @@ struct TextureObject {
   std::shared_ptr<raster::TextureImage> build_snapshot(SnapshotKey key) const;
 
   // For the texture's own sampling parameters, and for the last sampler object's that differ
-  // in the key.
+  // in the key. Each remembers its key, so a sampling parameter needs no invalidation: each draw
+  // takes the sampler anew, and a snapshot is rebuilt only when its key changes (a program
+  // setting its wrap modes and filters before every draw copied its whole texture each time).
   std::shared_ptr<raster::TextureImage> snapshot_, other_snapshot_;
-  SnapshotKey other_snapshot_key_;
+  SnapshotKey snapshot_key_, other_snapshot_key_;
   bool snapshot_valid_ = false, other_snapshot_valid_ = false;
 };
 
