@@ -2,7 +2,7 @@
 // to four quads (adjacent: 8x2 pixels, or anywhere) of an RGBA8 or BGRA8 buffer, every channel written, no
 // reduction, either no blending or SRC_ALPHA / ONE_MINUS_SRC_ALPHA. The same conversion
 // (clamp, round to nearest even) and blend arithmetic per pixel as write_quad (quad_ops.h,
-// blend_over.h), 16 lanes at a time.
+// blend8.h), 16 lanes at a time.
 #pragma once
 #include <cstdint>
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "raster/blend_over.h"
+#include "raster/blend8.h"
 #include "raster/draw_targets.h"
 #include "raster/fill_rows.h"
 #include "raster/fragment_pipeline.h"
@@ -61,9 +61,13 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   if (d.num_units == 1) {
     const TextureUnit& unit = d.state.texture_units[d.units[0]];
     const TexBaseFormat format = unit.image->texenv_format();
-    // (The fill routines' row samplers filter bilinearly.)
+    // (The fill routines' row samplers filter bilinearly.) Luminance and intensity multiply
+    // channel by channel only as their own texels (a swizzled texture's are RGBA); ALPHA's
+    // texels (0, 0, 0, A) never do.
+    const bool rgb = format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB;
     d.modulate_in_lanes = bilinear_first && unit.env_mode == TexEnvMode::Modulate &&
-                          (format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB);
+                          (rgb || (format == unit.image->base_format && format != TexBaseFormat::Alpha));
+    d.modulated_channels = format == TexBaseFormat::RGB || format == TexBaseFormat::Luminance ? 3 : 4;
     d.sample_rows = d.modulate_in_lanes && unit.sampler.min_filter == TexFilter::Linear;
   }
   if (state.color_sum) {
@@ -90,7 +94,7 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   d.key.depth = state.depth_test && has_depth;
   d.key.stencil = state.stencil_test && has_stencil;
   d.key.blend = state.blend || state.logic_op_enabled;
-  d.key.blend_over = state.blend && !state.logic_op_enabled && is_blend_over(state.blend_state);
+  d.key.blend8 = state.blend && !state.logic_op_enabled ? blend8_of(state.blend_state) : Blend8::Other;
   d.key.flat = state.flat_shading;
   d.key.extras = state.color_sum || state.fog.enabled || state.line_stipple.enabled || state.polygon_stipple.enabled ||
                  state.point_smooth || state.line_smooth;

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "raster/blend8.h"
 #include "raster/draw_state.h"
 #include "raster/fast_samplers.h"
 #include "raster/framebuffer.h"
@@ -30,7 +31,7 @@ struct FragmentKey {
   bool depth = false;
   bool stencil = false;
   bool blend = false;  // blending or logic op: the destination colour is read
-  bool blend_over = false;  // blending is SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ADD (no logic op)
+  Blend8 blend8 = Blend8::Other;  // blending done in unorm8 integers (blend8.h); Other with a logic op
   bool flat = false;
   bool extras = false;  // colour sum, fog or a stipple: the routine checks which
   bool count_samples = false;  // an occlusion query is active
@@ -59,8 +60,11 @@ struct DrawRecord {
     bool writes_depth = false;
     bool uses_discard = false;
   } shader_facts;
-  // One unit, its fast sampler, MODULATE of an RGB or RGBA texture: the quad is textured in lanes.
+  // One unit, its fast sampler, MODULATE of a texture whose format's colour is RGB or L and alpha
+  // A, I or none: the quad is textured in lanes, channel by channel (a luminance texture's
+  // texels hold L in R, G and B; an intensity one's in all four).
   bool modulate_in_lanes = false;
+  int modulated_channels = 4;  // 3: the texture has no alpha, the fragment's stays
   // modulate_in_lanes without mipmaps (LINEAR minification): no level of detail, so the fill
   // routines sample whole rows of 8 pixels (bilinear8_lanes.inc) instead of quads.
   bool sample_rows = false;

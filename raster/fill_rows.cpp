@@ -51,30 +51,35 @@ namespace {
 
 enum class Copy { Baseline, Avx2, Avx512 };
 
-// Bits 0-4: depth, blend, flat, sample count, stencil; bit 5: textured (MODULATE in lanes),
-// which has routines only without stencil and sample count (table index bits 0-2).
-template <int kBits, Copy kCopy>
+// Bits 0-4: depth, blend (kBlend), flat, sample count, stencil; bit 5: textured (MODULATE in
+// lanes), which has routines only without stencil and sample count (table index bits 0-2), as
+// have the additive blends.
+template <int kBits, Copy kCopy, Blend8 kBlend>
 constexpr QuadRoutine routine_for() {
-  constexpr bool z = kBits & 1, b = kBits & 2, f = kBits & 4, c = kBits & 8, st = kBits & 16, t = kBits & 32;
+  constexpr bool z = kBits & 1, f = kBits & 4, c = kBits & 8, st = kBits & 16, t = kBits & 32;
+  constexpr Blend8 b = kBits & 2 ? kBlend : Blend8::Other;
   if constexpr (kCopy == Copy::Avx512) return &fill_avx512::fill_rows<z, st, b, f, c, t>;
   else if constexpr (kCopy == Copy::Avx2) return &fill_avx2::fill_rows<z, st, b, f, c, t>;
   else return &fill_sse2::fill_rows<z, st, b, f, c, t>;
 }
 
-template <Copy kCopy, int kTextured, int... kBits>
+template <Copy kCopy, int kTextured, Blend8 kBlend, int... kBits>
 constexpr auto make_table(std::integer_sequence<int, kBits...>) {
-  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits | kTextured, kCopy>()...};
+  return std::array<QuadRoutine, sizeof...(kBits)>{routine_for<kBits | kTextured, kCopy, kBlend>()...};
 }
 
-template <Copy kCopy>
+template <Copy kCopy, Blend8 kBlend>
 struct Tables {
-  static constexpr auto plain = make_table<kCopy, 0>(std::make_integer_sequence<int, 32>{});
-  static constexpr auto textured = make_table<kCopy, 32>(std::make_integer_sequence<int, 8>{});
+  static constexpr auto plain = make_table<kCopy, 0, kBlend>(std::make_integer_sequence<int, kBlend == Blend8::Over ? 32 : 8>{});
+  static constexpr auto textured = make_table<kCopy, 32, kBlend>(std::make_integer_sequence<int, 8>{});
 };
 
 template <Copy kCopy>
-QuadRoutine pick(bool textured, int bits) {
-  return textured ? Tables<kCopy>::textured[bits] : Tables<kCopy>::plain[bits];
+QuadRoutine pick(Blend8 blend, bool textured, int bits) {
+  auto from = [&]<Blend8 kBlend>() { return textured ? Tables<kCopy, kBlend>::textured[bits] : Tables<kCopy, kBlend>::plain[bits]; };
+  if (blend == Blend8::AddScaled) return from.template operator()<Blend8::AddScaled>();
+  if (blend == Blend8::Add) return from.template operator()<Blend8::Add>();
+  return from.template operator()<Blend8::Over>();  // (and the draws without blending)
 }
 
 }  // namespace
@@ -83,13 +88,16 @@ QuadRoutine select_fill_routine(const DrawRecord& d, const Framebuffer& fb, Simd
   const FragmentKey& k = d.key;
   if (d.state.shader || k.extras || d.state.alpha_test) return nullptr;
   if (k.textured && (!d.modulate_in_lanes || k.stencil || k.count_samples)) return nullptr;
-  if (k.blend && !k.blend_over) return nullptr;  // other blends and logic ops
+  // Other blends and logic ops; the additive ones have no routines with stencil or a sample count.
+  const Blend8 blend = k.blend ? k.blend8 : Blend8::Other;
+  if (k.blend && blend == Blend8::Other) return nullptr;
+  if (blend != Blend8::Other && blend != Blend8::Over && (k.stencil || k.count_samples)) return nullptr;
   if (k.depth && !(d.depth_max < 2147483647.0)) return nullptr;  // 32-bit depth: row_depth's conversion
   if (fb.color.reduction.active) return nullptr;
   const int bits = (k.depth ? 1 : 0) | (k.blend ? 2 : 0) | (k.flat ? 4 : 0) | (k.count_samples ? 8 : 0) |
                    (k.stencil ? 16 : 0);
-  if (uses_avx512(path)) return pick<Copy::Avx512>(k.textured, bits);
-  return uses_avx2(path) ? pick<Copy::Avx2>(k.textured, bits) : pick<Copy::Baseline>(k.textured, bits);
+  if (uses_avx512(path)) return pick<Copy::Avx512>(blend, k.textured, bits);
+  return uses_avx2(path) ? pick<Copy::Avx2>(blend, k.textured, bits) : pick<Copy::Baseline>(blend, k.textured, bits);
 }
 
 }  // namespace pineda::raster

@@ -4,7 +4,7 @@
 #include <cstring>
 #include <utility>
 
-#include "raster/blend_over.h"
+#include "raster/blend8.h"
 #include "raster/fragment_extras.h"
 #include "raster/fragment_ops.h"
 #include "raster/quad_colors.h"
@@ -111,7 +111,7 @@ QuadRoutine select_quad_routine(const FragmentKey& key, SimdPath path) {
                    (key.flat ? 16 : 0);
   const bool avx2 = uses_avx2(path);
   if (key.extras) return (avx2 ? kExtrasRoutinesAvx2 : kExtrasRoutines)[bits];
-  const int over = key.blend && key.blend_over ? 32 : 0;
+  const int over = key.blend && key.blend8 == Blend8::Over ? 32 : 0;
   return (avx2 ? kRoutinesAvx2 : kRoutines)[bits | over];
 }
 

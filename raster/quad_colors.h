@@ -34,8 +34,7 @@ template <bool kTex, bool kFlat, bool kExtras>
       const F4 q = eval(tp[2], ox, oy);
       F4 texel[4];
       d.fast_sampler[0](*unit.image, unit.sampler, eval(tp[0], ox, oy) / q, eval(tp[1], ox, oy) / q, texel);
-      const int channels = unit.image->texenv_format() == TexBaseFormat::RGBA ? 4 : 3;
-      for (int c = 0; c < channels; ++c) col.c[c] *= texel[c];
+      for (int c = 0; c < d.modulated_channels; ++c) col.c[c] *= texel[c];
       if constexpr (kExtras) apply_color_sum_and_fog(d, p, ox, oy, col.c);
       return col;
     }

@@ -5,7 +5,7 @@
 #pragma once
 #include <cstring>
 
-#include "raster/blend_over.h"
+#include "raster/blend8.h"
 #include "raster/color_reduction.h"
 #include "raster/draw_record.h"
 #include "raster/fragment_ops.h"

@@ -19,7 +19,7 @@ template <bool kExtras>
 [[gnu::always_inline]] inline void sample_write(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask,
                                                 const QuadColor& col) {
   if (!d.key.blend) write_quad<false, false>(d, fb, x, y, mask, col);
-  else if (!kExtras && d.key.blend_over) write_quad<true, true>(d, fb, x, y, mask, col);
+  else if (!kExtras && d.key.blend8 == Blend8::Over) write_quad<true, true>(d, fb, x, y, mask, col);
   else write_quad<true, false>(d, fb, x, y, mask, col);
 }
 

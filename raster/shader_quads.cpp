@@ -74,7 +74,7 @@ void plane_depths(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy, uint32_
 [[gnu::always_inline]] inline void write_colors(const DrawRecord& d, const Framebuffer& fb, int x, int y, unsigned mask,
                                               const QuadColor& col) {
   if (!d.key.blend) write_quad<false, false>(d, fb, x, y, mask, col);
-  else if (d.key.blend_over) write_quad<true, true>(d, fb, x, y, mask, col);
+  else if (d.key.blend8 == Blend8::Over) write_quad<true, true>(d, fb, x, y, mask, col);
   else write_quad<true, false>(d, fb, x, y, mask, col);
 }
 
@@ -326,7 +326,7 @@ BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBloc
                        bool no_late_tests, bool write_color) {
   const DrawState& s = d.state;
   if (!write_color || !no_late_tests || d.key.extras || s.alpha_test || d.alpha_to_one || !d.color_write_all ||
-      fb.color.reduction.active || (d.key.blend && (!d.key.blend_over || s.logic_op_enabled)))
+      fb.color.reduction.active || (d.key.blend && (d.key.blend8 != Blend8::Over || s.logic_op_enabled)))
     return BlockWrite::PerQuad;
   if (adjacent_quads(row, k)) return BlockWrite::Adjacent;
   if (row.one_row[k]) return BlockWrite::Apart;

@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "raster/blend_over.h"
+#include "raster/blend8.h"
 #include "raster/block_write.h"
 #include "raster/quad_ops.h"
 

@@ -1,8 +1,9 @@
 // The fill routines (raster/fill_rows.cpp) against the generic quad routines: the same colour
 // depth and stencil buffers and sample counts, bit for bit, on every SIMD copy, for random
 // triangles over odd-sized framebuffers, with depth functions, stencil functions and operations
-// (front and back faces), blending, colour masks, flat and perspective colours, both colour
-// orders, and MODULATE of an RGBA or RGB texture (bilinear, mipmapped or not).
+// (front and back faces), blending (over and the two additive blends), colour masks, flat and
+// perspective colours, both colour orders, and MODULATE of an RGBA, RGB, luminance,
+// luminance-alpha or intensity texture (bilinear, mipmapped or not).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,6 +27,7 @@ struct Config {
   CompareFunc func = CompareFunc::Less;
   bool depth_write = true;
   bool blend = false;
+  BlendFactor blend_src = BlendFactor::SrcAlpha, blend_dst = BlendFactor::OneMinusSrcAlpha;
   bool flat = false;
   bool one_color = false;  // smooth shading, every vertex of a triangle the same colour
   bool perspective = false;
@@ -45,19 +47,35 @@ struct Config {
   bool pixel_mapped = false;
 };
 
+// A random texel as a texture of the format stores it (texture_format.cpp's reduction: L in R, G
+// and B, I in all four), but for a random alpha where the format has none (which MODULATE
+// must not read).
+uint32_t random_texel(TexBaseFormat format, std::mt19937& rng) {
+  const uint32_t v = rng(), l = v & 0xffu, a = v >> 24;
+  switch (format) {
+    case TexBaseFormat::RGB: return v;
+    case TexBaseFormat::Luminance: return l * 0x010101u | a << 24;
+    case TexBaseFormat::LuminanceAlpha: return l * 0x010101u | a << 24;
+    case TexBaseFormat::Intensity: return l * 0x01010101u;
+    case TexBaseFormat::Alpha: return a << 24;
+    case TexBaseFormat::RGBA: break;
+  }
+  return v;
+}
+
 std::shared_ptr<const TextureImage> random_texture(const Config& c) {
   std::mt19937 rng(11);
   auto image = std::make_shared<TextureImage>();
   image->base_format = c.texture_format;
   if (!c.mipmapped) {
     TextureLevel level{c.texture_width, c.texture_height, {}};
-    for (int i = 0; i < c.texture_width * c.texture_height; ++i) level.texels.push_back(static_cast<uint32_t>(rng()));
+    for (int i = 0; i < c.texture_width * c.texture_height; ++i) level.texels.push_back(random_texel(c.texture_format, rng));
     image->levels.push_back(std::move(level));
     return image;
   }
   for (int size = 16; size >= 1; size /= 2) {
     TextureLevel level{size, size, {}};
-    for (int i = 0; i < size * size; ++i) level.texels.push_back(static_cast<uint32_t>(rng()));
+    for (int i = 0; i < size * size; ++i) level.texels.push_back(random_texel(c.texture_format, rng));
     image->levels.push_back(std::move(level));
   }
   return image;
@@ -127,8 +145,8 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
   s.depth_func = c.func;
   s.depth_write = c.depth_write;
   s.blend = c.blend;
-  s.blend_state.src_rgb = s.blend_state.src_alpha = BlendFactor::SrcAlpha;
-  s.blend_state.dst_rgb = s.blend_state.dst_alpha = BlendFactor::OneMinusSrcAlpha;
+  s.blend_state.src_rgb = s.blend_state.src_alpha = c.blend_src;
+  s.blend_state.dst_rgb = s.blend_state.dst_alpha = c.blend_dst;
   s.flat_shading = c.flat;
   if (c.mask_alpha) s.color_write[3] = false;
   if (c.count) s.sample_counter = std::make_shared<SampleCounter>();
@@ -148,7 +166,10 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
   const QuadRoutine fill_routine = select_fill_routine(d, target.fb, path);
   EXPECT_NE(fill_routine, nullptr);
   EXPECT_EQ(d.routine, fill_routine) << "make_draw_record takes the fill routine";
-  if (generic) d.routine = select_quad_routine(d.key, SimdPath::Baseline);
+  if (generic) {  // the texture environment pixel by pixel too (apply_unit_env)
+    d.routine = select_quad_routine(d.key, SimdPath::Baseline);
+    d.modulate_in_lanes = false;
+  }
   Buffers out;
   for (const PrimSetup& prim : prims)
     for (int ty = 0; ty < h; ty += kTileSize)
@@ -313,6 +334,56 @@ TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
   expect_same_as_generic(c, "textured, flat, BGRA, alpha masked");
 }
 
+// SRC_ALPHA / ONE and ONE / ONE, untextured and MODULATEd (a luminance texture: glblur's blur).
+TEST(FillRows, AdditiveBlendsMatchTheGenericRoutine) {
+  for (const BlendFactor src : {BlendFactor::SrcAlpha, BlendFactor::One}) {
+    const std::string name = src == BlendFactor::One ? "add" : "add scaled";
+    Config c;
+    c.blend = true;
+    c.blend_src = src;
+    c.blend_dst = BlendFactor::One;
+    c.depth = false;
+    expect_same_as_generic(c, name);
+    c.depth = true;
+    c.flat = true;
+    c.format = ColorFormat::BGRA8;
+    c.mask_alpha = true;
+    expect_same_as_generic(c, name + ", depth, flat, BGRA, alpha masked");
+    c.flat = false;
+    c.one_color = true;
+    expect_same_as_generic(c, name + ", one colour");
+    c = {};
+    c.blend = true;
+    c.blend_src = src;
+    c.blend_dst = BlendFactor::One;
+    c.depth = false;
+    c.textured = true;
+    c.texture_format = TexBaseFormat::Luminance;
+    c.perspective = true;
+    expect_same_as_generic_each_wrap(c, name + ", luminance texture");
+    c.mipmapped = true;
+    c.depth = true;
+    c.texture_format = TexBaseFormat::RGBA;
+    expect_same_as_generic(c, name + ", mipmapped RGBA texture, depth");
+  }
+}
+
+// Luminance, luminance-alpha and intensity textures multiply channel by channel too.
+TEST(FillRows, LuminanceAndIntensityTexturesMatchTheGenericRoutine) {
+  for (const TexBaseFormat format : {TexBaseFormat::Luminance, TexBaseFormat::LuminanceAlpha, TexBaseFormat::Intensity}) {
+    const std::string name = "format " + std::to_string(static_cast<int>(format));
+    Config c;
+    c.textured = true;
+    c.texture_format = format;
+    c.perspective = true;
+    expect_same_as_generic(c, name);
+    c.mipmapped = true;
+    c.blend = true;
+    c.depth = false;
+    expect_same_as_generic(c, name + ", mipmapped, blend");
+  }
+}
+
 // A level of 2^18 texels or more, about a texel per pixel: the AVX-512 rows read it through a
 // window of 16 columns by 2 rows (bilinear8_lanes.inc) where the row fits, near its right and top
 // edges too, and gather elsewhere (a repeat's wrap, steep minification).
@@ -351,6 +422,23 @@ TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s.stencil_test = false;
   EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  Config alpha;
+  alpha.texture_format = TexBaseFormat::Alpha;  // texels 0, 0, 0, A: MODULATE leaves the colour
+  s.texture_units[0].image = random_texture(alpha);
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  auto swizzled = std::make_shared<TextureImage>(*random_texture(Config{}));
+  swizzled->env_format = TexBaseFormat::Luminance;  // the environment reads R only, texels RGBA
+  s.texture_units[0].image = swizzled;
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  swizzled->env_format = TexBaseFormat::RGB;
+  EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s = test::state_for(8, 8);
+  s.blend = true;
+  s.blend_state.src_rgb = s.blend_state.src_alpha = BlendFactor::SrcAlpha;
+  s.blend_state.dst_rgb = s.blend_state.dst_alpha = BlendFactor::One;
+  EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.stencil_test = true;  // additive: not with stencil
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s = test::state_for(8, 8);
   s.fog.enabled = true;
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
