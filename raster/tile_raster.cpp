@@ -9,6 +9,7 @@
 #include "raster/sample_point.h"
 #include "raster/setup.h"
 #include "raster/shader_quads.h"
+#include "raster/small_area_masks.h"
 #include "raster/smooth_coverage.h"
 
 namespace pineda::raster {
@@ -91,53 +92,6 @@ void emit_full(const PixelRect& block, const PixelRect& clip, const Sink& sink) 
     }
     for (int q = 0; q < count; ++q) masks[q] = static_cast<uint8_t>(rect_mask(x0 + 2 * q, y, clip));
     sink.row(x0, y, count, masks);
-  }
-}
-
-// The three edges stepped quad by quad along quad rows, from the quad at (x, y) (even).
-struct EdgeWalk {
-  int64_t step_x[3], step_y[3], row[3], v[3];
-  EdgeWalk(const PrimSetup& p, int x, int y) {
-    for (int e = 0; e < 3; ++e) {
-      step_x[e] = p.edges[e].a * kSubpixelOne;
-      step_y[e] = p.edges[e].b * kSubpixelOne;
-      v[e] = row[e] = edge_at(p.edges[e], x, y);
-    }
-  }
-  // The pixels of the current quad inside all edges; then on to the next quad.
-  unsigned quad() {
-    unsigned m = 0xf;
-    for (int e = 0; e < 3; ++e) {
-      m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + step_x[e] >= 0 ? 2u : 0u) | (v[e] + step_y[e] >= 0 ? 4u : 0u) |
-           (v[e] + step_x[e] + step_y[e] >= 0 ? 8u : 0u);
-      v[e] += 2 * step_x[e];
-    }
-    return m;
-  }
-  // The first quad of the next quad row.
-  void next_row() {
-    for (int e = 0; e < 3; ++e) v[e] = row[e] += 2 * step_y[e];
-  }
-};
-
-// rect_mask, without per-pixel tests for the quads wholly inside r.
-inline unsigned clip_mask(int x, int y, const PixelRect& r) {
-  return x >= r.x0 && x + 1 < r.x1 && y >= r.y0 && y + 1 < r.y1 ? 0xfu : rect_mask(x, y, r);
-}
-
-template <class Sink>
-void emit_tested(const PrimSetup& p, const PixelRect& block, const PixelRect& clip, const Sink& sink) {
-  const int x0 = block.x0 & ~1;
-  const int count = (block.x1 - x0 + 1) / 2;
-  uint8_t masks[kMaxQuadsPerRow];
-  EdgeWalk walk(p, x0, block.y0 & ~1);
-  for (int y = block.y0 & ~1; y < block.y1; y += 2) {
-    for (int q = 0; q < count; ++q) {
-      const unsigned m = walk.quad();
-      masks[q] = static_cast<uint8_t>(m ? m & clip_mask(x0 + 2 * q, y, clip) : 0);
-    }
-    sink.row(x0, y, count, masks);
-    walk.next_row();
   }
 }
 
@@ -278,9 +232,11 @@ template <class Sink>
 void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const Sink& sink) {
   // A small triangle (most of a dense mesh's): its few quads edge-tested directly cost less
   // than setting up the row bounds (small_tris: 11% less CPU time than spans for every size).
-  constexpr int kSmall = 16;
-  if (area.x1 - area.x0 <= kSmall && area.y1 - area.y0 <= kSmall) {
-    emit_tested(p, area, area, sink);
+  if (area.x1 - area.x0 <= kSmallAreaSide && area.y1 - area.y0 <= kSmallAreaSide) {
+    static const SmallAreaMasks masks_of = select_small_area_masks(simd_path_from_environment());
+    uint8_t masks[kSmallAreaQuadRows][kSmallAreaRowBytes];
+    const int count = masks_of(p, area, masks);
+    for (int y = area.y0 & ~1, r = 0; y < area.y1; y += 2, ++r) sink.row(area.x0 & ~1, y, count, masks[r]);
     return;
   }
   if (classify(p, area) == BlockCover::Full) {  // rows as wide as the tile: fewer, longer calls

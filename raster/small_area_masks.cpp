@@ -1,0 +1,88 @@
+#include "raster/small_area_masks.h"
+
+#include <cstring>
+
+#include "raster/raster_limits.h"
+
+namespace pineda::raster {
+namespace {
+
+int64_t edge_at(const EdgeFunction& e, int x, int y) {
+  return e.a * (int64_t{x} * kSubpixelOne + kSubpixelHalf) + e.b * (int64_t{y} * kSubpixelOne + kSubpixelHalf) + e.c;
+}
+
+// The area's pixels of quad row y (bits 0-1: row y, bits 2-3: row y + 1) and of the quad at
+// column x (bits 0 and 2: column x, bits 1 and 3: column x + 1).
+unsigned row_bits(int y, const PixelRect& area) {
+  return (y >= area.y0 && y < area.y1 ? 3u : 0u) | (y + 1 >= area.y0 && y + 1 < area.y1 ? 12u : 0u);
+}
+unsigned column_bits(int x, const PixelRect& area) {
+  return (x >= area.x0 && x < area.x1 ? 5u : 0u) | (x + 1 >= area.x0 && x + 1 < area.x1 ? 10u : 0u);
+}
+
+int count_of(const PixelRect& area) { return (area.x1 - (area.x0 & ~1) + 1) / 2; }
+
+// Each edge stepped quad by quad along the row, four pixel tests per quad and edge.
+int masks_scalar(const PrimSetup& p, const PixelRect& area, uint8_t (*masks)[kSmallAreaRowBytes]) {
+  const int x0 = area.x0 & ~1, y0 = area.y0 & ~1, count = count_of(area);
+  int64_t sx[3], sy[3];
+  for (int e = 0; e < 3; ++e) {
+    sx[e] = p.edges[e].a * kSubpixelOne;
+    sy[e] = p.edges[e].b * kSubpixelOne;
+  }
+  for (int y = y0, r = 0; y < area.y1; y += 2, ++r) {
+    const unsigned rows = row_bits(y, area);
+    int64_t v[3];
+    for (int e = 0; e < 3; ++e) v[e] = edge_at(p.edges[e], x0, y);
+    for (int q = 0; q < count; ++q) {
+      unsigned m = rows & column_bits(x0 + 2 * q, area);
+      for (int e = 0; e < 3; ++e) {
+        m &= (v[e] >= 0 ? 1u : 0u) | (v[e] + sx[e] >= 0 ? 2u : 0u) | (v[e] + sy[e] >= 0 ? 4u : 0u) |
+             (v[e] + sx[e] + sy[e] >= 0 ? 8u : 0u);
+        v[e] += 2 * sx[e];
+      }
+      masks[r][q] = static_cast<uint8_t>(m);
+    }
+  }
+  return count;
+}
+
+// Eight quads a vector of 64-bit edge values: the same sums and comparisons as masks_scalar.
+using L8 = int64_t __attribute__((vector_size(64)));
+using M8 = int8_t __attribute__((vector_size(8)));
+
+__attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) int masks_avx512(const PrimSetup& p,
+                                                                              const PixelRect& area,
+                                                                              uint8_t (*masks)[kSmallAreaRowBytes]) {
+  const int x0 = area.x0 & ~1, y0 = area.y0 & ~1, count = count_of(area);
+  const L8 quad = {0, 1, 2, 3, 4, 5, 6, 7};
+  uint64_t columns[2] = {};  // the area's column bits of each quad, a byte each
+  for (int q = 0; q < count; ++q) columns[q / 8] |= uint64_t{column_bits(x0 + 2 * q, area)} << (8 * (q % 8));
+  L8 offset[3][2];  // each group's quads' offsets from the row's first quad, per edge
+  for (int e = 0; e < 3; ++e)
+    for (int g = 0; g < 2; ++g) offset[e][g] = (quad + 8 * g) * (2 * p.edges[e].a * kSubpixelOne);
+  for (int y = y0, r = 0; y < area.y1; y += 2, ++r) {
+    const uint64_t rows = row_bits(y, area) * 0x0101010101010101u;
+    for (int g = 0; 8 * g < count; ++g) {
+      L8 m = {};
+      m += 15;
+      for (int e = 0; e < 3; ++e) {
+        const int64_t sx = p.edges[e].a * kSubpixelOne, sy = p.edges[e].b * kSubpixelOne;
+        const L8 v = edge_at(p.edges[e], x0, y) + offset[e][g];
+        m &= ((v >= 0) & 1) | ((v + sx >= 0) & 2) | ((v + sy >= 0) & 4) | ((v + sx + sy >= 0) & 8);
+      }
+      uint64_t bytes;
+      const M8 narrow = __builtin_convertvector(m, M8);
+      std::memcpy(&bytes, &narrow, 8);
+      bytes &= rows & columns[g];
+      std::memcpy(&masks[r][8 * g], &bytes, 8);
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+SmallAreaMasks select_small_area_masks(SimdPath path) { return uses_avx512(path) ? masks_avx512 : masks_scalar; }
+
+}  // namespace pineda::raster
