@@ -326,7 +326,7 @@ BlockWrite block_write(const DrawRecord& d, const Framebuffer& fb, const RowBloc
                        bool no_late_tests, bool write_color) {
   const DrawState& s = d.state;
   if (!write_color || !no_late_tests || d.key.extras || s.alpha_test || d.alpha_to_one || !d.color_write_all ||
-      fb.color.reduction.active || (d.key.blend && (d.key.blend8 != Blend8::Over || s.logic_op_enabled)))
+      fb.color.reduction.active || (d.key.blend && d.key.blend8 == Blend8::Other))
     return BlockWrite::PerQuad;
   if (adjacent_quads(row, k)) return BlockWrite::Adjacent;
   if (row.one_row[k]) return BlockWrite::Apart;
@@ -360,6 +360,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
       const int n = row.quad_count[k];
       const auto live = static_cast<uint16_t>(live_lanes & ((1u << (4 * n)) - 1u));
       const uint32_t* shift = fb.color.format == ColorFormat::BGRA8 ? kBgraShift.at : kRgbaShift.at;
+      const Blend8 blend = d.key.blend ? d.key.blend8 : Blend8::Other;
       // The writers touch the live pixels alone; a row without any may lie past the buffer, and
       // is not addressed.
       if (how == BlockWrite::Adjacent) {
@@ -367,7 +368,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
         const Quad& q = row.quads[k][0];
         uint8_t* const row0 = color_address(fb, q.x, q.y);
         uint8_t* const row1 = (live & 0xCCCCu) ? color_address(fb, q.x, q.y + 1) : row0;
-        write(block.color[sd.color_output], shift, d.key.blend, row0, row1, live);
+        write(block.color[sd.color_output], shift, blend, row0, row1, live);
       } else {
         static const QuadsWriter write = select_quads_writer(simd_path_from_environment());
         // Rows without a pixel to write point at spare bytes: a masked move at an address it
@@ -380,7 +381,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
           if (live & (0x3u << (4 * j))) rows[2 * j] = color_address(fb, q.x, q.y);
           if (live & (0xCu << (4 * j))) rows[2 * j + 1] = color_address(fb, q.x, q.y + 1);
         }
-        write(block.color[sd.color_output], shift, d.key.blend, rows, live);
+        write(block.color[sd.color_output], shift, blend, rows, live);
       }
       return d.key.count_samples && !early ? static_cast<uint32_t>(__builtin_popcount(live)) : 0;
     }

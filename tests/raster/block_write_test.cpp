@@ -1,6 +1,6 @@
 // The block colour writes (adjacent quads, and quads anywhere): on every SIMD path, each live
-// pixel gets what write_quad's conversion (to_unorm8) and SRC_ALPHA / ONE_MINUS_SRC_ALPHA blend
-// (blend_over8) give it, and every other pixel keeps what it had.
+// pixel gets what write_quad's conversion (to_unorm8) and blend8.h's blends (each equal to the
+// float blend: blend8_test.cpp) give it, and every other pixel keeps what it had.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,10 +22,14 @@ using quad_ops::kBgraShift;
 using quad_ops::kRgbaShift;
 
 // What write_quad gives lane `lane`'s pixel over `before`.
-uint32_t expected_pixel(const float (*color)[16], int lane, const ChannelShift& shift, bool blend, uint32_t before) {
+constexpr Blend8 kBlends[] = {Blend8::Other, Blend8::Over, Blend8::AddScaled, Blend8::Add};
+
+uint32_t expected_pixel(const float (*color)[16], int lane, const ChannelShift& shift, Blend8 blend, uint32_t before) {
   U4 packed = {0, 0, 0, 0};
   for (int c = 0; c < 4; ++c) packed |= to_unorm8(splat(color[c][lane])) << shift.at[c];
-  if (blend) packed = blend_over8(packed, U4{} + before);
+  if (blend == Blend8::Over) packed = blend_over8(packed, U4{} + before);
+  if (blend == Blend8::AddScaled) packed = blend_add_scaled8(packed, U4{} + before);
+  if (blend == Blend8::Add) packed = blend_add8(packed, U4{} + before);
   return packed[0];
 }
 
@@ -43,13 +47,13 @@ TEST(BlockWrite, EveryPathWritesWhatTheQuadWriterWould) {
     color[1][1] = 2.5f / 255.f;
     color[2][2] = std::numeric_limits<float>::quiet_NaN();
     color[3][3] = std::numeric_limits<float>::infinity();
-    const bool blend = trial % 2 == 1;
+    const Blend8 blend = kBlends[trial % 4];
     // Every lane, then partial masks: each row alone, single lanes, random.
     const uint16_t live = trial < 100 ? 0xFFFF
                           : trial < 110 ? (trial % 2 ? 0x3333 : 0xCCCC)
                           : trial < 130 ? static_cast<uint16_t>(1u << (trial % 16))
                                         : static_cast<uint16_t>(pixel(random));
-    const ChannelShift& shift = trial % 4 < 2 ? kRgbaShift : kBgraShift;
+    const ChannelShift& shift = trial % 8 < 4 ? kRgbaShift : kBgraShift;
     uint32_t before[2][8];
     for (auto& row : before)
       for (uint32_t& p : row) p = pixel(random);
@@ -79,12 +83,14 @@ TEST(BlockWrite, TouchesOnlyTheLivePixels) {
   alignas(64) float color[4][16] = {};
   for (int lane = 0; lane < 16; ++lane) color[0][lane] = color[3][lane] = 1.f;
   for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
-    for (bool blend : {false, true}) {
+    for (Blend8 blend : kBlends) {
       std::vector<uint32_t> pixels(2, 0xff00ff00u);
       uint8_t* row = reinterpret_cast<uint8_t*>(pixels.data());
       select_block_writer(path)(color, kRgbaShift.at, blend, row, row, 0x0003);
-      EXPECT_EQ(pixels[0], 0xff0000ffu);
-      EXPECT_EQ(pixels[1], 0xff0000ffu);
+      // Red, opaque: over green, replaces it or adds to it.
+      const uint32_t want = blend == Blend8::AddScaled || blend == Blend8::Add ? 0xff00ffffu : 0xff0000ffu;
+      EXPECT_EQ(pixels[0], want);
+      EXPECT_EQ(pixels[1], want);
     }
   }
 }
@@ -101,8 +107,8 @@ TEST(QuadsWrite, EveryPathWritesWhatTheQuadWriterWould) {
     alignas(64) float color[4][16];
     for (auto& channel : color)
       for (float& v : channel) v = value(random);
-    const bool blend = trial % 2 == 1;
-    const ChannelShift& shift = trial % 4 < 2 ? kRgbaShift : kBgraShift;
+    const Blend8 blend = kBlends[trial % 4];
+    const ChannelShift& shift = trial % 8 < 4 ? kRgbaShift : kBgraShift;
     const uint16_t live = trial < 50 ? 0xFFFF : static_cast<uint16_t>(pixel(random));
     int qx[4], qy[4];
     for (int j = 0; j < 4; ++j) {
@@ -150,14 +156,14 @@ TEST(QuadsWrite, TouchesOnlyTheLivePixels) {
   alignas(64) float color[4][16] = {};
   for (int lane = 0; lane < 16; ++lane) color[1][lane] = color[3][lane] = 1.f;
   for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
-    for (bool blend : {false, true}) {
+    for (Blend8 blend : kBlends) {
       std::vector<uint32_t> pixels(1, 0xff0000ffu);
       uint32_t spare[2] = {};
       uint8_t* rows[8];
       std::fill_n(rows, 8, reinterpret_cast<uint8_t*>(spare));
       rows[4] = reinterpret_cast<uint8_t*>(pixels.data());  // quad 2's first row, its left pixel alone
       select_quads_writer(path)(color, kRgbaShift.at, blend, rows, 0x0100);
-      EXPECT_EQ(pixels[0], 0xff00ff00u);
+      EXPECT_EQ(pixels[0], blend == Blend8::AddScaled || blend == Blend8::Add ? 0xff00ffffu : 0xff00ff00u);
     }
   }
 }
