@@ -5,7 +5,9 @@
 //   quotient is never within float error of a rounding tie.
 // - AddScaled, SRC_ALPHA / ONE: min(255, d + round(s * a / 255)) (s * a / 255 is never a tie).
 // - Add, ONE / ONE: min(255, s + d).
-// Each with ADD on every channel and the same factors for colour and alpha.
+// - OverKeepAlpha: Over for colour, ZERO / ONE for alpha (the destination's alpha kept, as
+//   compositors draw).
+// Each with ADD on every channel and, but for OverKeepAlpha, the same factors for colour and alpha.
 #pragma once
 #include <cstdint>
 
@@ -15,13 +17,15 @@
 namespace pineda::raster {
 
 // Other: blending in float, or none (in a fill routine's key: none).
-enum class Blend8 : uint8_t { Other, Over, AddScaled, Add };
+enum class Blend8 : uint8_t { Other, Over, AddScaled, Add, OverKeepAlpha };
 
 // The integer blend that does the draw's blending, or Other when the float path must.
 inline Blend8 blend8_of(const BlendState& b) {
-  if (b.eq_rgb != BlendEquation::Add || b.eq_alpha != BlendEquation::Add || b.src_rgb != b.src_alpha ||
-      b.dst_rgb != b.dst_alpha)
-    return Blend8::Other;
+  if (b.eq_rgb != BlendEquation::Add || b.eq_alpha != BlendEquation::Add) return Blend8::Other;
+  if (b.src_rgb == BlendFactor::SrcAlpha && b.dst_rgb == BlendFactor::OneMinusSrcAlpha &&
+      b.src_alpha == BlendFactor::Zero && b.dst_alpha == BlendFactor::One)
+    return Blend8::OverKeepAlpha;
+  if (b.src_rgb != b.src_alpha || b.dst_rgb != b.dst_alpha) return Blend8::Other;
   if (b.src_rgb == BlendFactor::SrcAlpha && b.dst_rgb == BlendFactor::OneMinusSrcAlpha) return Blend8::Over;
   if (b.src_rgb == BlendFactor::SrcAlpha && b.dst_rgb == BlendFactor::One) return Blend8::AddScaled;
   if (b.src_rgb == BlendFactor::One && b.dst_rgb == BlendFactor::One) return Blend8::Add;
@@ -83,6 +87,11 @@ template <typename V>
   };
   const V scaled = two_channels(src & 0x00ff00ffu) | (two_channels((src >> 8) & 0x00ff00ffu) << 8);
   return blend_add8(scaled, dst);
+}
+// OverKeepAlpha: Over with the destination's alpha byte (the top one in both byte orders).
+template <typename V>
+[[gnu::always_inline]] inline V keep_alpha8(V blended, V dst) {
+  return (blended & 0x00ffffffu) | (dst & 0xff000000u);
 }
 #pragma GCC diagnostic pop
 

@@ -90,7 +90,7 @@ QuadRoutine select_fill_routine(const DrawRecord& d, const Framebuffer& fb, Simd
   if (k.textured && (!d.modulate_in_lanes || k.stencil || k.count_samples)) return nullptr;
   // Other blends and logic ops; the additive ones have no routines with stencil or a sample count.
   const Blend8 blend = k.blend ? k.blend8 : Blend8::Other;
-  if (k.blend && blend == Blend8::Other) return nullptr;
+  if (k.blend && blend != Blend8::Over && blend != Blend8::AddScaled && blend != Blend8::Add) return nullptr;
   if (blend != Blend8::Other && blend != Blend8::Over && (k.stencil || k.count_samples)) return nullptr;
   if (k.depth && !(d.depth_max < 2147483647.0)) return nullptr;  // 32-bit depth: row_depth's conversion
   if (fb.color.reduction.active) return nullptr;

@@ -12,12 +12,15 @@
 namespace pineda::raster {
 namespace {
 
-DrawRecord blending(BlendFactor src, BlendFactor dst) {
+DrawRecord blending(BlendFactor src, BlendFactor dst, BlendFactor src_alpha, BlendFactor dst_alpha) {
   DrawRecord d;
-  d.state.blend_state.src_rgb = d.state.blend_state.src_alpha = src;
-  d.state.blend_state.dst_rgb = d.state.blend_state.dst_alpha = dst;
+  d.state.blend_state.src_rgb = src;
+  d.state.blend_state.src_alpha = src_alpha;
+  d.state.blend_state.dst_rgb = dst;
+  d.state.blend_state.dst_alpha = dst_alpha;
   return d;
 }
+DrawRecord blending(BlendFactor src, BlendFactor dst) { return blending(src, dst, src, dst); }
 
 // Pixels whose channels 0-2 hold s, s ^ 0x5a, 255 - s and whose alpha is a, over a destination
 // whose channels hold d, d ^ 0xa5, 255 - d, d: as the float path blends them, and as `integer`
@@ -64,6 +67,12 @@ TEST(Blend8, AddEqualsTheFloatBlendEverywhere) {
   EXPECT_EQ(differences(blending(BlendFactor::One, BlendFactor::One), [](U4 s, U4 d) { return blend_add8(s, d); }), 0);
 }
 
+TEST(Blend8, OverKeepAlphaEqualsTheFloatBlendEverywhere) {
+  EXPECT_EQ(differences(blending(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha, BlendFactor::Zero, BlendFactor::One),
+                        [](U4 s, U4 d) { return keep_alpha8(blend_over8(s, d), d); }),
+            0);
+}
+
 TEST(Blend8, SaturatesAndRoundsAsExpected) {
   // 200 + 100 saturates; 128 * 255 / 255 = 128 exactly; 1 * 128 / 255 = 0.502 rounds to 1.
   EXPECT_EQ(blend_add8(U4{} + 0x00c80080u, U4{} + 0x00640001u)[0], 0x00ff0081u);
@@ -78,6 +87,10 @@ TEST(Blend8, OnlyTheirOwnStatesTakeThem) {
   EXPECT_EQ(blend8_of(b), Blend8::AddScaled);
   b.dst_rgb = b.dst_alpha = BlendFactor::OneMinusSrcAlpha;
   EXPECT_EQ(blend8_of(b), Blend8::Over);
+  b.src_alpha = BlendFactor::Zero;
+  b.dst_alpha = BlendFactor::One;
+  EXPECT_EQ(blend8_of(b), Blend8::OverKeepAlpha);
+  b.dst_alpha = BlendFactor::OneMinusSrcAlpha;
   b.src_rgb = b.src_alpha = BlendFactor::One;
   EXPECT_EQ(blend8_of(b), Blend8::Other);  // premultiplied over: float
   b.dst_rgb = b.dst_alpha = BlendFactor::One;

@@ -22,7 +22,7 @@ using quad_ops::kBgraShift;
 using quad_ops::kRgbaShift;
 
 // What write_quad gives lane `lane`'s pixel over `before`.
-constexpr Blend8 kBlends[] = {Blend8::Other, Blend8::Over, Blend8::AddScaled, Blend8::Add};
+constexpr Blend8 kBlends[] = {Blend8::Other, Blend8::Over, Blend8::AddScaled, Blend8::Add, Blend8::OverKeepAlpha};
 
 uint32_t expected_pixel(const float (*color)[16], int lane, const ChannelShift& shift, Blend8 blend, uint32_t before) {
   U4 packed = {0, 0, 0, 0};
@@ -30,6 +30,7 @@ uint32_t expected_pixel(const float (*color)[16], int lane, const ChannelShift& 
   if (blend == Blend8::Over) packed = blend_over8(packed, U4{} + before);
   if (blend == Blend8::AddScaled) packed = blend_add_scaled8(packed, U4{} + before);
   if (blend == Blend8::Add) packed = blend_add8(packed, U4{} + before);
+  if (blend == Blend8::OverKeepAlpha) packed = keep_alpha8(blend_over8(packed, U4{} + before), U4{} + before);
   return packed[0];
 }
 
@@ -47,13 +48,13 @@ TEST(BlockWrite, EveryPathWritesWhatTheQuadWriterWould) {
     color[1][1] = 2.5f / 255.f;
     color[2][2] = std::numeric_limits<float>::quiet_NaN();
     color[3][3] = std::numeric_limits<float>::infinity();
-    const Blend8 blend = kBlends[trial % 4];
+    const Blend8 blend = kBlends[trial % 5];
     // Every lane, then partial masks: each row alone, single lanes, random.
     const uint16_t live = trial < 100 ? 0xFFFF
                           : trial < 110 ? (trial % 2 ? 0x3333 : 0xCCCC)
                           : trial < 130 ? static_cast<uint16_t>(1u << (trial % 16))
                                         : static_cast<uint16_t>(pixel(random));
-    const ChannelShift& shift = trial % 8 < 4 ? kRgbaShift : kBgraShift;
+    const ChannelShift& shift = trial % 10 < 5 ? kRgbaShift : kBgraShift;
     uint32_t before[2][8];
     for (auto& row : before)
       for (uint32_t& p : row) p = pixel(random);
@@ -107,8 +108,8 @@ TEST(QuadsWrite, EveryPathWritesWhatTheQuadWriterWould) {
     alignas(64) float color[4][16];
     for (auto& channel : color)
       for (float& v : channel) v = value(random);
-    const Blend8 blend = kBlends[trial % 4];
-    const ChannelShift& shift = trial % 8 < 4 ? kRgbaShift : kBgraShift;
+    const Blend8 blend = kBlends[trial % 5];
+    const ChannelShift& shift = trial % 10 < 5 ? kRgbaShift : kBgraShift;
     const uint16_t live = trial < 50 ? 0xFFFF : static_cast<uint16_t>(pixel(random));
     int qx[4], qy[4];
     for (int j = 0; j < 4; ++j) {

@@ -439,6 +439,11 @@ TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
   EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s.stencil_test = true;  // additive: not with stencil
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.stencil_test = false;
+  s.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+  s.blend_state.src_alpha = BlendFactor::Zero;  // colour over, alpha kept: the shader path's writers only
+  EXPECT_EQ(make_draw_record(s, target.fb).key.blend8, Blend8::OverKeepAlpha);
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
   s = test::state_for(8, 8);
   s.fog.enabled = true;
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
