@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "raster/raster_limits.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -35,6 +36,11 @@ struct Plane {
 struct EdgeFunction {
   int64_t a = 0, b = 0, c = 0;
 };
+
+// E at the centre of pixel (x, y).
+inline int64_t edge_at(const EdgeFunction& e, int x, int y) {
+  return e.a * (int64_t{x} * kSubpixelOne + kSubpixelHalf) + e.b * (int64_t{y} * kSubpixelOne + kSubpixelHalf) + e.c;
+}
 
 // A line as GL rasterizes it: along the major axis one span of `width` pixels per column
 // (x-major) or row (y-major). Coordinates in sub-pixels.

@@ -7,10 +7,6 @@
 namespace pineda::raster {
 namespace {
 
-int64_t edge_at(const EdgeFunction& e, int x, int y) {
-  return e.a * (int64_t{x} * kSubpixelOne + kSubpixelHalf) + e.b * (int64_t{y} * kSubpixelOne + kSubpixelHalf) + e.c;
-}
-
 // The area's pixels of quad row y (bits 0-1: row y, bits 2-3: row y + 1) and of the quad at
 // column x (bits 0 and 2: column x, bits 1 and 3: column x + 1).
 unsigned row_bits(int y, const PixelRect& area) {

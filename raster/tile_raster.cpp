@@ -25,10 +25,6 @@ unsigned rect_mask(int x, int y, const PixelRect& r) {
   return m;
 }
 
-int64_t edge_at(const EdgeFunction& e, int x, int y) {
-  return e.a * (int64_t{x} * kSubpixelOne + kSubpixelHalf) + e.b * (int64_t{y} * kSubpixelOne + kSubpixelHalf) + e.c;
-}
-
 // The smallest and largest edge value over the pixel centres of r.
 void edge_range(const EdgeFunction& e, const PixelRect& r, int64_t& lo, int64_t& hi) {
   const int64_t base = edge_at(e, r.x0, r.y0);

@@ -338,11 +338,12 @@ TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
 TEST(FillRows, AdditiveBlendsMatchTheGenericRoutine) {
   for (const BlendFactor src : {BlendFactor::SrcAlpha, BlendFactor::One}) {
     const std::string name = src == BlendFactor::One ? "add" : "add scaled";
-    Config c;
-    c.blend = true;
-    c.blend_src = src;
-    c.blend_dst = BlendFactor::One;
-    c.depth = false;
+    Config additive;
+    additive.blend = true;
+    additive.blend_src = src;
+    additive.blend_dst = BlendFactor::One;
+    additive.depth = false;
+    Config c = additive;
     expect_same_as_generic(c, name);
     c.depth = true;
     c.flat = true;
@@ -352,11 +353,7 @@ TEST(FillRows, AdditiveBlendsMatchTheGenericRoutine) {
     c.flat = false;
     c.one_color = true;
     expect_same_as_generic(c, name + ", one colour");
-    c = {};
-    c.blend = true;
-    c.blend_src = src;
-    c.blend_dst = BlendFactor::One;
-    c.depth = false;
+    c = additive;
     c.textured = true;
     c.texture_format = TexBaseFormat::Luminance;
     c.perspective = true;
