@@ -17,6 +17,7 @@
 #include "raster/scene.h"
 #include "raster/small_prim_sharing.h"
 #include "raster/worker_pool.h"
+#include "raster/zeroed_store.h"
 
 namespace pineda::raster {
 
@@ -52,7 +53,7 @@ struct Renderer::Impl {
   SmallPrimSharing small_prim_sharing;
   std::chrono::steady_clock::time_point last_small_hand_off;
   bool timing_small = false, last_small_shared = false;
-  std::vector<PreparedWindow> windows;  // room for a programmable draw's vertices; only grows
+  ZeroedStore<PreparedWindow> windows;  // room for a large draw's vertices
   WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
@@ -101,8 +102,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   const bool ahead = state.shader ? vertices.size() >= kVerticesPerPiece
                                   : !impl_->reference && vertices.size() >= kFixedFunctionVerticesAhead;
   if (geometry.active() && ahead) {
-    impl_->windows.resize(std::max(impl_->windows.size(), vertices.size()));
-    PreparedWindow* windows = impl_->windows.data();
+    PreparedWindow* windows = impl_->windows.grow(vertices.size());
     for_each_piece(vertices.size(), kVerticesPerPiece,
                    [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin, impl_->simd); });
     geometry.use_window_positions(windows);
