@@ -291,8 +291,10 @@ void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVer
   if (!active_ || !finite_position(a) || !finite_position(b)) return;
   // A line inside the view volume, clipping would leave as it is: its ends' window vertices
   // come from the cache, so a strip's vertices are taken to the window once, not twice (the
-  // same positions and front attributes draw_line computes). Conditions as polygon()'s.
-  if (vertex_base_ && flat_ranges_.empty() && !reference_) {
+  // same positions and front attributes draw_line computes). Conditions as polygon()'s, and
+  // ends in different slots (the second end's window would replace the first's).
+  if (vertex_base_ && flat_ranges_.empty() && !reference_ &&
+      !window_cache_.share_slot(static_cast<size_t>(&a - vertex_base_), static_cast<size_t>(&b - vertex_base_))) {
     const WinVert* wa = cached_view_window(a);
     const WinVert* wb = wa ? cached_view_window(b) : nullptr;
     if (wb) return draw_window_line(*wa, *wb, style_for(provoking, false));
@@ -397,6 +399,8 @@ bool GeometryStage::fill_cached_triangle(std::span<const ClipVertex* const> v, c
     }
     return fill_window_triangle(w, provoking);
   }
+  // (Vertices sharing a cache slot leave two of w pointing at one window: a zero area, which
+  // fill_window_triangle leaves to the general path.)
   const WinVert* w[3];
   for (int i = 0; i < 3; ++i)
     if (!(w[i] = cached_window(*v[i]))) return false;

@@ -30,6 +30,9 @@ class WindowCache {
     ++draw_;
     mask_ = std::min(kSlots, std::bit_ceil(std::max<size_t>(vertex_count, 1))) - 1;
   }
+  // Whether vertices i and j, different, take the same slot: the later one's window would
+  // replace the earlier one's under a pointer still held to it.
+  bool share_slot(size_t i, size_t j) const { return i != j && ((i ^ j) & mask_) == 0; }
   // The slot of vertex `index`; `fresh` when it held another vertex or draw (then it is the
   // caller's to fill: `index` and the draw are recorded, usable and in_view reset).
   WindowSlot& slot(size_t index, bool& fresh) {
