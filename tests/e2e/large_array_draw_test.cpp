@@ -1,0 +1,130 @@
+// Array draws long enough to reach the renderer in pieces (state/vertex_arrays/draw_in_pieces.h):
+// blended, overlapping primitives (whose order shows in every pixel) draw exactly what the
+// same vertices draw in immediate mode, with and without indices (renumbered per piece,
+// naming vertices of other pieces), for points, lines, triangles and quads, a last
+// incomplete primitive included; and an occlusion query counts the same samples.
+#include <cstdint>
+#include <vector>
+
+#include "tests/e2e/support/gl_test.h"
+
+namespace pineda::test {
+namespace {
+
+struct Vertex {
+  float r, g, b, a;
+  float x, y;
+};
+
+// Vertices over the surface in small clusters (so that a triangle or quad covers a few
+// pixels), from a fixed pseudo-random sequence.
+std::vector<Vertex> scattered_vertices(size_t count, int width, int height) {
+  std::vector<Vertex> out(count);
+  uint32_t state = 7;
+  auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>(state >> 8) / static_cast<float>(1u << 24);
+  };
+  float cx = 0.f, cy = 0.f;
+  for (size_t i = 0; i < count; ++i) {
+    if (i % 4 == 0) cx = next() * static_cast<float>(width), cy = next() * static_cast<float>(height);
+    out[i] = {next(), next(), next(), 0.3f + 0.5f * next(), cx + 6.f * next() - 3.f, cy + 6.f * next() - 3.f};
+  }
+  return out;
+}
+
+class LargeArrayDrawTest : public GlTest, public ::testing::WithParamInterface<GLenum> {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    pixel_projection();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glPointSize(2.f);
+    vertices_ = scattered_vertices(kCount, width(), height());
+    glColorPointer(4, GL_FLOAT, sizeof(Vertex), &vertices_[0].r);
+    glVertexPointer(2, GL_FLOAT, sizeof(Vertex), &vertices_[0].x);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glGenQueries(1, &query_);
+  }
+  void TearDown() override {
+    glDeleteQueries(1, &query_);
+    GlTest::TearDown();
+  }
+
+  std::vector<uint8_t> immediate(GLenum mode, const std::vector<uint32_t>& order) {
+    clear_to(0, 0, 0, 0);
+    glBeginQuery(GL_SAMPLES_PASSED, query_);
+    glBegin(mode);
+    for (const uint32_t i : order) {
+      glColor4f(vertices_[i].r, vertices_[i].g, vertices_[i].b, vertices_[i].a);
+      glVertex2f(vertices_[i].x, vertices_[i].y);
+    }
+    glEnd();
+    glEndQuery(GL_SAMPLES_PASSED);
+    return read_all();
+  }
+
+  // Starts the query and clears; finish() ends it and reads the pixels.
+  void start() {
+    clear_to(0, 0, 0, 0);
+    glBeginQuery(GL_SAMPLES_PASSED, query_);
+  }
+  std::vector<uint8_t> finish() {
+    glEndQuery(GL_SAMPLES_PASSED);
+    return read_all();
+  }
+  GLuint samples() {
+    GLuint n = 0;
+    glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &n);
+    return n;
+  }
+
+  // Three pieces (kVerticesPerDrawPiece, 12288) and part of a fourth, and one vertex more than
+  // whole quads take.
+  static constexpr size_t kCount = 3 * 12288 + 4 * 1000 + 1;
+  std::vector<Vertex> vertices_;
+  GLuint query_ = 0;
+};
+
+TEST_P(LargeArrayDrawTest, DrawArraysEqualsImmediateMode) {
+  std::vector<uint32_t> order(kCount);
+  for (size_t i = 0; i < kCount; ++i) order[i] = static_cast<uint32_t>(i);
+  const std::vector<uint8_t> expected = immediate(GetParam(), order);
+  const GLuint expected_samples = samples();
+  ASSERT_GT(expected_samples, 10000u);
+  start();
+  glDrawArrays(GetParam(), 0, static_cast<GLsizei>(kCount));
+  EXPECT_EQ(finish(), expected);
+  EXPECT_EQ(samples(), expected_samples);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_P(LargeArrayDrawTest, DrawElementsEqualsImmediateMode) {
+  // Every vertex named about twice, far apart: neighbours in the list come from all over the
+  // arrays, and a vertex's two uses fall in different pieces.
+  std::vector<uint32_t> order(2 * kCount);
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<uint32_t>((i * 7919u + i / 3) % kCount);
+  const std::vector<uint8_t> expected = immediate(GetParam(), order);
+  const GLuint expected_samples = samples();
+  ASSERT_GT(expected_samples, 10000u);
+  start();
+  glDrawElements(GetParam(), static_cast<GLsizei>(order.size()), GL_UNSIGNED_INT, order.data());
+  EXPECT_EQ(finish(), expected);
+  EXPECT_EQ(samples(), expected_samples);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, LargeArrayDrawTest, ::testing::Values(GL_POINTS, GL_LINES, GL_TRIANGLES, GL_QUADS),
+                         [](const ::testing::TestParamInfo<GLenum>& info) {
+                           switch (info.param) {
+                             case GL_POINTS: return "Points";
+                             case GL_LINES: return "Lines";
+                             case GL_TRIANGLES: return "Triangles";
+                             default: return "Quads";
+                           }
+                         });
+
+}  // namespace
+}  // namespace pineda::test
