@@ -10,7 +10,7 @@ namespace pineda {
 namespace {
 
 bool splits(const Context& ctx, GLenum mode, size_t count) {
-  return count > 2 * kVerticesPerDrawPiece && ctx.render_mode.mode == GL_RENDER && !ctx.programs.active() &&
+  return count > 2 * kVerticesPerDrawPiece && ctx.render_mode.mode == GL_RENDER &&
          (mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS);
 }
 

@@ -2,7 +2,9 @@
 // blended, overlapping primitives (whose order shows in every pixel) draw exactly what the
 // same vertices draw in immediate mode, with and without indices (renumbered per piece,
 // naming vertices of other pieces), for points, lines, triangles and quads, a last
-// incomplete primitive included; and an occlusion query counts the same samples.
+// incomplete primitive included, with fixed function and with a program reading generic
+// attributes; and an occlusion query counts the same samples.
+#define GL_GLEXT_PROTOTYPES
 #include <cstdint>
 #include <vector>
 
@@ -50,6 +52,7 @@ class LargeArrayDrawTest : public GlTest, public ::testing::WithParamInterface<G
   }
   void TearDown() override {
     glDeleteQueries(1, &query_);
+    if (program_) glDeleteProgram(program_);
     GlTest::TearDown();
   }
 
@@ -81,12 +84,71 @@ class LargeArrayDrawTest : public GlTest, public ::testing::WithParamInterface<G
     return n;
   }
 
+  // A program drawing position and color from generic attributes 0 and 1, in use.
+  void use_generic_attribute_program() {
+    const char* vertex = R"(#version 110
+attribute vec2 position;
+attribute vec4 color;
+varying vec4 v_color;
+void main() {
+  v_color = color;
+  gl_Position = gl_ModelViewProjectionMatrix * vec4(position, 0.0, 1.0);
+})";
+    const char* fragment = R"(#version 110
+varying vec4 v_color;
+void main() { gl_FragColor = v_color; })";
+    program_ = glCreateProgram();
+    for (const auto& [type, source] : {std::pair{GLenum(GL_VERTEX_SHADER), vertex}, {GLenum(GL_FRAGMENT_SHADER), fragment}}) {
+      const GLuint shader = glCreateShader(type);
+      glShaderSource(shader, 1, &source, nullptr);
+      glCompileShader(shader);
+      glAttachShader(program_, shader);
+      glDeleteShader(shader);
+    }
+    glBindAttribLocation(program_, 0, "position");
+    glBindAttribLocation(program_, 1, "color");
+    glLinkProgram(program_);
+    GLint linked = 0;
+    glGetProgramiv(program_, GL_LINK_STATUS, &linked);
+    ASSERT_TRUE(linked);
+    glUseProgram(program_);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), &vertices_[0].x);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(Vertex), &vertices_[0].r);
+    glEnableVertexAttribArray(0);
+    glEnableVertexAttribArray(1);
+  }
+
+  // As immediate(), through the program's generic attributes (attribute 0 last: it provokes
+  // the vertex).
+  std::vector<uint8_t> immediate_generic(GLenum mode, const std::vector<uint32_t>& order) {
+    clear_to(0, 0, 0, 0);
+    glBeginQuery(GL_SAMPLES_PASSED, query_);
+    glBegin(mode);
+    for (const uint32_t i : order) {
+      glVertexAttrib4f(1, vertices_[i].r, vertices_[i].g, vertices_[i].b, vertices_[i].a);
+      glVertexAttrib2f(0, vertices_[i].x, vertices_[i].y);
+    }
+    glEnd();
+    glEndQuery(GL_SAMPLES_PASSED);
+    return read_all();
+  }
+
   // Three pieces (kVerticesPerDrawPiece, 12288) and part of a fourth, and one vertex more than
   // whole quads take.
   static constexpr size_t kCount = 3 * 12288 + 4 * 1000 + 1;
   std::vector<Vertex> vertices_;
-  GLuint query_ = 0;
+  GLuint query_ = 0, program_ = 0;
 };
+
+// Every vertex named about twice, far apart: neighbours in the list come from all over the
+// arrays, and a vertex's two uses fall in different pieces.
+std::vector<uint32_t> scattered_order(size_t count) {
+  std::vector<uint32_t> order(2 * count);
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<uint32_t>((i * 7919u + i / 3) % count);
+  return order;
+}
 
 TEST_P(LargeArrayDrawTest, DrawArraysEqualsImmediateMode) {
   std::vector<uint32_t> order(kCount);
@@ -102,10 +164,7 @@ TEST_P(LargeArrayDrawTest, DrawArraysEqualsImmediateMode) {
 }
 
 TEST_P(LargeArrayDrawTest, DrawElementsEqualsImmediateMode) {
-  // Every vertex named about twice, far apart: neighbours in the list come from all over the
-  // arrays, and a vertex's two uses fall in different pieces.
-  std::vector<uint32_t> order(2 * kCount);
-  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<uint32_t>((i * 7919u + i / 3) % kCount);
+  const std::vector<uint32_t> order = scattered_order(kCount);
   const std::vector<uint8_t> expected = immediate(GetParam(), order);
   const GLuint expected_samples = samples();
   ASSERT_GT(expected_samples, 10000u);
@@ -113,6 +172,25 @@ TEST_P(LargeArrayDrawTest, DrawElementsEqualsImmediateMode) {
   glDrawElements(GetParam(), static_cast<GLsizei>(order.size()), GL_UNSIGNED_INT, order.data());
   EXPECT_EQ(finish(), expected);
   EXPECT_EQ(samples(), expected_samples);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_P(LargeArrayDrawTest, WithAProgramDrawArraysAndDrawElementsEqualImmediateMode) {
+  use_generic_attribute_program();
+  std::vector<uint32_t> in_order(kCount);
+  for (size_t i = 0; i < kCount; ++i) in_order[i] = static_cast<uint32_t>(i);
+  const std::vector<uint32_t> scattered = scattered_order(kCount);
+  const std::vector<uint32_t>* const orders[] = {&in_order, &scattered};
+  for (const std::vector<uint32_t>* order : orders) {
+    const std::vector<uint8_t> expected = immediate_generic(GetParam(), *order);
+    const GLuint expected_samples = samples();
+    ASSERT_GT(expected_samples, 10000u);
+    start();
+    if (order == &in_order) glDrawArrays(GetParam(), 0, static_cast<GLsizei>(kCount));
+    else glDrawElements(GetParam(), static_cast<GLsizei>(order->size()), GL_UNSIGNED_INT, order->data());
+    EXPECT_EQ(finish(), expected) << (order == &in_order ? "DrawArrays" : "DrawElements");
+    EXPECT_EQ(samples(), expected_samples);
+  }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
