@@ -10,7 +10,6 @@
 #include "state/programs/program_draw.h"
 #include "state/point_parameters.h"
 #include "state/select_feedback.h"
-#include "state/vertex_arrays/draw_in_pieces.h"
 #include "state/vertex_arrays/vertex_fetch.h"
 #include "state/vertex_extras_snapshot.h"
 
@@ -167,7 +166,6 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
 
 void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices) {
   if (!ctx.draw_drawable() || vertices.count == 0) return;
-  if (draw_array_vertices_in_pieces(ctx, mode, vertices, indices)) return;
   if (ctx.programs.active() && vertex_shader_reads_generic_attributes_only(ctx)) {
     // The shader reads each input straight from its array: no vertex is fetched before.
     raster::Primitive primitive;

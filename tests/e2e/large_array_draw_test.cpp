@@ -1,9 +1,10 @@
-// Array draws long enough to reach the renderer in pieces (state/vertex_arrays/draw_in_pieces.h):
-// blended, overlapping primitives (whose order shows in every pixel) draw exactly what the
-// same vertices draw in immediate mode, with and without indices (renumbered per piece,
-// naming vertices of other pieces), for points, lines, triangles and quads, a last
-// incomplete primitive included, with fixed function and with a program reading generic
-// attributes; and an occlusion query counts the same samples.
+// Large array draws (tens of thousands of vertices, indices naming vertices all over the
+// arrays): blended, overlapping primitives (whose order shows in every pixel) draw exactly what
+// the same vertices draw in immediate mode, with and without indices, for points, lines,
+// triangles and quads, a last incomplete primitive included, with fixed function and with a
+// program reading generic attributes; and an occlusion query counts the same samples. (Written
+// for a splitting of such draws into pieces that was measured and not kept; it found the
+// window cache's slot sharing, window_cache_collision_test.cpp.)
 #define GL_GLEXT_PROTOTYPES
 #include <cstdint>
 #include <vector>
@@ -135,7 +136,7 @@ void main() { gl_FragColor = v_color; })";
     return read_all();
   }
 
-  // Three pieces (kVerticesPerDrawPiece, 12288) and part of a fourth, and one vertex more than
+  // More vertices than the window cache's 1024 slots many times over, and one vertex more than
   // whole quads take.
   static constexpr size_t kCount = 3 * 12288 + 4 * 1000 + 1;
   std::vector<Vertex> vertices_;
@@ -143,7 +144,7 @@ void main() { gl_FragColor = v_color; })";
 };
 
 // Every vertex named about twice, far apart: neighbours in the list come from all over the
-// arrays, and a vertex's two uses fall in different pieces.
+// arrays.
 std::vector<uint32_t> scattered_order(size_t count) {
   std::vector<uint32_t> order(2 * count);
   for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<uint32_t>((i * 7919u + i / 3) % count);
