@@ -40,7 +40,7 @@ void Scene::reset(const Framebuffer& fb) {
   tiles_y_ = (render_h_ + kTileSize - 1) / kTileSize;
   if (tiles_x_ == 0 || tiles_y_ == 0) tiles_x_ = tiles_y_ = 0;
   draws_.clear();
-  prims_.resize(kMaxPrims);
+  prims_.grow(kMaxPrims);
   prim_count_ = 0;
   bounded_pixels_ = 0;
   clears_.clear();
@@ -110,11 +110,11 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
   // (Lines and points cost more per pixel than triangles: wireframe ran faster shared.)
   const size_t pixels = static_cast<size_t>(r.x1 - r.x0) * static_cast<size_t>(r.y1 - r.y0);
   bounded_pixels_ += prim.kind == CoverageKind::Triangle ? pixels : std::max(pixels, kSharedPixelsPerPrim);
-  if (prim_count_ == prims_.size()) prims_.resize(prims_.size() + kMaxPrims);  // (full() stops binning before)
+  if (prim_count_ == prims_.capacity()) prims_.grow(prims_.capacity() + kMaxPrims);  // (full() stops binning before)
   const size_t bytes = used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes));
-  if (prefetch_writes_ && prim_count_ + kWriteAhead < prims_.size())
-    prefetch_for_write(&prims_[prim_count_ + kWriteAhead], bytes);
-  PrimSetup& stored = prims_[prim_count_++];
+  if (prefetch_writes_ && prim_count_ + kWriteAhead < prims_.capacity())
+    prefetch_for_write(&prims_.data()[prim_count_ + kWriteAhead], bytes);
+  PrimSetup& stored = prims_.data()[prim_count_++];
   copy_prim(stored, prim, bytes);
   stored.draw = static_cast<uint32_t>(draws_.size() - 1);
   if (count <= 0) return;
@@ -191,7 +191,7 @@ void Scene::run_tile(int tile) const {
       }
     } else {
       if (known) *known = {};  // whatever the primitive writes
-      const PrimSetup& prim = prims_[cmd];
+      const PrimSetup& prim = prims_.data()[cmd];
       const DrawRecord& draw = *draws_[prim.draw];
       if (&draw != batch.draw()) flush();
       use_shader_modes(draw.state.shader != nullptr);

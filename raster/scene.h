@@ -10,6 +10,7 @@
 #include "raster/draw_record.h"
 #include "raster/framebuffer.h"
 #include "raster/prim_setup.h"
+#include "raster/zeroed_store.h"
 
 namespace pineda::raster {
 
@@ -81,9 +82,11 @@ class Scene {
   // draw that filled the scene goes on adding primitives, here or in the next scene, and the
   // pool's threads may read it while this goes on.
   std::deque<std::shared_ptr<const DrawRecord>> draws_;
-  // kMaxPrims records made once; the first prim_count_ are queued, each holding only the planes
-  // its draw uses (a whole PrimSetup is large: copying all of it took a tenth of small triangles).
-  std::vector<PrimSetup> prims_;
+  // Room for kMaxPrims records, in zeroed pages touched only as records are written (576 KiB a
+  // scene: a program drawing a few primitives no longer first-touches all of it); the first
+  // prim_count_ are queued, each holding only the planes its draw uses (a whole PrimSetup is
+  // large: copying all of it took a tenth of small triangles).
+  ZeroedStore<PrimSetup> prims_;
   size_t prim_count_ = 0;
   size_t bounded_pixels_ = 0;  // the queued primitives' bounding boxes' pixels, summed
   bool share_small_prims_ = false;

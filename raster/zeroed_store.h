@@ -10,6 +10,7 @@
 #include <memory>
 #include <new>
 #include <type_traits>
+#include <utility>
 
 namespace pineda::raster {
 
@@ -21,6 +22,15 @@ class ZeroedStore {
   static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
 
  public:
+  ZeroedStore() = default;
+  ZeroedStore(ZeroedStore&& other) noexcept
+      : store_(std::move(other.store_)), capacity_(std::exchange(other.capacity_, 0)) {}
+  ZeroedStore& operator=(ZeroedStore&& other) noexcept {
+    store_ = std::move(other.store_);
+    capacity_ = std::exchange(other.capacity_, 0);
+    return *this;
+  }
+
   // Room for `count` elements: those below the previous size as they were, the new ones zero
   // (T, an implicit-lifetime type, begins its life there). Throws std::bad_alloc.
   T* grow(size_t count) {

@@ -1,8 +1,10 @@
 // ZeroedStore: new elements zero, earlier ones kept through growth, no reallocation when the
-// room suffices, and a large store's elements all writable.
+// room suffices, a large store's elements all writable, and a move leaves the source empty (the
+// renderer swaps its two scenes, each holding one).
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <utility>
 
 #include "raster/zeroed_store.h"
 
@@ -52,6 +54,24 @@ TEST(ZeroedStore, ALargeStoreIsZeroAndWritableToItsEnd) {
   p[kCount - 1] = 7;
   p[0] = 5;
   EXPECT_EQ(store.grow(kCount)[kCount - 1] + store.data()[0], 12u);
+}
+
+TEST(ZeroedStore, AMoveLeavesTheSourceEmptyAndAbleToGrow) {
+  ZeroedStore<int> a;
+  int* p = a.grow(4);
+  p[3] = 9;
+  ZeroedStore<int> b(std::move(a));
+  EXPECT_EQ(b.data(), p);
+  EXPECT_EQ(b.capacity(), 4u);
+  EXPECT_EQ(a.data(), nullptr);
+  EXPECT_EQ(a.capacity(), 0u);
+  ASSERT_NE(a.grow(2), nullptr);  // room again, not the capacity it had
+  EXPECT_EQ(a.data()[1], 0);
+  a = std::move(b);
+  EXPECT_EQ(a.data(), p);
+  EXPECT_EQ(a.data()[3], 9);
+  EXPECT_EQ(b.capacity(), 0u);
+  EXPECT_EQ(b.data(), nullptr);
 }
 
 }  // namespace
