@@ -12,10 +12,11 @@
 namespace pineda::raster {
 
 // (x, y): the first quad's lower left pixel; ox, oy: each lane's offset from the primitive's
-// reference point (lane 4j + i: quad j's pixel (i & 1, i >> 1)); masks: the quads' pixels to
-// test in, those that pass out.
-using BlockDepthTest = void (*)(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y,
-                                const float* ox, const float* oy, unsigned masks[4]);
+// reference point (lane 4j + i: quad j's pixel (i & 1, i >> 1)); quad_bits: the pixels to test,
+// bit 4j + i for that lane. Returns those that pass, in the same bits. (The masks travel in a
+// register: four 32-bit stores read back as one vector load would wait for the stores to retire.)
+using BlockDepthTest = unsigned (*)(const DrawRecord& d, const PrimSetup& p, const Framebuffer& fb, int x, int y,
+                                    const float* ox, const float* oy, unsigned quad_bits);
 
 BlockDepthTest select_block_depth_test(SimdPath path);
 

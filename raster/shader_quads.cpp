@@ -167,17 +167,15 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
       (x & (kTileSize - 1)) + 8 <= kTileSize) {
     static const BlockDepthTest test = select_block_depth_test(simd_path_from_environment());
     alignas(64) float ox[kLanes], oy[kLanes];
-    unsigned masks[4];
+    unsigned quad_bits = 0;
     for (int j = 0; j < 4; ++j) {
       store4(&ox[4 * j], quads[j].ox);
       store4(&oy[4 * j], quads[j].oy);
-      masks[j] = quads[j].mask;
+      quad_bits |= quads[j].mask << (4 * j);
     }
-    test(d, p, fb, x, y, ox, oy, masks);
-    for (int j = 0; j < 4; ++j) {
-      quads[j].mask = masks[j];
-      if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(masks[j]));
-    }
+    quad_bits = test(d, p, fb, x, y, ox, oy, quad_bits);
+    for (int j = 0; j < 4; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
+    if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
     return;
   }
   for (int q = 0; q < n; ++q) quads[q].mask = early_depth_stencil(d, fb, quads[q], quads[q].mask, passed);

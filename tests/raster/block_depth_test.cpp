@@ -70,10 +70,12 @@ TEST(BlockDepth, EveryPathTestsAndWritesAsTheQuadsOneByOne) {
     const std::vector<uint32_t> expected_depth = target.depth;
     for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline}) {
       std::memcpy(target.depth.data(), before.data(), before.size() * sizeof(uint32_t));
-      unsigned got[4] = {masks[0], masks[1], masks[2], masks[3]};
-      select_block_depth_test(path)(d, p, target.fb, x, y, ox, oy, got);
+      const unsigned quad_bits = masks[0] | masks[1] << 4 | masks[2] << 8 | masks[3] << 12;
+      const unsigned got = select_block_depth_test(path)(d, p, target.fb, x, y, ox, oy, quad_bits);
       for (int j = 0; j < 4; ++j)
-        ASSERT_EQ(got[j], expected[j]) << "trial " << trial << " quad " << j << " path " << static_cast<int>(path);
+        ASSERT_EQ((got >> (4 * j)) & 0xFu, expected[j])
+            << "trial " << trial << " quad " << j << " path " << static_cast<int>(path);
+      ASSERT_EQ(got >> 16, 0u);
       ASSERT_EQ(target.depth, expected_depth) << "trial " << trial << " path " << static_cast<int>(path);
     }
   }
