@@ -24,6 +24,7 @@
 #include "state/drawable.h"
 #include "state/framebuffers/renderable_format.h"
 #include "state/framebuffers/renderbuffer.h"
+#include "state/framebuffers/view_source.h"
 
 namespace pineda {
 
@@ -58,8 +59,11 @@ struct FramebufferObject {
   std::array<Attachment, kAttachmentPoints> attachments;
   GLenum draw_buffer = GL_COLOR_ATTACHMENT0, read_buffer = GL_COLOR_ATTACHMENT0;
   ExtraDrawBuffers extra_draw_buffers{};  // DRAW_BUFFER1.. (glDrawBuffers), GL_NONE by default
-  // What the context renders into and reads from, rebuilt by refresh_framebuffer_views.
+  // What the context renders into and reads from, rebuilt by refresh_framebuffer_views when
+  // their sources changed (an empty source: not built yet).
   Drawable draw_view, read_view;
+  ViewSource draw_source, read_source;
+  GLenum draw_status = 0, read_status = 0;  // framebuffer_status (without EXT rules) when they were built
 };
 
 struct FramebufferState {

@@ -69,13 +69,14 @@ raster::ColorBuffer color_buffer(Context& ctx, const Attachment& a, const Render
 
 // The view of `fb` whose colour buffers are the attachments of `buffers` (draw buffer i's at
 // i; GL_NONE ends the list when nothing follows); an incomplete framebuffer has an empty view
-// (nothing is drawn into it).
-void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buffers, Drawable& view) {
+// (nothing is drawn into it). Returns the framebuffer's status.
+GLenum build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buffers, Drawable& view) {
   view = Drawable{};
   view.accum = false;
-  if (framebuffer_status(ctx, fb, false) != GL_FRAMEBUFFER_COMPLETE) {
+  const GLenum status = framebuffer_status(ctx, fb, false);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
     view.red_bits = view.green_bits = view.blue_bits = view.alpha_bits = 0;
-    return;
+    return status;
   }
   raster::Framebuffer& out = view.framebuffer;
   out.width = out.height = kMaxRenderbufferSize;
@@ -137,6 +138,58 @@ void build_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buf
     out.stencil.base = level->stencil.data() + size_t(level->width) * level->height * size_t(stencil.layer);
     out.stencil.stride = level->width;
   }
+  return status;
+}
+
+// The source of the view build_view makes of `fb` with `buffers`.
+ViewSource view_source(Context& ctx, const FramebufferObject& fb, std::span<const GLenum> buffers) {
+  ViewSource source;
+  source.add(buffers.size());
+  for (const GLenum b : buffers) source.add(b);
+  for (int p = 0; p < kAttachmentPoints; ++p) {
+    const Attachment& a = fb.attachments[p];
+    if (a.type == GL_NONE) continue;
+    source.add(static_cast<uint64_t>(p) << 32 | a.type);
+    source.add(a.name);
+    source.add(static_cast<uint64_t>(static_cast<uint32_t>(a.level)) << 32 | static_cast<uint32_t>(a.layer));
+    source.add(static_cast<uint64_t>(a.face) << 1 | (a.cube ? 1u : 0u));
+    if (a.type == GL_RENDERBUFFER) {
+      const Renderbuffer& rb = *a.renderbuffer;
+      source.add(&rb);
+      source.add(static_cast<uint64_t>(static_cast<uint32_t>(rb.width)) << 32 | static_cast<uint32_t>(rb.height));
+      source.add(static_cast<uint64_t>(rb.internal_format) << 32 | static_cast<uint32_t>(rb.samples));
+      source.add(rb.pixels.get());
+      if (rb.pixels) {
+        source.add(rb.pixels->color.data());
+        source.add(rb.pixels->depth.data());
+        source.add(rb.pixels->stencil.data());
+      }
+      continue;
+    }
+    const TextureObject* tex = attached_texture(ctx, a);
+    source.add(tex);
+    if (!tex) continue;
+    source.add(tex->version);
+    const TextureLevelData* level = attached_level(ctx, a);
+    source.add(level);
+    if (!level) continue;
+    source.add(static_cast<uint64_t>(static_cast<uint32_t>(level->width)) << 32 | static_cast<uint32_t>(level->height));
+    source.add(static_cast<uint64_t>(static_cast<uint32_t>(level->depth)) << 32 | static_cast<uint32_t>(level->internal_format));
+    source.add(level->texels.data());
+    source.add(level->texels.size());
+    source.add(level->stencil.data());
+    source.add(level->stencil.size());
+  }
+  return source;
+}
+
+// Builds the view unless its source is unchanged; `status`: the framebuffer's, as it was built.
+void refresh_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buffers, Drawable& view,
+                  ViewSource& built_from, GLenum& status) {
+  ViewSource source = view_source(ctx, fb, buffers);
+  if (source == built_from) return;
+  status = build_view(ctx, fb, buffers, view);
+  built_from = source;
 }
 
 bool renders_into_textures(const FramebufferObject& fb) {
@@ -230,9 +283,11 @@ void refresh_framebuffer_views(Context& ctx) {
   if (draw) {
     std::array<GLenum, kMaxDrawBuffers> buffers{draw->draw_buffer};
     std::copy(draw->extra_draw_buffers.begin(), draw->extra_draw_buffers.end(), buffers.begin() + 1);
-    build_view(ctx, *draw, buffers, draw->draw_view);
+    refresh_view(ctx, *draw, buffers, draw->draw_view, draw->draw_source, draw->draw_status);
   }
-  if (read) build_view(ctx, *read, std::span<const GLenum>(&read->read_buffer, 1), read->read_view);
+  if (read)
+    refresh_view(ctx, *read, std::span<const GLenum>(&read->read_buffer, 1), read->read_view, read->read_source,
+                 read->read_status);
   ctx.set_framebuffer_views(draw ? &draw->draw_view : nullptr, read ? &read->read_view : nullptr);
 }
 
@@ -278,7 +333,7 @@ bool check_draw_framebuffer(Context& ctx) {
   FramebufferObject* fb = ctx.framebuffers.draw_object();
   if (!fb) return true;
   refresh_framebuffer_views(ctx);
-  if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
+  if (fb->draw_status == GL_FRAMEBUFFER_COMPLETE) return true;
   ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION, "the draw framebuffer is not complete");
   return false;
 }
@@ -288,7 +343,7 @@ bool check_read_framebuffer(Context& ctx) {
   if (!fb) return true;
   resolve_rendered_textures(ctx);
   refresh_framebuffer_views(ctx);
-  if (framebuffer_status(ctx, *fb, false) == GL_FRAMEBUFFER_COMPLETE) return true;
+  if (fb->read_status == GL_FRAMEBUFFER_COMPLETE) return true;
   ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION, "the read framebuffer is not complete");
   return false;
 }
