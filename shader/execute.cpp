@@ -99,18 +99,23 @@ void StageCode::compute_uniform_ops(const float* uniforms, float* slot_lanes) co
   if (slots == 0) return;
   // The scalar semantics constant folding uses: the same values the lanes would compute.
   const ir::FlushDenormals flush;
-  auto value = [&](Operand o) -> float& { return slot_lanes[static_cast<size_t>(o - code.registers) * kLanes]; };
+  // One float per slot while computing (a slot no operation writes stays 0), splatted at the end.
+  constexpr int kStackSlots = 512;
+  float stack_values[kStackSlots];
+  std::vector<float> heap_values;
+  float* const values = slots <= kStackSlots ? stack_values : (heap_values.resize(static_cast<size_t>(slots)), heap_values.data());
+  std::fill_n(values, slots, 0.f);
+  auto value = [&](Operand o) -> float& { return values[o - code.registers]; };
   auto read = [&](Operand o) { return ir::is_const(o) ? code.const_value(o) : value(o); };
   for (const ir::Inst& in : uniform_ops) {
     float v = 0.0f;
     if (in.op == Op::LoadUniform) v = uniforms[in.i0];
-    else if (ir::op_arity(in.op) == 1) v = ir::eval_unary(in.op, read(in.a));
-    else if (ir::op_arity(in.op) == 2) v = ir::eval_binary(in.op, read(in.a), read(in.b));
+    else if (const int arity = ir::op_arity(in.op); arity == 1) v = ir::eval_unary(in.op, read(in.a));
+    else if (arity == 2) v = ir::eval_binary(in.op, read(in.a), read(in.b));
     else v = ir::eval_ternary(in.op, read(in.a), read(in.b), read(in.c));
     value(in.d) = v;
   }
-  for (int s = 0; s < slots; ++s)
-    for (int l = 1; l < kLanes; ++l) slot_lanes[s * kLanes + l] = slot_lanes[s * kLanes];
+  for (int s = 0; s < slots; ++s) std::fill_n(slot_lanes + static_cast<size_t>(s) * kLanes, kLanes, values[s]);
 }
 
 namespace {

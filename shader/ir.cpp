@@ -65,14 +65,6 @@ FlushDenormals::~FlushDenormals() {}
 
 const char* op_name(Op op) { return kOpNames[static_cast<int>(op)]; }
 
-int op_arity(Op op) {
-  if (op == Op::Mov) return 1;
-  if (op >= Op::Neg && op <= Op::Ddy) return 1;
-  if (op >= Op::Add && op <= Op::Xor) return 2;
-  if (op >= Op::Clamp && op <= Op::Mad) return 3;
-  return 0;
-}
-
 bool op_is_pure_arith(Op op) {
   return op == Op::Mov || (op >= Op::Neg && op <= Op::Mad && op != Op::Ddx && op != Op::Ddy);
 }

@@ -58,7 +58,15 @@ enum class Op : uint8_t {
 };
 
 const char* op_name(Op op);
-int op_arity(Op op);  // number of value operands among a, b, c for arithmetic and moves
+// The number of value operands among a, b, c for arithmetic and moves (inline: it runs once
+// per instruction of a draw's uniform-only operations).
+inline int op_arity(Op op) {
+  if (op == Op::Mov) return 1;
+  if (op >= Op::Neg && op <= Op::Ddy) return 1;
+  if (op >= Op::Add && op <= Op::Xor) return 2;
+  if (op >= Op::Clamp && op <= Op::Mad) return 3;
+  return 0;
+}
 bool op_is_pure_arith(Op op);  // Neg..Mad, and Mov: d depends only on a, b, c
 
 struct Inst {
