@@ -116,6 +116,11 @@ bool early_tests(const DrawRecord& d) {
          !d.state.alpha_test;
 }
 
+// Whether the program must run: after the early tests (which count the samples that pass), a
+// draw that writes no colour leaves nothing for it to decide, so a depth-only pass (shadow maps,
+// depth pre-passes) runs no shader.
+bool runs_shader(bool early, bool write_color) { return !early || write_color; }
+
 // Depth and stencil of quad q before shading (early_tests): its pixels that pass. Adds them to
 // `passed` when the draw counts samples.
 unsigned early_depth_stencil(const DrawRecord& d, const Framebuffer& fb, const Quad& q, unsigned mask,
@@ -442,7 +447,8 @@ class QuadBlocks {
   QuadBlocks(const DrawRecord& d, const Framebuffer& fb, RowBlocks& row)
       : d_(d), fb_(fb), sd_(*d.state.shader), row_(row), uniform_values_(sd_.fragment_uniform_values()),
         textures_(d.state.texture_units, &d.shader_samplers),
-        early_(early_tests(d)) {
+        early_(early_tests(d)),
+        shade_(runs_shader(early_, fb.color.base && d.color_write_any)) {
     row_.count = 0;
   }
 
@@ -478,7 +484,7 @@ class QuadBlocks {
     filling_ = 0;
     describe_block(row_, k);
     if (early_) early_tests_of_block(d_, fb_, row_, k, passed_);
-    if (begin_block(d_, fb_, uniform_values_, row_, k)) ++row_.count;
+    if (shade_ && begin_block(d_, fb_, uniform_values_, row_, k)) ++row_.count;
     if (row_.count == RowBlocks::kMax) run();
   }
 
@@ -497,6 +503,7 @@ class QuadBlocks {
   const float* uniform_values_;
   const UnitTextureAccess textures_;
   const bool early_;
+  const bool shade_;
   int filling_ = 0;  // quads in block row_.count so far
   uint32_t passed_ = 0;
 };
@@ -546,9 +553,12 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   uint32_t passed = 0;
   RowBlocks row;
   const bool early = early_tests(d);
+  bool write_color = fb.color.base && d.color_write_any;
+  if constexpr (kTargets) write_color = targets.count > 0;
+  const bool shade = runs_shader(early, write_color);
   auto begin = [&](int k) {
     if (early) early_tests_of_block(d, fb, row, k, passed);
-    return begin_block(d, fb, uniform_values, row, k);
+    return shade && begin_block(d, fb, uniform_values, row, k);
   };
   auto run = [&] {
     if (!row.count) return;

@@ -8,7 +8,7 @@
 namespace pineda::test {
 namespace {
 
-const char* kPassVs = "void main() { gl_Position = gl_Vertex; }\n";
+const char* kUnitsPassVs = "void main() { gl_Position = gl_Vertex; }\n";
 
 // Unit i holds a 1x1 texture of (1 << i, 10 * i, 255 - i, 255).
 const char* kEightSamplersFs =
@@ -67,7 +67,7 @@ TEST_F(TextureImageUnitsTest, Limits) {
 
 TEST_F(TextureImageUnitsTest, EightSamplersReadTheirOwnUnits) {
   bind_unit_textures();
-  const GLuint p = link(kPassVs, kEightSamplersFs);
+  const GLuint p = link(kUnitsPassVs, kEightSamplersFs);
   ASSERT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
   glUseProgram(p);
   for (int i = 0; i < 8; ++i) glUniform1i(glGetUniformLocation(p, ("t" + std::to_string(i)).c_str()), i);
@@ -85,7 +85,7 @@ TEST_F(TextureImageUnitsTest, EightSamplersReadTheirOwnUnits) {
 }
 
 TEST_F(TextureImageUnitsTest, SamplerValuesPastTheLastUnitAreInvalid) {
-  const GLuint p = link(kPassVs, kEightSamplersFs);
+  const GLuint p = link(kUnitsPassVs, kEightSamplersFs);
   ASSERT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
   glUseProgram(p);
   const GLint t0 = glGetUniformLocation(p, "t0");
@@ -99,7 +99,7 @@ TEST_F(TextureImageUnitsTest, SamplerValuesPastTheLastUnitAreInvalid) {
 }
 
 TEST_F(TextureImageUnitsTest, SamplersOfTwoTypesOnUnitSixFailValidation) {
-  const GLuint p = link(kPassVs,
+  const GLuint p = link(kUnitsPassVs,
                         "uniform sampler2D a; uniform samplerCube b;\n"
                         "void main() { gl_FragColor = texture2D(a, vec2(0.5)) + textureCube(b, vec3(1.0)); }\n");
   ASSERT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
