@@ -52,6 +52,7 @@ void set_attachments(Context& ctx, FramebufferObject& fb, const int points[2], i
   resolve_rendered_textures(ctx);
   ctx.finish();
   for (int i = 0; i < count; ++i) fb.attachments[points[i]] = a;
+  fb.attachments_changed();
   refresh_framebuffer_views(ctx);
 }
 

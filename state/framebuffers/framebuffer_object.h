@@ -64,6 +64,9 @@ struct FramebufferObject {
   Drawable draw_view, read_view;
   ViewSource draw_source, read_source;
   GLenum draw_status = 0, read_status = 0;  // framebuffer_status (without EXT rules) when they were built
+  // After `attachments` changed: both views are rebuilt when next refreshed, even if the object
+  // is bound only one way now (a replaced attachment takes a depth texture's copy with it).
+  void attachments_changed() { draw_source = read_source = ViewSource{}; }
 };
 
 struct FramebufferState {

@@ -170,6 +170,7 @@ ViewSource view_source(Context& ctx, const FramebufferObject& fb, std::span<cons
     source.add(tex);
     if (!tex) continue;
     source.add(tex->version);
+    source.add(a.depth_copy.data());  // what a depth texture renders into
     const TextureLevelData* level = attached_level(ctx, a);
     source.add(level);
     if (!level) continue;
@@ -186,10 +187,11 @@ ViewSource view_source(Context& ctx, const FramebufferObject& fb, std::span<cons
 // Builds the view unless its source is unchanged; `status`: the framebuffer's, as it was built.
 void refresh_view(Context& ctx, FramebufferObject& fb, std::span<const GLenum> buffers, Drawable& view,
                   ViewSource& built_from, GLenum& status) {
-  ViewSource source = view_source(ctx, fb, buffers);
-  if (source == built_from) return;
+  if (view_source(ctx, fb, buffers) == built_from) return;
   status = build_view(ctx, fb, buffers, view);
-  built_from = source;
+  // As built: building may import a depth texture's copy (after writing back queued rendering,
+  // which counts as a change of the texture).
+  built_from = view_source(ctx, fb, buffers);
 }
 
 bool renders_into_textures(const FramebufferObject& fb) {
@@ -370,7 +372,10 @@ void detach_deleted(Context& ctx, GLenum type, GLuint name) {
     const bool bound = fb_name == fs.draw_binding || fb_name == fs.read_binding;
     if (type == GL_RENDERBUFFER && !bound) continue;
     for (Attachment& a : fb->attachments)
-      if (a.type == type && a.name == name) a = Attachment{};
+      if (a.type == type && a.name == name) {
+        a = Attachment{};
+        fb->attachments_changed();
+      }
   }
   refresh_framebuffer_views(ctx);
 }

@@ -1,6 +1,9 @@
 // The context keeps the view of a framebuffer object between draws while nothing it is made of
 // changed (state/framebuffers/view_source.h): a draw after any change of the images renders
 // into the images as they are now. Exact pixel values.
+#include <algorithm>
+#include <vector>
+
 #include "tests/framebuffers/fbo_test.h"
 
 namespace pineda::test {
@@ -96,6 +99,43 @@ TEST_F(ViewChangesTest, DepthTextureGivenNewDepths) {
   EXPECT_TRUE(near_rgba(pixel(12, 12), {0, 255, 0, 255}));
   glDeleteFramebuffers(1, &fb);
   glDeleteRenderbuffers(1, &color);
+  glDeleteTextures(1, &depth);
+}
+
+// The depth attachment replaced and the same depth texture attached again while the object is
+// bound for reading only, its depths changed in between: the draw view, built before, must not
+// keep the old attachment's integer copy; the next draw tests against the texture's depths.
+TEST_F(ViewChangesTest, DepthTextureAttachedAgainWhileBoundForReading) {
+  const GLuint color = make_renderbuffer(GL_RGBA8, 16, 16);
+  const GLuint other_depth = make_renderbuffer(GL_DEPTH_COMPONENT24, 16, 16);
+  std::vector<float> z(16 * 16, 0.25f);
+  const GLuint depth = make_texture(GL_DEPTH_COMPONENT24, 16, 16, GL_DEPTH_COMPONENT, GL_FLOAT);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 16, 16, 0, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());
+  const GLuint fb = make_fbo();
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+  ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  clear_to(0, 0, 0, 1);
+  glColor4f(1, 0, 0, 1);
+  draw_window_quad(16, 16);  // depth 0.5 fails against 0.25
+  EXPECT_TRUE(near_rgba(pixel(8, 8), {0, 0, 0, 255}));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glFramebufferRenderbuffer(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, other_depth);
+  std::fill(z.begin(), z.begin() + 16 * 16, 0.75f);
+  glBindTexture(GL_TEXTURE_2D, depth);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 16, 8, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());  // rows 0-7
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb);
+  glColor4f(0, 1, 0, 1);
+  draw_window_quad(16, 16);  // depth 0.5: passes against 0.75 (rows 0-7), fails against 0.25
+  glDisable(GL_DEPTH_TEST);
+  EXPECT_TRUE(near_rgba(pixel(8, 4), {0, 255, 0, 255}));
+  EXPECT_TRUE(near_rgba(pixel(8, 12), {0, 0, 0, 255}));
+  glDeleteFramebuffers(1, &fb);
+  glDeleteRenderbuffers(1, &color);
+  glDeleteRenderbuffers(1, &other_depth);
   glDeleteTextures(1, &depth);
 }
 
