@@ -32,19 +32,19 @@ uint8_t stencil_ref(int ref) { return static_cast<uint8_t>(std::clamp(ref, 0, 25
 
 }  // namespace
 
+void drop_unusable_textures(std::array<TextureUnit, kMaxTextureImageUnits>& units) {
+  for (int u = 0; u < kMaxTextureUnits; ++u)
+    if (units[u].image && !texture_usable(units[u].image.get())) units[u].image.reset();
+}
+
 DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, SimdPath path, bool fades_points) {
   DrawRecord d;
   d.state = draw_state;
   d.state.use_target_write(fb.color_index);
   const DrawState& state = d.state;
-  for (int u = 0; u < kMaxTextureUnits; ++u) {
-    TextureUnit& unit = d.state.texture_units[u];
-    if (!texture_usable(unit.image.get())) {
-      unit.image.reset();
-      continue;
-    }
-    d.units[d.num_units++] = static_cast<uint8_t>(u);
-  }
+  drop_unusable_textures(d.state.texture_units);
+  for (int u = 0; u < kMaxTextureUnits; ++u)
+    if (d.state.texture_units[u].image) d.units[d.num_units++] = static_cast<uint8_t>(u);
   bool bilinear_first = false;  // unit 0 samples with select_bilinear8_sampler
   d.planes = kColorPlanes;
   for (int k = 0; k < d.num_units; ++k) {

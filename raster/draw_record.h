@@ -101,6 +101,10 @@ struct DrawRecord {
   std::shared_ptr<const std::vector<DrawRecord>> target_draws;
 };
 
+// Leaves out of `units` the images make_draw_record would not sample (an empty or short level),
+// as it does for the record's own units.
+void drop_unusable_textures(std::array<TextureUnit, kMaxTextureImageUnits>& units);
+
 // `path`: which copy of the fragment routine and samplers runs; `fades_points`: may_fade_points
 // (multisample.h).
 DrawRecord make_draw_record(const DrawState& state, const Framebuffer& fb, SimdPath path = SimdPath::Best,

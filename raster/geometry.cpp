@@ -37,8 +37,13 @@ constexpr double kResolvableDepthSteps = 2.0;
 
 }  // namespace
 
-GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::function<void()> on_full, bool reference)
-    : scene_(scene), on_full_(std::move(on_full)), reference_(reference), window_cache_(window_cache) {
+GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::vector<Plane>& varying_planes,
+                             std::function<void()> on_full, bool reference)
+    : scene_(scene),
+      on_full_(std::move(on_full)),
+      reference_(reference),
+      window_cache_(window_cache),
+      varying_planes_(varying_planes) {
   const DrawState& s = scene_.current_draw().state;
   const Viewport& vp = s.viewport;
   if (vp.width <= 0 || vp.height <= 0) return;

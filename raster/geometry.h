@@ -19,7 +19,10 @@ class GeometryStage final : public PrimitiveSink {
   // Uses the scene's current draw; `on_full` is called when the scene asks to be executed.
   // `reference`: primitives are rasterized at once by the reference path, not binned.
   // `window_cache`: the renderer's, which this draw's vertices take over (window_cache.h).
-  GeometryStage(Scene& scene, WindowCache& window_cache, std::function<void()> on_full, bool reference = false);
+  // `varying_planes`: the renderer's room for a programmable primitive's planes, kept between
+  // draws (not allocated per draw).
+  GeometryStage(Scene& scene, WindowCache& window_cache, std::vector<Plane>& varying_planes,
+                std::function<void()> on_full, bool reference = false);
 
   void point(const ClipVertex& v) override;
   void line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) override;
@@ -125,7 +128,7 @@ class GeometryStage final : public PrimitiveSink {
   std::vector<std::pair<int, int>> flat_ranges_;
   // The primitive being set up: its varying planes, then one record {x, y, size} of a point
   // (gl_PointCoord), which the scene stores with it.
-  mutable std::vector<Plane> varying_planes_;
+  std::vector<Plane>& varying_planes_;
 };
 
 }  // namespace pineda::raster

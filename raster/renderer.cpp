@@ -55,6 +55,7 @@ struct Renderer::Impl {
   bool timing_small = false, last_small_shared = false;
   ZeroedStore<PreparedWindow> windows;  // room for a large draw's vertices
   WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
+  std::vector<Plane> varying_planes;  // GeometryStage's
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
@@ -93,7 +94,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     record.sample_routine = nullptr;  // multisampled: the reference routine on each sample plane
   }
   scene.begin_draw(std::move(record));
-  GeometryStage geometry(scene, impl_->window_cache, [this] { submit(); }, impl_->reference);
+  GeometryStage geometry(scene, impl_->window_cache, impl_->varying_planes, [this] { submit(); }, impl_->reference);
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   // A draw's window positions, ahead of assembly, in vector lanes and on every thread: a large
@@ -112,7 +113,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
 }
 
 
-void Renderer::for_each_piece(size_t count, size_t grain, const std::function<void(size_t, size_t)>& fn) {
+void Renderer::for_each_piece(size_t count, size_t grain, FunctionRef<void(size_t, size_t)> fn) {
   if (count == 0) return;
   Impl& r = *impl_;
   if (r.running_started && r.pool.finished()) r.finish_running();

@@ -3,12 +3,12 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <span>
 
 #include "raster/draw_state.h"
 #include "raster/framebuffer.h"
+#include "raster/function_ref.h"
 #include "raster/vertex.h"
 
 namespace pineda::raster {
@@ -44,7 +44,7 @@ class Renderer {
   // the last: spread over the pool's threads when none of them is rendering a scene and there
   // are at least two pieces, otherwise at once on this thread. For per-element work whose
   // results do not depend on the pieces (the vertex stages); fn must be safe to run in parallel.
-  void for_each_piece(size_t count, size_t grain, const std::function<void(size_t, size_t)>& fn);
+  void for_each_piece(size_t count, size_t grain, FunctionRef<void(size_t, size_t)> fn);
   // The grain of the vertex stages: big enough that a piece costs far more than handing it to
   // a thread; a multiple of the vertices one vertex-shader run takes.
   static constexpr size_t kVerticesPerPiece = 1024;

@@ -25,7 +25,7 @@ struct ShaderDraw {
     if (!uniform_values_.ready.load(std::memory_order_acquire)) {
       const std::lock_guard lock(uniform_values_.mutex);
       if (!uniform_values_.ready.load(std::memory_order_relaxed)) {
-        if (program) uniform_values_.values = program->fragment_uniform_values(uniforms.data());
+        if (program) program->fragment_uniform_values(uniforms.data(), uniform_values_.values);
         uniform_values_.ready.store(true, std::memory_order_release);
       }
     }

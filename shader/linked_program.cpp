@@ -93,21 +93,20 @@ void LinkedProgram::run_fragment_blocks(const float* uniforms, const TextureAcce
 
 namespace {
 
-std::vector<float> uniform_values(const StageCode* stage, const float* uniforms) {
-  if (!stage || stage->slots == 0) return {};
-  std::vector<float> values(static_cast<size_t>(stage->slots) * kLanes);
-  stage->compute_uniform_ops(uniforms, values.data());
-  return values;
+// (compute_uniform_ops writes every slot's lanes.)
+void uniform_values(const StageCode* stage, const float* uniforms, std::vector<float>& out) {
+  out.resize(stage ? static_cast<size_t>(stage->slots) * kLanes : 0);
+  if (!out.empty()) stage->compute_uniform_ops(uniforms, out.data());
 }
 
 }  // namespace
 
-std::vector<float> LinkedProgram::fragment_uniform_values(const float* uniforms) const {
-  return uniform_values(fragment_ ? &*fragment_ : nullptr, uniforms);
+void LinkedProgram::fragment_uniform_values(const float* uniforms, std::vector<float>& out) const {
+  uniform_values(fragment_ ? &*fragment_ : nullptr, uniforms, out);
 }
 
-std::vector<float> LinkedProgram::vertex_uniform_values(const float* uniforms) const {
-  return uniform_values(vertex_ ? &*vertex_ : nullptr, uniforms);
+void LinkedProgram::vertex_uniform_values(const float* uniforms, std::vector<float>& out) const {
+  uniform_values(vertex_ ? &*vertex_ : nullptr, uniforms, out);
 }
 
 std::string dump_ir(const Program& program) {

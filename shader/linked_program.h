@@ -48,8 +48,8 @@ class LinkedProgram final : public Program {
   void run_fragments(const float* uniforms, const TextureAccess* textures, FragmentBlock& block) const override;
   void run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
                            int count) const override;
-  std::vector<float> fragment_uniform_values(const float* uniforms) const override;
-  std::vector<float> vertex_uniform_values(const float* uniforms) const override;
+  void fragment_uniform_values(const float* uniforms, std::vector<float>& out) const override;
+  void vertex_uniform_values(const float* uniforms, std::vector<float>& out) const override;
 };
 
 }  // namespace pineda::shader

@@ -199,10 +199,11 @@ class Program {
   virtual void run_fragment_blocks(const float* uniforms, const TextureAccess* textures, FragmentBlock* blocks,
                                    int count) const = 0;
   // What the fragment shader computes from uniforms alone (shader/hoist.h), for
-  // FragmentBlock::uniform_values: computed once per draw instead of once per block.
-  virtual std::vector<float> fragment_uniform_values(const float* uniforms) const = 0;
+  // FragmentBlock::uniform_values: computed once per draw instead of once per block. Into `out`
+  // (resized; its room kept from draw to draw where the caller keeps it), empty when none.
+  virtual void fragment_uniform_values(const float* uniforms, std::vector<float>& out) const = 0;
   // The same of the vertex shader, for VertexBatch::uniform_values.
-  virtual std::vector<float> vertex_uniform_values(const float* uniforms) const = 0;
+  virtual void vertex_uniform_values(const float* uniforms, std::vector<float>& out) const = 0;
 };
 
 struct AttributeBinding {

@@ -132,7 +132,7 @@ class Context {
   void drawable_changed();
   // Runs `render` (renderer calls) once per colour buffer that glDrawBuffer selects
   // (draw_buffers.cpp).
-  void render_to_draw_buffers(const std::function<void()>& render);
+  void render_to_draw_buffers(raster::FunctionRef<void()> render);
   // While `render` runs for one colour buffer: the index i of the first DRAW_BUFFERi that
   // selects it, so a fragment shader's gl_FragData[i] goes there.
   int draw_pass_output() const { return draw_pass_output_; }

@@ -123,7 +123,7 @@ void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer
   renderer_storage_ = draw_drawable()->kept_storage;
 }
 
-void Context::render_to_draw_buffers(const std::function<void()>& render) {
+void Context::render_to_draw_buffers(raster::FunctionRef<void()> render) {
   draw_pass_output_ = 0;
   if (framebuffers.draw_binding) {
     // The view holds every draw buffer: one pass writes them all (raster/draw_targets.h).

@@ -86,18 +86,10 @@ uint32_t enabled_clip_planes(const Context& ctx) {
   return planes;
 }
 
-// Where one vec4 input slot of the vertex shader comes from, found once per draw.
-struct InputFetch {
-  int slot = 0;
-  shader::BuiltinAttribute builtin = shader::BuiltinAttribute::None;
-  int location = 0;        // generic attribute, when not built-in
-  bool from_view = false;  // a GL_FLOAT array: `view`
-  FloatArrayView view;
-};
-
-std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program& program, AttribSource source,
-                                      int slots) {
-  std::vector<InputFetch> fetches;
+// Into `fetches` (emptied first).
+void input_fetches(const Context& ctx, const shader::Program& program, AttribSource source, int slots,
+                   std::vector<InputFetch>& fetches) {
+  fetches.clear();
   for (const shader::Attribute& a : program.attributes()) {
     const int per_element = std::max<int>(a.type.columns, 1);
     const int slot_count = per_element * std::max(a.array_size, 1);
@@ -114,7 +106,6 @@ std::vector<InputFetch> input_fetches(const Context& ctx, const shader::Program&
       fetches.push_back(f);
     }
   }
-  return fetches;
 }
 
 // A float array's elements[0..count) into an input slot's lanes: component c of vertex i at
@@ -176,23 +167,35 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const std::span<raster::ClipVertex> out = transformed.resize(vertices.size());
   // Only grows, as `transformed`: every vertex's varyings are written below.
   if (const size_t floats = vertices.size() * static_cast<size_t>(nv); varyings.size() < floats) varyings.resize(floats);
-  const std::vector<InputFetch> fetches = input_fetches(ctx, program, source, slots);
+  VertexRunScratch& scratch = ctx.programs.vertex_run;
+  const std::vector<InputFetch>& fetches = scratch.fetches;
+  input_fetches(ctx, program, source, slots, scratch.fetches);
   const uint32_t planes = enabled_clip_planes(ctx);
   const Context& state = ctx;
   // Array elements take their edge flags from the edge flag array only when it is enabled.
   const bool edge_flag_array = vertices.inputs.empty() && ctx.edge_flag_array.active();
   // What the shader computes from uniforms alone, once for the draw (not once per run).
-  const std::vector<float> uniform_values = program.vertex_uniform_values(uniforms);
+  program.vertex_uniform_values(uniforms, scratch.uniform_values);
+  const std::vector<float>& uniform_values = scratch.uniform_values;
+  const bool one_piece = vertices.size() <= raster::Renderer::kVerticesPerPiece;  // run here, on this thread
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
     // The shaders' modes (shader::ir::FlushDenormals), set once for the piece rather than by
     // each run (batches' denormals_flushed).
     const raster::ScopedFloatModes modes(raster::kShaderFloatModes);
-    std::vector<float> in(in_floats * shader::kMaxBlocksPerRun), result(out_floats * shader::kMaxBlocksPerRun);
+    std::vector<float> piece_in, piece_result;
+    std::vector<float>& in = one_piece ? scratch.in : piece_in;
+    std::vector<float>& result = one_piece ? scratch.result : piece_result;
+    in.resize(in_floats * shader::kMaxBlocksPerRun);
+    result.resize(out_floats * shader::kMaxBlocksPerRun);
     for (size_t first = begin; first < end; first += kRunVertices) {
       const size_t count = std::min(kRunVertices, end - first);
       const int batch_count = static_cast<int>((count + kLanes - 1) / kLanes);
-      if (count % kLanes != 0) std::fill(in.begin(), in.end(), 0.f);
+      // The lanes past the last vertex (their outputs are not read) hold zeros, as the slots no
+      // fetch writes (the scratch's, from an earlier draw, too); the outputs start at zero.
+      if (count % kLanes != 0 || (one_piece && first == begin))
+        std::fill_n(in.begin(), in_floats * static_cast<size_t>(batch_count), 0.f);
+      std::fill_n(result.begin(), out_floats * static_cast<size_t>(batch_count), 0.f);
       // Vertex i's component c of input slot `slot`.
       const auto input = [&](size_t i, int slot, int c) -> float& {
         return in[(i / kLanes) * in_floats + (static_cast<size_t>(slot) * 4 + c) * kLanes + i % kLanes];
@@ -222,7 +225,6 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
           }
         }
       }
-      std::fill(result.begin(), result.end(), 0.f);
       shader::VertexBatch batches[shader::kMaxBlocksPerRun];
       for (int b = 0; b < batch_count; ++b) {
         batches[b].count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes));
@@ -346,11 +348,11 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   state.clip_planes = enabled_clip_planes(ctx);  // the planes test gl_ClipVertex (run_vertex_shader)
 
   // Vertex-shader texture lookups read the same (usable) images the fragments will.
-  const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
+  raster::drop_unusable_textures(state.texture_units);
   std::vector<float>& varyings = ctx.programs.draw_varyings;
   // Feedback reports the fixed-function colours and coordinates: zero (the varyings are not mapped back).
   const bool conventional_outputs = ctx.render_mode.mode != GL_RENDER;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, vertices, source,
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), state.texture_units, vertices, source,
                     point_sizes(ctx, program), conventional_outputs, ctx.transformed, varyings);
   draw_or_feed_back(ctx, state, primitive, ctx.transformed.vertices(), indices, varyings.data());
   return true;
@@ -368,9 +370,9 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   }
   raster::DrawState state = ctx.draw_state;
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
-  const raster::DrawRecord textures_record = raster::make_draw_record(state, ctx.renderer().framebuffer());
+  raster::drop_unusable_textures(state.texture_units);
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), textures_record.state.texture_units, {vertices, {}},
+  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), state.texture_units, {vertices, {}},
                     source, point_sizes(ctx, program), true, transformed, varyings);
   const std::span<raster::ClipVertex> out = transformed.vertices();
   const int nv = program.varying_floats();

@@ -11,6 +11,7 @@
 #include "shader/program.h"
 #include "state/buffers/buffer_object.h"
 #include "state/programs/program_objects.h"
+#include "state/programs/vertex_run_scratch.h"
 
 namespace pineda {
 
@@ -55,6 +56,7 @@ struct ProgramState {
   std::vector<float> immediate_generic;
   // The vertex shader's varyings of the current draw (scratch).
   std::vector<float> draw_varyings;
+  VertexRunScratch vertex_run;  // (scratch)
 
   // A program with a vertex shader is in use: draws run it.
   const LinkedProgram* active() const { return current_exec.get(); }

@@ -60,8 +60,8 @@ class CountingProgram final : public shader::Program {
       if (discards_) blocks[k].live &= static_cast<shader::LaneMask>(~((1u << 5) | (1u << 10)));
     }
   }
-  std::vector<float> fragment_uniform_values(const float*) const override { return {}; }
-  std::vector<float> vertex_uniform_values(const float*) const override { return {}; }
+  void fragment_uniform_values(const float*, std::vector<float>& out) const override { out.clear(); }
+  void vertex_uniform_values(const float*, std::vector<float>& out) const override { out.clear(); }
 
  private:
   float alpha_;

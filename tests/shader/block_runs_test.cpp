@@ -146,7 +146,8 @@ TEST(VertexBatchRuns, BatchesReadTheDrawsUniformValues) {
   std::vector<float> drawn(static_cast<size_t>(p->uniform_floats()), 0.0f), other(drawn.size());
   for (float& u : drawn) u = value(random);
   for (float& u : other) u = value(random);
-  const std::vector<float> values = p->vertex_uniform_values(drawn.data());
+  std::vector<float> values(3, -1.0f);  // resized to the program's
+  p->vertex_uniform_values(drawn.data(), values);
   ASSERT_FALSE(values.empty());  // a * b
   const size_t in_floats = static_cast<size_t>(p->input_slots()) * 4 * kLanes;
   const size_t out_floats = static_cast<size_t>(kOutFirstVarying + p->varying_floats()) * kLanes;

@@ -1,0 +1,29 @@
+// Room for a draw's vertex-shader run, kept in the context from draw to draw: a draw of a few
+// vertices allocated and zeroed its inputs, outputs and uniform values each time, a third of
+// what such a draw cost on the calling thread (glsl_many_draws).
+#pragma once
+#include <vector>
+
+#include "shader/program.h"
+#include "state/programs/generic_attribs.h"
+
+namespace pineda {
+
+// Where one vec4 input slot of the vertex shader comes from, found once per draw.
+struct InputFetch {
+  int slot = 0;
+  shader::BuiltinAttribute builtin = shader::BuiltinAttribute::None;
+  int location = 0;        // generic attribute, when not built-in
+  bool from_view = false;  // a GL_FLOAT array: `view`
+  FloatArrayView view;
+};
+
+struct VertexRunScratch {
+  std::vector<InputFetch> fetches;
+  std::vector<float> uniform_values;  // Program::vertex_uniform_values
+  // The inputs and outputs of the batches run at once, for a draw run on the calling thread
+  // alone (a draw of more pieces allocates them per piece).
+  std::vector<float> in, result;
+};
+
+}  // namespace pineda
