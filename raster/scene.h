@@ -48,7 +48,7 @@ class Scene {
   // has threads of its own); finish waits for them and empties the scene wholly (the other
   // scene goes on with the current draw: continue_draw). The scene must not move in between.
   bool worth_starting(const WorkerPool& pool) const;
-  // Whether the queued primitives are small (their bounding boxes average under 32 pixels, no
+  // Whether the queued primitives are small (their bounding boxes average under 64 pixels, no
   // clear among them), and whether such a scene is spread over threads all the same
   // (small_prim_sharing.h; default: no).
   bool small_prims() const;
