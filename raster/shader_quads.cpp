@@ -592,6 +592,13 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
   const UnitTextureAccess textures(d.state.texture_units, &d.shader_samplers);
   // Alpha to coverage makes every sample's record alpha-test (multisample.cpp).
   const bool early = early_tests(d) && !d.sample_draws;
+  bool write_color = false;  // to any sample
+  for (int s = 0; s < kMaxSamples; ++s) {
+    if (!t.draw[s]) continue;
+    if constexpr (kTargets) write_color |= targets[size_t(s)].count > 0;
+    else write_color |= t.plane[s].color.base && t.draw[s]->color_write_any;
+  }
+  const bool shade = runs_shader(early, write_color);
   uint32_t passed = 0;
   RowBlocks row;
   uint16_t sample_masks[RowBlocks::kMax][4];  // per quad of each block (sample_targets.h)
@@ -605,7 +612,7 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
       }
       row.quads[k][q].mask = any_sample_mask(m);
     }
-    return begin_block(d, t.plane[first], uniform_values, row, k);
+    return shade && begin_block(d, t.plane[first], uniform_values, row, k);
   };
   // After shading, without early tests: each sample's alpha test (its own threshold under alpha
   // to coverage), then every sample's stencil and depth at once; what passes is left to write.
