@@ -12,6 +12,7 @@
 #include "raster/shader_textures.h"
 #include "state/context.h"
 #include "state/programs/builtin_uniforms.h"
+#include "state/programs/varyings_from_lanes.h"
 #include "state/select_feedback.h"
 #include "state/textures/texture_target.h"
 #include "state/vertex_arrays/vertex_fetch.h"
@@ -259,8 +260,12 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
                                                : state.current_edge_flag;
         const float size = sizes.from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane] : sizes.fixed;
         c.point_size = std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max);
-        float* dst = varyings.data() + (first + i) * static_cast<size_t>(nv);
-        for (int k = 0; k < nv; ++k) dst[k] = r[static_cast<size_t>(shader::kOutFirstVarying + k) * kLanes + lane];
+      }
+      for (int b = 0; b < batch_count; ++b) {
+        const float* lanes = result.data() + static_cast<size_t>(b) * out_floats +
+                             static_cast<size_t>(shader::kOutFirstVarying) * kLanes;
+        const size_t first_vertex = first + static_cast<size_t>(b) * kLanes;
+        varyings_from_lanes(lanes, batches[b].count, nv, varyings.data() + first_vertex * static_cast<size_t>(nv));
       }
     }
   });
