@@ -9,7 +9,29 @@
 namespace pineda::test {
 namespace {
 
-using ViewChangesTest = FboTest;
+class ViewChangesTest : public FboTest {
+ protected:
+  // A bound 16x16 framebuffer object of an RGBA8 renderbuffer and a 24-bit depth texture (given
+  // `depths` when not null), complete, with the depth test on (LESS).
+  void make_depth_texture_target(const float* depths) {
+    color_ = make_renderbuffer(GL_RGBA8, 16, 16);
+    depth_ = make_texture(GL_DEPTH_COMPONENT24, 16, 16, GL_DEPTH_COMPONENT, GL_FLOAT);
+    if (depths) glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 16, 16, 0, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
+    fb_ = make_fbo();
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
+    ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+  }
+  void delete_depth_texture_target() {
+    glDeleteFramebuffers(1, &fb_);
+    glDeleteRenderbuffers(1, &color_);
+    glDeleteTextures(1, &depth_);
+  }
+
+  GLuint color_ = 0, depth_ = 0, fb_ = 0;
+};
 
 // A texture respecified at another size while attached: the next draw and read see the new
 // 16x16 image, not the old 4x4 one.
@@ -73,14 +95,7 @@ TEST_F(ViewChangesTest, AnotherTextureAtTheSamePoint) {
 // An attached depth texture given new depths (same size) by glTexImage2D: the next depth test
 // compares with them. The plane at depth 0.5 fails LESS against 0.25 and passes against 0.75.
 TEST_F(ViewChangesTest, DepthTextureGivenNewDepths) {
-  const GLuint color = make_renderbuffer(GL_RGBA8, 16, 16);
-  const GLuint depth = make_texture(GL_DEPTH_COMPONENT24, 16, 16, GL_DEPTH_COMPONENT, GL_FLOAT);
-  const GLuint fb = make_fbo();
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-  ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  ASSERT_NO_FATAL_FAILURE(make_depth_texture_target(nullptr));
   glClearDepth(1.0);
   glClear(GL_DEPTH_BUFFER_BIT);
   clear_to(0, 0, 0, 1);
@@ -90,33 +105,23 @@ TEST_F(ViewChangesTest, DepthTextureGivenNewDepths) {
   std::vector<float> z(16 * 16);
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16; ++x) z[y * 16 + x] = x < 8 ? 0.25f : 0.75f;
-  glBindTexture(GL_TEXTURE_2D, depth);
+  glBindTexture(GL_TEXTURE_2D, depth_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 16, 16, 0, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());
   glColor4f(0, 1, 0, 1);
   draw_rect(0, 8, 16, 16);
   glDisable(GL_DEPTH_TEST);
   EXPECT_TRUE(near_rgba(pixel(3, 12), {0, 0, 0, 255}));
   EXPECT_TRUE(near_rgba(pixel(12, 12), {0, 255, 0, 255}));
-  glDeleteFramebuffers(1, &fb);
-  glDeleteRenderbuffers(1, &color);
-  glDeleteTextures(1, &depth);
+  delete_depth_texture_target();
 }
 
 // The depth attachment replaced and the same depth texture attached again while the object is
 // bound for reading only, its depths changed in between: the draw view, built before, must not
 // keep the old attachment's integer copy; the next draw tests against the texture's depths.
 TEST_F(ViewChangesTest, DepthTextureAttachedAgainWhileBoundForReading) {
-  const GLuint color = make_renderbuffer(GL_RGBA8, 16, 16);
   const GLuint other_depth = make_renderbuffer(GL_DEPTH_COMPONENT24, 16, 16);
   std::vector<float> z(16 * 16, 0.25f);
-  const GLuint depth = make_texture(GL_DEPTH_COMPONENT24, 16, 16, GL_DEPTH_COMPONENT, GL_FLOAT);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, 16, 16, 0, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());
-  const GLuint fb = make_fbo();
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-  ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  ASSERT_NO_FATAL_FAILURE(make_depth_texture_target(z.data()));
   clear_to(0, 0, 0, 1);
   glColor4f(1, 0, 0, 1);
   draw_window_quad(16, 16);  // depth 0.5 fails against 0.25
@@ -124,19 +129,17 @@ TEST_F(ViewChangesTest, DepthTextureAttachedAgainWhileBoundForReading) {
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
   glFramebufferRenderbuffer(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, other_depth);
   std::fill(z.begin(), z.begin() + 16 * 16, 0.75f);
-  glBindTexture(GL_TEXTURE_2D, depth);
+  glBindTexture(GL_TEXTURE_2D, depth_);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 16, 8, GL_DEPTH_COMPONENT, GL_FLOAT, z.data());  // rows 0-7
-  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb);
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth_, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fb_);
   glColor4f(0, 1, 0, 1);
   draw_window_quad(16, 16);  // depth 0.5: passes against 0.75 (rows 0-7), fails against 0.25
   glDisable(GL_DEPTH_TEST);
   EXPECT_TRUE(near_rgba(pixel(8, 4), {0, 255, 0, 255}));
   EXPECT_TRUE(near_rgba(pixel(8, 12), {0, 0, 0, 255}));
-  glDeleteFramebuffers(1, &fb);
-  glDeleteRenderbuffers(1, &color);
   glDeleteRenderbuffers(1, &other_depth);
-  glDeleteTextures(1, &depth);
+  delete_depth_texture_target();
 }
 
 }  // namespace
