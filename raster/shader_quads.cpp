@@ -97,6 +97,14 @@ struct TargetViews {
 };
 struct NoTargets {};
 
+// Whether a draw into `fb` (through `targets`, with several draw buffers) writes any colour.
+template <bool kTargets>
+bool writes_color(const DrawRecord& d, const Framebuffer& fb,
+                  const std::conditional_t<kTargets, TargetViews, NoTargets>& targets) {
+  if constexpr (kTargets) return targets.count > 0;
+  else return fb.color.base && d.color_write_any;
+}
+
 // Up to four blocks shaded together (shader::Program::run_fragment_blocks): each block's
 // quads, its fragment inputs, and what it needs after the run.
 struct RowBlocks {
@@ -354,8 +362,7 @@ uint32_t finish_block(const DrawRecord& d, const PrimSetup* sample_prim, const F
   const DrawState& s = d.state;
   const shader::FragmentBlock& block = row.blocks[k];
   const bool tests = d.key.depth || d.key.stencil;
-  bool write_color = fb.color.base && d.color_write_any;
-  if constexpr (kTargets) write_color = targets.count > 0;
+  const bool write_color = writes_color<kTargets>(d, fb, targets);
   uint32_t passed = 0;
   if constexpr (!kTargets) {
     const BlockWrite how = block_write(d, fb, row, k, live_lanes, early || !tests, write_color);
@@ -448,7 +455,7 @@ class QuadBlocks {
       : d_(d), fb_(fb), sd_(*d.state.shader), row_(row), uniform_values_(sd_.fragment_uniform_values()),
         textures_(d.state.texture_units, &d.shader_samplers),
         early_(early_tests(d)),
-        shade_(runs_shader(early_, fb.color.base && d.color_write_any)) {
+        shade_(runs_shader(early_, writes_color<false>(d, fb, NoTargets{}))) {
     row_.count = 0;
   }
 
@@ -553,8 +560,7 @@ uint32_t shade_quads(const DrawRecord& d, const PrimSetup& p, const Framebuffer&
   uint32_t passed = 0;
   RowBlocks row;
   const bool early = early_tests(d);
-  bool write_color = fb.color.base && d.color_write_any;
-  if constexpr (kTargets) write_color = targets.count > 0;
+  const bool write_color = writes_color<kTargets>(d, fb, targets);
   const bool shade = runs_shader(early, write_color);
   auto begin = [&](int k) {
     if (early) early_tests_of_block(d, fb, row, k, passed);
@@ -593,11 +599,8 @@ uint32_t shade_sample_quads(const DrawRecord& d, const PrimSetup& p, const Sampl
   // Alpha to coverage makes every sample's record alpha-test (multisample.cpp).
   const bool early = early_tests(d) && !d.sample_draws;
   bool write_color = false;  // to any sample
-  for (int s = 0; s < kMaxSamples; ++s) {
-    if (!t.draw[s]) continue;
-    if constexpr (kTargets) write_color |= targets[size_t(s)].count > 0;
-    else write_color |= t.plane[s].color.base && t.draw[s]->color_write_any;
-  }
+  for (int s = 0; s < kMaxSamples; ++s)
+    if (t.draw[s]) write_color |= writes_color<kTargets>(*t.draw[s], t.plane[s], targets[size_t(s)]);
   const bool shade = runs_shader(early, write_color);
   uint32_t passed = 0;
   RowBlocks row;
