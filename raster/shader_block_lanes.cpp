@@ -1,5 +1,5 @@
 // The shader block's lane helpers (varying_lanes.h, block_depth.h, block_write.h,
-// sampler_bilinear_block.h) in three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather
+// sampler_bilinear_block.h, the block samplers of sampler_nearest8.h and sampler_depth.h) in three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather
 // instructions) and AVX-512 (16), the same operations per lane in each, so the same values.
 #include <immintrin.h>
 
@@ -8,6 +8,7 @@
 #include "raster/block_depth.h"
 #include "raster/block_write.h"
 #include "raster/sampler_bilinear_block.h"
+#include "raster/sampler_depth.h"
 #include "raster/sampler_nearest8.h"
 #include "raster/varying_lanes.h"
 
@@ -21,6 +22,7 @@ constexpr int kGatherBytes = 0;
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
+#include "raster/sampler_depth_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 #include "raster/block_depth_body.inc"
 }  // namespace pineda::raster::block_lanes_sse2
@@ -34,6 +36,7 @@ constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 32 : 0;
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
+#include "raster/sampler_depth_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 #include "raster/block_depth_body.inc"
 }  // namespace pineda::raster::block_lanes_avx2
@@ -48,6 +51,7 @@ constexpr int kGatherBytes = kCopiesHaveTheirTargets ? 64 : 0;
 #include "raster/block_write_body.inc"
 #include "raster/sampler_bilinear_block_body.inc"
 #include "raster/sampler_nearest_block_body.inc"
+#include "raster/sampler_depth_block_body.inc"
 #include "raster/varying_lanes_body.inc"
 #include "raster/block_depth_body.inc"
 }  // namespace pineda::raster::block_lanes_avx512
@@ -69,6 +73,17 @@ BlockSampler block_sampler_for_wrap_t(TexWrap t, SimdPath path) {
                               : block_sampler_for_path<kWrapS, TexWrap::ClampToEdge>(path);
 }
 
+// pick.operator()<kWrapS, kWrapT>() for s and t each REPEAT or CLAMP_TO_EDGE; null for others.
+template <class Pick>
+BlockSampler for_wrap_pair(TexWrap s, TexWrap t, const Pick& pick) {
+  constexpr TexWrap kRepeat = TexWrap::Repeat, kEdge = TexWrap::ClampToEdge;
+  if (s == kRepeat && t == kRepeat) return pick.template operator()<kRepeat, kRepeat>();
+  if (s == kRepeat && t == kEdge) return pick.template operator()<kRepeat, kEdge>();
+  if (s == kEdge && t == kRepeat) return pick.template operator()<kEdge, kRepeat>();
+  if (s == kEdge && t == kEdge) return pick.template operator()<kEdge, kEdge>();
+  return nullptr;
+}
+
 }  // namespace
 
 BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path) {
@@ -85,12 +100,32 @@ BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path
   // CLAMP picks the texels CLAMP_TO_EDGE does (nearest_index); MIRRORED_REPEAT keeps the quad sampler.
   const auto edge = [](TexWrap w) { return w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
   const TexWrap s = edge(sampler.wrap_s), t = edge(sampler.wrap_t);
-  constexpr TexWrap kRepeat = TexWrap::Repeat, kEdge = TexWrap::ClampToEdge;
-  if (s == kRepeat && t == kRepeat) return for_path.template operator()<kRepeat, kRepeat>();
-  if (s == kRepeat && t == kEdge) return for_path.template operator()<kRepeat, kEdge>();
-  if (s == kEdge && t == kRepeat) return for_path.template operator()<kEdge, kRepeat>();
-  if (s == kEdge && t == kEdge) return for_path.template operator()<kEdge, kEdge>();
-  return nullptr;
+  return for_wrap_pair(s, t, for_path);
+}
+
+BlockSampler select_depth_block_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {
+  if (!image.depth || image.kind != TexKind::Planar || image.depth_swizzle != kIdentitySwizzle || image.levels.empty())
+    return nullptr;
+  const TextureLevel& level = image.levels[0];
+  if (level.width <= 0 || level.height <= 0 || level.texels.size() < static_cast<size_t>(level.width) * level.height)
+    return nullptr;
+  const TexFilter filter = sampler.mag_filter;
+  if (sampler.compare || sampler.min_filter != filter) return nullptr;
+  const auto for_path = [path]<TexWrap kWrapS, TexWrap kWrapT, bool kLinear>() -> BlockSampler {
+    if (uses_avx512(path)) return &block_lanes_avx512::sample_depth_block<kWrapS, kWrapT, kLinear>;
+    if (uses_avx2(path)) return &block_lanes_avx2::sample_depth_block<kWrapS, kWrapT, kLinear>;
+    return &block_lanes_sse2::sample_depth_block<kWrapS, kWrapT, kLinear>;
+  };
+  const auto for_filter = [&]<TexWrap kWrapS, TexWrap kWrapT>() -> BlockSampler {
+    return filter == TexFilter::Linear ? for_path.template operator()<kWrapS, kWrapT, true>()
+                                       : for_path.template operator()<kWrapS, kWrapT, false>();
+  };
+  // A nearest filter reads CLAMP as CLAMP_TO_EDGE (nearest_index); a linear one reads the border there.
+  const bool nearest = filter == TexFilter::Nearest;
+  if (!nearest && filter != TexFilter::Linear) return nullptr;
+  const auto edge = [nearest](TexWrap w) { return nearest && w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
+  const TexWrap s = edge(sampler.wrap_s), t = edge(sampler.wrap_t);
+  return for_wrap_pair(s, t, for_filter);
 }
 
 VaryingInterpolator select_varying_interpolator(SimdPath path) {

@@ -6,6 +6,7 @@
 #include "raster/sampler.h"
 #include "raster/sampler_bilinear8.h"
 #include "raster/sampler_bilinear_block.h"
+#include "raster/sampler_depth.h"
 #include "raster/sampler_nearest8.h"
 
 namespace pineda::raster {
@@ -127,6 +128,8 @@ FastSamplers choose_fast_samplers(const TextureImage& image, const Sampler& samp
     f.quad = select_nearest8_sampler(image, sampler);
     f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
   }
+  // Depth images: a block form only (the quad loop of `sample` takes the other lookups).
+  if (!f.quad) f.block = select_depth_block_sampler(image, sampler, path);
   f.level_zero_image = f.block && reads_level_zero(sampler) && kind_matches(image, SamplerKind::Tex2D) ? &image : nullptr;
   return f;
 }
