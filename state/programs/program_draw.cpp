@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string_view>
 
+#include <xmmintrin.h>
+
 #include "raster/draw_record.h"
 #include "raster/float_modes.h"
 #include "raster/renderer.h"
@@ -116,12 +118,31 @@ void input_fetches(const Context& ctx, const shader::Program& program, AttribSou
 template <int kSize>
 void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elements, size_t count, float* lanes,
                                 size_t batch_floats) {
-  for (size_t i = 0; i < count; ++i) {
-    float* out = lanes + (i / kLanes) * batch_floats + i % kLanes;
+  const auto element_at = [&](size_t i, float v[4]) {
     const size_t element = elements[i];
-    float v[4] = {0.f, 0.f, 0.f, 1.f};
+    v[0] = v[1] = v[2] = 0.f;
+    v[3] = 1.f;
     if (element < view.count) std::memcpy(v, view.base + view.stride * element, sizeof(float) * kSize);
-    else std::memcpy(v, view.current, sizeof v);
+    else std::memcpy(v, view.current, sizeof(float) * 4);
+  };
+  // Four vertices at a time (consecutive lanes of one batch, which holds a multiple of four)
+  // through a 4x4 transpose: one float at a time, the stores were most of this loop's time.
+  size_t i = 0;
+  for (; i + 4 <= count; i += 4) {
+    alignas(16) float v[4][4];
+    for (int j = 0; j < 4; ++j) element_at(i + size_t(j), v[j]);
+    __m128 c0 = _mm_load_ps(v[0]), c1 = _mm_load_ps(v[1]), c2 = _mm_load_ps(v[2]), c3 = _mm_load_ps(v[3]);
+    _MM_TRANSPOSE4_PS(c0, c1, c2, c3);  // cN: component N of the four
+    float* out = lanes + (i / kLanes) * batch_floats + i % kLanes;
+    _mm_storeu_ps(out, c0);
+    _mm_storeu_ps(out + kLanes, c1);
+    _mm_storeu_ps(out + 2 * kLanes, c2);
+    _mm_storeu_ps(out + 3 * kLanes, c3);
+  }
+  for (; i < count; ++i) {
+    float v[4];
+    element_at(i, v);
+    float* out = lanes + (i / kLanes) * batch_floats + i % kLanes;
     for (int c = 0; c < 4; ++c) out[c * kLanes] = v[c];
   }
 }
@@ -243,7 +264,6 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         // start-up cost per vertex was a quarter of this function's time).
         static constexpr raster::ClipVertex kZero{};
         if (conventional_outputs) std::memcpy(&c, &kZero, sizeof c);
-        for (int k = 0; k < 4; ++k) c.clip[k] = r[static_cast<size_t>(shader::kOutPosition + k) * kLanes + lane];
         std::fill(std::begin(c.clip_distance), std::end(c.clip_distance), 0.f);
         if (planes) {
           const glm::dvec4 clip_vertex(r[static_cast<size_t>(shader::kOutClipVertex + 0) * kLanes + lane],
@@ -262,10 +282,12 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         c.point_size = std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max);
       }
       for (int b = 0; b < batch_count; ++b) {
-        const float* lanes = result.data() + static_cast<size_t>(b) * out_floats +
-                             static_cast<size_t>(shader::kOutFirstVarying) * kLanes;
+        const float* lanes = result.data() + static_cast<size_t>(b) * out_floats;
         const size_t first_vertex = first + static_cast<size_t>(b) * kLanes;
-        varyings_from_lanes(lanes, batches[b].count, nv, varyings.data() + first_vertex * static_cast<size_t>(nv));
+        positions_from_lanes(lanes + static_cast<size_t>(shader::kOutPosition) * kLanes, batches[b].count,
+                             out.data() + first_vertex);
+        varyings_from_lanes(lanes + static_cast<size_t>(shader::kOutFirstVarying) * kLanes, batches[b].count, nv,
+                            varyings.data() + first_vertex * static_cast<size_t>(nv));
       }
     }
   });
