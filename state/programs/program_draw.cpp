@@ -126,12 +126,23 @@ void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elem
     else std::memcpy(v, view.current, sizeof(float) * 4);
   };
   // Four vertices at a time (consecutive lanes of one batch, which holds a multiple of four)
-  // through a 4x4 transpose: one float at a time, the stores were most of this loop's time.
+  // through a 4x4 transpose: one float at a time, the stores were most of this loop's time. Each
+  // element is put together in a register (stored in pieces and loaded whole, it waited for the
+  // stores).
+  const auto element_vector = [&](size_t i) {
+    const size_t element = elements[i];
+    if (element >= view.count) return _mm_loadu_ps(view.current);
+    const float* f = reinterpret_cast<const float*>(view.base + view.stride * element);
+    const __m128 zero = _mm_setzero_ps(), w = _mm_set_ss(1.f);  // (1, 0, 0, 0)
+    if constexpr (kSize == 4) return _mm_loadu_ps(f);
+    if constexpr (kSize == 1) return _mm_shuffle_ps(_mm_load_ss(f), w, _MM_SHUFFLE(0, 1, 1, 0));  // (x, 0, 0, 1)
+    const __m128 xy = _mm_loadl_pi(zero, reinterpret_cast<const __m64*>(f));
+    if constexpr (kSize == 2) return _mm_movelh_ps(xy, _mm_shuffle_ps(w, w, _MM_SHUFFLE(1, 1, 0, 1)));  // (x, y, 0, 1)
+    return _mm_movelh_ps(xy, _mm_unpacklo_ps(_mm_load_ss(f + 2), w));  // (x, y, z, 1)
+  };
   size_t i = 0;
   for (; i + 4 <= count; i += 4) {
-    alignas(16) float v[4][4];
-    for (int j = 0; j < 4; ++j) element_at(i + size_t(j), v[j]);
-    __m128 c0 = _mm_load_ps(v[0]), c1 = _mm_load_ps(v[1]), c2 = _mm_load_ps(v[2]), c3 = _mm_load_ps(v[3]);
+    __m128 c0 = element_vector(i), c1 = element_vector(i + 1), c2 = element_vector(i + 2), c3 = element_vector(i + 3);
     _MM_TRANSPOSE4_PS(c0, c1, c2, c3);  // cN: component N of the four
     float* out = lanes + (i / kLanes) * batch_floats + i % kLanes;
     _mm_storeu_ps(out, c0);
