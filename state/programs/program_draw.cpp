@@ -1,6 +1,7 @@
 #include "state/programs/program_draw.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <cmath>
 #include <string_view>
@@ -238,6 +239,15 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
           if (f.from_view) {
             gather_float_array(f.view, vertices.elements.data() + first, count,
                                in.data() + static_cast<size_t>(f.slot) * 4 * kLanes, in_floats);
+            continue;
+          }
+          if (f.location != 0 && !state.programs.arrays[f.location].active()) {
+            // A disabled array: its current value for every vertex (fetched per vertex, it was a
+            // tenth of this function in glmark2's build scene, whose texcoord array is off).
+            const std::array<float, 4>& value = state.programs.current_attrib[f.location];
+            for (size_t batch = 0; batch * kLanes < count; ++batch)
+              for (int c = 0; c < 4; ++c)
+                std::fill_n(&input(batch * kLanes, f.slot, c), std::min<size_t>(kLanes, count - batch * kLanes), value[c]);
             continue;
           }
           for (size_t i = 0; i < count; ++i) {
