@@ -211,6 +211,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   // What the shader computes from uniforms alone, once for the draw (not once per run).
   program.vertex_uniform_values(uniforms, scratch.uniform_values);
   const std::vector<float>& uniform_values = scratch.uniform_values;
+  const auto clamped_size = [&sizes](float size) { return std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max); };
+  const float fixed_size = clamped_size(sizes.fixed);
   const bool one_piece = vertices.size() <= raster::Renderer::kVerticesPerPiece;  // run here, on this thread
   ctx.renderer().for_each_piece(vertices.size(), raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
     const raster::UnitTextureAccess textures(units);  // its sampler cache is one thread's
@@ -299,8 +301,8 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
         c.edge_flag = !vertices.inputs.empty() ? vertices.inputs[first + i].edge_flag
                       : edge_flag_array        ? array_edge_flag(state, vertices.elements[first + i])
                                                : state.current_edge_flag;
-        const float size = sizes.from_shader ? r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane] : sizes.fixed;
-        c.point_size = std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max);
+        c.point_size = sizes.from_shader ? clamped_size(r[static_cast<size_t>(shader::kOutPointSize) * kLanes + lane])
+                                         : fixed_size;
       }
       for (int b = 0; b < batch_count; ++b) {
         const float* lanes = result.data() + static_cast<size_t>(b) * out_floats;
