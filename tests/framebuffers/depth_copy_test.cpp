@@ -30,6 +30,12 @@ TEST(DepthCopy, EveryValueBecomesItsCorrectlyRoundedQuotient) {
     EXPECT_EQ(wrong, 0u) << bits << " bits";
     EXPECT_EQ(std::bit_cast<float>(out.back()), 1.0f);
   }
+  // A count past the vector steps (8, then 5 one at a time).
+  const uint32_t some[13] = {0, 1, 2, 77, 1000, 4095, 65534, 65535, 3, 5, 9, 30000, 65533};
+  uint32_t some_out[13];
+  depth_floats_from_integers(some, some_out, 13, 16);
+  for (int i = 0; i < 13; ++i)
+    EXPECT_EQ(some_out[i], std::bit_cast<uint32_t>(static_cast<float>(some[i] / 65535.0))) << some[i];
   const uint32_t in[3] = {0u, 0x80000000u, 0xffffffffu};
   uint32_t out[3];
   depth_floats_from_integers(in, out, 3, 32);
