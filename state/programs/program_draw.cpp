@@ -119,13 +119,6 @@ void input_fetches(const Context& ctx, const shader::Program& program, AttribSou
 template <int kSize>
 void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elements, size_t count, float* lanes,
                                 size_t batch_floats) {
-  const auto element_at = [&](size_t i, float v[4]) {
-    const size_t element = elements[i];
-    v[0] = v[1] = v[2] = 0.f;
-    v[3] = 1.f;
-    if (element < view.count) std::memcpy(v, view.base + view.stride * element, sizeof(float) * kSize);
-    else std::memcpy(v, view.current, sizeof(float) * 4);
-  };
   // Four vertices at a time (consecutive lanes of one batch, which holds a multiple of four)
   // through a 4x4 transpose: one float at a time, the stores were most of this loop's time. Each
   // element is put together in a register (stored in pieces and loaded whole, it waited for the
@@ -152,8 +145,8 @@ void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elem
     _mm_storeu_ps(out + 3 * kLanes, c3);
   }
   for (; i < count; ++i) {
-    float v[4];
-    element_at(i, v);
+    alignas(16) float v[4];
+    _mm_store_ps(v, element_vector(i));
     float* out = lanes + (i / kLanes) * batch_floats + i % kLanes;
     for (int c = 0; c < 4; ++c) out[c * kLanes] = v[c];
   }
