@@ -1,6 +1,7 @@
 // The fast 2D samplers (8-bit bilinear or nearest texels; a block form alone for depth images)
-// a shader's lookups of one texture unit take, chosen once for a draw (DrawRecord::shader_samplers) rather than by every row of
-// quads that samples it (the choice was 2% of glsl_sprites).
+// a shader's lookups of one texture unit take, chosen once for a draw
+// (DrawRecord::shader_samplers) rather than by every row of quads that samples it (the choice
+// was 2% of glsl_sprites).
 #pragma once
 #include "raster/sampler.h"
 #include "raster/sampler_bilinear8.h"

@@ -1,6 +1,7 @@
 // The shader block's lane helpers (varying_lanes.h, block_depth.h, block_write.h,
-// sampler_bilinear_block.h, the block samplers of sampler_nearest8.h and sampler_depth.h) in three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather
-// instructions) and AVX-512 (16), the same operations per lane in each, so the same values.
+// sampler_bilinear_block.h, the block samplers of sampler_nearest8.h and sampler_depth.h) in
+// three copies: baseline x86-64 (4-lane vectors), AVX2 (8, gather instructions) and AVX-512
+// (16), the same operations per lane in each, so the same values.
 #include <immintrin.h>
 
 #include <cstring>

@@ -35,14 +35,18 @@ namespace depth_copy_detail {
 // rounding, the same in both copies (so the same floats), two at a time in the baseline and eight
 // in the AVX-512 one (glmark2's shadow turns its 800x600 depth map back into texels every frame;
 // written as a loop, -O2 left it one at a time).
+inline void scaled_floats_one_at_a_time(const uint32_t* in, uint32_t* texels, size_t n, double scale) {
+  for (size_t i = 0; i < n; ++i) texels[i] = std::bit_cast<uint32_t>(static_cast<float>(double(int32_t(in[i])) * scale));
+}
 inline void scaled_floats(const uint32_t* in, uint32_t* texels, size_t n, double scale) {
   const __m128d factor = _mm_set1_pd(scale);
   size_t i = 0;
   for (; i + 2 <= n; i += 2) {
     const __m128i d = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(in + i));
-    _mm_storel_epi64(reinterpret_cast<__m128i*>(texels + i), _mm_castps_si128(_mm_cvtpd_ps(_mm_mul_pd(_mm_cvtepi32_pd(d), factor))));
+    const __m128 product = _mm_cvtpd_ps(_mm_mul_pd(_mm_cvtepi32_pd(d), factor));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(texels + i), _mm_castps_si128(product));
   }
-  for (; i < n; ++i) texels[i] = std::bit_cast<uint32_t>(static_cast<float>(double(int32_t(in[i])) * scale));
+  scaled_floats_one_at_a_time(in + i, texels + i, n - i, scale);
 }
 [[gnu::target("avx512f,avx512dq,avx512vl")]] inline void scaled_floats_avx512(const uint32_t* in, uint32_t* texels,
                                                                              size_t n, double scale) {
@@ -54,7 +58,7 @@ inline void scaled_floats(const uint32_t* in, uint32_t* texels, size_t n, double
     const __m512d product = _mm512_maskz_mul_pd(0xFF, _mm512_maskz_cvtepi32_pd(0xFF, d), factor);
     _mm256_storeu_ps(reinterpret_cast<float*>(texels + i), _mm512_maskz_cvtpd_ps(0xFF, product));
   }
-  for (; i < n; ++i) texels[i] = std::bit_cast<uint32_t>(static_cast<float>(double(int32_t(in[i])) * scale));
+  scaled_floats_one_at_a_time(in + i, texels + i, n - i, scale);
 }
 
 }  // namespace depth_copy_detail
