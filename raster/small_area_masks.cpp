@@ -1,5 +1,8 @@
 #include "raster/small_area_masks.h"
 
+#include <immintrin.h>
+
+#include <cstdlib>
 #include <cstring>
 
 #include "raster/raster_limits.h"
@@ -46,11 +49,43 @@ int masks_scalar(const PrimSetup& p, const PixelRect& area, uint8_t (*masks)[kSm
 // Eight quads a vector of 64-bit edge values: the same sums and comparisons as masks_scalar.
 using L8 = int64_t __attribute__((vector_size(64)));
 using M8 = int8_t __attribute__((vector_size(8)));
+using I16 = int32_t __attribute__((vector_size(64)));
+
+// An area within two quads by two from (x0, y0) (a dense mesh's triangle of a few pixels): its 16
+// pixels' edge values in one vector of 32-bit lanes, lane 8 r + 4 q + i for pixel i of quad q of
+// quad row r. Exact when every edge's values there fit 32 bits, which holds near the triangle's
+// vertices but not on an area far from them (a large triangle's corner in a tile, under a
+// scissor): false then, and nothing written.
+__attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) bool masks_of_four_quads(
+    const PrimSetup& p, int x0, int y0, uint8_t (*masks)[kSmallAreaRowBytes]) {
+  constexpr int64_t kLimit = int64_t{1} << 31;
+  const I16 dx = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
+  const I16 dy = {0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3};
+  __mmask16 inside = 0xFFFF;
+  for (const EdgeFunction& e : p.edges) {
+    const int64_t v = edge_at(e, x0, y0), sx = e.a * kSubpixelOne, sy = e.b * kSubpixelOne;
+    if (std::llabs(v) + 3 * (std::llabs(sx) + std::llabs(sy)) >= kLimit) return false;
+    const I16 values = static_cast<int32_t>(v) + dx * static_cast<int32_t>(sx) + dy * static_cast<int32_t>(sy);
+    inside &= _mm512_cmpge_epi32_mask(reinterpret_cast<__m512i>(values), _mm512_setzero_si512());
+  }
+  masks[0][0] = static_cast<uint8_t>(inside & 15);
+  masks[0][1] = static_cast<uint8_t>((inside >> 4) & 15);
+  masks[1][0] = static_cast<uint8_t>((inside >> 8) & 15);
+  masks[1][1] = static_cast<uint8_t>(inside >> 12);
+  return true;
+}
 
 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) int masks_avx512(const PrimSetup& p,
                                                                               const PixelRect& area,
                                                                               uint8_t (*masks)[kSmallAreaRowBytes]) {
   const int x0 = area.x0 & ~1, y0 = area.y0 & ~1, count = count_of(area);
+  if (area.x1 - x0 <= 4 && area.y1 - y0 <= 4 && masks_of_four_quads(p, x0, y0, masks)) {
+    for (int r = 0; r < 2; ++r) {
+      const unsigned rows = row_bits(y0 + 2 * r, area);
+      for (int q = 0; q < 2; ++q) masks[r][q] &= static_cast<uint8_t>(rows & column_bits(x0 + 2 * q, area));
+    }
+    return count;
+  }
   const L8 quad = {0, 1, 2, 3, 4, 5, 6, 7};
   uint64_t columns[2] = {};  // the area's column bits of each quad, a byte each
   for (int q = 0; q < count; ++q) columns[q / 8] |= uint64_t{column_bits(x0 + 2 * q, area)} << (8 * (q % 8));

@@ -74,6 +74,30 @@ TEST(SmallAreaMasks, EveryCopySetsThePixelsInsideTheEdgesAndTheArea) {
   EXPECT_GT(pixels, 150000) << pixels;  // the areas are mostly covered in part, often wholly
 }
 
+// Areas of at most two quads by two (the AVX-512 copy's one-vector case): triangles of a few
+// pixels, whose edge values there fit 32 bits, and corners of triangles thousands of pixels wide,
+// whose do not (the copy falls back to 64-bit lanes).
+TEST(SmallAreaMasks, AreasOfFourQuadsNearAndFarFromTheVertices) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> pos(1000.0, 1040.0), small(-3.0, 3.0), large(-4000.0, 4000.0);
+  std::uniform_int_distribution<int> side(1, 4), start(-2, 2);
+  int pixels = 0, areas = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double cx = pos(rng), cy = pos(rng);
+    auto offset = [&]() { return trial % 2 ? small(rng) : large(rng); };
+    const PrimSetup p = triangle(cx, cy, cx + offset(), cy + offset(), cx + offset(), cy + offset());
+    const int ax = static_cast<int>(cx) + start(rng), ay = static_cast<int>(cy) + start(rng);
+    const PixelRect area = intersect(p.bounds, PixelRect{ax, ay, ax + side(rng), ay + side(rng)});
+    if (area.empty()) continue;
+    const int scalar = covered(p, area, SimdPath::Baseline);
+    EXPECT_EQ(covered(p, area, SimdPath::Best), scalar);
+    pixels += scalar;
+    ++areas;
+  }
+  EXPECT_GT(areas, 10000);
+  EXPECT_GT(pixels, 15000) << pixels;
+}
+
 // A right triangle over a 16x16 area from odd corners (9 quad rows of 9 quads), its slanted side
 // on y = x + 100.25: the pixel centres above it, (dx, dy) from the corner with dy > dx (none lies
 // on a side).
