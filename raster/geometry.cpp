@@ -78,6 +78,9 @@ GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::vecto
         flat_ranges_.emplace_back(v.offset, v.components);
         if (v.back_offset >= 0) flat_ranges_.emplace_back(v.back_offset, v.components);
       }
+    Style front;  // (style_for's for a programmable draw: no fixed-function colours)
+    front.flat = s.flat_shading;
+    shader_fill_params_ = params(front);
   }
 }
 
@@ -420,7 +423,14 @@ bool GeometryStage::fill_window_triangle(const Vertex* const (&w)[3], const Clip
   if (s.cull_face && (front ? s.cull_front : s.cull_back)) return true;
   if (!front || s.polygon_front != PolygonMode::Fill || s.offset_fill) return false;
   if (area == 0) return true;
-  if (setup_triangle(*w[0], *w[1], *w[2], params(style_for(provoking, false)), cached_prim_)) emit(cached_prim_);
+  bool covered;
+  if (shader_) {
+    varying_planes_.back() = Plane{};  // (a point of the draw, from glPolygonMode, set it)
+    covered = setup_triangle(*w[0], *w[1], *w[2], shader_fill_params_, cached_prim_);
+  } else {
+    covered = setup_triangle(*w[0], *w[1], *w[2], params(style_for(provoking, false)), cached_prim_);
+  }
+  if (covered) emit(cached_prim_);
   return true;
 }
 
