@@ -134,6 +134,11 @@ VaryingInterpolator select_varying_interpolator(SimdPath path) {
   return uses_avx2(path) ? &block_lanes_avx2::interpolate : &block_lanes_sse2::interpolate;
 }
 
+QuadVaryingInterpolator select_quad_varying_interpolator(SimdPath path) {
+  if (uses_avx512(path)) return &block_lanes_avx512::interpolate_quads;
+  return uses_avx2(path) ? &block_lanes_avx2::interpolate_quads : &block_lanes_sse2::interpolate_quads;
+}
+
 BlockDepthTest select_block_depth_test(SimdPath path) {
   if (uses_avx512(path)) return &block_lanes_avx512::depth_test_block;
   return uses_avx2(path) ? &block_lanes_avx2::depth_test_block : &block_lanes_sse2::depth_test_block;

@@ -195,7 +195,7 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
 }
 
 // The varyings and 1/w of block k's lanes (unused quads repeat quad 0: derivatives stay finite),
-// each quad's from its own primitive's planes: one pass over all lanes per primitive.
+// each quad's from its own primitive's planes.
 [[gnu::always_inline]] inline void interpolate_block(int nv, const RowBlocks& row, int k, float (*varyings)[kLanes],
                                                    float* w) {
   static const VaryingInterpolator interpolate = select_varying_interpolator(simd_path_from_environment());
@@ -207,24 +207,19 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
     store4(&ox[4 * j], q.ox);
     store4(&oy[4 * j], q.oy);
   }
-  auto run = [&](const PrimSetup& p, float (*out)[kLanes], float* out_w) {
-    interpolate(p.varying_planes, nv, p.inv_w, p.perspective, ox, oy, out, out_w);
-  };
-  run(*quads[0].prim, varyings, w);
-  if (row.prim[k]) return;
-  alignas(64) float other[shader::kMaxVaryingFloats][kLanes], other_w[kLanes];
-  for (int j = 1; j < n; ++j) {
-    const PrimSetup* p = quads[j].prim;
-    bool done = false;
-    for (int i = 0; i < j; ++i) done |= quads[i].prim == p;  // quad 0's came first
-    if (done) continue;
-    run(*p, other, other_w);
-    for (int i = j; i < n; ++i) {
-      if (quads[i].prim != p) continue;
-      for (int v = 0; v < nv; ++v) std::copy_n(&other[v][4 * i], 4, &varyings[v][4 * i]);
-      std::copy_n(&other_w[4 * i], 4, &w[4 * i]);
-    }
+  if (const PrimSetup* p = row.prim[k]) {
+    interpolate(p->varying_planes, nv, p->inv_w, p->perspective, ox, oy, varyings, w);
+    return;
   }
+  static const QuadVaryingInterpolator interpolate_quads = select_quad_varying_interpolator(simd_path_from_environment());
+  QuadPlanes planes;
+  for (int j = 0; j < 4; ++j) {
+    const PrimSetup& p = *quads[j < n ? j : 0].prim;
+    planes.planes[j] = p.varying_planes;
+    planes.inv_w[j] = &p.inv_w;
+    planes.perspective[j] = p.perspective;
+  }
+  interpolate_quads(planes, nv, ox, oy, varyings, w);
 }
 
 // Fills block k of `row` for its quads (after any early tests); returns false when no pixel is

@@ -17,4 +17,19 @@ using VaryingInterpolator = void (*)(const Plane* planes, int count, const Plane
 
 VaryingInterpolator select_varying_interpolator(SimdPath path);
 
+// Four quads of a block, each from its own primitive (a dense mesh's triangles of a pixel or
+// two): lanes 4j to 4j + 3 take quad j's planes.
+struct QuadPlanes {
+  const Plane* planes[4];
+  const Plane* inv_w[4];
+  bool perspective[4];
+};
+
+// What VaryingInterpolator gives each primitive's quads, in one pass over the lanes instead of
+// one per primitive.
+using QuadVaryingInterpolator = void (*)(const QuadPlanes& quads, int count, const float* ox, const float* oy,
+                                         float (*out)[kVaryingLanes], float* w);
+
+QuadVaryingInterpolator select_quad_varying_interpolator(SimdPath path);
+
 }  // namespace pineda::raster
