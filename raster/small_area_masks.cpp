@@ -57,11 +57,13 @@ using I16 = int32_t __attribute__((vector_size(64)));
 // vertices but not on an area far from them (a large triangle's corner in a tile, under a
 // scissor): false then, and nothing written.
 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) bool masks_of_four_quads(
-    const PrimSetup& p, int x0, int y0, uint8_t (*masks)[kSmallAreaRowBytes]) {
+    const PrimSetup& p, const PixelRect& area, int x0, int y0, uint8_t (*masks)[kSmallAreaRowBytes]) {
   constexpr int64_t kLimit = int64_t{1} << 31;
   const I16 dx = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
   const I16 dy = {0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3};
-  __mmask16 inside = 0xFFFF;
+  // The area's pixels: x0 + dx in [x0, x1) and y0 + dy in [y0, y1).
+  const I16 inside_area = (dx >= area.x0 - x0) & (dy >= area.y0 - y0) & (dx < area.x1 - x0) & (dy < area.y1 - y0);
+  __mmask16 inside = _mm512_test_epi32_mask(reinterpret_cast<__m512i>(inside_area), reinterpret_cast<__m512i>(inside_area));
   for (const EdgeFunction& e : p.edges) {
     const int64_t v = edge_at(e, x0, y0), sx = e.a * kSubpixelOne, sy = e.b * kSubpixelOne;
     if (std::llabs(v) + 3 * (std::llabs(sx) + std::llabs(sy)) >= kLimit) return false;
@@ -79,13 +81,7 @@ __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) int masks_avx512(c
                                                                               const PixelRect& area,
                                                                               uint8_t (*masks)[kSmallAreaRowBytes]) {
   const int x0 = area.x0 & ~1, y0 = area.y0 & ~1, count = count_of(area);
-  if (area.x1 - x0 <= 4 && area.y1 - y0 <= 4 && masks_of_four_quads(p, x0, y0, masks)) {
-    for (int r = 0; r < 2; ++r) {
-      const unsigned rows = row_bits(y0 + 2 * r, area);
-      for (int q = 0; q < 2; ++q) masks[r][q] &= static_cast<uint8_t>(rows & column_bits(x0 + 2 * q, area));
-    }
-    return count;
-  }
+  if (area.x1 - x0 <= 4 && area.y1 - y0 <= 4 && masks_of_four_quads(p, area, x0, y0, masks)) return count;
   const L8 quad = {0, 1, 2, 3, 4, 5, 6, 7};
   uint64_t columns[2] = {};  // the area's column bits of each quad, a byte each
   for (int q = 0; q < count; ++q) columns[q / 8] |= uint64_t{column_bits(x0 + 2 * q, area)} << (8 * (q % 8));
