@@ -50,6 +50,25 @@ TEST_F(ArrayElementInputsTest, DisabledArraysGiveTheCurrentValue) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// 19 vertices (a batch of 16 and three more, neither a multiple of four past the first twelve):
+// the disabled array's current value reaches every lane. The strip goes round the viewport's
+// corners, so its last triangles, drawn over the others, hold the last vertices.
+TEST_F(ArrayElementInputsTest, DisabledArraysGiveTheCurrentValueToEveryVertexOfAPartBatch) {
+  const GLfloat corners[4][2] = {{-1.f, -1.f}, {1.f, -1.f}, {-1.f, 1.f}, {1.f, 1.f}};
+  GLfloat strip[19][2];
+  for (int v = 0; v < 19; ++v) {
+    strip[v][0] = corners[v % 4][0];
+    strip[v][1] = corners[v % 4][1];
+  }
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, strip);
+  glEnableVertexAttribArray(0);
+  glDisableVertexAttribArray(3);
+  glVertexAttrib4f(3, 0.f, 0.4f, 0.8f, 1.f);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 19);
+  EXPECT_EQ(count_pixels({0, 102, 204, 255}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // Interleaved in a buffer object (position, then four colour floats; 24-byte stride): a colour
 // array of 3, 1 and 4 components gives (r, g, b, 1), (r, 0, 0, 1) and the four as they are.
 TEST_F(ArrayElementInputsTest, FloatArraysOfEachSizeFromABufferObject) {
