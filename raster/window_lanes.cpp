@@ -1,7 +1,10 @@
 // WindowTransform::prepare_many: vertices in vector lanes, in two copies, baseline x86-64 (its
 // 8-lane vectors are split into SSE2 ones) and AVX-512, both with the operations of prepare()
 // (no FMA, no contraction), so every path gives the same windows.
+#include <immintrin.h>
+
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -16,12 +19,14 @@ namespace pineda::raster {
 constexpr int kWindowLanes = 8;
 
 namespace window_lanes_baseline {
+constexpr bool kAvx512 = false;
 #include "raster/window_lanes_body.inc"
 }  // namespace window_lanes_baseline
 
 #pragma GCC push_options
 #pragma GCC target("avx512f,avx512dq,avx512vl")
 namespace window_lanes_avx512 {
+constexpr bool kAvx512 = kCopiesHaveTheirTargets;  // (clang ignores the pragma: baseline code there)
 #include "raster/window_lanes_body.inc"
 }  // namespace window_lanes_avx512
 #pragma GCC pop_options
