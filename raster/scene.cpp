@@ -97,7 +97,8 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
   // A triangle inside one tile goes to it untested: the test over its bounds almost never fails
   // (a dense mesh's triangles: it was 2.6% of glsl_skinned), and one that covers no pixel centre
   // there gives no fragment.
-  const bool one_tile = (r.x0 >> kTileShift) == ((r.x1 - 1) >> kTileShift) && (r.y0 >> kTileShift) == ((r.y1 - 1) >> kTileShift);
+  const bool one_tile =
+      (r.x0 >> kTileShift) == ((r.x1 - 1) >> kTileShift) && (r.y0 >> kTileShift) == ((r.y1 - 1) >> kTileShift);
   for (int ty = r.y0 >> kTileShift; ty <= (r.y1 - 1) >> kTileShift; ++ty)
     for (int tx = r.x0 >> kTileShift; tx <= (r.x1 - 1) >> kTileShift; ++tx) {
       // Coverage tests at pixel centres; a multisampled triangle may cover only samples of a tile.
