@@ -57,6 +57,13 @@ TEST(Blend8, OverEqualsTheFloatBlendEverywhere) {
             0);
 }
 
+// The lanes' form (fill routines, shader block writes): two channels per 16-bit multiply.
+TEST(Blend8, OverInHalvesEqualsTheFloatBlendEverywhere) {
+  EXPECT_EQ(differences(blending(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha),
+                        [](U4 s, U4 d) { return blend_over_halves(s, d); }),
+            0);
+}
+
 TEST(Blend8, AddScaledEqualsTheFloatBlendEverywhere) {
   EXPECT_EQ(differences(blending(BlendFactor::SrcAlpha, BlendFactor::One),
                         [](U4 s, U4 d) { return blend_add_scaled8(s, d); }),
