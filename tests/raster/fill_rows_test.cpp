@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <memory>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -45,6 +46,9 @@ struct Config {
   // and exactly one on every other triangle, as in a copy of the framebuffer) anywhere on it.
   int texture_width = 16, texture_height = 16;
   bool pixel_mapped = false;
+  // Texture coordinates far outside the texture (1e30, 1e10), q through zero (inf and NaN
+  // quotients) and NaN attributes on some triangles.
+  bool wild_coordinates = false;
 };
 
 // A random texel as a texture of the format stores it (texture_format.cpp's reduction: L in R, G
@@ -117,6 +121,14 @@ std::vector<PrimSetup> random_triangles(const Config& c, int w, int h, std::mt19
       // s, t, q: a few repeats of the texture across a triangle, q near 1
       for (int k = 4; k < 6; ++k) vert.attr[k] = static_cast<float>(unit(rng) * 5.0 - 2.0);
       vert.attr[6] = static_cast<float>(0.5 + unit(rng));
+      if (c.wild_coordinates) {
+        static constexpr float kWild[] = {1e30f, -1e30f, 1e10f, -3e9f, 0.f, -0.f, 7.5f};
+        const size_t kind = prims.size() % 4;
+        for (int k = 4; k < 6; ++k) vert.attr[k] = kWild[rng() % std::size(kWild)];
+        if (kind == 1) vert.attr[6] = static_cast<float>(unit(rng) - 0.5);  // q changes sign inside
+        if (kind == 2) vert.attr[4 + rng() % 3] = std::numeric_limits<float>::quiet_NaN();
+        if (kind == 3) vert.attr[6] = 0.f;
+      }
       if (c.pixel_mapped) {
         vert.attr[4] = static_cast<float>((s0 + vert.fx * scale) / c.texture_width);
         vert.attr[5] = static_cast<float>((t0 + vert.fy * scale) / c.texture_height);
@@ -332,6 +344,17 @@ TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
   c.mask_alpha = true;
   c.depth = true;
   expect_same_as_generic(c, "textured, flat, BGRA, alpha masked");
+}
+
+// Coordinates no texture lookup can honour still read defined texels, the same on every path.
+TEST(FillRows, WildTextureCoordinatesMatchTheGenericRoutine) {
+  Config c;
+  c.textured = true;
+  c.wild_coordinates = true;
+  c.perspective = true;
+  expect_same_as_generic_each_wrap(c, "wild coordinates, rows");
+  c.mipmapped = true;
+  expect_same_as_generic_each_wrap(c, "wild coordinates, mipmapped");
 }
 
 // SRC_ALPHA / ONE and ONE / ONE, untextured and MODULATEd (a luminance texture: glblur's blur).
