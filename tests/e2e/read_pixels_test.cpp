@@ -235,3 +235,56 @@ TEST_F(ReadPixelsTest, PackSwapBytes) {
 
 }  // namespace
 }  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// The byte formats read without conversion (state/pixels/color_byte_reads.h): every byte of
+// the client image, from a surface of distinct pixels, under each pack layout, with a region
+// partly outside the surface (its pixels there, row padding and skips left untouched).
+TEST_F(ReadPixelsTest, ByteFormatsReadEveryPixelUnderEveryPackLayout) {
+  const int w = width(), h = height();
+  std::vector<uint8_t> drawn(size_t(w) * h * 4);
+  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = uint8_t(i * 37 + (i >> 7) * 11);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  pixel_projection();
+  glRasterPos2i(0, 0);
+  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  struct Format {
+    GLenum format;
+    int order[4];  // the drawn component each stored byte holds
+    int n;
+  };
+  const Format formats[] = {{GL_RGBA, {0, 1, 2, 3}, 4}, {GL_BGRA, {2, 1, 0, 3}, 4}, {GL_RGB, {0, 1, 2, 0}, 3},
+                            {GL_BGR, {2, 1, 0, 0}, 3}};
+  const int x = -3, y = 5, rw = w + 2, rh = h - 9;  // rows y..y+rh-1, columns from -3 past the right edge
+  for (const Format& f : formats)
+    for (int alignment : {1, 4, 8})
+      for (int row_length : {0, rw + 5})
+        for (int skip : {0, 3}) {
+          glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+          glPixelStorei(GL_PACK_ROW_LENGTH, row_length);
+          glPixelStorei(GL_PACK_SKIP_PIXELS, skip);
+          glPixelStorei(GL_PACK_SKIP_ROWS, skip);
+          const int length = row_length ? row_length : rw;
+          const size_t stride = (size_t(length) * f.n + alignment - 1) / alignment * alignment;
+          const size_t offset = size_t(skip) * stride + size_t(skip) * f.n;
+          std::vector<uint8_t> out(offset + stride * rh + 64, 0xEE);
+          glReadPixels(x, y, rw, rh, f.format, GL_UNSIGNED_BYTE, out.data());
+          ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+          std::vector<uint8_t> want(out.size(), 0xEE);
+          for (int row = 0; row < rh; ++row)
+            for (int col = 0; col < rw; ++col) {
+              const int sx = x + col, sy = y + row;
+              if (sx < 0 || sx >= w || sy < 0 || sy >= h) continue;
+              for (int c = 0; c < f.n; ++c)
+                want[offset + stride * row + size_t(col) * f.n + c] = drawn[(size_t(sy) * w + sx) * 4 + f.order[c]];
+            }
+          ASSERT_EQ(out, want) << std::hex << "format " << f.format << std::dec << " alignment " << alignment
+                               << " row length " << row_length << " skip " << skip;
+        }
+}
+
+}  // namespace
+}  // namespace pineda::test

@@ -1,0 +1,66 @@
+#include "state/pixels/color_byte_reads.h"
+
+#include <GL/glext.h>
+
+#include <cstring>
+
+namespace pineda::gl {
+namespace {
+
+// A pixel's four bytes as one little-endian word, red and blue exchanged.
+inline uint32_t swap_red_blue(uint32_t p) { return (p & 0xff00ff00u) | ((p >> 16) & 0xffu) | ((p & 0xffu) << 16); }
+
+// One row of n pixels: kSwap exchanges red and blue, kBytes (4 or 3) of each pixel stored.
+template <bool kSwap, int kBytes>
+void copy_row(const uint8_t* src, uint8_t* dst, int n, uint32_t alpha) {
+  auto pixel = [&](int i) {
+    uint32_t p;
+    std::memcpy(&p, src + 4 * static_cast<size_t>(i), 4);
+    if constexpr (kSwap) p = swap_red_blue(p);
+    return p | alpha;
+  };
+  int i = 0;
+  if constexpr (kBytes == 3) {  // four pixels' twelve bytes as three words
+    for (; i + 4 <= n; i += 4) {
+      const uint32_t p0 = pixel(i), p1 = pixel(i + 1), p2 = pixel(i + 2), p3 = pixel(i + 3);
+      const uint32_t words[3] = {(p0 & 0xffffffu) | (p1 << 24), ((p1 >> 8) & 0xffffu) | (p2 << 16),
+                                 ((p2 >> 16) & 0xffu) | (p3 << 8)};
+      std::memcpy(dst + 3 * static_cast<size_t>(i), words, sizeof words);
+    }
+  }
+  for (; i < n; ++i) {
+    const uint32_t p = pixel(i);
+    uint8_t* out = dst + kBytes * static_cast<size_t>(i);
+    if constexpr (kBytes == 4) {
+      std::memcpy(out, &p, 4);
+    } else {
+      out[0] = static_cast<uint8_t>(p);
+      out[1] = static_cast<uint8_t>(p >> 8);
+      out[2] = static_cast<uint8_t>(p >> 16);
+    }
+  }
+}
+
+}  // namespace
+
+bool reads_color_bytes(const raster::ColorBuffer& cb, GLenum format, GLenum type) {
+  // A reduced buffer (raster/color_reduction.h) reads some components as constants.
+  return cb.base && !cb.reduction.active && type == GL_UNSIGNED_BYTE &&
+         (format == GL_RGBA || format == GL_BGRA || format == GL_RGB || format == GL_BGR);
+}
+
+void read_color_bytes(const raster::ColorBuffer& cb, bool opaque, GLenum format, int x0, int x1, int y0, int y1,
+                      uint8_t* first, size_t row_stride) {
+  if (x0 >= x1) return;
+  const bool stored_bgra = cb.format == raster::ColorFormat::BGRA8;
+  const bool wants_bgr = format == GL_BGRA || format == GL_BGR;
+  const bool swap = stored_bgra != wants_bgr;
+  const bool three = format == GL_RGB || format == GL_BGR;
+  const uint32_t alpha = opaque ? 0xff000000u : 0u;
+  auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);
+  for (int y = y0; y < y1; ++y)
+    copy(cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0), first + row_stride * static_cast<size_t>(y - y0),
+         x1 - x0, alpha);
+}
+
+}  // namespace pineda::gl
