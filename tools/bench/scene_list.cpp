@@ -13,6 +13,8 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
       {"state_changes", "6144 one-quad draw calls changing colour, blend, depth func, texture", createStateChanges},
       {"copy_blur", "blur by glCopyTexSubImage2D of the frame, blended back shifted, 4 times a frame", createCopyBlur},
       {"read_pixels", "a smooth-shaded frame read back by glReadPixels as GL_RGBA and as GL_RGB bytes", createReadPixels},
+      {"texture_upload", "two 512x512 textures given new texels by glTexSubImage2D every frame (RGBA bytes, BGRA 8_8_8_8_REV)",
+       createTextureUpload},
       {"wireframe", "a 64x64 height field as 130 line strips and 4225 two-pixel points, depth test", createWireframe},
       {"stencil_reflection", "a mirror through the stencil buffer: 24 lit cubes drawn reflected, blended floor, upright",
        createStencilReflection},
