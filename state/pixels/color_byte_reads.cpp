@@ -4,11 +4,10 @@
 
 #include <cstring>
 
+#include "state/pixels/rgba8_rows.h"
+
 namespace pineda::gl {
 namespace {
-
-// A pixel's four bytes as one little-endian word, red and blue exchanged.
-inline uint32_t swap_red_blue(uint32_t p) { return (p & 0xff00ff00u) | ((p >> 16) & 0xffu) | ((p & 0xffu) << 16); }
 
 // One row of n pixels: kSwap exchanges red and blue, kBytes (4 or 3) of each pixel stored.
 template <bool kSwap, int kBytes>

@@ -65,7 +65,8 @@ ColorImageReader::ColorImageReader(const Context& ctx, int width, GLenum format,
       format_(format),
       type_(type),
       image_(ctx.unpack, width, format, type, pixels),
-      transfer_(!color_transfer_is_identity(ctx.pixel_mode)) {}
+      transfer_(!color_transfer_is_identity(ctx.pixel_mode)),
+      rgba8_(rgba8_source(format, type, ctx.unpack.swap_bytes)) {}
 
 void ColorImageReader::read(int i, int64_t j, float rgba[4]) const {
   if (format_ == GL_COLOR_INDEX) return index_to_rgba(ctx_.pixel_mode, ctx_.pixel_maps, image_.index(i, j), rgba);
@@ -74,9 +75,11 @@ void ColorImageReader::read(int i, int64_t j, float rgba[4]) const {
   if (transfer_) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, rgba);
 }
 
-const uint8_t* ColorImageReader::rgba8_row(int64_t j) const {
-  if (format_ != GL_RGBA || type_ != GL_UNSIGNED_BYTE || transfer_) return nullptr;  // SWAP_BYTES: single bytes
-  return image_.row(j);
+bool ColorImageReader::rgba8_texels(int64_t j, int first, int count, bool opaque, uint32_t* out) const {
+  if (transfer_ || !rgba8_.bytes) return false;
+  rgba8_row_texels(rgba8_, image_.row(j) + static_cast<size_t>(first) * static_cast<size_t>(rgba8_.bytes), count, opaque,
+                   out);
+  return true;
 }
 
 std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,

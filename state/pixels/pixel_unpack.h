@@ -10,6 +10,7 @@
 #include "state/pixels/bitmap_layout.h"
 #include "state/context.h"
 #include "state/pixels/pixel_format.h"
+#include "state/pixels/rgba8_rows.h"
 
 namespace pineda {
 
@@ -44,15 +45,17 @@ class ColorImageReader {
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
   // Pixel i of row j as RGBA in [0, 1].
   void read(int i, int64_t j, float rgba[4]) const;
-  // Row j as RGBA8 bytes when the image is GL_RGBA / GL_UNSIGNED_BYTE and no pixel transfer
-  // applies, so that read() would give byte / 255 exactly; null otherwise.
-  const uint8_t* rgba8_row(int64_t j) const;
+  // Pixels first..first + count - 1 of row j as RGBA8 texels (rgba8_rows.h; `opaque`: alpha
+  // 255), when the image holds RGBA8 in a way rgba8_source takes and no pixel transfer applies,
+  // so that read() would give each byte / 255 exactly; false, with nothing written, otherwise.
+  bool rgba8_texels(int64_t j, int first, int count, bool opaque, uint32_t* out) const;
 
  private:
   const Context& ctx_;
   GLenum format_, type_;
   ClientImage image_;
   bool transfer_;
+  Rgba8Source rgba8_;
 };
 
 // RGBA per pixel, bottom row first; colour indices go through the index maps. Pixel transfer

@@ -1,6 +1,7 @@
-// RGBA / UNSIGNED_BYTE images into RGBA8 textures are copied row by row (no per-texel
-// conversion): every byte value, unpack row length, skips and alignment, borders, and the
-// per-texel path whenever pixel transfer or a smaller format changes the values.
+// RGBA8 client images (bytes and 8_8_8_8 words) into RGBA8 and RGB8 textures are copied row
+// by row (no per-texel conversion): every byte value, every layout, unpack row length, skips
+// and alignment, borders, and the per-texel path whenever pixel transfer or a smaller format
+// changes the values.
 #include <cstdint>
 #include <vector>
 
@@ -80,6 +81,55 @@ TEST_F(TexImageRgba8RowsTest, PixelTransferAndSmallerFormatsStillConvert) {
   EXPECT_EQ(stored_level(1, 1), (std::vector<uint8_t>{204, 102, 51, 255}));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, (const uint8_t[4]){200, 100, 50, 7});
   EXPECT_EQ(stored_level(1, 1), (std::vector<uint8_t>{200, 100, 50, 255}));  // no alpha: reads 1
+}
+
+// Every client layout of RGBA8 that is read without conversion (state/pixels/rgba8_rows.h),
+// into RGBA8 and RGB8 levels: each texel as GL 2.1 3.6.4 and table 3.11 unpack it. A width of 7
+// takes both the four-pixel steps and the tail of the three-byte rows.
+TEST_F(TexImageRgba8RowsTest, ByteAndWordLayoutsAreStoredAsUnpacked) {
+  struct Layout {
+    GLenum format, type;
+    bool swap;
+  };
+  const Layout layouts[] = {{GL_RGBA, GL_UNSIGNED_BYTE, false},
+                            {GL_BGRA, GL_UNSIGNED_BYTE, false},
+                            {GL_RGB, GL_UNSIGNED_BYTE, false},
+                            {GL_BGR, GL_UNSIGNED_BYTE, true},
+                            {GL_RGBA, GL_UNSIGNED_INT_8_8_8_8_REV, false},
+                            {GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, false},
+                            {GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV, true},
+                            {GL_RGBA, GL_UNSIGNED_INT_8_8_8_8, false},
+                            {GL_BGRA, GL_UNSIGNED_INT_8_8_8_8, true}};
+  constexpr int kWidth = 7, kHeight = 3;
+  std::vector<uint8_t> image(kWidth * kHeight * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = uint8_t(i * 29 + 3);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, 1);
+  for (const Layout& l : layouts)
+    for (GLenum internal : {GL_RGBA8, GL_RGB8}) {
+      const int n = l.format == GL_RGB || l.format == GL_BGR ? 3 : 4;
+      glPixelStorei(GL_UNPACK_SWAP_BYTES, l.swap);
+      glTexImage2D(GL_TEXTURE_2D, 0, internal, kWidth, kHeight, 0, l.format, l.type, image.data());
+      ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+      std::vector<uint8_t> want;
+      for (int p = 0; p < kWidth * kHeight; ++p) {
+        uint8_t c[4] = {0, 0, 0, 255};  // the format's components, in its order
+        const uint8_t* src = &image[size_t(p) * n];
+        if (l.type == GL_UNSIGNED_BYTE) {
+          for (int k = 0; k < n; ++k) c[k] = src[k];
+        } else {
+          uint32_t word = src[0] | uint32_t{src[1]} << 8 | uint32_t{src[2]} << 16 | uint32_t{src[3]} << 24;
+          if (l.swap) word = __builtin_bswap32(word);
+          for (int k = 0; k < 4; ++k)
+            c[k] = uint8_t(word >> (l.type == GL_UNSIGNED_INT_8_8_8_8_REV ? 8 * k : 24 - 8 * k));
+        }
+        const bool bgr = l.format == GL_BGRA || l.format == GL_BGR;
+        want.insert(want.end(), {bgr ? c[2] : c[0], c[1], bgr ? c[0] : c[2], internal == GL_RGB8 ? uint8_t(255) : c[3]});
+      }
+      EXPECT_EQ(stored_level(kWidth, kHeight), want)
+          << std::hex << "format " << l.format << " type " << l.type << " swap " << l.swap << " internal " << internal;
+    }
+  glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
 }
 
 }  // namespace
