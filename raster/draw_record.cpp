@@ -46,6 +46,7 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   for (int u = 0; u < kMaxTextureUnits; ++u)
     if (d.state.texture_units[u].image) d.units[d.num_units++] = static_cast<uint8_t>(u);
   bool bilinear_first = false;  // unit 0 samples with select_bilinear8_sampler
+  bool fast_first = false;      // ... or with select_nearest8_sampler
   d.planes = kColorPlanes;
   for (int k = 0; k < d.num_units; ++k) {
     d.tex_plane[k] = static_cast<uint8_t>(d.planes);
@@ -53,6 +54,7 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
     d.fast_sampler[k] = select_bilinear8_sampler(*unit.image, unit.sampler, path);
     if (k == 0) bilinear_first = d.fast_sampler[0] != nullptr;
     if (!d.fast_sampler[k]) d.fast_sampler[k] = select_nearest8_sampler(*unit.image, unit.sampler);
+    if (k == 0) fast_first = d.fast_sampler[0] != nullptr;
     d.planes += kTexPlanesPerUnit;
     if (!d.state.texture_units[d.units[k]].reads_r()) continue;
     d.r_plane[k] = static_cast<int8_t>(d.planes);
@@ -61,14 +63,20 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   if (d.num_units == 1) {
     const TextureUnit& unit = d.state.texture_units[d.units[0]];
     const TexBaseFormat format = unit.image->texenv_format();
-    // (The fill routines' row samplers filter bilinearly.) Luminance and intensity multiply
-    // channel by channel only as their own texels (a swizzled texture's are RGBA); ALPHA's
-    // texels (0, 0, 0, A) never do.
+    // Luminance and intensity multiply or replace channel by channel only as their own texels (a
+    // swizzled texture's are RGBA); ALPHA's texels (0, 0, 0, A) never do. (REPLACE of the
+    // channels a format has is MODULATE's selection of them: apply_tex_env.)
     const bool rgb = format == TexBaseFormat::RGBA || format == TexBaseFormat::RGB;
-    d.modulate_in_lanes = bilinear_first && unit.env_mode == TexEnvMode::Modulate &&
-                          (rgb || (format == unit.image->base_format && format != TexBaseFormat::Alpha));
+    const bool in_lanes_env = unit.env_mode == TexEnvMode::Modulate || unit.env_mode == TexEnvMode::Replace;
+    d.texture_in_lanes = fast_first && in_lanes_env &&
+                         (rgb || (format == unit.image->base_format && format != TexBaseFormat::Alpha));
+    d.replaces_in_lanes = d.texture_in_lanes && unit.env_mode == TexEnvMode::Replace;
+    d.bilinear_in_lanes = d.texture_in_lanes && bilinear_first;
     d.modulated_channels = format == TexBaseFormat::RGB || format == TexBaseFormat::Luminance ? 3 : 4;
-    d.sample_rows = d.modulate_in_lanes && unit.sampler.min_filter == TexFilter::Linear;
+    // (The fill routines' row samplers filter bilinearly.)
+    d.sample_rows = d.bilinear_in_lanes && unit.sampler.min_filter == TexFilter::Linear;
+    auto row_wrap = [](TexWrap w) { return w == TexWrap::Repeat || w == TexWrap::ClampToEdge || w == TexWrap::Clamp; };
+    d.nearest_rows = d.texture_in_lanes && !bilinear_first && row_wrap(unit.sampler.wrap_s) && row_wrap(unit.sampler.wrap_t);
   }
   if (state.color_sum) {
     d.secondary_plane = d.planes;
@@ -110,7 +118,7 @@ DrawRecord make_draw_record(const DrawState& draw_state, const Framebuffer& fb, 
   if (state.shader) {  // the fragment shader replaces texturing, the colour sum and fog
     d.planes = 0;
     d.secondary_plane = d.fog_plane = -1;
-    d.modulate_in_lanes = d.sample_rows = false;
+    d.texture_in_lanes = d.replaces_in_lanes = d.bilinear_in_lanes = d.sample_rows = d.nearest_rows = false;
     d.key.extras = state.line_stipple.enabled || state.polygon_stipple.enabled || state.point_smooth ||
                    state.line_smooth || fades_points;
     d.routine = shade_program_quads;

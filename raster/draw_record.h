@@ -60,14 +60,19 @@ struct DrawRecord {
     bool writes_depth = false;
     bool uses_discard = false;
   } shader_facts;
-  // One unit, its fast sampler, MODULATE of a texture whose format's colour is RGB or L and alpha
-  // A, I or none: the quad is textured in lanes, channel by channel (a luminance texture's
-  // texels hold L in R, G and B; an intensity one's in all four).
-  bool modulate_in_lanes = false;
+  // One unit, its fast sampler (bilinear or nearest), MODULATE or REPLACE of a texture whose
+  // format's colour is RGB or L and alpha A, I or none: the quad is textured in lanes, channel by
+  // channel (a luminance texture's texels hold L in R, G and B; an intensity one's in all four).
+  bool texture_in_lanes = false;
+  bool replaces_in_lanes = false;  // REPLACE: the texel's channels replace the fragment's
+  bool bilinear_in_lanes = false;  // the fast sampler is the bilinear one (sampler_bilinear8.h)
   int modulated_channels = 4;  // 3: the texture has no alpha, the fragment's stays
-  // modulate_in_lanes without mipmaps (LINEAR minification): no level of detail, so the fill
+  // bilinear_in_lanes without mipmaps (LINEAR minification): no level of detail, so the fill
   // routines sample whole rows of 8 pixels (bilinear8_lanes.inc) instead of quads.
   bool sample_rows = false;
+  // texture_in_lanes by the nearest sampler with REPEAT or CLAMP(_TO_EDGE) wraps: the fill
+  // routines take whole rows' texels (nearest8_lanes.inc) instead of quads'.
+  bool nearest_rows = false;
   int planes = kColorPlanes;                      // interpolated planes
   int secondary_plane = -1;                       // first secondary colour plane, -1 when unused
   int fog_plane = -1;                             // the fog coordinate's plane, -1 when unused

@@ -88,7 +88,7 @@ QuadRoutine pick(Blend8 blend, bool textured, int bits) {
 QuadRoutine select_fill_routine(const DrawRecord& d, const Framebuffer& fb, SimdPath path) {
   const FragmentKey& k = d.key;
   if (d.state.shader || k.extras || d.state.alpha_test) return nullptr;
-  if (k.textured && (!d.modulate_in_lanes || k.stencil || k.count_samples)) return nullptr;
+  if (k.textured && (!d.texture_in_lanes || k.stencil || k.count_samples)) return nullptr;
   // Other blends and logic ops; the additive ones have no routines with stencil or a sample count.
   const Blend8 blend = k.blend ? k.blend8 : Blend8::Other;
   if (k.blend && blend != Blend8::Over && blend != Blend8::AddScaled && blend != Blend8::Add) return nullptr;

@@ -28,13 +28,13 @@ template <bool kTex, bool kFlat, bool kExtras>
   }
 
   if constexpr (kTex) {
-    if (d.modulate_in_lanes) {
+    if (d.texture_in_lanes) {
       const TextureUnit& unit = d.state.texture_units[d.units[0]];
       const Plane* tp = &p.planes[d.tex_plane[0]];
       const F4 q = eval(tp[2], ox, oy);
       F4 texel[4];
       d.fast_sampler[0](*unit.image, unit.sampler, eval(tp[0], ox, oy) / q, eval(tp[1], ox, oy) / q, texel);
-      for (int c = 0; c < d.modulated_channels; ++c) col.c[c] *= texel[c];
+      for (int c = 0; c < d.modulated_channels; ++c) col.c[c] = d.replaces_in_lanes ? texel[c] : col.c[c] * texel[c];
       if constexpr (kExtras) apply_color_sum_and_fog(d, p, ox, oy, col.c);
       return col;
     }

@@ -2,8 +2,8 @@
 // depth and stencil buffers and sample counts, bit for bit, on every SIMD copy, for random
 // triangles over odd-sized framebuffers, with depth functions, stencil functions and operations
 // (front and back faces), blending (over and the two additive blends), colour masks, flat and
-// perspective colours, both colour orders, and MODULATE of an RGBA, RGB, luminance,
-// luminance-alpha or intensity texture (bilinear, mipmapped or not).
+// perspective colours, both colour orders, and MODULATE or REPLACE of an RGBA, RGB, luminance,
+// luminance-alpha or intensity texture (bilinear, mipmapped or not, or nearest).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,7 +37,9 @@ struct Config {
   ColorFormat format = ColorFormat::RGBA8;
   bool stencil = false;
   StencilFace front, back;  // back: every other triangle faces back
-  bool textured = false;  // unit 0: MODULATE, bilinear
+  bool textured = false;  // unit 0: MODULATE (or `env`), bilinear (or nearest)
+  TexEnvMode env = TexEnvMode::Modulate;
+  bool nearest = false;  // NEAREST minification and magnification (not mipmapped)
   TexWrap wrap_s = TexWrap::Repeat, wrap_t = TexWrap::ClampToEdge;
   bool mipmapped = false;
   TexFilter mip_filter = TexFilter::LinearMipmapLinear;  // the minification filter when mipmapped
@@ -168,19 +170,20 @@ Buffers render(const Config& c, const std::vector<PrimSetup>& prims, int w, int 
   if (c.textured) {
     TextureUnit& unit = s.texture_units[0];
     unit.image = random_texture(c);
-    unit.sampler.min_filter = c.mipmapped ? c.mip_filter : TexFilter::Linear;
-    unit.sampler.mag_filter = TexFilter::Linear;
+    unit.sampler.min_filter = c.mipmapped ? c.mip_filter : c.nearest ? TexFilter::Nearest : TexFilter::Linear;
+    unit.sampler.mag_filter = c.nearest ? TexFilter::Nearest : TexFilter::Linear;
+    unit.env_mode = c.env;
     unit.sampler.wrap_s = c.wrap_s;
     unit.sampler.wrap_t = c.wrap_t;
   }
   DrawRecord d = make_draw_record(s, target.fb, path);
-  EXPECT_EQ(d.sample_rows, c.textured && !c.mipmapped);
+  EXPECT_EQ(d.sample_rows, c.textured && !c.mipmapped && !c.nearest);
   const QuadRoutine fill_routine = select_fill_routine(d, target.fb, path);
   EXPECT_NE(fill_routine, nullptr);
   EXPECT_EQ(d.routine, fill_routine) << "make_draw_record takes the fill routine";
   if (generic) {  // the texture environment pixel by pixel too (apply_unit_env)
     d.routine = select_quad_routine(d.key, SimdPath::Baseline);
-    d.modulate_in_lanes = false;
+    d.texture_in_lanes = false;
   }
   Buffers out;
   for (const PrimSetup& prim : prims)
@@ -346,6 +349,48 @@ TEST(FillRows, ModulatedTexturesMatchTheGenericRoutine) {
   expect_same_as_generic(c, "textured, flat, BGRA, alpha masked");
 }
 
+// NEAREST filtering (the nearest sampler per quad) and REPLACE, of every base format the fill
+// routines take.
+TEST(FillRows, NearestAndReplacedTexturesMatchTheGenericRoutine) {
+  Config c;
+  c.textured = true;
+  c.nearest = true;
+  c.perspective = true;
+  expect_same_as_generic_each_wrap(c, "nearest");
+  // Rows of 8 for REPEAT and CLAMP(_TO_EDGE) (DrawRecord::nearest_rows), quads for MIRRORED_REPEAT.
+  for (const TexWrap wrap : {TexWrap::MirroredRepeat, TexWrap::Clamp}) {
+    Config w = c;
+    w.wrap_s = wrap;
+    expect_same_as_generic(w, "nearest, wrap " + std::to_string(static_cast<int>(wrap)));
+  }
+  Config wild = c;
+  wild.wild_coordinates = true;
+  expect_same_as_generic_each_wrap(wild, "nearest, wild coordinates");
+  Config mapped = c;  // texel centres near pixel centres, as a copy of the framebuffer
+  mapped.pixel_mapped = true;
+  mapped.texture_width = 64;
+  mapped.texture_height = 32;
+  expect_same_as_generic_each_wrap(mapped, "nearest, pixel mapped");
+  c.env = TexEnvMode::Replace;
+  expect_same_as_generic_each_wrap(c, "nearest, replace");
+  c.nearest = false;
+  expect_same_as_generic(c, "bilinear rows, replace");
+  c.mipmapped = true;
+  expect_same_as_generic(c, "mipmapped, replace");
+  c.mipmapped = false;
+  c.nearest = true;
+  for (const TexBaseFormat format : {TexBaseFormat::RGB, TexBaseFormat::Luminance, TexBaseFormat::LuminanceAlpha,
+                                     TexBaseFormat::Intensity}) {
+    c.texture_format = format;
+    c.blend = format == TexBaseFormat::LuminanceAlpha;
+    expect_same_as_generic(c, "nearest, replace, format " + std::to_string(static_cast<int>(format)));
+  }
+  c.flat = true;
+  c.format = ColorFormat::BGRA8;
+  c.mask_alpha = true;
+  expect_same_as_generic(c, "nearest, replace, flat, BGRA, alpha masked");
+}
+
 // Coordinates no texture lookup can honour still read defined texels, the same on every path.
 TEST(FillRows, WildTextureCoordinatesMatchTheGenericRoutine) {
   Config c;
@@ -435,8 +480,16 @@ TEST(FillRows, OtherKeysTakeTheGenericRoutine) {
   s = test::state_for(8, 8);
   s.texture_units[0].image = random_texture(Config{});
   s.texture_units[0].sampler.min_filter = TexFilter::Linear;  // the fast sampler's
-  s.texture_units[0].env_mode = TexEnvMode::Replace;  // only MODULATE
+  s.texture_units[0].env_mode = TexEnvMode::Decal;  // only MODULATE and REPLACE
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.texture_units[0].env_mode = TexEnvMode::Replace;
+  EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.texture_units[0].sampler.mag_filter = TexFilter::Nearest;  // no fast sampler: LINEAR and NEAREST mixed
+  EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.texture_units[0].sampler.min_filter = TexFilter::Nearest;  // the nearest sampler
+  EXPECT_NE(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);
+  s.texture_units[0].sampler.min_filter = TexFilter::Linear;
+  s.texture_units[0].sampler.mag_filter = TexFilter::Linear;
   s.texture_units[0].env_mode = TexEnvMode::Modulate;
   s.stencil_test = true;  // textured: not with stencil
   EXPECT_EQ(select_fill_routine(make_draw_record(s, target.fb), target.fb), nullptr);

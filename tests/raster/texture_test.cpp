@@ -146,21 +146,23 @@ TEST(Texture, EnvironmentModesAndBaseFormats) {
     uint32_t texel;
     std::array<int, 4> expect;
   };
-  // Fragment colour (0.4, 0.6, 0.8, 0.5); env colour (1, 0, 0.2, 0.6).
+  // Fragment colour (0.4, 0.6, 0.8, 0.5); env colour (1, 0, 0.2, 0.6). The texels are stored
+  // as texture_format.cpp stores them (L in R, G and B, I in all four): REPLACE and MODULATE of
+  // these formats read them channel by channel (DrawRecord::texture_in_lanes).
   const Case cases[] = {
       {TexEnvMode::Replace, TexBaseFormat::RGBA, rgba(255, 0, 51, 102), {255, 0, 51, 102}},
       {TexEnvMode::Replace, TexBaseFormat::RGB, rgba(255, 0, 51, 102), {255, 0, 51, 128}},
       {TexEnvMode::Replace, TexBaseFormat::Alpha, rgba(255, 0, 51, 102), {102, 153, 204, 102}},
-      {TexEnvMode::Replace, TexBaseFormat::Luminance, rgba(51, 0, 0, 0), {51, 51, 51, 128}},
-      {TexEnvMode::Replace, TexBaseFormat::Intensity, rgba(51, 0, 0, 0), {51, 51, 51, 51}},
+      {TexEnvMode::Replace, TexBaseFormat::Luminance, rgba(51, 51, 51, 255), {51, 51, 51, 128}},
+      {TexEnvMode::Replace, TexBaseFormat::Intensity, rgba(51, 51, 51, 51), {51, 51, 51, 51}},
       {TexEnvMode::Modulate, TexBaseFormat::RGBA, rgba(255, 128, 0, 51), {102, 77, 0, 26}},
-      {TexEnvMode::Modulate, TexBaseFormat::LuminanceAlpha, rgba(128, 0, 0, 255), {51, 77, 102, 128}},
+      {TexEnvMode::Modulate, TexBaseFormat::LuminanceAlpha, rgba(128, 128, 128, 255), {51, 77, 102, 128}},
       {TexEnvMode::Decal, TexBaseFormat::RGBA, rgba(255, 255, 255, 51), {133, 173, 214, 128}},
       {TexEnvMode::Decal, TexBaseFormat::RGB, rgba(255, 255, 255, 51), {255, 255, 255, 128}},
       {TexEnvMode::Blend, TexBaseFormat::RGB, rgba(255, 0, 128, 0), {255, 153, 127, 128}},
-      {TexEnvMode::Blend, TexBaseFormat::Intensity, rgba(128, 0, 0, 0), {179, 76, 127, 140}},
+      {TexEnvMode::Blend, TexBaseFormat::Intensity, rgba(128, 128, 128, 128), {179, 76, 127, 140}},
       {TexEnvMode::Add, TexBaseFormat::RGBA, rgba(51, 255, 0, 128), {153, 255, 204, 64}},
-      {TexEnvMode::Add, TexBaseFormat::Intensity, rgba(51, 0, 0, 0), {153, 204, 255, 179}},
+      {TexEnvMode::Add, TexBaseFormat::Intensity, rgba(51, 51, 51, 51), {153, 204, 255, 179}},
   };
   const float frag[4] = {0.4f, 0.6f, 0.8f, 0.5f};
   for (const Case& c : cases) {
