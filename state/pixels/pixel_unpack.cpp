@@ -75,10 +75,9 @@ void ColorImageReader::read(int i, int64_t j, float rgba[4]) const {
   if (transfer_) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, rgba);
 }
 
-bool ColorImageReader::rgba8_texels(int64_t j, int first, int count, bool opaque, uint32_t* out) const {
+bool ColorImageReader::rgba8_texels(int64_t j, int first, int count, uint32_t* out) const {
   if (transfer_ || !rgba8_.bytes) return false;
-  rgba8_row_texels(rgba8_, image_.row(j) + static_cast<size_t>(first) * static_cast<size_t>(rgba8_.bytes), count, opaque,
-                   out);
+  rgba8_row_texels(rgba8_, image_.row(j) + static_cast<size_t>(first) * static_cast<size_t>(rgba8_.bytes), count, out);
   return true;
 }
 

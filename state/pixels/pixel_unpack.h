@@ -45,10 +45,10 @@ class ColorImageReader {
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
   // Pixel i of row j as RGBA in [0, 1].
   void read(int i, int64_t j, float rgba[4]) const;
-  // Pixels first..first + count - 1 of row j as RGBA8 texels (rgba8_rows.h; `opaque`: alpha
-  // 255), when the image holds RGBA8 in a way rgba8_source takes and no pixel transfer applies,
-  // so that read() would give each byte / 255 exactly; false, with nothing written, otherwise.
-  bool rgba8_texels(int64_t j, int first, int count, bool opaque, uint32_t* out) const;
+  // Pixels first..first + count - 1 of row j as RGBA8 words (rgba8_rows.h), when the image
+  // holds bytes in a way rgba8_source takes and no pixel transfer applies, so that read() would
+  // give each byte / 255 exactly; false, with nothing written, otherwise.
+  bool rgba8_texels(int64_t j, int first, int count, uint32_t* out) const;
 
  private:
   const Context& ctx_;

@@ -8,13 +8,23 @@ namespace pineda {
 namespace {
 
 template <bool kReversed, bool kBlueFirst>
-void four_byte_row(const uint8_t* src, int count, uint32_t alpha, uint32_t* out) {
+void four_byte_row(const uint8_t* src, int count, uint32_t* out) {
   for (int i = 0; i < count; ++i) {
     uint32_t p;
     std::memcpy(&p, src + 4 * static_cast<size_t>(i), 4);
     if constexpr (kReversed) p = __builtin_bswap32(p);
     if constexpr (kBlueFirst) p = swap_red_blue(p);
-    out[i] = p | alpha;
+    out[i] = p;
+  }
+}
+
+// One or two bytes a pixel (Rgba8Source's spread and defaults).
+void small_pixel_row(const Rgba8Source& source, const uint8_t* src, int count, uint32_t* out) {
+  const uint32_t spread = source.spread, defaults = source.defaults;
+  if (source.bytes == 1) {
+    for (int i = 0; i < count; ++i) out[i] = defaults | src[i] * spread;
+  } else {
+    for (int i = 0; i < count; ++i) out[i] = defaults | src[2 * i] * spread | uint32_t{src[2 * i + 1]} << 24;
   }
 }
 
@@ -43,6 +53,21 @@ Rgba8Source rgba8_source(GLenum format, GLenum type, bool swap_bytes) {
   s.blue_first = format == GL_BGRA || format == GL_BGR;
   if (type == GL_UNSIGNED_BYTE) {  // (SWAP_BYTES leaves single bytes alone)
     s.bytes = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
+    // (Missing colour components read 0, a missing alpha 1.)
+    auto small = [&](int bytes, uint32_t spread, uint32_t defaults) {
+      s.bytes = bytes;
+      s.spread = spread;
+      s.defaults = defaults;
+    };
+    switch (format) {
+      case GL_RED: small(1, 0x1u, 0xff000000u); break;
+      case GL_GREEN: small(1, 0x100u, 0xff000000u); break;
+      case GL_BLUE: small(1, 0x10000u, 0xff000000u); break;
+      case GL_ALPHA: small(1, 0x1000000u, 0u); break;
+      case GL_LUMINANCE: small(1, 0x010101u, 0xff000000u); break;
+      case GL_LUMINANCE_ALPHA: small(2, 0x010101u, 0u); break;
+      default: break;
+    }
   } else if ((type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV) &&
              (format == GL_RGBA || format == GL_BGRA)) {
     // _REV: the first component in the lowest byte, as the bytes lie in memory; SWAP_BYTES
@@ -53,17 +78,18 @@ Rgba8Source rgba8_source(GLenum format, GLenum type, bool swap_bytes) {
   return s;
 }
 
-void rgba8_row_texels(const Rgba8Source& source, const uint8_t* src, int count, bool opaque, uint32_t* out) {
-  const uint32_t alpha = opaque ? 0xff000000u : 0u;
-  if (source.bytes == 3) {
+void rgba8_row_texels(const Rgba8Source& source, const uint8_t* src, int count, uint32_t* out) {
+  if (source.bytes < 3) {
+    small_pixel_row(source, src, count, out);
+  } else if (source.bytes == 3) {
     if (source.blue_first) three_byte_row<true>(src, count, out);
     else three_byte_row<false>(src, count, out);
   } else if (source.reversed) {
-    if (source.blue_first) four_byte_row<true, true>(src, count, alpha, out);
-    else four_byte_row<true, false>(src, count, alpha, out);
+    if (source.blue_first) four_byte_row<true, true>(src, count, out);
+    else four_byte_row<true, false>(src, count, out);
   } else {
-    if (source.blue_first) four_byte_row<false, true>(src, count, alpha, out);
-    else four_byte_row<false, false>(src, count, alpha, out);
+    if (source.blue_first) four_byte_row<false, true>(src, count, out);
+    else four_byte_row<false, false>(src, count, out);
   }
 }
 

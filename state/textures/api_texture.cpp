@@ -72,15 +72,15 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
   const int full_height = box.height + 2 * box.border_y;
   const int64_t image_rows = ctx.unpack.image_height > 0 ? ctx.unpack.image_height : full_height;
   const int64_t skip_images = box.volume ? ctx.unpack.skip_images : 0;
-  // RGBA8 texels, or RGB8 ones whose alpha reads 1 (reduce_to_base_format).
-  const bool eight_bits = storage.red == 8 && storage.green == 8 && storage.blue == 8;
-  const bool rgb8 = storage.base == TexBaseFormat::RGB && eight_bits;
-  const bool rgba8 = rgb8 || (storage.base == TexBaseFormat::RGBA && eight_bits && storage.alpha == 8);
+  const bool bytes = keeps_bytes(storage);
   for (int z = 0; z < box.depth; ++z)
     for (int y = 0; y < box.height; ++y) {
       const int64_t row = (skip_images + z + box.border_z) * image_rows + y + box.border_y;
       uint32_t* dst = &level.texels[(size_t(box.z + z) * level.height + size_t(box.y + y)) * level.width + box.x];
-      if (rgba8 && source.rgba8_texels(row, box.border_x, box.width, rgb8, dst)) continue;
+      if (bytes && source.rgba8_texels(row, box.border_x, box.width, dst)) {
+        reduce_rgba8_to_base(dst, box.width, storage.base);
+        continue;
+      }
       for (int x = 0; x < box.width; ++x) {
         float rgba[4];
         source.read(x + box.border_x, row, rgba);

@@ -159,6 +159,30 @@ void reduce_to_base_format(float rgba[4], raster::TexBaseFormat base) {
   }
 }
 
+bool keeps_bytes(const TextureFormat& format) {
+  if (format.depth || format.stencil) return false;
+  for (int i = 0; i < 4; ++i) {
+    const int bits = channel_bits(format, i);
+    if (bits > 0 && bits < 8) return false;
+  }
+  return true;
+}
+
+void reduce_rgba8_to_base(uint32_t* rgba, int count, TexBaseFormat base) {
+  auto each = [&](auto reduce) {
+    for (int i = 0; i < count; ++i) rgba[i] = reduce(rgba[i]);
+  };
+  switch (base) {
+    case TexBaseFormat::Alpha: return each([](uint32_t t) { return t & 0xff000000u; });
+    case TexBaseFormat::Luminance: return each([](uint32_t t) { return (t & 0xffu) * 0x010101u | 0xff000000u; });
+    case TexBaseFormat::LuminanceAlpha:
+      return each([](uint32_t t) { return (t & 0xffu) * 0x010101u | (t & 0xff000000u); });
+    case TexBaseFormat::Intensity: return each([](uint32_t t) { return (t & 0xffu) * 0x01010101u; });
+    case TexBaseFormat::RGB: return each([](uint32_t t) { return t | 0xff000000u; });
+    case TexBaseFormat::RGBA: return;
+  }
+}
+
 uint32_t to_texel(const float rgba[4], const TextureFormat& format) {
   float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
   reduce_to_base_format(c, format.base);

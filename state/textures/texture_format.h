@@ -52,6 +52,13 @@ uint32_t depth_texel(double depth, const TextureFormat& format);
 // RGBA8 texel (R in the lowest byte).
 uint32_t to_texel(const float rgba[4], const TextureFormat& format);
 
+// Whether to_texel keeps 8-bit values: a colour format without a component of fewer than 8
+// bits, whose texel of (k0, k1, k2, k3) / 255 is reduce_rgba8_to_base of (k0, k1, k2, k3).
+bool keeps_bytes(const TextureFormat& format);
+
+// reduce_to_base_format on `count` RGBA8 words (R in the lowest byte).
+void reduce_rgba8_to_base(uint32_t* rgba, int count, raster::TexBaseFormat base);
+
 // An RGBA8 texel (an average of stored texels, say) quantized again to the format's bits.
 uint32_t requantize_texel(uint32_t texel, const TextureFormat& format);
 

@@ -132,5 +132,84 @@ TEST_F(TexImageRgba8RowsTest, ByteAndWordLayoutsAreStoredAsUnpacked) {
   glPixelStorei(GL_UNPACK_SWAP_BYTES, GL_FALSE);
 }
 
+// One- and two-byte formats (glyph atlases) into every 8-bit base format: the client pixel as
+// load_color reads it (missing colour 0, missing alpha 1, luminance in R, G and B), then the base
+// format's reduction (GL 2.1 table 3.15). A width of 5 and alignment 1 leave rows unaligned. The
+// texels luminance and intensity keep in G and B too (which the fill routines read) are checked
+// by drawing in the next test; here they read back as glGetTexImage returns them.
+TEST_F(TexImageRgba8RowsTest, OneAndTwoByteFormatsIntoEveryBaseFormat) {
+  constexpr int kWidth = 5, kHeight = 3;
+  std::vector<uint8_t> image(kWidth * kHeight * 2);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = uint8_t(i * 53 + 9);
+  struct Format {
+    GLenum format;
+    int n;
+    int from[4];  // R, G, B, A's source byte; -1: 0 for colour, 255 for alpha
+  };
+  const Format formats[] = {{GL_ALPHA, 1, {-1, -1, -1, 0}},         {GL_LUMINANCE, 1, {0, 0, 0, -1}},
+                            {GL_LUMINANCE_ALPHA, 2, {0, 0, 0, 1}},   {GL_RED, 1, {0, -1, -1, -1}},
+                            {GL_GREEN, 1, {-1, 0, -1, -1}},          {GL_BLUE, 1, {-1, -1, 0, -1}}};
+  struct Internal {
+    GLenum internal;
+    GLenum base;
+  };
+  const Internal internals[] = {{GL_ALPHA8, GL_ALPHA},         {GL_LUMINANCE8, GL_LUMINANCE},
+                                {GL_LUMINANCE8_ALPHA8, GL_LUMINANCE_ALPHA}, {GL_INTENSITY8, GL_INTENSITY},
+                                {GL_RGB8, GL_RGB},             {GL_RGBA8, GL_RGBA}};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, 1);
+  for (const Format& f : formats)
+    for (const Internal& in : internals) {
+      glTexImage2D(GL_TEXTURE_2D, 0, in.internal, kWidth, kHeight, 0, f.format, GL_UNSIGNED_BYTE, image.data());
+      ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+      std::vector<uint8_t> want;
+      for (int p = 0; p < kWidth * kHeight; ++p) {
+        uint8_t c[4];
+        for (int k = 0; k < 4; ++k) c[k] = f.from[k] >= 0 ? image[size_t(p * f.n + f.from[k])] : k == 3 ? 255 : 0;
+        // (glGetTexImage as RGBA reads luminance and intensity into R alone, intensity with alpha
+        // 1: GL 2.1 table 6.1.)
+        switch (in.base) {
+          case GL_ALPHA: c[0] = c[1] = c[2] = 0; break;
+          case GL_LUMINANCE: c[1] = c[2] = 0, c[3] = 255; break;
+          case GL_LUMINANCE_ALPHA: c[1] = c[2] = 0; break;
+          case GL_INTENSITY: c[1] = c[2] = 0, c[3] = 255; break;
+          case GL_RGB: c[3] = 255; break;
+          default: break;
+        }
+        want.insert(want.end(), c, c + 4);
+      }
+      EXPECT_EQ(stored_level(kWidth, kHeight), want) << std::hex << "format " << f.format << " internal " << in.internal;
+    }
+}
+
+// Drawn one texel per pixel with REPLACE: a luminance texture uploaded as bytes gives (L, L, L)
+// and the fragment's alpha, an intensity one I in all four.
+TEST_F(TexImageRgba8RowsTest, LuminanceAndIntensityBytesDrawAsThemselves) {
+  std::vector<uint8_t> image(16 * 16);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = uint8_t(i * 53 + 9);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, 1);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glEnable(GL_TEXTURE_2D);
+  glColor4f(1.f, 1.f, 1.f, 0.4f);
+  for (const GLenum internal : {GL_LUMINANCE8, GL_INTENSITY8}) {
+    glTexImage2D(GL_TEXTURE_2D, 0, internal, 16, 16, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, image.data());
+    glBegin(GL_QUADS);
+    glTexCoord2f(0, 0), glVertex2f(0, 0);
+    glTexCoord2f(1, 0), glVertex2f(16, 0);
+    glTexCoord2f(1, 1), glVertex2f(16, 16);
+    glTexCoord2f(0, 1), glVertex2f(0, 16);
+    glEnd();
+    std::vector<uint8_t> pixels(16 * 16 * 4);
+    glReadPixels(0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    std::vector<uint8_t> want;
+    for (const uint8_t l : image) want.insert(want.end(), {l, l, l, internal == GL_INTENSITY8 ? l : uint8_t(102)});
+    EXPECT_EQ(pixels, want) << std::hex << internal;
+  }
+  glDisable(GL_TEXTURE_2D);
+}
+
 }  // namespace
 }  // namespace pineda::test
