@@ -1,8 +1,8 @@
 // glReadPixels' common case without the general path's conversions: an RGBA8 or BGRA8 colour
 // buffer read as GL_UNSIGNED_BYTE RGBA, BGRA, RGB or BGR with no pixel transfer. The bytes are
 // moved as they are stored: the general path's c / 255 and back (a component byte k becomes
-// round(255 * k / 255) = k) gives the same bytes, at about 40 times the cost (pineda-bench's
-// read_pixels scene).
+// round(255 * k / 255) = k) gives the same bytes (pineda-bench's read_pixels scene, one thread:
+// 70-77 ms a frame through the general path, 3.3-4.2 ms this way).
 #pragma once
 #include <GL/gl.h>
 
