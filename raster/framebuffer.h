@@ -8,6 +8,9 @@ namespace pineda::raster {
 
 enum class ColorFormat : uint8_t { RGBA8, BGRA8 };
 
+// A pixel word (R in the lowest byte) with red and blue exchanged: RGBA8 to BGRA8 and back.
+inline uint32_t swap_red_blue(uint32_t p) { return (p & 0xff00ff00u) | ((p >> 16) & 0xffu) | ((p & 0xffu) << 16); }
+
 class ClearedTiles;
 
 // A target that keeps fewer bits or components than its four bytes (RGB565, RGBA4, RGB8,

@@ -1,6 +1,7 @@
 #include "raster/pixel_rect.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "raster/fragment_ops.h"
 #include "raster/multisample.h"
@@ -35,6 +36,27 @@ PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuff
     y0_ = std::max(y0_, state.scissor.y);
     x1_ = std::min<int64_t>(x1_, int64_t{state.scissor.x} + std::max(state.scissor.width, 0));
     y1_ = std::min<int64_t>(y1_, int64_t{state.scissor.y} + std::max(state.scissor.height, 0));
+  }
+  const FragmentKey& key = record_.key;
+  rgba8_rows_ = !state.shader && !key.textured && !key.depth && !key.stencil && !key.blend && !key.extras &&
+                !key.count_samples && !state.alpha_test && record_.color_write_all && fb.samples == 1 &&
+                fb.color_targets <= 1 && fb.color.base && !fb.color.reduction.active;
+}
+
+void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count) {
+  if (y < y0_ || y >= y1_) return;
+  const int first = std::max(x, x0_), last = static_cast<int>(std::min<int64_t>(int64_t{x} + count, x1_));
+  if (first >= last) return;
+  uint8_t* dst = fb_.color.base + fb_.color.stride * y + 4 * static_cast<ptrdiff_t>(first);
+  const uint32_t* src = rgba + (first - x);
+  const size_t n = static_cast<size_t>(last - first);
+  if (fb_.color.format == ColorFormat::RGBA8) {
+    std::memcpy(dst, src, 4 * n);
+    return;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t p = swap_red_blue(src[i]);
+    std::memcpy(dst + 4 * i, &p, 4);
   }
 }
 

@@ -99,7 +99,8 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
     image.kind = PixelRectImage::Kind::Stencil;
     image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);
   } else {
-    image.color = unpack_color_image(ctx, width, height, format, type, pixels);
+    image.rgba8 = unpack_rgba8_image(ctx, width, height, format, type, pixels);
+    if (image.rgba8.empty()) image.color = unpack_color_image(ctx, width, height, format, type, pixels);
   }
   draw_pixel_rect(ctx, image);
 }

@@ -33,6 +33,31 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
   return span;
 }
 
+// Colour pixels given as RGBA8 words straight into the colour buffer, a row at a time.
+void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const Span& cols,
+                      const Span& rows) {
+  std::vector<uint32_t> row(cols.source.size());
+  for (size_t r = 0; r < rows.source.size(); ++r) {
+    const int j = rows.source[r];
+    if (j < 0) continue;
+    const size_t row_start = size_t(j) * image.width;
+    // Runs of columns that take a pixel of the image.
+    for (size_t c = 0; c < cols.source.size();) {
+      auto takes_pixel = [&](size_t k) {
+        const int i = cols.source[k];
+        return i >= 0 && (image.present.empty() || image.present[row_start + i]);
+      };
+      if (!takes_pixel(c)) {
+        ++c;
+        continue;
+      }
+      const size_t run = c;
+      for (; c < cols.source.size() && takes_pixel(c); ++c) row[c] = image.rgba8[row_start + cols.source[c]];
+      writer.rgba8_row(cols.first + int(run), rows.first + int(r), &row[run], int(c - run));
+    }
+  }
+}
+
 }  // namespace
 
 void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
@@ -45,6 +70,8 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord, rp.distance);
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
+    const bool words = !image.rgba8.empty();
+    if (words && writer.writes_rgba8_rows()) return write_rgba8_rows(writer, image, cols, rows);
     for (size_t r = 0; r < rows.source.size(); ++r) {
       const int j = rows.source[r];
       if (j < 0) continue;
@@ -56,7 +83,16 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
         const size_t k = size_t(j) * image.width + i;
         if (!image.present.empty() && !image.present[k]) continue;
         switch (image.kind) {
-          case PixelRectImage::Kind::Color: writer.fragment(x, y, &image.color[4 * k], rp.window[2]); break;
+          case PixelRectImage::Kind::Color: {
+            if (!words) {
+              writer.fragment(x, y, &image.color[4 * k], rp.window[2]);
+              break;
+            }
+            float rgba[4];
+            for (int b = 0; b < 4; ++b) rgba[b] = float((image.rgba8[k] >> (8 * b)) & 0xffu) / 255.f;
+            writer.fragment(x, y, rgba, rp.window[2]);
+            break;
+          }
           case PixelRectImage::Kind::Depth: writer.fragment(x, y, rp.color, image.depth[k]); break;
           case PixelRectImage::Kind::Stencil:
             writer.stencil(x, y, static_cast<uint32_t>(image.stencil[k] & 0xffffffff));

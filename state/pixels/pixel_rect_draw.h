@@ -16,6 +16,9 @@ struct PixelRectImage {
   Kind kind = Kind::Color;
   int width = 0, height = 0;
   std::vector<float> color;      // Color: RGBA per pixel, bottom row first
+  // Color, in place of `color` when the pixels are bytes without pixel transfer: RGBA8 words
+  // (rgba8_rows.h), a component byte k standing for k / 255.
+  std::vector<uint32_t> rgba8;
   std::vector<double> depth;     // Depth, DepthStencil: one value per pixel in [0, 1]
   std::vector<int64_t> stencil;  // Stencil, DepthStencil: one index per pixel
   std::vector<uint8_t> present;  // empty, or 0 for pixels that produce no fragment

@@ -90,6 +90,15 @@ std::vector<float> unpack_color_image(const Context& ctx, int width, int height,
   return out;
 }
 
+std::vector<uint32_t> unpack_rgba8_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
+                                         const void* pixels) {
+  std::vector<uint32_t> out(size_t(width) * size_t(height));
+  const ColorImageReader reader(ctx, width, format, type, pixels);
+  for (int j = 0; j < height; ++j)
+    if (!reader.rgba8_texels(j, 0, width, &out[size_t(j) * width])) return {};
+  return out;
+}
+
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels) {
   std::vector<double> out(size_t(width) * size_t(height));
   const ClientImage image(ctx.unpack, width, GL_DEPTH_COMPONENT, type, pixels);

@@ -62,6 +62,10 @@ class ColorImageReader {
 // is applied.
 std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
                                       const void* pixels);
+// RGBA8 words per pixel (rgba8_rows.h), bottom row first, when ColorImageReader::rgba8_texels
+// reads the image; empty otherwise.
+std::vector<uint32_t> unpack_rgba8_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
+                                         const void* pixels);
 // Depth per pixel in [0, 1], after depth scale and bias.
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels);
 // Stencil indices per pixel, after index shift, offset and MAP_STENCIL.

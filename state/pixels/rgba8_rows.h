@@ -10,10 +10,11 @@
 
 #include <cstdint>
 
+#include "raster/framebuffer.h"
+
 namespace pineda {
 
-// A pixel word (R in the lowest byte) with red and blue exchanged.
-inline uint32_t swap_red_blue(uint32_t p) { return (p & 0xff00ff00u) | ((p >> 16) & 0xffu) | ((p & 0xffu) << 16); }
+using raster::swap_red_blue;
 
 // How a client format and type hold RGBA8; bytes 0: not in a way rgba8_row_texels reads.
 struct Rgba8Source {

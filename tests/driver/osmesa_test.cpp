@@ -1,5 +1,7 @@
 // OSMesa: contexts rendering into the caller's memory, in each format and layout.
+#define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
+#include <GL/glext.h>
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -27,24 +29,40 @@ struct FormatCase {
   Bytes pixel;  // the bytes of a clear to (10, 20, 30, 40)
 };
 
-class OSMesaFormat : public ::testing::TestWithParam<FormatCase> {};
+// A context of the case's format current on a 7x5 buffer with one spare pixel past its end,
+// which must stay untouched.
+class OSMesaFormat : public ::testing::TestWithParam<FormatCase> {
+ protected:
+  static constexpr int w = 7, h = 5;
+  void SetUp() override {
+    ctx = OSMesaCreateContextExt(GetParam().format, 0, 0, 0, nullptr);
+    ASSERT_NE(ctx, nullptr);
+    buffer.assign(w * h * bpp() + bpp(), 0xEE);
+    ASSERT_TRUE(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
+  }
+  void TearDown() override {
+    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    if (ctx) OSMesaDestroyContext(ctx);
+  }
+  size_t bpp() const { return GetParam().pixel.size(); }
+  // The buffer with every pixel the case's (10, 20, 30, 40).
+  Bytes filled() const {
+    Bytes expected = repeat(GetParam().pixel, w * h);
+    expected.insert(expected.end(), bpp(), 0xEE);
+    return expected;
+  }
+
+  OSMesaContext ctx = nullptr;
+  Bytes buffer;
+};
 
 TEST_P(OSMesaFormat, ClearFillsTheBufferExactly) {
   const FormatCase& c = GetParam();
-  OSMesaContext ctx = OSMesaCreateContextExt(c.format, 0, 0, 0, nullptr);
-  ASSERT_NE(ctx, nullptr);
-  const int w = 7, h = 5;
-  const size_t bpp = c.pixel.size();
-  // One spare pixel past the end must stay untouched.
-  Bytes buffer(w * h * bpp + bpp, 0xEE);
-  ASSERT_TRUE(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
   EXPECT_EQ(OSMesaGetCurrentContext(), ctx);
   clear(10, 20, 30, 40);
   glFinish();
   EXPECT_EQ(glGetError(), GL_NO_ERROR);
-  Bytes expected = repeat(c.pixel, w * h);
-  expected.insert(expected.end(), bpp, 0xEE);
-  EXPECT_EQ(buffer, expected);
+  EXPECT_EQ(buffer, filled());
 
   GLint value = 0;
   OSMesaGetIntegerv(OSMESA_WIDTH, &value);
@@ -70,7 +88,17 @@ TEST_P(OSMesaFormat, ClearFillsTheBufferExactly) {
 
   EXPECT_TRUE(OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0));
   EXPECT_EQ(OSMesaGetCurrentContext(), nullptr);
-  OSMesaDestroyContext(ctx);
+}
+
+// glDrawPixels of RGBA bytes with nothing in the pipeline to change them writes them straight
+// into the buffer (PixelFragmentWriter::rgba8_row): in each format's own byte order.
+TEST_P(OSMesaFormat, DrawPixelsStoresBytesInTheBufferOrder) {
+  const Bytes image = repeat({10, 20, 30, 40}, w * h);
+  glWindowPos2i(0, 0);
+  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  glFinish();
+  EXPECT_EQ(glGetError(), GL_NO_ERROR);
+  EXPECT_EQ(buffer, filled());
 }
 
 INSTANTIATE_TEST_SUITE_P(

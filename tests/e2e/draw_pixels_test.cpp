@@ -5,6 +5,7 @@
 #include <GL/glext.h>
 
 #include <cstring>
+#include <vector>
 
 #include "tests/e2e/support/gl_test.h"
 
@@ -137,6 +138,49 @@ TEST_F(DrawPixelsTest, ClippedAtTheWindowEdgeAndByScissor) {
   glScissor(1, 2, 3, 4);
   glDrawPixels(40, 40, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
   EXPECT_EQ(count_pixels({200, 200, 200, 200}), 12);
+}
+
+// Byte images on a pipeline that changes nothing are written straight into the colour buffer
+// (PixelFragmentWriter::rgba8_row); an alpha test that passes everything sends the same image
+// down the per-fragment path. Every format rgba8_rows.h reads, at several zooms, with and
+// without a scissor rectangle, a region partly outside the window, gives the same frame both ways.
+TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
+  const int w = 13, h = 11;
+  std::vector<GLubyte> image(size_t(w) * h * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = GLubyte(i * 53 + (i >> 5) * 7);
+  struct Format {
+    GLenum format, type;
+  };
+  const Format formats[] = {{GL_RGBA, GL_UNSIGNED_BYTE},      {GL_BGRA, GL_UNSIGNED_BYTE},
+                            {GL_RGB, GL_UNSIGNED_BYTE},       {GL_BGR, GL_UNSIGNED_BYTE},
+                            {GL_LUMINANCE, GL_UNSIGNED_BYTE}, {GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE},
+                            {GL_ALPHA, GL_UNSIGNED_BYTE},     {GL_RED, GL_UNSIGNED_BYTE},
+                            {GL_GREEN, GL_UNSIGNED_BYTE},     {GL_BLUE, GL_UNSIGNED_BYTE},
+                            {GL_RGBA, GL_UNSIGNED_INT_8_8_8_8}, {GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV}};
+  const float zooms[][2] = {{1, 1}, {2, 3}, {-1, 1}, {0.5f, -2}};
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  for (const Format& f : formats)
+    for (const auto& zoom : zooms)
+      for (bool scissor : {false, true}) {
+        std::vector<uint8_t> cleared, frames[2];
+        for (int pass = 0; pass < 2; ++pass) {
+          clear_to(0.1f, 0.2f, 0.3f, 0.4f);
+          cleared = read_all();
+          if (pass == 1) glEnable(GL_ALPHA_TEST);
+          if (scissor) glEnable(GL_SCISSOR_TEST);
+          glScissor(3, 2, 20, 9);
+          glPixelZoom(zoom[0], zoom[1]);
+          glWindowPos2i(zoom[0] < 0 ? 9 : -2, zoom[1] < 0 ? 30 : 4);
+          glDrawPixels(w, h, f.format, f.type, image.data());
+          glDisable(GL_ALPHA_TEST);
+          glDisable(GL_SCISSOR_TEST);
+          ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
+          frames[pass] = read_all();
+        }
+        EXPECT_EQ(frames[0], frames[1]) << "format 0x" << std::hex << f.format << " type 0x" << f.type << std::dec
+                                        << " zoom " << zoom[0] << "x" << zoom[1] << " scissor " << scissor;
+        EXPECT_NE(frames[0], cleared);  // something was drawn
+      }
 }
 
 TEST_F(DrawPixelsTest, FragmentsGoThroughDepthAlphaBlendAndMasks) {
