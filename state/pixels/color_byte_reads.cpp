@@ -42,24 +42,31 @@ void copy_row(const uint8_t* src, uint8_t* dst, int n, uint32_t alpha) {
 
 }  // namespace
 
+bool packs_rgba8_bytes(GLenum format, GLenum type) {
+  return type == GL_UNSIGNED_BYTE && (format == GL_RGBA || format == GL_BGRA || format == GL_RGB || format == GL_BGR);
+}
+
+void pack_rgba8_row(const uint8_t* src, bool stored_bgra, GLenum format, uint32_t alpha, uint8_t* dst, int n) {
+  const bool wants_bgr = format == GL_BGRA || format == GL_BGR;
+  const bool swap = stored_bgra != wants_bgr;
+  const bool three = format == GL_RGB || format == GL_BGR;
+  auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);
+  copy(src, dst, n, alpha);
+}
+
 bool reads_color_bytes(const raster::ColorBuffer& cb, GLenum format, GLenum type) {
   // A reduced buffer (raster/color_reduction.h) reads some components as constants.
-  return cb.base && !cb.reduction.active && type == GL_UNSIGNED_BYTE &&
-         (format == GL_RGBA || format == GL_BGRA || format == GL_RGB || format == GL_BGR);
+  return cb.base && !cb.reduction.active && packs_rgba8_bytes(format, type);
 }
 
 void read_color_bytes(const raster::ColorBuffer& cb, bool opaque, GLenum format, int x0, int x1, int y0, int y1,
                       uint8_t* first, size_t row_stride) {
   if (x0 >= x1) return;
   const bool stored_bgra = cb.format == raster::ColorFormat::BGRA8;
-  const bool wants_bgr = format == GL_BGRA || format == GL_BGR;
-  const bool swap = stored_bgra != wants_bgr;
-  const bool three = format == GL_RGB || format == GL_BGR;
   const uint32_t alpha = opaque ? 0xff000000u : 0u;
-  auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);
   for (int y = y0; y < y1; ++y)
-    copy(cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0), first + row_stride * static_cast<size_t>(y - y0),
-         x1 - x0, alpha);
+    pack_rgba8_row(cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0), stored_bgra, format, alpha,
+                   first + row_stride * static_cast<size_t>(y - y0), x1 - x0);
 }
 
 }  // namespace pineda::gl

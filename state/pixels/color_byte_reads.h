@@ -1,8 +1,9 @@
-// glReadPixels' common case without the general path's conversions: an RGBA8 or BGRA8 colour
-// buffer read as GL_UNSIGNED_BYTE RGBA, BGRA, RGB or BGR with no pixel transfer. The bytes are
-// moved as they are stored: the general path's c / 255 and back (a component byte k becomes
-// round(255 * k / 255) = k) gives the same bytes (pineda-bench's read_pixels scene, one thread:
-// 70-77 ms a frame through the general path, 3.3-4.2 ms this way).
+// Colour read back as bytes without the general path's conversions: glReadPixels of an RGBA8
+// or BGRA8 colour buffer, and glGetTexImage of an RGBA8-stored level, as GL_UNSIGNED_BYTE
+// RGBA, BGRA, RGB or BGR with no pixel transfer. The bytes are moved as they are stored: the
+// general path's c / 255 and back (a component byte k becomes round(255 * k / 255) = k) gives
+// the same bytes (pineda-bench's read_pixels scene, one thread: 70-77 ms a frame through the
+// general path, 3.3-4.2 ms this way).
 #pragma once
 #include <GL/gl.h>
 
@@ -12,6 +13,13 @@
 #include "raster/framebuffer.h"
 
 namespace pineda::gl {
+
+// Whether pack_rgba8_row writes `format` and `type`.
+bool packs_rgba8_bytes(GLenum format, GLenum type);
+
+// `n` pixels stored as RGBA8 words (R in the lowest byte; BGRA8 when `stored_bgra`) to `dst` in
+// `format` (packs_rgba8_bytes), alpha ORed with `alpha` (0xff000000: alpha reads 255).
+void pack_rgba8_row(const uint8_t* src, bool stored_bgra, GLenum format, uint32_t alpha, uint8_t* dst, int n);
 
 // Whether read_color_bytes reads `format` and `type` from `cb` (no pixel transfer assumed:
 // the caller checks it).

@@ -1,11 +1,13 @@
 // glGetTexImage: a texture level read back through the pack pixel store.
 #include <bit>
 #include <cstring>
+#include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
 #include "state/buffers/pixel_buffer.h"
+#include "state/pixels/color_byte_reads.h"
 #include "state/pixels/pixel_format.h"
 #include "state/textures/texture_format.h"
 #include "state/textures/texture_target.h"
@@ -24,6 +26,18 @@ void texel_rgba(uint32_t texel, raster::TexBaseFormat base, GLenum format, doubl
     case TexBaseFormat::Intensity: rgba[1] = rgba[2] = 0.0; rgba[3] = 1.0; break;
     default: break;
   }
+}
+
+// A luminance, luminance-alpha or intensity level's texels as texel_rgba gives them, in `out` as
+// RGBA8 words (stored bytes k read as k / 255 and packed back as bytes are k); false, with
+// nothing written, for the other formats, whose stored texels are what texel_rgba gives.
+bool rgba8_texel_row(const uint32_t* texels, int n, raster::TexBaseFormat base, uint32_t* out) {
+  using raster::TexBaseFormat;
+  if (base != TexBaseFormat::Luminance && base != TexBaseFormat::LuminanceAlpha && base != TexBaseFormat::Intensity)
+    return false;
+  const uint32_t set = base == TexBaseFormat::Intensity ? 0xff000000u : 0u;
+  for (int i = 0; i < n; ++i) out[i] = (texels[i] & 0xff0000ffu) | set;
+  return true;
 }
 
 bool is_depth_level(const TextureLevelData& l) {
@@ -78,6 +92,17 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
   const size_t image_rows = ctx.pack.image_height > 0 ? size_t(ctx.pack.image_height) : size_t(l.height);
   const size_t image_stride = layout.row_stride * image_rows;
   auto* out = static_cast<uint8_t*>(pixels) + layout.offset + (volume ? size_t(ctx.pack.skip_images) * image_stride : 0);
+  if (!depth_texture && packs_rgba8_bytes(format, type)) {  // bytes moved as stored (color_byte_reads.h)
+    std::vector<uint32_t> row(size_t(l.width));
+    for (int z = 0; z < l.depth; ++z)
+      for (int y = 0; y < l.height; ++y) {
+        const uint32_t* texels = &l.texels[(size_t(z) * l.height + y) * l.width];
+        if (rgba8_texel_row(texels, l.width, l.base, row.data())) texels = row.data();
+        pack_rgba8_row(reinterpret_cast<const uint8_t*>(texels), false, format, 0,
+                       out + image_stride * size_t(z) + layout.row_stride * size_t(y), l.width);
+      }
+    return;
+  }
   for (int z = 0; z < l.depth; ++z)
     for (int y = 0; y < l.height; ++y)
       for (int x = 0; x < l.width; ++x) {
