@@ -38,24 +38,35 @@ PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuff
     y1_ = std::min<int64_t>(y1_, int64_t{state.scissor.y} + std::max(state.scissor.height, 0));
   }
   const FragmentKey& key = record_.key;
-  rgba8_rows_ = !state.shader && !key.textured && !key.depth && !key.stencil && !key.blend && !key.extras &&
-                !key.count_samples && !state.alpha_test && record_.color_write_all && fb.samples == 1 &&
-                fb.color_targets <= 1 && fb.color.base && !fb.color.reduction.active;
+  rgba8_rows_ = !state.shader && !key.textured && !key.stencil && !key.blend && !key.extras && !key.count_samples &&
+                !state.alpha_test && record_.color_write_all && fb.samples == 1 && fb.color_targets <= 1 &&
+                fb.color.base && !fb.color.reduction.active;
 }
 
-void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count) {
+void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth) {
   if (y < y0_ || y >= y1_) return;
   const int first = std::max(x, x0_), last = static_cast<int>(std::min<int64_t>(int64_t{x} + count, x1_));
   if (first >= last) return;
   uint8_t* dst = fb_.color.base + fb_.color.stride * y + 4 * static_cast<ptrdiff_t>(first);
   const uint32_t* src = rgba + (first - x);
   const size_t n = static_cast<size_t>(last - first);
-  if (fb_.color.format == ColorFormat::RGBA8) {
-    std::memcpy(dst, src, 4 * n);
+  const bool bgra = fb_.color.format == ColorFormat::BGRA8;
+  if (!record_.key.depth) {
+    if (!bgra) return static_cast<void>(std::memcpy(dst, src, 4 * n));
+    for (size_t i = 0; i < n; ++i) {
+      const uint32_t p = swap_red_blue(src[i]);
+      std::memcpy(dst + 4 * i, &p, 4);
+    }
     return;
   }
+  // The quad routines' depth of a constant plane (block_depth_body.inc's flat_depth).
+  const uint32_t z = static_cast<uint32_t>((depth > 0.0 ? (depth < 1.0 ? depth : 1.0) : 0.0) * record_.depth_max + 0.5);
+  uint32_t* stored = fb_.depth.base + static_cast<ptrdiff_t>(y) * fb_.depth.stride + first;
+  const DrawState& s = record_.state;
   for (size_t i = 0; i < n; ++i) {
-    const uint32_t p = swap_red_blue(src[i]);
+    if (!compare(s.depth_func, z, stored[i])) continue;
+    if (s.depth_write) stored[i] = z;
+    const uint32_t p = bgra ? swap_red_blue(src[i]) : src[i];
     std::memcpy(dst + 4 * i, &p, 4);
   }
 }

@@ -29,14 +29,15 @@ class PixelFragmentWriter {
   // pixel rectangles write depth and stencil directly, whatever the depth test (as Mesa).
   void depth(int x, int y, double z);
 
-  // Whether fragments reach the colour buffer unchanged: no shader, texturing, colour sum, fog,
-  // alpha, stencil or depth test, blending, logic op, colour mask or occlusion query, one
-  // single-sampled RGBA8 or BGRA8 target that keeps all its bits. Then rgba8_row writes what
-  // fragment() would (a component byte k given as k / 255 is stored as k).
+  // Whether fragments reach the colour buffer unchanged but for the depth test: no shader,
+  // texturing, colour sum, fog, alpha or stencil test, blending, logic op, colour mask or
+  // occlusion query, one single-sampled RGBA8 or BGRA8 target that keeps all its bits. Then
+  // rgba8_row writes what fragment() would (a component byte k given as k / 255 is stored as k).
   bool writes_rgba8_rows() const { return rgba8_rows_; }
-  // Pixels (x, y) .. (x + count - 1, y) as RGBA8 words (R in the lowest byte), the parts inside
-  // the framebuffer and the scissor rectangle. Only when writes_rgba8_rows().
-  void rgba8_row(int x, int y, const uint32_t* rgba, int count);
+  // Fragments (x, y) .. (x + count - 1, y) of colour RGBA8 words (R in the lowest byte) and
+  // depth `depth` (in [0, 1], clamped here), the parts inside the framebuffer and the scissor
+  // rectangle. Only when writes_rgba8_rows().
+  void rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth);
 
   // Whether (x, y) is inside the framebuffer and the scissor rectangle.
   bool inside(int x, int y) const { return x >= x0_ && x < x1_ && y >= y0_ && y < y1_; }

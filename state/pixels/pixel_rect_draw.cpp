@@ -33,9 +33,10 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
   return span;
 }
 
-// Colour pixels given as RGBA8 words straight into the colour buffer, a row at a time.
+// Colour pixels given as RGBA8 words straight into the colour buffer (after the depth test when
+// it is on), a row at a time.
 void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const Span& cols,
-                      const Span& rows) {
+                      const Span& rows, double depth) {
   std::vector<uint32_t> row(cols.source.size());
   for (size_t r = 0; r < rows.source.size(); ++r) {
     const int j = rows.source[r];
@@ -53,7 +54,7 @@ void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage&
       }
       const size_t run = c;
       for (; c < cols.source.size() && takes_pixel(c); ++c) row[c] = image.rgba8[row_start + cols.source[c]];
-      writer.rgba8_row(cols.first + int(run), rows.first + int(r), &row[run], int(c - run));
+      writer.rgba8_row(cols.first + int(run), rows.first + int(r), &row[run], int(c - run), depth);
     }
   }
 }
@@ -71,7 +72,7 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
     const bool words = !image.rgba8.empty();
-    if (words && writer.writes_rgba8_rows()) return write_rgba8_rows(writer, image, cols, rows);
+    if (words && writer.writes_rgba8_rows()) return write_rgba8_rows(writer, image, cols, rows, rp.window[2]);
     for (size_t r = 0; r < rows.source.size(); ++r) {
       const int j = rows.source[r];
       if (j < 0) continue;

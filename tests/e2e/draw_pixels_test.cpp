@@ -140,10 +140,12 @@ TEST_F(DrawPixelsTest, ClippedAtTheWindowEdgeAndByScissor) {
   EXPECT_EQ(count_pixels({200, 200, 200, 200}), 12);
 }
 
-// Byte images on a pipeline that changes nothing are written straight into the colour buffer
-// (PixelFragmentWriter::rgba8_row); an alpha test that passes everything sends the same image
-// down the per-fragment path. Every format rgba8_rows.h reads, at several zooms, with and
-// without a scissor rectangle, a region partly outside the window, gives the same frame both ways.
+// Byte images on a pipeline that changes nothing but for the depth test are written straight
+// into the colour buffer (PixelFragmentWriter::rgba8_row); an alpha test that passes everything
+// sends the same image down the per-fragment path. Every format rgba8_rows.h reads, at several
+// zooms, with and without a scissor rectangle and the depth test (over a depth buffer that is
+// 0.1 on the left half, 0.5 on the right; the image at depth 0.25), a region partly outside the
+// window, gives the same colour and depth both ways.
 TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
   const int w = 13, h = 11;
   std::vector<GLubyte> image(size_t(w) * h * 4);
@@ -158,29 +160,56 @@ TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
                             {GL_GREEN, GL_UNSIGNED_BYTE},     {GL_BLUE, GL_UNSIGNED_BYTE},
                             {GL_RGBA, GL_UNSIGNED_INT_8_8_8_8}, {GL_BGRA, GL_UNSIGNED_INT_8_8_8_8_REV}};
   const float zooms[][2] = {{1, 1}, {2, 3}, {-1, 1}, {0.5f, -2}};
+  struct DepthTest {
+    bool on;
+    GLenum func;
+    bool write;
+  };
+  const DepthTest depth_tests[] = {{false, GL_LESS, true}, {true, GL_LESS, true}, {true, GL_GREATER, true},
+                                   {true, GL_LEQUAL, false}};
   glAlphaFunc(GL_ALWAYS, 0.f);
   for (const Format& f : formats)
     for (const auto& zoom : zooms)
-      for (bool scissor : {false, true}) {
-        std::vector<uint8_t> cleared, frames[2];
-        for (int pass = 0; pass < 2; ++pass) {
-          clear_to(0.1f, 0.2f, 0.3f, 0.4f);
-          cleared = read_all();
-          if (pass == 1) glEnable(GL_ALPHA_TEST);
-          if (scissor) glEnable(GL_SCISSOR_TEST);
-          glScissor(3, 2, 20, 9);
-          glPixelZoom(zoom[0], zoom[1]);
-          glWindowPos2i(zoom[0] < 0 ? 9 : -2, zoom[1] < 0 ? 30 : 4);
-          glDrawPixels(w, h, f.format, f.type, image.data());
-          glDisable(GL_ALPHA_TEST);
-          glDisable(GL_SCISSOR_TEST);
-          ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
-          frames[pass] = read_all();
+      for (const DepthTest& depth : depth_tests)
+        for (bool scissor : {false, true}) {
+          std::vector<uint8_t> cleared, frames[2];
+          std::vector<GLuint> depths[2];
+          for (int pass = 0; pass < 2; ++pass) {
+            clear_to(0.1f, 0.2f, 0.3f, 0.4f);
+            glClearDepth(0.5);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, 0, width() / 2, height());
+            glClearDepth(0.1);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glDisable(GL_SCISSOR_TEST);
+            cleared = read_all();
+            if (pass == 1) glEnable(GL_ALPHA_TEST);
+            if (scissor) glEnable(GL_SCISSOR_TEST);
+            if (depth.on) glEnable(GL_DEPTH_TEST);
+            glDepthFunc(depth.func);
+            glDepthMask(depth.write ? GL_TRUE : GL_FALSE);
+            glScissor(3, 2, 20, 9);
+            glPixelZoom(zoom[0], zoom[1]);
+            glWindowPos3f(zoom[0] < 0 ? 9.f : -2.f, zoom[1] < 0 ? 30.f : 4.f, 0.25f);
+            glDrawPixels(w, h, f.format, f.type, image.data());
+            glDisable(GL_ALPHA_TEST);
+            glDisable(GL_SCISSOR_TEST);
+            glDisable(GL_DEPTH_TEST);
+            glDepthMask(GL_TRUE);
+            ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
+            frames[pass] = read_all();
+            depths[pass].resize(size_t(width()) * height());
+            glReadPixels(0, 0, width(), height(), GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depths[pass].data());
+          }
+          EXPECT_EQ(frames[0], frames[1]) << "format 0x" << std::hex << f.format << " type 0x" << f.type << std::dec
+                                          << " zoom " << zoom[0] << "x" << zoom[1] << " scissor " << scissor
+                                          << " depth test " << depth.on << " func 0x" << std::hex << depth.func;
+          EXPECT_EQ(depths[0], depths[1]);
+          if (!depth.on) {
+            EXPECT_NE(frames[0], cleared);  // something was drawn
+          }
         }
-        EXPECT_EQ(frames[0], frames[1]) << "format 0x" << std::hex << f.format << " type 0x" << f.type << std::dec
-                                        << " zoom " << zoom[0] << "x" << zoom[1] << " scissor " << scissor;
-        EXPECT_NE(frames[0], cleared);  // something was drawn
-      }
 }
 
 TEST_F(DrawPixelsTest, FragmentsGoThroughDepthAlphaBlendAndMasks) {
