@@ -1,5 +1,6 @@
 // glDrawPixels and glCopyPixels (GL 1.5 spec 3.6.4, 4.3.3).
 #include <algorithm>
+#include <cstring>
 
 #include "glapi/gl_entry_points.h"
 #include "raster/color_reduction.h"
@@ -40,9 +41,12 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
   image.height = height;
   const size_t n = size_t(width) * size_t(height);
   image.present.assign(n, 0);
+  // Without pixel transfer, colour is kept as the bytes read (PixelRectImage::rgba8).
+  const bool color_words = type == GL_COLOR && color_transfer_is_identity(ctx.pixel_mode);
   if (type == GL_COLOR) {
     image.kind = PixelRectImage::Kind::Color;
-    image.color.assign(4 * n, 0.f);
+    if (color_words) image.rgba8.assign(n, 0);
+    else image.color.assign(4 * n, 0.f);
   } else {
     image.kind = type == GL_DEPTH     ? PixelRectImage::Kind::Depth
                  : type == GL_STENCIL ? PixelRectImage::Kind::Stencil
@@ -62,6 +66,10 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
       if (type == GL_COLOR) {
         uint8_t bytes[4];
         raster::read_rgba8(fb.color, fb.color.base + fb.color.stride * sy + 4 * sx, bytes);
+        if (color_words) {
+          std::memcpy(&image.rgba8[k], bytes, 4);
+          continue;
+        }
         float* rgba = &image.color[4 * k];
         for (int c = 0; c < 4; ++c) rgba[c] = bytes[c] / 255.f;
         transfer_color(ctx.pixel_mode, ctx.pixel_maps, rgba);

@@ -4,6 +4,8 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <vector>
+
 #include "tests/e2e/support/gl_test.h"
 
 namespace pineda::test {
@@ -162,6 +164,52 @@ TEST_F(CopyPixelsTest, ZoomScissorAndTransfer) {
   glCopyPixels(0, 0, 1, 1, GL_COLOR);
   glPixelTransferf(GL_GREEN_BIAS, 0.f);
   EXPECT_EQ(count_pixels({100, 255, 0, 255}), 2);  // x = 4 only, rows 4 and 5
+}
+
+// Without pixel transfer the copied colour stays bytes (PixelRectImage::rgba8) and, on a
+// pipeline that changes nothing but for the depth test, is written straight into the colour
+// buffer; an alpha test that passes everything sends it down the per-fragment path. Overlapping
+// and partly outside source rectangles, zooms, scissor and depth test give the same frames both ways.
+TEST_F(CopyPixelsTest, ColourCopiesOnAPlainPipelineMatchTheFragmentPath) {
+  const int w = width(), h = height();
+  std::vector<GLubyte> image(size_t(w) * h * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = GLubyte(i * 29 + (i >> 6) * 3);
+  const float zooms[][2] = {{1, 1}, {2, 3}, {-1, 1}, {0.5f, -2}};
+  struct Copy {
+    int x, y, width, height, to_x, to_y;
+  };
+  const Copy copies[] = {{0, 0, 20, 10, 3, 5}, {-2, 8, 30, 30, 12, 12}, {10, 10, 8, 8, 12, 14}};
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  for (const auto& zoom : zooms)
+    for (const Copy& c : copies)
+      for (const bool scissor : {false, true})
+        for (const bool depth_test : {false, true}) {
+          std::vector<uint8_t> frames[2];
+          for (int pass = 0; pass < 2; ++pass) {
+            glClearDepth(0.5);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glPixelZoom(1, 1);
+            glWindowPos2i(0, 0);
+            glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+            if (pass == 1) glEnable(GL_ALPHA_TEST);
+            if (scissor) glEnable(GL_SCISSOR_TEST);
+            if (depth_test) glEnable(GL_DEPTH_TEST);
+            glScissor(2, 4, 17, 21);
+            glPixelZoom(zoom[0], zoom[1]);
+            glWindowPos3f(float(c.to_x), float(c.to_y), c.to_x > 5 ? 0.75f : 0.25f);
+            glCopyPixels(c.x, c.y, c.width, c.height, GL_COLOR);
+            glDisable(GL_ALPHA_TEST);
+            glDisable(GL_SCISSOR_TEST);
+            glDisable(GL_DEPTH_TEST);
+            ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+            frames[pass] = read_all();
+          }
+          EXPECT_EQ(frames[0], frames[1]) << "zoom " << zoom[0] << "x" << zoom[1] << " copy from " << c.x << ","
+                                          << c.y << " scissor " << scissor << " depth test " << depth_test;
+          if (!depth_test || c.to_x <= 5) {
+            EXPECT_NE(frames[0], image);  // something was copied (at depth 0.25 over 0.5 when tested)
+          }
+        }
 }
 
 TEST_F(CopyPixelsTest, DepthAndStencil) {
