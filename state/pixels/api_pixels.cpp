@@ -8,6 +8,7 @@
 #include "state/es2/es2_rules.h"
 #include "state/pixels/bitmap_layout.h"
 #include "state/pixels/color_byte_reads.h"
+#include "state/pixels/depth_stencil_reads.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
 #include "state/buffers/pixel_buffer.h"
@@ -125,12 +126,14 @@ void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, 
   const ImageLayout layout = image_layout(ctx.pack, width, format, type);
   auto* out = static_cast<uint8_t*>(pixels) + layout.offset;
   const bool color_identity = color_transfer_is_identity(ctx.pixel_mode);
-  if (color_identity && reads_color_bytes(fb.color, format, type)) {
-    if (x0 < x1 && y0 < y1)
-      read_color_bytes(fb.color, d->alpha_bits == 0, format, x0, x1, y0, y1,
-                       out + layout.row_stride * size_t(y0 - y) + layout.pixel_bytes * size_t(x0 - x), layout.row_stride);
-    return;
-  }
+  if (x0 >= x1 || y0 >= y1) return;
+  uint8_t* const first = out + layout.row_stride * size_t(y0 - y) + layout.pixel_bytes * size_t(x0 - x);
+  if (color_identity && reads_color_bytes(fb.color, format, type))
+    return read_color_bytes(fb.color, d->alpha_bits == 0, format, x0, x1, y0, y1, first, layout.row_stride);
+  if (format == GL_DEPTH_COMPONENT && reads_depth_rows(ctx.pixel_mode, type, ctx.pack.swap_bytes))
+    return read_depth_rows(fb.depth, type, x0, x1, y0, y1, first, layout.row_stride);
+  if (format == GL_STENCIL_INDEX && reads_stencil_rows(ctx.pixel_mode, type))
+    return read_stencil_rows(fb.stencil, x0, x1, y0, y1, first, layout.row_stride);
   for (int fy = y0; fy < y1; ++fy) {
     uint8_t* row = out + layout.row_stride * size_t(fy - y);
     for (int fx = x0; fx < x1; ++fx) {

@@ -1,7 +1,9 @@
 // glReadPixels: every format and type, pack alignment, row length and skips, depth and
 // stencil, and reads partly outside the surface.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "tests/e2e/support/gl_test.h"
 
@@ -285,6 +287,79 @@ TEST_F(ReadPixelsTest, ByteFormatsReadEveryPixelUnderEveryPackLayout) {
                                << " row length " << row_length << " skip " << skip;
         }
 }
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// Depth and stencil read a row at a time (state/pixels/depth_stencil_reads.h) against the general
+// path, which PACK_SWAP_BYTES selects (its bytes swapped back here): every depth type it takes
+// at every depth size, under several pack layouts, a region partly outside the surface. Stencil
+// bytes are compared with the indices drawn.
+class DepthStencilRowsTest : public GlTest, public ::testing::WithParamInterface<int> {
+ protected:
+  SurfaceSpec spec() const override { return {19, 13, GetParam(), 8}; }
+};
+
+template <typename T>
+std::vector<uint8_t> read_rect(int x, int y, int w, int h, GLenum format, GLenum type, bool swap, size_t size) {
+  std::vector<uint8_t> out(size, 0xEE);
+  glPixelStorei(GL_PACK_SWAP_BYTES, swap ? GL_TRUE : GL_FALSE);
+  glReadPixels(x, y, w, h, format, type, out.data());
+  glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+  if (swap)  // back to the native order; the 0xEE filler reads the same either way
+    for (size_t i = 0; i + sizeof(T) <= size; i += sizeof(T)) std::reverse(&out[i], &out[i + sizeof(T)]);
+  return out;
+}
+
+TEST_P(DepthStencilRowsTest, DepthAndStencilRowsMatchTheGeneralPath) {
+  const int w = width(), h = height();
+  std::vector<GLuint> depths(size_t(w) * h);
+  std::vector<GLubyte> indices(depths.size());
+  for (size_t i = 0; i < depths.size(); ++i) {
+    depths[i] = GLuint(i * 2654435761u);
+    indices[i] = GLubyte(i * 7 + 3);
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glWindowPos2i(0, 0);
+  glDrawPixels(w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depths.data());
+  glDrawPixels(w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, indices.data());
+  glDisable(GL_DEPTH_TEST);
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  const int x = -2, y = 3, rw = w + 3, rh = h - 5;
+  for (int alignment : {1, 8})
+    for (int row_length : {0, rw + 3})
+      for (int skip : {0, 2}) {
+        glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+        glPixelStorei(GL_PACK_ROW_LENGTH, row_length);
+        glPixelStorei(GL_PACK_SKIP_PIXELS, skip);
+        glPixelStorei(GL_PACK_SKIP_ROWS, skip);
+        const size_t size = size_t((row_length ? row_length : rw) + 8) * (rh + skip + 1) * 4;
+        SCOPED_TRACE(::testing::Message() << "alignment " << alignment << " row length " << row_length << " skip " << skip);
+        EXPECT_EQ(read_rect<GLuint>(x, y, rw, rh, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, false, size),
+                  read_rect<GLuint>(x, y, rw, rh, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, true, size));
+        EXPECT_EQ(read_rect<GLushort>(x, y, rw, rh, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, false, size),
+                  read_rect<GLushort>(x, y, rw, rh, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT, true, size));
+        EXPECT_EQ(read_rect<GLfloat>(x, y, rw, rh, GL_DEPTH_COMPONENT, GL_FLOAT, false, size),
+                  read_rect<GLfloat>(x, y, rw, rh, GL_DEPTH_COMPONENT, GL_FLOAT, true, size));
+        const std::vector<uint8_t> stencil = read_rect<GLubyte>(x, y, rw, rh, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, false, size);
+        std::vector<uint8_t> want(size, 0xEE);
+        const int length = row_length ? row_length : rw;
+        const size_t stride = (size_t(length) + alignment - 1) / alignment * alignment;
+        for (int row = 0; row < rh; ++row)
+          for (int col = 0; col < rw; ++col)
+            if (x + col >= 0 && x + col < w && y + row < h)
+              want[stride * (row + skip) + col + skip] = indices[size_t(y + row) * w + x + col];
+        EXPECT_EQ(stencil, want);
+        ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+      }
+}
+
+INSTANTIATE_TEST_SUITE_P(Bits, DepthStencilRowsTest, ::testing::Values(16, 24, 32));
 
 }  // namespace
 }  // namespace pineda::test

@@ -1,0 +1,57 @@
+#include "state/pixels/depth_stencil_reads.h"
+
+#include <cstring>
+
+namespace pineda::gl {
+namespace {
+
+// One row of n stored depths as `Out`, each stored / max converted as store_component does.
+template <typename Out, typename Convert>
+void depth_row(const uint32_t* src, int n, double max, uint8_t* dst, Convert convert) {
+  for (int i = 0; i < n; ++i) {
+    const Out value = convert(src[i] / max);
+    std::memcpy(dst + sizeof(Out) * static_cast<size_t>(i), &value, sizeof(Out));
+  }
+}
+
+}  // namespace
+
+bool reads_depth_rows(const PixelMode& mode, GLenum type, bool swap_bytes) {
+  return !swap_bytes && mode.depth_scale == 1.f && mode.depth_bias == 0.f &&
+         (type == GL_UNSIGNED_INT || type == GL_UNSIGNED_SHORT || type == GL_FLOAT);
+}
+
+void read_depth_rows(const raster::DepthBuffer& depth, GLenum type, int x0, int x1, int y0, int y1, uint8_t* first,
+                     size_t row_stride) {
+  // transfer_depth with scale 1 and bias 0 leaves a stored / max in [0, 1] as it is.
+  const double max = depth.bits >= 32 ? 4294967295.0 : double((uint64_t{1} << depth.bits) - 1);
+  for (int y = y0; y < y1; ++y) {
+    const uint32_t* src = depth.base + depth.stride * y + x0;
+    uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
+    const int n = x1 - x0;
+    switch (type) {
+      // x + 0.5 truncated is std::llround(x) / std::lround(x) here: checked for every stored value
+      // of 16-, 24- and 32-bit depth buffers (std::llround does not vectorize).
+      case GL_UNSIGNED_INT:
+        depth_row<GLuint>(src, n, max, dst, [](double c) { return GLuint(c * 4294967295.0 + 0.5); });
+        break;
+      case GL_UNSIGNED_SHORT:
+        depth_row<GLushort>(src, n, max, dst, [](double c) { return GLushort(GLuint(c * 65535.0 + 0.5)); });
+        break;
+      default: depth_row<GLfloat>(src, n, max, dst, [](double c) { return GLfloat(c); }); break;
+    }
+  }
+}
+
+bool reads_stencil_rows(const PixelMode& mode, GLenum type) {
+  return type == GL_UNSIGNED_BYTE && mode.index_shift == 0 && mode.index_offset == 0 && !mode.map_stencil;
+}
+
+void read_stencil_rows(const raster::StencilBuffer& stencil, int x0, int x1, int y0, int y1, uint8_t* first,
+                       size_t row_stride) {
+  for (int y = y0; y < y1; ++y)
+    std::memcpy(first + row_stride * static_cast<size_t>(y - y0), stencil.base + stencil.stride * y + x0,
+                static_cast<size_t>(x1 - x0));
+}
+
+}  // namespace pineda::gl
