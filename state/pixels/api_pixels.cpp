@@ -8,6 +8,7 @@
 #include "state/es2/es2_rules.h"
 #include "state/pixels/bitmap_layout.h"
 #include "state/pixels/color_byte_reads.h"
+#include "state/pixels/color_component_reads.h"
 #include "state/pixels/depth_stencil_reads.h"
 #include "state/context.h"
 #include "state/framebuffers/packed_depth_stencil.h"
@@ -130,6 +131,8 @@ void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, 
   uint8_t* const first = out + layout.row_stride * size_t(y0 - y) + layout.pixel_bytes * size_t(x0 - x);
   if (color_identity && reads_color_bytes(fb.color, format, type))
     return read_color_bytes(fb.color, d->alpha_bits == 0, format, x0, x1, y0, y1, first, layout.row_stride);
+  if (color_identity && reads_color_components(fb.color, format, type, ctx.pack.swap_bytes))
+    return read_color_components(fb.color, d->alpha_bits == 0, format, type, x0, x1, y0, y1, first, layout.row_stride);
   if (format == GL_DEPTH_COMPONENT && reads_depth_rows(ctx.pixel_mode, type, ctx.pack.swap_bytes))
     return read_depth_rows(fb.depth, type, x0, x1, y0, y1, first, layout.row_stride);
   if (format == GL_STENCIL_INDEX && reads_stencil_rows(ctx.pixel_mode, type))

@@ -39,7 +39,8 @@ float load_component(const uint8_t* src, GLenum type) {
   }
 }
 
-// Which RGBA channel each component of `format` holds; -1 for luminance (R+G+B on read).
+}  // namespace
+
 int channel_of(GLenum format, int component) {
   switch (format) {
     case GL_RED: return 0;
@@ -52,8 +53,6 @@ int channel_of(GLenum format, int component) {
     default: return component;  // RGB, RGBA
   }
 }
-
-}  // namespace
 
 int color_format_components(GLenum format) {
   switch (format) {

@@ -16,6 +16,9 @@ struct PixelStore;
 // Components per pixel of a colour format (RGBA, RGB, BGRA, BGR, RED, GREEN, BLUE, ALPHA,
 // LUMINANCE, LUMINANCE_ALPHA), or 0 when `format` is not one.
 int color_format_components(GLenum format);
+// Which RGBA channel component `component` of colour format `format` holds; -1 for luminance
+// (R + G + B on read).
+int channel_of(GLenum format, int component);
 // Bytes of one component of `type` (the unpacked types), or 0 when it is not one.
 int pixel_type_size(GLenum type);
 // Whether `type` packs a whole pixel into one byte, short or int (GL 1.2's *_3_3_2 ...

@@ -101,6 +101,20 @@ TEST_P(OSMesaFormat, DrawPixelsStoresBytesInTheBufferOrder) {
   EXPECT_EQ(buffer, filled());
 }
 
+// glReadPixels as floats (color_component_reads.h) in each buffer order; a buffer without alpha
+// (RGB, BGR) reads alpha 1.
+TEST_P(OSMesaFormat, ReadPixelsAsFloats) {
+  clear(10, 20, 30, 40);
+  float rgba[4] = {};
+  glReadPixels(2, 3, 1, 1, GL_RGBA, GL_FLOAT, rgba);
+  EXPECT_EQ(glGetError(), GL_NO_ERROR);
+  const float alpha = bpp() == 3 ? 1.f : float(40 / 255.0);
+  EXPECT_EQ(rgba[0], float(10 / 255.0));
+  EXPECT_EQ(rgba[1], float(20 / 255.0));
+  EXPECT_EQ(rgba[2], float(30 / 255.0));
+  EXPECT_EQ(rgba[3], alpha);
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Formats, OSMesaFormat,
     ::testing::Values(FormatCase{OSMESA_RGBA, {10, 20, 30, 40}},

@@ -303,15 +303,21 @@ class DepthStencilRowsTest : public GlTest, public ::testing::WithParamInterface
   SurfaceSpec spec() const override { return {19, 13, GetParam(), 8}; }
 };
 
-template <typename T>
-std::vector<uint8_t> read_rect(int x, int y, int w, int h, GLenum format, GLenum type, bool swap, size_t size) {
+// glReadPixels into `size` bytes filled with 0xEE; `swap`: under PACK_SWAP_BYTES, each element
+// of `element` bytes swapped back to the native order (the filler reads the same either way).
+std::vector<uint8_t> read_rect(int x, int y, int w, int h, GLenum format, GLenum type, bool swap, size_t size,
+                               size_t element) {
   std::vector<uint8_t> out(size, 0xEE);
   glPixelStorei(GL_PACK_SWAP_BYTES, swap ? GL_TRUE : GL_FALSE);
   glReadPixels(x, y, w, h, format, type, out.data());
   glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
-  if (swap)  // back to the native order; the 0xEE filler reads the same either way
-    for (size_t i = 0; i + sizeof(T) <= size; i += sizeof(T)) std::reverse(&out[i], &out[i + sizeof(T)]);
+  if (swap)
+    for (size_t i = 0; i + element <= size; i += element) std::reverse(&out[i], &out[i + element]);
   return out;
+}
+template <typename T>
+std::vector<uint8_t> read_rect(int x, int y, int w, int h, GLenum format, GLenum type, bool swap, size_t size) {
+  return read_rect(x, y, w, h, format, type, swap, size, sizeof(T));
 }
 
 TEST_P(DepthStencilRowsTest, DepthAndStencilRowsMatchTheGeneralPath) {
@@ -360,6 +366,41 @@ TEST_P(DepthStencilRowsTest, DepthAndStencilRowsMatchTheGeneralPath) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bits, DepthStencilRowsTest, ::testing::Values(16, 24, 32));
+
+// Colour read into unpacked types by table (state/pixels/color_component_reads.h) against the
+// general path, which PACK_SWAP_BYTES selects: every format whose components are channels, every
+// unpacked type, pack alignments, a region partly outside the surface. And GL_FLOAT pinned by
+// hand: a stored byte k reads as k / 255.
+TEST_F(ReadPixelsTest, ComponentTypesMatchTheGeneralPath) {
+  const int w = width(), h = height();
+  std::vector<uint8_t> drawn(size_t(w) * h * 4);
+  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = uint8_t(i * 37 + (i >> 7) * 11);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glWindowPos2i(0, 0);
+  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  const GLenum formats[] = {GL_RGBA, GL_BGRA, GL_RGB, GL_BGR, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+  struct Type {
+    GLenum type;
+    size_t size;
+  };
+  const Type types[] = {{GL_UNSIGNED_BYTE, 1}, {GL_BYTE, 1}, {GL_UNSIGNED_SHORT, 2}, {GL_SHORT, 2},
+                        {GL_UNSIGNED_INT, 4},  {GL_INT, 4},  {GL_FLOAT, 4}};
+  const int x = -2, y = 3, rw = w + 3, rh = h - 5;
+  const size_t size = size_t(rw + 8) * (rh + 1) * 16;
+  for (const GLenum format : formats)
+    for (const Type& t : types)
+      for (int alignment : {1, 8}) {
+        glPixelStorei(GL_PACK_ALIGNMENT, alignment);
+        EXPECT_EQ(read_rect(x, y, rw, rh, format, t.type, false, size, t.size),
+                  read_rect(x, y, rw, rh, format, t.type, true, size, t.size))
+            << std::hex << "format " << format << " type " << t.type << std::dec << " alignment " << alignment;
+      }
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  float rgba[4];
+  glReadPixels(5, 6, 1, 1, GL_RGBA, GL_FLOAT, rgba);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(rgba[c], float(drawn[(size_t(6) * w + 5) * 4 + c] / 255.0)) << c;
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
 
 }  // namespace
 }  // namespace pineda::test

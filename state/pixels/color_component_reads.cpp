@@ -1,0 +1,53 @@
+#include "state/pixels/color_component_reads.h"
+
+#include <cstring>
+
+#include "raster/color_reduction.h"
+#include "state/pixels/pixel_format.h"
+
+namespace pineda::gl {
+namespace {
+
+// Rows of pixels whose `n` components of kSize bytes are table entries of the channels `channels`.
+template <int kSize>
+void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table, const int* channels, int n, int x0,
+               int x1, int y0, int y1, uint8_t* first, size_t row_stride) {
+  for (int y = y0; y < y1; ++y) {
+    const uint8_t* src = cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0);
+    uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
+    for (int x = x0; x < x1; ++x, src += 4, dst += n * kSize) {
+      uint8_t bytes[4];
+      raster::read_rgba8(cb, src, bytes);
+      if (opaque) bytes[3] = 255;
+      for (int c = 0; c < n; ++c) std::memcpy(dst + c * kSize, table + kSize * bytes[channels[c]], kSize);
+    }
+  }
+}
+
+}  // namespace
+
+bool reads_color_components(const raster::ColorBuffer& cb, GLenum format, GLenum type, bool swap_bytes) {
+  const int n = color_format_components(format);
+  const int size = pixel_type_size(type);
+  if (!cb.base || swap_bytes || n == 0 || size == 0) return false;
+  for (int c = 0; c < n; ++c)
+    if (channel_of(format, c) < 0) return false;
+  return true;
+}
+
+void read_color_components(const raster::ColorBuffer& cb, bool opaque, GLenum format, GLenum type, int x0, int x1,
+                           int y0, int y1, uint8_t* first, size_t row_stride) {
+  const int n = color_format_components(format), size = pixel_type_size(type);
+  int channels[4] = {0, 0, 0, 0};
+  for (int c = 0; c < n; ++c) channels[c] = channel_of(format, c);
+  uint8_t table[256 * 4];
+  for (int k = 0; k < 256; ++k) {
+    const double v[4] = {k / 255.0, 0, 0, 0};
+    store_color(v, GL_RED, type, table + size * k);
+  }
+  if (size == 1) return read_rows<1>(cb, opaque, table, channels, n, x0, x1, y0, y1, first, row_stride);
+  if (size == 2) return read_rows<2>(cb, opaque, table, channels, n, x0, x1, y0, y1, first, row_stride);
+  read_rows<4>(cb, opaque, table, channels, n, x0, x1, y0, y1, first, row_stride);
+}
+
+}  // namespace pineda::gl
