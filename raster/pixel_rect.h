@@ -32,7 +32,8 @@ class PixelFragmentWriter {
   // Whether fragments reach the colour buffer unchanged but for the depth test: no shader,
   // texturing, colour sum, fog, alpha or stencil test, blending, logic op, colour mask or
   // occlusion query, one single-sampled RGBA8 or BGRA8 target that keeps all its bits. Then
-  // rgba8_row writes what fragment() would (a component byte k given as k / 255 is stored as k).
+  // rgba8_row writes what fragment() would (a component byte k given as k / 255 is stored as k;
+  // a float c as the routines round clamp01(c) * 255).
   bool writes_rgba8_rows() const { return rgba8_rows_; }
   // Fragments (x, y) .. (x + count - 1, y) of colour RGBA8 words (R in the lowest byte) and
   // depth `depth` (in [0, 1], clamped here), the parts inside the framebuffer and the scissor

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raster/fragment_ops.h"
 #include "raster/pixel_rect.h"
 #include "state/draw.h"
 
@@ -33,10 +34,22 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
   return span;
 }
 
+// RGBA colours as the RGBA8 words the fragment routines store for them (fragment() clamps, the
+// routines round to nearest, ties to even).
+std::vector<uint32_t> rgba8_words(const std::vector<float>& color) {
+  std::vector<uint32_t> words(color.size() / 4);
+  for (size_t k = 0; k < words.size(); ++k) {
+    uint32_t word = 0;
+    for (int c = 0; c < 4; ++c) word |= uint32_t{raster::to_unorm8(raster::clamp01(color[4 * k + c]))} << (8 * c);
+    words[k] = word;
+  }
+  return words;
+}
+
 // Colour pixels given as RGBA8 words straight into the colour buffer (after the depth test when
 // it is on), a row at a time.
-void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const Span& cols,
-                      const Span& rows, double depth) {
+void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const uint32_t* words,
+                      const Span& cols, const Span& rows, double depth) {
   std::vector<uint32_t> row(cols.source.size());
   for (size_t r = 0; r < rows.source.size(); ++r) {
     const int j = rows.source[r];
@@ -53,7 +66,7 @@ void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage&
         continue;
       }
       const size_t run = c;
-      for (; c < cols.source.size() && takes_pixel(c); ++c) row[c] = image.rgba8[row_start + cols.source[c]];
+      for (; c < cols.source.size() && takes_pixel(c); ++c) row[c] = words[row_start + cols.source[c]];
       writer.rgba8_row(cols.first + int(run), rows.first + int(r), &row[run], int(c - run), depth);
     }
   }
@@ -72,7 +85,10 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
     const bool words = !image.rgba8.empty();
-    if (words && writer.writes_rgba8_rows()) return write_rgba8_rows(writer, image, cols, rows, rp.window[2]);
+    if (image.kind == PixelRectImage::Kind::Color && writer.writes_rgba8_rows()) {
+      if (words) return write_rgba8_rows(writer, image, image.rgba8.data(), cols, rows, rp.window[2]);
+      return write_rgba8_rows(writer, image, rgba8_words(image.color).data(), cols, rows, rp.window[2]);
+    }
     for (size_t r = 0; r < rows.source.size(); ++r) {
       const int j = rows.source[r];
       if (j < 0) continue;

@@ -4,6 +4,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -210,6 +211,38 @@ TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
             EXPECT_NE(frames[0], cleared);  // something was drawn
           }
         }
+}
+
+// Images that are not bytes, or go through pixel transfer, reach the direct rows as floats,
+// rounded as the fragment routines round them: out-of-range values, NaN, infinities and
+// halfway values (k + 0.5) / 255 give the frame the per-fragment path gives.
+TEST_F(DrawPixelsTest, FloatsOnAPlainPipelineMatchTheFragmentPath) {
+  const int w = 16, h = 9;
+  std::vector<GLfloat> image(size_t(w) * h * 4);
+  const float specials[] = {-0.5f, 1.5f, std::nanf(""), INFINITY, -INFINITY, 0.5f / 255.f, 2.5f / 255.f, 1.f};
+  for (size_t i = 0; i < image.size(); ++i)
+    image[i] = i % 3 == 0 ? specials[(i / 3) % 8] : float((i * 37) % 300) / 255.f - 0.05f;
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  for (const bool transfer : {false, true}) {
+    std::vector<uint8_t> frames[2];
+    for (int pass = 0; pass < 2; ++pass) {
+      clear_to(0.1f, 0.2f, 0.3f, 0.4f);
+      if (pass == 1) glEnable(GL_ALPHA_TEST);
+      if (transfer) glPixelTransferf(GL_GREEN_SCALE, 0.5f);
+      glWindowPos2i(3, 2);
+      glDrawPixels(w, h, GL_RGBA, GL_FLOAT, image.data());
+      glPixelTransferf(GL_GREEN_SCALE, 1.f);
+      glDisable(GL_ALPHA_TEST);
+      ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
+      frames[pass] = read_all();
+    }
+    EXPECT_EQ(frames[0], frames[1]) << "pixel transfer " << transfer;
+  }
+  // Pinned by hand: 1.5 and infinity clamp to 255, -0.5 and NaN to 0, 0.5 / 255 rounds to even 0.
+  const GLfloat pixel_values[4] = {1.5f, std::nanf(""), 0.5f / 255.f, INFINITY};
+  glWindowPos2i(0, 0);
+  glDrawPixels(1, 1, GL_RGBA, GL_FLOAT, pixel_values);
+  EXPECT_EQ(pixel(0, 0), (Rgba{255, 0, 0, 255}));
 }
 
 TEST_F(DrawPixelsTest, FragmentsGoThroughDepthAlphaBlendAndMasks) {
