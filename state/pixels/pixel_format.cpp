@@ -26,16 +26,44 @@ void store_component(double c, GLenum type, uint8_t* dst) {
   }
 }
 
+// A component of type T as a float (GL 2.1 table 2.9; the signed types clamped to -1).
+float component_value(GLubyte v) { return v / 255.f; }
+float component_value(GLbyte v) { return std::max(v / 127.f, -1.f); }
+float component_value(GLushort v) { return v / 65535.f; }
+float component_value(GLshort v) { return std::max(v / 32767.f, -1.f); }
+float component_value(GLuint v) { return float(v / 4294967295.0); }
+float component_value(GLint v) { return float(std::max(v / 2147483647.0, -1.0)); }
+float component_value(GLfloat v) { return v; }
+
 float load_component(const uint8_t* src, GLenum type) {
   switch (type) {
-    case GL_UNSIGNED_BYTE: return load_unaligned<GLubyte>(src) / 255.f;
-    case GL_BYTE: return std::max(load_unaligned<GLbyte>(src) / 127.f, -1.f);
-    case GL_UNSIGNED_SHORT: return load_unaligned<GLushort>(src) / 65535.f;
-    case GL_SHORT: return std::max(load_unaligned<GLshort>(src) / 32767.f, -1.f);
-    case GL_UNSIGNED_INT: return float(load_unaligned<GLuint>(src) / 4294967295.0);
-    case GL_INT: return float(std::max(load_unaligned<GLint>(src) / 2147483647.0, -1.0));
-    case GL_FLOAT: return load_unaligned<GLfloat>(src);
+    case GL_UNSIGNED_BYTE: return component_value(load_unaligned<GLubyte>(src));
+    case GL_BYTE: return component_value(load_unaligned<GLbyte>(src));
+    case GL_UNSIGNED_SHORT: return component_value(load_unaligned<GLushort>(src));
+    case GL_SHORT: return component_value(load_unaligned<GLshort>(src));
+    case GL_UNSIGNED_INT: return component_value(load_unaligned<GLuint>(src));
+    case GL_INT: return component_value(load_unaligned<GLint>(src));
+    case GL_FLOAT: return component_value(load_unaligned<GLfloat>(src));
     default: return 0.f;
+  }
+}
+
+// load_color over a row of pixels of an unpacked type T, the format's channels decoded once.
+template <typename T>
+void load_color_row(const uint8_t* src, GLenum format, int count, float* out) {
+  int channels[4];
+  const int n = color_format_components(format);
+  for (int c = 0; c < n; ++c) channels[c] = channel_of(format, c);
+  for (int i = 0; i < count; ++i, src += n * sizeof(T), out += 4) {
+    out[0] = out[1] = out[2] = 0.f;
+    out[3] = 1.f;
+    for (int c = 0; c < n; ++c) {
+      const float v = component_value(load_unaligned<T>(src + c * sizeof(T)));
+      if (channels[c] < 0)
+        out[0] = out[1] = out[2] = v;
+      else
+        out[channels[c]] = v;
+    }
   }
 }
 
@@ -155,6 +183,20 @@ void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]) {
       rgba[0] = rgba[1] = rgba[2] = v;
     else
       rgba[ch] = v;
+  }
+}
+
+bool load_color_row(const uint8_t* src, GLenum format, GLenum type, int count, float* out) {
+  if (color_format_components(format) == 0) return false;
+  switch (type) {
+    case GL_UNSIGNED_BYTE: load_color_row<GLubyte>(src, format, count, out); return true;
+    case GL_BYTE: load_color_row<GLbyte>(src, format, count, out); return true;
+    case GL_UNSIGNED_SHORT: load_color_row<GLushort>(src, format, count, out); return true;
+    case GL_SHORT: load_color_row<GLshort>(src, format, count, out); return true;
+    case GL_UNSIGNED_INT: load_color_row<GLuint>(src, format, count, out); return true;
+    case GL_INT: load_color_row<GLint>(src, format, count, out); return true;
+    case GL_FLOAT: load_color_row<GLfloat>(src, format, count, out); return true;
+    default: return false;
   }
 }
 

@@ -58,6 +58,9 @@ void store_color(const double rgba[4], GLenum format, GLenum type, uint8_t* dst)
 // One pixel of a colour format, converted to RGBA with GL's defaults for missing components;
 // packed types included.
 void load_color(const uint8_t* src, GLenum format, GLenum type, float rgba[4]);
+// load_color of `count` pixels from `src` (RGBA per pixel to `out`), for a colour format of an
+// unpacked type stored in the machine's byte order; false, with nothing written, for others.
+bool load_color_row(const uint8_t* src, GLenum format, GLenum type, int count, float* out);
 // Reverses the bytes of each of `count` components of `size` bytes (GL_*_SWAP_BYTES).
 void swap_component_bytes(uint8_t* p, int count, int size);
 // Reverses the bytes of each element of one pixel of format/type (GL_*_SWAP_BYTES); a format

@@ -75,6 +75,17 @@ void ColorImageReader::read(int i, int64_t j, float rgba[4]) const {
   if (transfer_) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, rgba);
 }
 
+void ColorImageReader::read_row(int64_t j, int first, int count, float* out) const {
+  const size_t pixel_bytes = size_t(color_format_components(format_)) * size_t(pixel_type_size(type_));
+  if (format_ == GL_COLOR_INDEX || ctx_.unpack.swap_bytes ||
+      !load_color_row(image_.row(j) + size_t(first) * pixel_bytes, format_, type_, count, out)) {
+    for (int i = 0; i < count; ++i) read(first + i, j, out + 4 * size_t(i));
+    return;
+  }
+  if (transfer_)
+    for (int i = 0; i < count; ++i) transfer_color(ctx_.pixel_mode, ctx_.pixel_maps, out + 4 * size_t(i));
+}
+
 bool ColorImageReader::rgba8_texels(int64_t j, int first, int count, uint32_t* out) const {
   if (transfer_ || !rgba8_.bytes) return false;
   rgba8_row_texels(rgba8_, image_.row(j) + static_cast<size_t>(first) * static_cast<size_t>(rgba8_.bytes), count, out);
@@ -85,8 +96,7 @@ std::vector<float> unpack_color_image(const Context& ctx, int width, int height,
                                       const void* pixels) {
   std::vector<float> out(size_t(width) * size_t(height) * 4);
   const ColorImageReader reader(ctx, width, format, type, pixels);
-  for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i) reader.read(i, j, &out[(size_t(j) * width + i) * 4]);
+  for (int j = 0; j < height; ++j) reader.read_row(j, 0, width, &out[size_t(j) * width * 4]);
   return out;
 }
 

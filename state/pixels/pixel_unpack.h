@@ -45,6 +45,8 @@ class ColorImageReader {
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
   // Pixel i of row j as RGBA in [0, 1].
   void read(int i, int64_t j, float rgba[4]) const;
+  // Pixels first..first + count - 1 of row j as read() gives them, RGBA per pixel to `out`.
+  void read_row(int64_t j, int first, int count, float* out) const;
   // Pixels first..first + count - 1 of row j as RGBA8 words (rgba8_rows.h), when the image
   // holds bytes in a way rgba8_source takes and no pixel transfer applies, so that read() would
   // give each byte / 255 exactly; false, with nothing written, otherwise.

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 #include "glapi/gl_entry_points.h"
 #include "state/es2/es2_rules.h"
@@ -73,6 +74,7 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
   const int64_t image_rows = ctx.unpack.image_height > 0 ? ctx.unpack.image_height : full_height;
   const int64_t skip_images = box.volume ? ctx.unpack.skip_images : 0;
   const bool bytes = keeps_bytes(storage);
+  std::vector<float> rgba_row;
   for (int z = 0; z < box.depth; ++z)
     for (int y = 0; y < box.height; ++y) {
       const int64_t row = (skip_images + z + box.border_z) * image_rows + y + box.border_y;
@@ -81,11 +83,9 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
         reduce_rgba8_to_base(dst, box.width, storage.base);
         continue;
       }
-      for (int x = 0; x < box.width; ++x) {
-        float rgba[4];
-        source.read(x + box.border_x, row, rgba);
-        dst[x] = to_texel(rgba, storage);
-      }
+      rgba_row.resize(4 * size_t(box.width));
+      source.read_row(row, box.border_x, box.width, rgba_row.data());
+      for (int x = 0; x < box.width; ++x) dst[x] = to_texel(&rgba_row[4 * size_t(x)], storage);
     }
 }
 
