@@ -85,7 +85,7 @@ void unpack_into(Context& ctx, TextureLevelData& level, const TextureFormat& sto
       }
       rgba_row.resize(4 * size_t(box.width));
       source.read_row(row, box.border_x, box.width, rgba_row.data());
-      for (int x = 0; x < box.width; ++x) dst[x] = to_texel(&rgba_row[4 * size_t(x)], storage);
+      to_texels(rgba_row.data(), box.width, storage, dst);
     }
 }
 

@@ -6,6 +6,8 @@
 #include <bit>
 #include <cmath>
 
+#include "raster/fragment_ops.h"
+
 namespace pineda {
 namespace {
 
@@ -183,20 +185,34 @@ void reduce_rgba8_to_base(uint32_t* rgba, int count, TexBaseFormat base) {
   }
 }
 
-uint32_t to_texel(const float rgba[4], const TextureFormat& format) {
-  float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
-  reduce_to_base_format(c, format.base);
-  uint32_t texel = 0;
+void to_texels(const float* rgba, int count, const TextureFormat& format, uint32_t* out) {
+  uint32_t max[4];
+  bool bytes = true;
   for (int i = 0; i < 4; ++i) {
     const int bits = channel_bits(format, i);
-    const uint32_t max = bits > 0 && bits < 8 ? (1u << bits) - 1 : 255u;
-    // Rounded in float as Mesa's texture packing: ties to even for 8 bits (float_to_ubyte:
-    // 0.3f * 255 is 76.5 and stores 76), away from zero for fewer (util_iround).
-    const float scaled = std::clamp(c[i], 0.f, 1.f) * float(max);
-    const uint32_t q = uint32_t(max == 255u ? std::lrint(scaled) : std::lround(scaled));
-    texel |= widen(q, max) << (8 * i);
+    max[i] = bits > 0 && bits < 8 ? (1u << bits) - 1 : 255u;
+    bytes = bytes && max[i] == 255u;
   }
-  return texel;
+  for (int k = 0; k < count; ++k, rgba += 4) {
+    float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
+    reduce_to_base_format(c, format.base);
+    uint32_t texel = 0;
+    if (bytes) {
+      // raster::to_unorm8 is std::lrint(std::clamp(c, 0, 1) * 255) below for every float (NaN
+      // too: lrint's out-of-range result truncates to 0), without a call per channel.
+      for (int i = 0; i < 4; ++i) texel |= uint32_t{raster::to_unorm8(c[i])} << (8 * i);
+      out[k] = texel;
+      continue;
+    }
+    for (int i = 0; i < 4; ++i) {
+      // Rounded in float as Mesa's texture packing: ties to even for 8 bits (float_to_ubyte:
+      // 0.3f * 255 is 76.5 and stores 76), away from zero for fewer (util_iround).
+      const float scaled = std::clamp(c[i], 0.f, 1.f) * float(max[i]);
+      const uint32_t q = uint32_t(max[i] == 255u ? std::lrint(scaled) : std::lround(scaled));
+      texel |= widen(q, max[i]) << (8 * i);
+    }
+    out[k] = texel;
+  }
 }
 
 }  // namespace pineda

@@ -48,11 +48,11 @@ void reduce_to_base_format(float rgba[4], raster::TexBaseFormat base);
 // Z16/Z24/Z32 packing), or rounded to float for a float format.
 uint32_t depth_texel(double depth, const TextureFormat& format);
 
-// An RGBA colour reduced to the components the format keeps and quantized to its bits, as an
-// RGBA8 texel (R in the lowest byte).
-uint32_t to_texel(const float rgba[4], const TextureFormat& format);
+// `count` RGBA colours (4 floats each) reduced to the components the format keeps and quantized
+// to its bits, as RGBA8 texels (R in the lowest byte).
+void to_texels(const float* rgba, int count, const TextureFormat& format, uint32_t* out);
 
-// Whether to_texel keeps 8-bit values: a colour format without a component of fewer than 8
+// Whether to_texels keeps 8-bit values: a colour format without a component of fewer than 8
 // bits, whose texel of (k0, k1, k2, k3) / 255 is reduce_rgba8_to_base of (k0, k1, k2, k3).
 bool keeps_bytes(const TextureFormat& format);
 

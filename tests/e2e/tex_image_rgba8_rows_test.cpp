@@ -2,6 +2,7 @@
 // by row (no per-texel conversion): every byte value, every layout, unpack row length, skips
 // and alignment, borders, and the per-texel path whenever pixel transfer or a smaller format
 // changes the values.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -209,6 +210,35 @@ TEST_F(TexImageRgba8RowsTest, LuminanceAndIntensityBytesDrawAsThemselves) {
     EXPECT_EQ(pixels, want) << std::hex << internal;
   }
   glDisable(GL_TEXTURE_2D);
+}
+
+}  // namespace
+}  // namespace pineda::test
+
+namespace pineda::test {
+namespace {
+
+// Float texels into 8-bit formats (to_texels): clamped to [0, 1], NaN as 0, rounded to nearest
+// with ties to even (Mesa's float_to_ubyte: 0.3f * 255 is 76.5 and stores 76); into RGBA4,
+// rounded to 4 bits with ties away from zero and widened back; into LUMINANCE8, red alone.
+TEST_F(TexImageRgba8RowsTest, FloatTexelsClampRoundAndReduce) {
+  const float texels[2][4] = {{0.3f, std::nanf(""), INFINITY, -1.f}, {0.5f / 255.f, 1.5f / 255.f, 2.5f / 255.f, 1.f}};
+  struct Case {
+    GLenum internal;
+    uint8_t want[2][4];
+  };
+  // RGBA4: 0.3 * 15 = 4.5 rounds to 5 (widened 85), 1.5 / 255 * 15 = 0.09 to 0.
+  const Case cases[] = {{GL_RGBA8, {{76, 0, 255, 0}, {0, 2, 2, 255}}},
+                        {GL_RGBA4, {{85, 0, 255, 0}, {0, 0, 0, 255}}},
+                        {GL_LUMINANCE8, {{76, 0, 0, 255}, {0, 0, 0, 255}}}};
+  glBindTexture(GL_TEXTURE_2D, 1);
+  for (const Case& c : cases) {
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(c.internal), 2, 1, 0, GL_RGBA, GL_FLOAT, texels);
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const std::vector<uint8_t> got = stored_level(2, 1);
+    for (int p = 0; p < 2; ++p)
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(got[size_t(4 * p + k)], c.want[p][k]) << std::hex << c.internal << " texel " << p << " component " << k;
+  }
 }
 
 }  // namespace
