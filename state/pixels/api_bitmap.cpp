@@ -1,7 +1,10 @@
 // glBitmap (GL 1.5 spec 3.7).
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "glapi/gl_entry_points.h"
+#include "raster/fragment_ops.h"
 #include "raster/pixel_rect.h"
 #include "state/context.h"
 #include "state/draw.h"
@@ -25,6 +28,28 @@ void draw_bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLf
   if (!std::isfinite(fx) || !std::isfinite(fy) || std::abs(fx) > 1e9 || std::abs(fy) > 1e9) return;
   const int x0 = int(fx), y0 = int(fy);
   const BitmapLayout bits(ctx.unpack, width);
+  if (writer.writes_rgba8_rows()) {  // runs of set bits straight into the colour buffer
+    uint32_t word = 0;
+    for (int c = 0; c < 4; ++c) word |= uint32_t{raster::to_unorm8(raster::clamp01(rp.color[c]))} << (8 * c);
+    const int fb_width = ctx.renderer().framebuffer().width;
+    const std::vector<uint32_t> run(size_t(std::clamp(fb_width, 0, width)), word);  // a run is at most both
+    for (int j = 0; j < height; ++j) {
+      const int64_t y = int64_t(y0) + j;
+      if (y < 0 || y > 0x7fffffff) continue;
+      for (int i = 0; i < width;) {
+        if (!bits.bit(bitmap, i, j)) {
+          ++i;
+          continue;
+        }
+        const int first = i;
+        while (i < width && bits.bit(bitmap, i, j)) ++i;
+        // The run's columns inside the framebuffer (rgba8_row clips to the scissor rectangle).
+        const int64_t left = std::max<int64_t>(int64_t(x0) + first, 0), right = std::min<int64_t>(int64_t(x0) + i, fb_width);
+        if (left < right) writer.rgba8_row(int(left), int(y), run.data(), int(right - left), rp.window[2]);
+      }
+    }
+    return;
+  }
   for (int j = 0; j < height; ++j) {
     const int64_t y = int64_t(y0) + j;
     if (y < 0 || y > 0x7fffffff) continue;

@@ -111,6 +111,63 @@ TEST_F(BitmapTest, FragmentsUseRasterDepthAndStencil) {
   EXPECT_EQ(s[1], 1);
 }
 
+// On a pipeline that changes nothing but for the depth test, runs of set bits are written straight
+// into the colour buffer (PixelFragmentWriter::rgba8_row); an alpha test that passes everything
+// sends the bitmap down the per-fragment path. Positions partly and wholly outside the window,
+// LSB_FIRST, skips, scissor and depth test give the same frames both ways.
+TEST_F(BitmapTest, RunsOnAPlainPipelineMatchTheFragmentPath) {
+  std::vector<GLubyte> bits(5 * 21);  // 37 x 21 bits, rows of 5 bytes
+  for (size_t i = 0; i < bits.size(); ++i) bits[i] = GLubyte(i * 89 + 0x35);
+  const int positions[][2] = {{3, 4}, {-20, 9}, {25, 28}, {-40, 2}, {40, 40}};
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  for (const auto& at : positions)
+    for (const bool lsb_first : {false, true})
+      for (const bool scissor : {false, true})
+        for (const bool depth_test : {false, true}) {
+          std::vector<uint8_t> frames[2];
+          for (int pass = 0; pass < 2; ++pass) {
+            clear_to(0.1f, 0.2f, 0.3f, 0.4f);
+            glClearDepth(0.5);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, 0, width() / 2, height());
+            glClearDepth(0.1);
+            glClear(GL_DEPTH_BUFFER_BIT);
+            glDisable(GL_SCISSOR_TEST);
+            if (pass == 1) glEnable(GL_ALPHA_TEST);
+            if (scissor) glEnable(GL_SCISSOR_TEST);
+            if (depth_test) glEnable(GL_DEPTH_TEST);
+            glScissor(2, 3, 21, 19);
+            glPixelStorei(GL_UNPACK_LSB_FIRST, lsb_first ? GL_TRUE : GL_FALSE);
+            glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);
+            glPixelStorei(GL_UNPACK_ROW_LENGTH, 40);
+            glColor4f(0.9f, 0.6f, 0.3f, 0.7f);  // halfway values: rounding matters
+            glWindowPos3f(float(at[0]), float(at[1]), 0.25f);
+            glBitmap(35, 21, 0.f, 0.f, 0.f, 0.f, bits.data());
+            glPixelStorei(GL_UNPACK_LSB_FIRST, GL_FALSE);
+            glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+            glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+            glDisable(GL_ALPHA_TEST);
+            glDisable(GL_SCISSOR_TEST);
+            glDisable(GL_DEPTH_TEST);
+            ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+            frames[pass] = read_all();
+          }
+          EXPECT_EQ(frames[0], frames[1]) << "at " << at[0] << "," << at[1] << " lsb first " << lsb_first << " scissor "
+                                          << scissor << " depth test " << depth_test;
+        }
+  // Pinned: at (3, 4), MSB first, every set bit inside the window and nothing else.
+  clear_to(0, 0, 0, 0);
+  glColor4f(1, 0, 1, 1);
+  glWindowPos2i(3, 4);
+  glBitmap(35, 21, 0.f, 0.f, 0.f, 0.f, bits.data());
+  int set = 0;
+  for (int j = 0; j < 21; ++j)
+    for (int i = 0; i < 35; ++i) set += 3 + i < width() && 4 + j < height() && (bits[size_t(j) * 5 + i / 8] >> (7 - i % 8)) & 1;
+  EXPECT_GT(set, 100);
+  EXPECT_EQ(count_pixels({255, 0, 255, 255}), set);
+}
+
 TEST_F(BitmapTest, CompiledIntoAList) {
   GLubyte bits = 0x80;
   glColor3f(1, 0, 0);
