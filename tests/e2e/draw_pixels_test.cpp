@@ -177,13 +177,7 @@ TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
           std::vector<GLuint> depths[2];
           for (int pass = 0; pass < 2; ++pass) {
             clear_to(0.1f, 0.2f, 0.3f, 0.4f);
-            glClearDepth(0.5);
-            glClear(GL_DEPTH_BUFFER_BIT);
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(0, 0, width() / 2, height());
-            glClearDepth(0.1);
-            glClear(GL_DEPTH_BUFFER_BIT);
-            glDisable(GL_SCISSOR_TEST);
+            clear_depth_halves(0.1, 0.5);
             cleared = read_all();
             if (pass == 1) glEnable(GL_ALPHA_TEST);
             if (scissor) glEnable(GL_SCISSOR_TEST);

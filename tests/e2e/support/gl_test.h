@@ -62,6 +62,17 @@ class GlTest : public ::testing::Test {
     glClear(GL_COLOR_BUFFER_BIT);
   }
 
+  // The depth buffer cleared to `left` on the left half of the surface, `right` on the right.
+  void clear_depth_halves(double left, double right) {
+    glClearDepth(right);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, width() / 2, height());
+    glClearDepth(left);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+  }
+
   Rgba pixel(int x, int y) { return read_rgba(x, y); }
 
   // The whole colour buffer, bottom row first.
