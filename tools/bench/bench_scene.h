@@ -37,6 +37,7 @@ std::unique_ptr<BenchScene> createStateChanges(int width, int height);
 std::unique_ptr<BenchScene> createCopyBlur(int width, int height);
 std::unique_ptr<BenchScene> createReadPixels(int width, int height);
 std::unique_ptr<BenchScene> createDrawPixels(int width, int height);
+std::unique_ptr<BenchScene> createPixelTransfers(int width, int height);
 std::unique_ptr<BenchScene> createTextureUpload(int width, int height);
 std::unique_ptr<BenchScene> createWireframe(int width, int height);
 std::unique_ptr<BenchScene> createStencilReflection(int width, int height);

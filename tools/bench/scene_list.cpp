@@ -15,6 +15,8 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
       {"read_pixels", "a smooth-shaded frame read back by glReadPixels as GL_RGBA and as GL_RGB bytes", createReadPixels},
       {"draw_pixels", "a window-sized RGBA byte image by glDrawPixels, then a quarter-size RGB one over it at pixel zoom 2",
        createDrawPixels},
+      {"pixel_transfers", "glGetTexImage, glReadPixels of depth, stencil and float colour, glCopyPixels, float glDrawPixels, 1200 glBitmap glyphs",
+       createPixelTransfers},
       {"texture_upload", "two 512x512 textures given new texels by glTexSubImage2D every frame (RGBA bytes, BGRA 8_8_8_8_REV)",
        createTextureUpload},
       {"wireframe", "a 64x64 height field as 130 line strips and 4225 two-pixel points, depth test", createWireframe},
