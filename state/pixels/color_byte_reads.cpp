@@ -50,6 +50,7 @@ void pack_rgba8_row(const uint8_t* src, bool stored_bgra, GLenum format, uint32_
   const bool wants_bgr = format == GL_BGRA || format == GL_BGR;
   const bool swap = stored_bgra != wants_bgr;
   const bool three = format == GL_RGB || format == GL_BGR;
+  if (!swap && !three && alpha == 0) return static_cast<void>(std::memcpy(dst, src, 4 * static_cast<size_t>(n)));
   auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);
   copy(src, dst, n, alpha);
 }
