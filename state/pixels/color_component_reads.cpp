@@ -9,19 +9,38 @@ namespace pineda::gl {
 namespace {
 
 // Rows of pixels whose `n` components of kSize bytes are table entries of the channels `channels`.
-template <int kSize>
+// A buffer that keeps all its bits (kStored) is read in place: `channels` then index its stored
+// bytes, 4 standing for an alpha that reads 255.
+template <int kSize, bool kStored>
 void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table, const int* channels, int n, int x0,
                int x1, int y0, int y1, uint8_t* first, size_t row_stride) {
   for (int y = y0; y < y1; ++y) {
     const uint8_t* src = cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0);
     uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
     for (int x = x0; x < x1; ++x, src += 4, dst += n * kSize) {
-      uint8_t bytes[4];
-      raster::read_rgba8(cb, src, bytes);
-      if (opaque) bytes[3] = 255;
+      uint8_t bytes[5];
+      if constexpr (kStored) {
+        std::memcpy(bytes, src, 4);
+        bytes[4] = 255;
+      } else {
+        raster::read_rgba8(cb, src, bytes);
+        if (opaque) bytes[3] = 255;
+      }
       for (int c = 0; c < n; ++c) std::memcpy(dst + c * kSize, table + kSize * bytes[channels[c]], kSize);
     }
   }
+}
+
+template <int kSize>
+void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table, int* channels, int n, int x0, int x1,
+               int y0, int y1, uint8_t* first, size_t row_stride) {
+  if (cb.reduction.active) return read_rows<kSize, false>(cb, opaque, table, channels, n, x0, x1, y0, y1, first, row_stride);
+  const bool bgra = cb.format == raster::ColorFormat::BGRA8;
+  for (int c = 0; c < n; ++c) {  // read_rgba8's order and opaque alpha, as byte indices
+    if (bgra && (channels[c] == 0 || channels[c] == 2)) channels[c] = 2 - channels[c];
+    if (opaque && channels[c] == 3) channels[c] = 4;
+  }
+  read_rows<kSize, true>(cb, opaque, table, channels, n, x0, x1, y0, y1, first, row_stride);
 }
 
 }  // namespace
