@@ -54,6 +54,19 @@ PixelRectImage read_rect(const Context& ctx, const raster::Framebuffer& fb, int 
     if (type != GL_STENCIL) image.depth.assign(n, 0.0);
     if (type != GL_DEPTH) image.stencil.assign(n, 0);
   }
+  if (color_words && !fb.color.reduction.active) {  // rows of stored words, BGRA8's swapped
+    const int64_t left = std::max<int64_t>(x, 0), right = std::min<int64_t>(int64_t(x) + width, fb.width);
+    for (int j = 0; j < height && left < right; ++j) {
+      const int64_t sy = int64_t(y) + j;
+      if (sy < 0 || sy >= fb.height) continue;
+      const size_t k = size_t(j) * width + size_t(left - x), count = size_t(right - left);
+      std::memcpy(&image.rgba8[k], fb.color.base + fb.color.stride * sy + 4 * left, 4 * count);
+      if (fb.color.format == raster::ColorFormat::BGRA8)
+        for (size_t i = 0; i < count; ++i) image.rgba8[k + i] = raster::swap_red_blue(image.rgba8[k + i]);
+      std::memset(&image.present[k], 1, count);
+    }
+    return image;
+  }
   const double depth_max = fb.depth.bits >= 32 ? 4294967295.0 : double((1ull << fb.depth.bits) - 1);
   for (int j = 0; j < height; ++j) {
     const int64_t sy = int64_t(y) + j;

@@ -115,6 +115,23 @@ TEST_P(OSMesaFormat, ReadPixelsAsFloats) {
   EXPECT_EQ(rgba[3], alpha);
 }
 
+// glCopyPixels of colour (copied rows of stored words, PixelRectImage::rgba8) leaves the copy's
+// bytes those of its source in every buffer order.
+TEST_P(OSMesaFormat, CopyPixelsCopiesTheStoredBytes) {
+  Bytes image(3 * h * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = uint8_t(i * 37 + 11);
+  glWindowPos2i(0, 0);
+  glDrawPixels(3, h, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+  glWindowPos2i(4, 0);
+  glCopyPixels(0, 0, 3, h, GL_COLOR);
+  glFinish();
+  EXPECT_EQ(glGetError(), GL_NO_ERROR);
+  for (int y = 0; y < h; ++y) {
+    const uint8_t* row = buffer.data() + size_t(y) * w * bpp();
+    EXPECT_EQ(Bytes(row + 4 * bpp(), row + 7 * bpp()), Bytes(row, row + 3 * bpp())) << "row " << y;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(
     Formats, OSMesaFormat,
     ::testing::Values(FormatCase{OSMESA_RGBA, {10, 20, 30, 40}},
