@@ -193,6 +193,11 @@ void to_texels(const float* rgba, int count, const TextureFormat& format, uint32
     max[i] = bits > 0 && bits < 8 ? (1u << bits) - 1 : 255u;
     bytes = bytes && max[i] == 255u;
   }
+  if (bytes && format.base == TexBaseFormat::RGBA) {  // no reduction: byte for component (vectorizes)
+    auto* texel_bytes = reinterpret_cast<uint8_t*>(out);  // RGBA8 words: R in the lowest byte
+    for (size_t i = 0; i < 4 * static_cast<size_t>(count); ++i) texel_bytes[i] = raster::to_unorm8(rgba[i]);
+    return;
+  }
   for (int k = 0; k < count; ++k, rgba += 4) {
     float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
     reduce_to_base_format(c, format.base);
