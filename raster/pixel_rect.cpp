@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "raster/blend8.h"
 #include "raster/fragment_ops.h"
 #include "raster/multisample.h"
 
@@ -38,10 +39,30 @@ PixelFragmentWriter::PixelFragmentWriter(const DrawState& state, const Framebuff
     y1_ = std::min<int64_t>(y1_, int64_t{state.scissor.y} + std::max(state.scissor.height, 0));
   }
   const FragmentKey& key = record_.key;
-  rgba8_rows_ = !state.shader && !key.textured && !key.stencil && !key.blend && !key.extras && !key.count_samples &&
-                !state.alpha_test && record_.color_write_all && fb.samples == 1 && fb.color_targets <= 1 &&
-                fb.color.base && !fb.color.reduction.active;
+  rgba8_rows_ = !state.shader && !key.textured && !key.stencil && (!key.blend || key.blend8 != Blend8::Other) &&
+                !key.extras && !key.count_samples && !state.alpha_test && record_.color_write_all && fb.samples == 1 &&
+                fb.color_targets <= 1 && fb.color.base && !fb.color.reduction.active;
 }
+
+namespace {
+
+using Words = uint32_t __attribute__((vector_size(16)));
+
+// blend8.h's integer blend of four source words over four destination words (both in the
+// buffer's byte order: the alpha byte is the top one in either), what the fragment routines'
+// blending gives for these factors.
+Words blend_words(Blend8 blend, Words src, Words dst) {
+  switch (blend) {
+    case Blend8::Over: return blend_over_halves(src, dst);
+    case Blend8::OverKeepAlpha: return keep_alpha8(blend_over_halves(src, dst), dst);
+    case Blend8::AddScaled: return blend_add_scaled8(src, dst);
+    case Blend8::Add: return blend_add8(src, dst);
+    case Blend8::Other: break;
+  }
+  return src;
+}
+
+}  // namespace
 
 void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth) {
   if (y < y0_ || y >= y1_) return;
@@ -51,7 +72,8 @@ void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int coun
   const uint32_t* src = rgba + (first - x);
   const size_t n = static_cast<size_t>(last - first);
   const bool bgra = fb_.color.format == ColorFormat::BGRA8;
-  if (!record_.key.depth) {
+  const FragmentKey& key = record_.key;
+  if (!key.depth && !key.blend) {
     if (!bgra) return static_cast<void>(std::memcpy(dst, src, 4 * n));
     for (size_t i = 0; i < n; ++i) {
       const uint32_t p = swap_red_blue(src[i]);
@@ -63,11 +85,22 @@ void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int coun
   const uint32_t z = static_cast<uint32_t>((depth > 0.0 ? (depth < 1.0 ? depth : 1.0) : 0.0) * record_.depth_max + 0.5);
   uint32_t* stored = fb_.depth.base + static_cast<ptrdiff_t>(y) * fb_.depth.stride + first;
   const DrawState& s = record_.state;
-  for (size_t i = 0; i < n; ++i) {
-    if (!compare(s.depth_func, z, stored[i])) continue;
-    if (s.depth_write) stored[i] = z;
-    const uint32_t p = bgra ? swap_red_blue(src[i]) : src[i];
-    std::memcpy(dst + 4 * i, &p, 4);
+  for (size_t i = 0; i < n; i += 4) {  // four words at a time, the last group padded
+    const size_t m = std::min<size_t>(4, n - i);
+    Words colors = {}, old = {};
+    for (size_t l = 0; l < m; ++l) colors[l] = bgra ? swap_red_blue(src[i + l]) : src[i + l];
+    if (key.blend) {
+      std::memcpy(&old, dst + 4 * i, 4 * m);
+      colors = blend_words(key.blend8, colors, old);
+    }
+    for (size_t l = 0; l < m; ++l) {
+      if (key.depth) {
+        if (!compare(s.depth_func, z, stored[i + l])) continue;
+        if (s.depth_write) stored[i + l] = z;
+      }
+      const uint32_t p = colors[l];
+      std::memcpy(dst + 4 * (i + l), &p, 4);
+    }
   }
 }
 

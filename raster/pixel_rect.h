@@ -29,9 +29,10 @@ class PixelFragmentWriter {
   // pixel rectangles write depth and stencil directly, whatever the depth test (as Mesa).
   void depth(int x, int y, double z);
 
-  // Whether fragments reach the colour buffer unchanged but for the depth test: no shader,
-  // texturing, colour sum, fog, alpha or stencil test, blending, logic op, colour mask or
-  // occlusion query, one single-sampled RGBA8 or BGRA8 target that keeps all its bits. Then
+  // Whether fragments reach the colour buffer unchanged but for the depth test and an integer
+  // blend (blend8.h): no shader, texturing, colour sum, fog, alpha or stencil test, other
+  // blending, logic op, colour mask or occlusion query, one single-sampled RGBA8 or BGRA8 target
+  // that keeps all its bits. Then
   // rgba8_row writes what fragment() would (a component byte k given as k / 255 is stored as k;
   // a float c as the routines round clamp01(c) * 255).
   bool writes_rgba8_rows() const { return rgba8_rows_; }

@@ -46,8 +46,8 @@ std::vector<uint32_t> rgba8_words(const std::vector<float>& color) {
   return words;
 }
 
-// Colour pixels given as RGBA8 words straight into the colour buffer (after the depth test when
-// it is on), a row at a time.
+// Colour pixels given as RGBA8 words straight into the colour buffer (through the depth test and
+// an integer blend when they are on), a row at a time.
 void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const uint32_t* words,
                       const Span& cols, const Span& rows, double depth) {
   std::vector<uint32_t> row(cols.source.size());

@@ -141,12 +141,13 @@ TEST_F(DrawPixelsTest, ClippedAtTheWindowEdgeAndByScissor) {
   EXPECT_EQ(count_pixels({200, 200, 200, 200}), 12);
 }
 
-// Byte images on a pipeline that changes nothing but for the depth test are written straight
-// into the colour buffer (PixelFragmentWriter::rgba8_row); an alpha test that passes everything
-// sends the same image down the per-fragment path. Every format rgba8_rows.h reads, at several
-// zooms, with and without a scissor rectangle and the depth test (over a depth buffer that is
-// 0.1 on the left half, 0.5 on the right; the image at depth 0.25), a region partly outside the
-// window, gives the same colour and depth both ways.
+// Byte images on a pipeline that changes nothing but for the depth test and an integer blend
+// (blend8.h) are written straight into the colour buffer (PixelFragmentWriter::rgba8_row); an
+// alpha test that passes everything sends the same image down the per-fragment path. Every
+// format rgba8_rows.h reads, at several zooms, with and without a scissor rectangle, the depth
+// test (over a depth buffer that is 0.1 on the left half, 0.5 on the right; the image at depth
+// 0.25) and each integer blend (and one float blend), a region partly outside the window, gives
+// the same colour and depth both ways.
 TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
   const int w = 13, h = 11;
   std::vector<GLubyte> image(size_t(w) * h * 4);
@@ -168,11 +169,25 @@ TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
   };
   const DepthTest depth_tests[] = {{false, GL_LESS, true}, {true, GL_LESS, true}, {true, GL_GREATER, true},
                                    {true, GL_LEQUAL, false}};
+  struct Blend {
+    bool on;
+    GLenum src_rgb, dst_rgb, src_alpha, dst_alpha;
+  };
+  const Blend blends[] = {{false, GL_ONE, GL_ZERO, GL_ONE, GL_ZERO},
+                          {true, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA},
+                          {true, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE},
+                          {true, GL_SRC_ALPHA, GL_ONE, GL_SRC_ALPHA, GL_ONE},
+                          {true, GL_ONE, GL_ONE, GL_ONE, GL_ONE},
+                          {true, GL_ONE_MINUS_DST_COLOR, GL_ZERO, GL_ONE, GL_ZERO}};  // float blending
   glAlphaFunc(GL_ALWAYS, 0.f);
   for (const Format& f : formats)
     for (const auto& zoom : zooms)
       for (const DepthTest& depth : depth_tests)
+        for (const Blend& blend : blends)
         for (bool scissor : {false, true}) {
+          if (blend.on && (zoom[0] != 1 || depth.func == GL_GREATER)) continue;  // enough cases
+          if (blend.on) glEnable(GL_BLEND);
+          glBlendFuncSeparate(blend.src_rgb, blend.dst_rgb, blend.src_alpha, blend.dst_alpha);
           std::vector<uint8_t> cleared, frames[2];
           std::vector<GLuint> depths[2];
           for (int pass = 0; pass < 2; ++pass) {
@@ -197,9 +212,11 @@ TEST_F(DrawPixelsTest, BytesOnAPlainPipelineMatchTheFragmentPath) {
             depths[pass].resize(size_t(width()) * height());
             glReadPixels(0, 0, width(), height(), GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depths[pass].data());
           }
+          glDisable(GL_BLEND);
           EXPECT_EQ(frames[0], frames[1]) << "format 0x" << std::hex << f.format << " type 0x" << f.type << std::dec
                                           << " zoom " << zoom[0] << "x" << zoom[1] << " scissor " << scissor
-                                          << " depth test " << depth.on << " func 0x" << std::hex << depth.func;
+                                          << " depth test " << depth.on << " func 0x" << std::hex << depth.func
+                                          << " blend 0x" << blend.src_rgb << " 0x" << blend.dst_rgb;
           EXPECT_EQ(depths[0], depths[1]);
           if (!depth.on) {
             EXPECT_NE(frames[0], cleared);  // something was drawn
