@@ -130,7 +130,8 @@ void read_pixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, 
   if (x0 >= x1 || y0 >= y1) return;
   uint8_t* const first = out + layout.row_stride * size_t(y0 - y) + layout.pixel_bytes * size_t(x0 - x);
   if (color_identity && reads_color_bytes(fb.color, format, type))
-    return read_color_bytes(fb.color, d->alpha_bits == 0, format, x0, x1, y0, y1, first, layout.row_stride);
+    return read_color_bytes(fb.color, d->alpha_bits == 0, format, x0, x1, y0, y1, first, layout.row_stride,
+                            reverses_rgba8_words(type, ctx.pack.swap_bytes));
   if (color_identity && reads_color_components(fb.color, format, type, ctx.pack.swap_bytes))
     return read_color_components(fb.color, d->alpha_bits == 0, format, type, x0, x1, y0, y1, first, layout.row_stride);
   if (format == GL_DEPTH_COMPONENT && reads_depth_rows(ctx.pixel_mode, type, ctx.pack.swap_bytes))

@@ -43,16 +43,33 @@ void copy_row(const uint8_t* src, uint8_t* dst, int n, uint32_t alpha) {
 }  // namespace
 
 bool packs_rgba8_bytes(GLenum format, GLenum type) {
+  if (type == GL_UNSIGNED_INT_8_8_8_8 || type == GL_UNSIGNED_INT_8_8_8_8_REV) return format == GL_RGBA || format == GL_BGRA;
   return type == GL_UNSIGNED_BYTE && (format == GL_RGBA || format == GL_BGRA || format == GL_RGB || format == GL_BGR);
 }
 
-void pack_rgba8_row(const uint8_t* src, bool stored_bgra, GLenum format, uint32_t alpha, uint8_t* dst, int n) {
+bool reverses_rgba8_words(GLenum type, bool swap_bytes) {
+  if (type == GL_UNSIGNED_INT_8_8_8_8) return !swap_bytes;
+  return type == GL_UNSIGNED_INT_8_8_8_8_REV && swap_bytes;
+}
+
+void pack_rgba8_row(const uint8_t* src, bool stored_bgra, GLenum format, uint32_t alpha, uint8_t* dst, int n,
+                    bool reversed) {
   const bool wants_bgr = format == GL_BGRA || format == GL_BGR;
   const bool swap = stored_bgra != wants_bgr;
   const bool three = format == GL_RGB || format == GL_BGR;
-  if (!swap && !three && alpha == 0) return static_cast<void>(std::memcpy(dst, src, 4 * static_cast<size_t>(n)));
-  auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);
-  copy(src, dst, n, alpha);
+  if (!swap && !three && alpha == 0) {
+    std::memcpy(dst, src, 4 * static_cast<size_t>(n));
+  } else {
+    auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);
+    copy(src, dst, n, alpha);
+  }
+  if (reversed)
+    for (size_t i = 0; i < static_cast<size_t>(n); ++i) {
+      uint32_t p;
+      std::memcpy(&p, dst + 4 * i, 4);
+      p = __builtin_bswap32(p);
+      std::memcpy(dst + 4 * i, &p, 4);
+    }
 }
 
 bool reads_color_bytes(const raster::ColorBuffer& cb, GLenum format, GLenum type) {
@@ -61,13 +78,13 @@ bool reads_color_bytes(const raster::ColorBuffer& cb, GLenum format, GLenum type
 }
 
 void read_color_bytes(const raster::ColorBuffer& cb, bool opaque, GLenum format, int x0, int x1, int y0, int y1,
-                      uint8_t* first, size_t row_stride) {
+                      uint8_t* first, size_t row_stride, bool reversed) {
   if (x0 >= x1) return;
   const bool stored_bgra = cb.format == raster::ColorFormat::BGRA8;
   const uint32_t alpha = opaque ? 0xff000000u : 0u;
   for (int y = y0; y < y1; ++y)
     pack_rgba8_row(cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0), stored_bgra, format, alpha,
-                   first + row_stride * static_cast<size_t>(y - y0), x1 - x0);
+                   first + row_stride * static_cast<size_t>(y - y0), x1 - x0, reversed);
 }
 
 }  // namespace pineda::gl

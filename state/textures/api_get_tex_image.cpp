@@ -99,7 +99,8 @@ void get_tex_image(Context& ctx, GLenum target, GLint level, GLenum format, GLen
         const uint32_t* texels = &l.texels[(size_t(z) * l.height + y) * l.width];
         if (rgba8_texel_row(texels, l.width, l.base, row.data())) texels = row.data();
         pack_rgba8_row(reinterpret_cast<const uint8_t*>(texels), false, format, 0,
-                       out + image_stride * size_t(z) + layout.row_stride * size_t(y), l.width);
+                       out + image_stride * size_t(z) + layout.row_stride * size_t(y), l.width,
+                       reverses_rgba8_words(type, ctx.pack.swap_bytes));
       }
     return;
   }

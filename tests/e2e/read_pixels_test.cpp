@@ -367,6 +367,40 @@ TEST_P(DepthStencilRowsTest, DepthAndStencilRowsMatchTheGeneralPath) {
 
 INSTANTIATE_TEST_SUITE_P(Bits, DepthStencilRowsTest, ::testing::Values(16, 24, 32));
 
+// RGBA and BGRA as GL_UNSIGNED_INT_8_8_8_8(_REV) words (color_byte_reads.h) are the byte reads of
+// the same format on a little-endian machine, each pixel's four bytes reversed for 8_8_8_8 and
+// again under PACK_SWAP_BYTES; also from glGetTexImage.
+TEST_F(ReadPixelsTest, PackedWordsAreTheBytesInWordOrder) {
+  const int w = width(), h = height();
+  std::vector<uint8_t> drawn(size_t(w) * h * 4);
+  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = uint8_t(i * 37 + (i >> 7) * 11);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glWindowPos2i(0, 0);
+  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  glBindTexture(GL_TEXTURE_2D, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  const size_t size = size_t(w) * h * 4;
+  for (const GLenum format : {GL_RGBA, GL_BGRA})
+    for (const GLenum type : {GL_UNSIGNED_INT_8_8_8_8, GL_UNSIGNED_INT_8_8_8_8_REV})
+      for (const bool swap : {false, true})
+        for (const bool texture : {false, true}) {
+          auto read = [&](GLenum t, bool swapped) {
+            std::vector<uint8_t> out(size, 0xEE);
+            glPixelStorei(GL_PACK_SWAP_BYTES, swapped ? GL_TRUE : GL_FALSE);
+            if (texture) glGetTexImage(GL_TEXTURE_2D, 0, format, t, out.data());
+            else glReadPixels(0, 0, w, h, format, t, out.data());
+            glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+            return out;
+          };
+          std::vector<uint8_t> want = read(GL_UNSIGNED_BYTE, false);
+          if ((type == GL_UNSIGNED_INT_8_8_8_8) != swap)
+            for (size_t i = 0; i < size; i += 4) std::reverse(&want[i], &want[i + 4]);
+          EXPECT_EQ(read(type, swap), want) << std::hex << "format " << format << " type " << type << " swap " << swap
+                                            << " texture " << texture;
+        }
+  ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 // Colour read into unpacked types by table (state/pixels/color_component_reads.h) against the
 // general path, which PACK_SWAP_BYTES selects: every format whose components are channels, every
 // unpacked type, pack alignments, a region partly outside the surface. And GL_FLOAT pinned by
