@@ -315,6 +315,16 @@ std::vector<uint8_t> read_rect(int x, int y, int w, int h, GLenum format, GLenum
     for (size_t i = 0; i + element <= size; i += element) std::reverse(&out[i], &out[i + element]);
   return out;
 }
+// A w x h image of distinct RGBA bytes drawn over the surface from (0, 0); returned.
+std::vector<uint8_t> draw_distinct_pixels(int w, int h) {
+  std::vector<uint8_t> drawn(size_t(w) * h * 4);
+  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = uint8_t(i * 37 + (i >> 7) * 11);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glWindowPos2i(0, 0);
+  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  return drawn;
+}
+
 template <typename T>
 std::vector<uint8_t> read_rect(int x, int y, int w, int h, GLenum format, GLenum type, bool swap, size_t size) {
   return read_rect(x, y, w, h, format, type, swap, size, sizeof(T));
@@ -372,11 +382,7 @@ INSTANTIATE_TEST_SUITE_P(Bits, DepthStencilRowsTest, ::testing::Values(16, 24, 3
 // again under PACK_SWAP_BYTES; also from glGetTexImage.
 TEST_F(ReadPixelsTest, PackedWordsAreTheBytesInWordOrder) {
   const int w = width(), h = height();
-  std::vector<uint8_t> drawn(size_t(w) * h * 4);
-  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = uint8_t(i * 37 + (i >> 7) * 11);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glWindowPos2i(0, 0);
-  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  const std::vector<uint8_t> drawn = draw_distinct_pixels(w, h);
   glBindTexture(GL_TEXTURE_2D, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
   const size_t size = size_t(w) * h * 4;
@@ -407,11 +413,7 @@ TEST_F(ReadPixelsTest, PackedWordsAreTheBytesInWordOrder) {
 // hand: a stored byte k reads as k / 255.
 TEST_F(ReadPixelsTest, ComponentTypesMatchTheGeneralPath) {
   const int w = width(), h = height();
-  std::vector<uint8_t> drawn(size_t(w) * h * 4);
-  for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = uint8_t(i * 37 + (i >> 7) * 11);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glWindowPos2i(0, 0);
-  glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, drawn.data());
+  const std::vector<uint8_t> drawn = draw_distinct_pixels(w, h);
   const GLenum formats[] = {GL_RGBA, GL_BGRA, GL_RGB, GL_BGR, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
   struct Type {
     GLenum type;
