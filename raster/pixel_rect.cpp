@@ -64,37 +64,37 @@ Words blend_words(Blend8 blend, Words src, Words dst) {
 
 }  // namespace
 
-void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth) {
+template <typename ColorOf, typename DepthOf>
+void PixelFragmentWriter::write_row(int x, int y, int count, ColorOf color_of, DepthOf depth_of) {
   if (y < y0_ || y >= y1_) return;
   const int first = std::max(x, x0_), last = static_cast<int>(std::min<int64_t>(int64_t{x} + count, x1_));
   if (first >= last) return;
   uint8_t* dst = fb_.color.base + fb_.color.stride * y + 4 * static_cast<ptrdiff_t>(first);
-  const uint32_t* src = rgba + (first - x);
-  const size_t n = static_cast<size_t>(last - first);
+  const size_t skip = static_cast<size_t>(first - x), n = static_cast<size_t>(last - first);
   const bool bgra = fb_.color.format == ColorFormat::BGRA8;
   const FragmentKey& key = record_.key;
   if (!key.depth && !key.blend) {
-    if (!bgra) return static_cast<void>(std::memcpy(dst, src, 4 * n));
     for (size_t i = 0; i < n; ++i) {
-      const uint32_t p = swap_red_blue(src[i]);
+      const uint32_t p = bgra ? swap_red_blue(color_of(skip + i)) : color_of(skip + i);
       std::memcpy(dst + 4 * i, &p, 4);
     }
     return;
   }
-  // The quad routines' depth of a constant plane (block_depth_body.inc's flat_depth).
-  const uint32_t z = static_cast<uint32_t>((depth > 0.0 ? (depth < 1.0 ? depth : 1.0) : 0.0) * record_.depth_max + 0.5);
   uint32_t* stored = fb_.depth.base + static_cast<ptrdiff_t>(y) * fb_.depth.stride + first;
   const DrawState& s = record_.state;
   for (size_t i = 0; i < n; i += 4) {  // four words at a time, the last group padded
     const size_t m = std::min<size_t>(4, n - i);
     Words colors = {}, old = {};
-    for (size_t l = 0; l < m; ++l) colors[l] = bgra ? swap_red_blue(src[i + l]) : src[i + l];
+    for (size_t l = 0; l < m; ++l) colors[l] = bgra ? swap_red_blue(color_of(skip + i + l)) : color_of(skip + i + l);
     if (key.blend) {
       std::memcpy(&old, dst + 4 * i, 4 * m);
       colors = blend_words(key.blend8, colors, old);
     }
     for (size_t l = 0; l < m; ++l) {
       if (key.depth) {
+        // The quad routines' depth of a constant plane (block_depth_body.inc's flat_depth).
+        const double d = depth_of(skip + i + l);
+        const uint32_t z = static_cast<uint32_t>((d > 0.0 ? (d < 1.0 ? d : 1.0) : 0.0) * record_.depth_max + 0.5);
         if (!compare(s.depth_func, z, stored[i + l])) continue;
         if (s.depth_write) stored[i + l] = z;
       }
@@ -102,6 +102,22 @@ void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int coun
       std::memcpy(dst + 4 * (i + l), &p, 4);
     }
   }
+}
+
+void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth) {
+  if (!record_.key.depth && !record_.key.blend && fb_.color.format == ColorFormat::RGBA8) {  // a copy
+    if (y < y0_ || y >= y1_) return;
+    const int first = std::max(x, x0_), last = static_cast<int>(std::min<int64_t>(int64_t{x} + count, x1_));
+    if (first < last)
+      std::memcpy(fb_.color.base + fb_.color.stride * y + 4 * static_cast<ptrdiff_t>(first), rgba + (first - x),
+                  4 * static_cast<size_t>(last - first));
+    return;
+  }
+  write_row(x, y, count, [&](size_t i) { return rgba[i]; }, [&](size_t) { return depth; });
+}
+
+void PixelFragmentWriter::depth_row(int x, int y, uint32_t rgba, const double* depths, int count) {
+  write_row(x, y, count, [&](size_t) { return rgba; }, [&](size_t i) { return depths[i]; });
 }
 
 void PixelFragmentWriter::fragment(int x, int y, const float rgba[4], double depth) {

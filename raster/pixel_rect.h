@@ -32,14 +32,16 @@ class PixelFragmentWriter {
   // Whether fragments reach the colour buffer unchanged but for the depth test and an integer
   // blend (blend8.h): no shader, texturing, colour sum, fog, alpha or stencil test, other
   // blending, logic op, colour mask or occlusion query, one single-sampled RGBA8 or BGRA8 target
-  // that keeps all its bits. Then
-  // rgba8_row writes what fragment() would (a component byte k given as k / 255 is stored as k;
-  // a float c as the routines round clamp01(c) * 255).
+  // that keeps all its bits. Then rgba8_row and depth_row write what fragment() would (a
+  // component byte k given as k / 255 is stored as k; a float c as the routines round
+  // clamp01(c) * 255).
   bool writes_rgba8_rows() const { return rgba8_rows_; }
   // Fragments (x, y) .. (x + count - 1, y) of colour RGBA8 words (R in the lowest byte) and
   // depth `depth` (in [0, 1], clamped here), the parts inside the framebuffer and the scissor
   // rectangle. Only when writes_rgba8_rows().
   void rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth);
+  // The same with one colour and a depth per fragment (glDrawPixels of GL_DEPTH_COMPONENT).
+  void depth_row(int x, int y, uint32_t rgba, const double* depths, int count);
 
   // Whether (x, y) is inside the framebuffer and the scissor rectangle.
   bool inside(int x, int y) const { return x >= x0_ && x < x1_ && y >= y0_ && y < y1_; }
@@ -50,6 +52,11 @@ class PixelFragmentWriter {
   PrimSetup prim_;
   int x0_ = 0, y0_ = 0, x1_ = 0, y1_ = 0;
   bool rgba8_rows_ = false;
+
+  // Fragments x .. x + count - 1 of row y (inside the framebuffer and scissor rectangle) of colour
+  // color_of(i) and depth depth_of(i) (in [0, 1]) for i from 0 at x.
+  template <typename ColorOf, typename DepthOf>
+  void write_row(int x, int y, int count, ColorOf color_of, DepthOf depth_of);
 };
 
 }  // namespace pineda::raster

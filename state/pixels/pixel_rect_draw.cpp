@@ -46,16 +46,16 @@ std::vector<uint32_t> rgba8_words(const std::vector<float>& color) {
   return words;
 }
 
-// Colour pixels given as RGBA8 words straight into the colour buffer (through the depth test and
-// an integer blend when they are on), a row at a time.
-void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const uint32_t* words,
-                      const Span& cols, const Span& rows, double depth) {
-  std::vector<uint32_t> row(cols.source.size());
+// The image's pixels row by row in runs of framebuffer columns that take one (a column past the
+// image, or a pixel a copy found outside its source, ends a run): each run's pixels gathered into
+// `row` (T per column) by value(image index), then emit(x, y, first of `row`, count).
+template <typename T, typename Value, typename Emit>
+void for_each_run(const PixelRectImage& image, const Span& cols, const Span& rows, Value value, Emit emit) {
+  std::vector<T> row(cols.source.size());
   for (size_t r = 0; r < rows.source.size(); ++r) {
     const int j = rows.source[r];
     if (j < 0) continue;
     const size_t row_start = size_t(j) * image.width;
-    // Runs of columns that take a pixel of the image.
     for (size_t c = 0; c < cols.source.size();) {
       auto takes_pixel = [&](size_t k) {
         const int i = cols.source[k];
@@ -66,10 +66,26 @@ void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage&
         continue;
       }
       const size_t run = c;
-      for (; c < cols.source.size() && takes_pixel(c); ++c) row[c] = words[row_start + cols.source[c]];
-      writer.rgba8_row(cols.first + int(run), rows.first + int(r), &row[run], int(c - run), depth);
+      for (; c < cols.source.size() && takes_pixel(c); ++c) row[c] = value(row_start + cols.source[c]);
+      emit(cols.first + int(run), rows.first + int(r), &row[run], int(c - run));
     }
   }
+}
+
+// Colour pixels given as RGBA8 words straight into the colour buffer (through the depth test and
+// an integer blend when they are on), a row at a time.
+void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const uint32_t* words,
+                      const Span& cols, const Span& rows, double depth) {
+  for_each_run<uint32_t>(image, cols, rows, [&](size_t k) { return words[k]; },
+                         [&](int x, int y, const uint32_t* run, int n) { writer.rgba8_row(x, y, run, n, depth); });
+}
+
+// Depth pixels of the raster colour, the same way.
+void write_depth_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const float color[4],
+                      const Span& cols, const Span& rows) {
+  const uint32_t word = rgba8_words(std::vector<float>(color, color + 4))[0];
+  for_each_run<double>(image, cols, rows, [&](size_t k) { return image.depth[k]; },
+                       [&](int x, int y, const double* run, int n) { writer.depth_row(x, y, word, run, n); });
 }
 
 }  // namespace
@@ -89,6 +105,8 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
       if (words) return write_rgba8_rows(writer, image, image.rgba8.data(), cols, rows, rp.window[2]);
       return write_rgba8_rows(writer, image, rgba8_words(image.color).data(), cols, rows, rp.window[2]);
     }
+    if (image.kind == PixelRectImage::Kind::Depth && writer.writes_rgba8_rows())
+      return write_depth_rows(writer, image, rp.color, cols, rows);
     for (size_t r = 0; r < rows.source.size(); ++r) {
       const int j = rows.source[r];
       if (j < 0) continue;

@@ -112,13 +112,20 @@ std::vector<uint32_t> unpack_rgba8_image(const Context& ctx, int width, int heig
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels) {
   std::vector<double> out(size_t(width) * size_t(height));
   const ClientImage image(ctx.unpack, width, GL_DEPTH_COMPONENT, type, pixels);
-  for (int j = 0; j < height; ++j)
+  std::vector<float> row(ctx.unpack.swap_bytes ? 0 : 4 * size_t(width));
+  for (int j = 0; j < height; ++j) {
+    // A row at a time where the type is an unpacked one in the machine's byte order.
+    if (!row.empty() && load_color_row(image.row(j), GL_RED, type, width, row.data())) {
+      for (int i = 0; i < width; ++i) out[size_t(j) * width + i] = transfer_depth(ctx.pixel_mode, row[4 * size_t(i)]);
+      continue;
+    }
     for (int i = 0; i < width; ++i) {
       uint8_t scratch[16];
       float rgba[4];
       load_color(image.pixel(i, j, scratch), GL_RED, type, rgba);
       out[size_t(j) * width + i] = transfer_depth(ctx.pixel_mode, rgba[0]);
     }
+  }
   return out;
 }
 

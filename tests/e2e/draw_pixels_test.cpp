@@ -256,6 +256,59 @@ TEST_F(DrawPixelsTest, FloatsOnAPlainPipelineMatchTheFragmentPath) {
   EXPECT_EQ(pixel(0, 0), (Rgba{255, 0, 0, 255}));
 }
 
+// GL_DEPTH_COMPONENT images on a plain pipeline (PixelFragmentWriter::depth_row): the raster
+// colour with each pixel's depth, through the depth test and an integer blend, give the colour
+// and depth buffers the per-fragment path gives (an alpha test that passes everything).
+TEST_F(DrawPixelsTest, DepthImagesOnAPlainPipelineMatchTheFragmentPath) {
+  const int w = 13, h = 11;
+  std::vector<GLuint> depths(size_t(w) * h);
+  for (size_t i = 0; i < depths.size(); ++i) depths[i] = GLuint(i * 2654435761u);
+  const float zooms[][2] = {{1, 1}, {2, 3}, {-1, 1}};
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  glColor4f(0.9f, 0.6f, 0.3f, 0.7f);
+  for (const auto& zoom : zooms)
+    for (const GLenum func : {GL_LESS, GL_GREATER, GL_ALWAYS})
+      for (const bool depth_write : {true, false})
+        for (const bool blend : {false, true}) {
+          std::vector<uint8_t> frames[2];
+          std::vector<GLuint> stored[2];
+          for (int pass = 0; pass < 2; ++pass) {
+            clear_to(0.1f, 0.2f, 0.3f, 0.4f);
+            clear_depth_halves(0.1, 0.5);
+            if (pass == 1) glEnable(GL_ALPHA_TEST);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(func);
+            glDepthMask(depth_write ? GL_TRUE : GL_FALSE);
+            if (blend) glEnable(GL_BLEND);
+            glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+            glPixelZoom(zoom[0], zoom[1]);
+            glWindowPos2i(zoom[0] < 0 ? 14 : 2, 3);
+            glDrawPixels(w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depths.data());
+            glDisable(GL_ALPHA_TEST);
+            glDisable(GL_DEPTH_TEST);
+            glDisable(GL_BLEND);
+            glDepthMask(GL_TRUE);
+            ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
+            frames[pass] = read_all();
+            stored[pass].resize(size_t(width()) * height());
+            glReadPixels(0, 0, width(), height(), GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, stored[pass].data());
+          }
+          EXPECT_EQ(frames[0], frames[1]) << "zoom " << zoom[0] << " func 0x" << std::hex << func << std::dec
+                                          << " depth write " << depth_write << " blend " << blend;
+          EXPECT_EQ(stored[0], stored[1]);
+        }
+  glPixelZoom(1, 1);
+  // Pinned: with GL_ALWAYS every pixel of the image takes the raster colour and its own depth.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glColor4f(1, 0, 1, 1);
+  glWindowPos2i(0, 0);
+  glDrawPixels(w, h, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, depths.data());
+  glDisable(GL_DEPTH_TEST);
+  EXPECT_EQ(count_pixels({255, 0, 255, 255}), w * h);
+  EXPECT_EQ(depth_at(5, 4), depths[size_t(4) * w + 5] >> 8);
+}
+
 TEST_F(DrawPixelsTest, FragmentsGoThroughDepthAlphaBlendAndMasks) {
   glClearDepth(0.5);
   glClear(GL_DEPTH_BUFFER_BIT);
