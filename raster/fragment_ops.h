@@ -59,6 +59,13 @@ inline uint8_t to_unorm8(float v) {
   return static_cast<uint8_t>(bits - 0x4b000000u);
 }
 
+// An RGBA colour as the RGBA8 word (R in the lowest byte) the fragment routines store for it.
+inline uint32_t to_rgba8_word(const float rgba[4]) {
+  uint32_t word = 0;
+  for (int c = 0; c < 4; ++c) word |= uint32_t{to_unorm8(rgba[c])} << (8 * c);
+  return word;
+}
+
 inline float blend_factor(BlendFactor f, int channel, const float src[4], const float dst[4], const float constant[4]) {
   switch (f) {
     case BlendFactor::Zero: return 0.f;

@@ -29,8 +29,7 @@ void draw_bitmap(Context& ctx, GLsizei width, GLsizei height, GLfloat xorig, GLf
   const int x0 = int(fx), y0 = int(fy);
   const BitmapLayout bits(ctx.unpack, width);
   if (writer.writes_rgba8_rows()) {  // runs of set bits straight into the colour buffer
-    uint32_t word = 0;
-    for (int c = 0; c < 4; ++c) word |= uint32_t{raster::to_unorm8(raster::clamp01(rp.color[c]))} << (8 * c);
+    const uint32_t word = raster::to_rgba8_word(rp.color);
     const int fb_width = ctx.renderer().framebuffer().width;
     const std::vector<uint32_t> run(size_t(std::clamp(fb_width, 0, width)), word);  // a run is at most both
     for (int j = 0; j < height; ++j) {

@@ -34,15 +34,10 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
   return span;
 }
 
-// RGBA colours as the RGBA8 words the fragment routines store for them (fragment() clamps, the
-// routines round to nearest, ties to even).
+// RGBA colours as the RGBA8 words the fragment routines store for them.
 std::vector<uint32_t> rgba8_words(const std::vector<float>& color) {
   std::vector<uint32_t> words(color.size() / 4);
-  for (size_t k = 0; k < words.size(); ++k) {
-    uint32_t word = 0;
-    for (int c = 0; c < 4; ++c) word |= uint32_t{raster::to_unorm8(raster::clamp01(color[4 * k + c]))} << (8 * c);
-    words[k] = word;
-  }
+  for (size_t k = 0; k < words.size(); ++k) words[k] = raster::to_rgba8_word(&color[4 * k]);
   return words;
 }
 
@@ -83,7 +78,7 @@ void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage&
 // Depth pixels of the raster colour, the same way.
 void write_depth_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const float color[4],
                       const Span& cols, const Span& rows) {
-  const uint32_t word = rgba8_words(std::vector<float>(color, color + 4))[0];
+  const uint32_t word = raster::to_rgba8_word(color);
   for_each_run<double>(image, cols, rows, [&](size_t k) { return image.depth[k]; },
                        [&](int x, int y, const double* run, int n) { writer.depth_row(x, y, word, run, n); });
 }
