@@ -1,3 +1,7 @@
+// The helpers pass 32-byte vectors but are always inlined into the routines of one copy (before
+// the headers: framebuffer.h's swap_red_blue is one of them).
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 #include "raster/fill_rows.h"
 
 #include <immintrin.h>
@@ -11,9 +15,6 @@
 #include "raster/quad_ops.h"
 #include "raster/raster_limits.h"
 #include "raster/sampler.h"
-
-// The helpers pass 32-byte vectors but are always inlined into the routines of one copy.
-#pragma GCC diagnostic ignored "-Wpsabi"
 
 // Three copies of the routines: baseline x86-64 (SSE2), AVX2, AVX-512. The same operations (no
 // FMA: the build turns contraction off), so the same pixels.

@@ -8,8 +8,12 @@ namespace pineda::raster {
 
 enum class ColorFormat : uint8_t { RGBA8, BGRA8 };
 
-// A pixel word (R in the lowest byte) with red and blue exchanged: RGBA8 to BGRA8 and back.
-inline uint32_t swap_red_blue(uint32_t p) { return (p & 0xff00ff00u) | ((p >> 16) & 0xffu) | ((p & 0xffu) << 16); }
+// A pixel word (R in the lowest byte) with red and blue exchanged: RGBA8 to BGRA8 and back; T is
+// uint32_t or a vector of them (the fill routines' rows).
+template <typename T>
+inline T swap_red_blue(T p) {
+  return (p & 0xff00ff00u) | ((p >> 16) & 0xffu) | ((p & 0xffu) << 16);
+}
 
 class ClearedTiles;
 

@@ -389,6 +389,22 @@ TEST(FillRows, NearestAndReplacedTexturesMatchTheGenericRoutine) {
   c.format = ColorFormat::BGRA8;
   c.mask_alpha = true;
   expect_same_as_generic(c, "nearest, replace, flat, BGRA, alpha masked");
+  // RGBA texels replacing all four channels are written as their words (red and blue exchanged
+  // for a BGRA target), blended and masked as any colour.
+  Config words;
+  words.textured = words.nearest = words.perspective = true;
+  words.env = TexEnvMode::Replace;
+  words.format = ColorFormat::BGRA8;
+  expect_same_as_generic_each_wrap(words, "nearest, replace, RGBA into BGRA");
+  words.blend = true;
+  words.mask_alpha = true;
+  expect_same_as_generic(words, "nearest, replace, RGBA into BGRA, blended, alpha masked");
+  words.format = ColorFormat::RGBA8;
+  words.blend_src = words.blend_dst = BlendFactor::One;
+  expect_same_as_generic(words, "nearest, replace, RGBA, added");
+  words.wild_coordinates = true;
+  words.blend = words.mask_alpha = false;
+  expect_same_as_generic_each_wrap(words, "nearest, replace, RGBA, wild coordinates");
 }
 
 // Coordinates no texture lookup can honour still read defined texels, the same on every path.
