@@ -31,6 +31,29 @@ void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table,
   }
 }
 
+// Rows whose four float components are the stored bytes in their order, alpha 1 where `opaque`:
+// each byte k as k / 255 in float, by a division (correctly rounded, so the table's value: the
+// double quotient converted to float, equal for all 256) over whole rows, which vectorizes.
+void read_stored_float_rows(const raster::ColorBuffer& cb, bool opaque, int x0, int x1, int y0, int y1, uint8_t* first,
+                            size_t row_stride) {
+  constexpr size_t kChunk = 64;  // components: 16 pixels
+  for (int y = y0; y < y1; ++y) {
+    const uint8_t* src = cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0);
+    uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
+    const size_t components = 4 * static_cast<size_t>(x1 - x0);
+    float chunk[kChunk];
+    auto convert = [&](size_t done, size_t n) {  // (a constant n for whole chunks: the loop vectorizes)
+      for (size_t i = 0; i < n; ++i) chunk[i] = static_cast<float>(src[done + i]) / 255.f;
+      if (opaque)
+        for (size_t i = 3; i < n; i += 4) chunk[i] = 1.f;
+      std::memcpy(dst + done * sizeof(float), chunk, n * sizeof(float));  // (client rows need not be aligned)
+    };
+    size_t done = 0;
+    for (; done + kChunk <= components; done += kChunk) convert(done, kChunk);
+    if (done < components) convert(done, components - done);
+  }
+}
+
 template <int kSize>
 void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table, int* channels, int n, int x0, int x1,
                int y0, int y1, uint8_t* first, size_t row_stride) {
@@ -59,6 +82,9 @@ void read_color_components(const raster::ColorBuffer& cb, bool opaque, GLenum fo
   const int n = color_format_components(format), size = pixel_type_size(type);
   int channels[4] = {0, 0, 0, 0};
   for (int c = 0; c < n; ++c) channels[c] = channel_of(format, c);
+  const bool stored_order = n == 4 && channels[0] == 0 && channels[1] == 1 && channels[2] == 2 && channels[3] == 3 &&
+                            cb.format == raster::ColorFormat::RGBA8 && !cb.reduction.active;
+  if (type == GL_FLOAT && stored_order) return read_stored_float_rows(cb, opaque, x0, x1, y0, y1, first, row_stride);
   uint8_t table[256 * 4];
   for (int k = 0; k < 256; ++k) {
     const double v[4] = {k / 255.0, 0, 0, 0};
