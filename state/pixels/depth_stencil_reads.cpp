@@ -21,6 +21,24 @@ void depth_row(const uint32_t* src, int n, double max, uint8_t* dst, Convert con
   else row([max](uint32_t d) { return d / max; });
 }
 
+// depth_row's GL_FLOAT below 32 bits four at a time (vector extensions: -O2 leaves the loop
+// scalar): the same products, stored values below 2^31 converted as signed integers.
+void float_depth_row(const uint32_t* src, int n, double max, uint8_t* dst) {
+  typedef int32_t I4 __attribute__((vector_size(16)));
+  typedef double D4 __attribute__((vector_size(32)));
+  typedef float F4 __attribute__((vector_size(16)));
+  const double reciprocal = 1.0 / max;
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    I4 stored;
+    std::memcpy(&stored, src + i, sizeof stored);
+    const F4 value = __builtin_convertvector(__builtin_convertvector(stored, D4) * reciprocal, F4);
+    std::memcpy(dst + sizeof(GLfloat) * static_cast<size_t>(i), &value, sizeof value);
+  }
+  depth_row<GLfloat>(src + i, n - i, max, dst + sizeof(GLfloat) * static_cast<size_t>(i),
+                     [](double c) { return GLfloat(c); });
+}
+
 }  // namespace
 
 bool reads_depth_rows(const PixelMode& mode, GLenum type, bool swap_bytes) {
@@ -45,7 +63,10 @@ void read_depth_rows(const raster::DepthBuffer& depth, GLenum type, int x0, int 
       case GL_UNSIGNED_SHORT:
         depth_row<GLushort>(src, n, max, dst, [](double c) { return GLushort(GLuint(c * 65535.0 + 0.5)); });
         break;
-      default: depth_row<GLfloat>(src, n, max, dst, [](double c) { return GLfloat(c); }); break;
+      default:
+        if (max < 4294967295.0) float_depth_row(src, n, max, dst);
+        else depth_row<GLfloat>(src, n, max, dst, [](double c) { return GLfloat(c); });
+        break;
     }
   }
 }
