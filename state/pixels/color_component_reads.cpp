@@ -1,5 +1,6 @@
 #include "state/pixels/color_component_reads.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "raster/color_reduction.h"
@@ -8,17 +9,25 @@
 namespace pineda::gl {
 namespace {
 
+// The index of luminance among the bytes read_rows looks up: R + G + B clamped to 255, whose
+// table entry is the general path's min(R + G + B, 1) stored (the same value of every type for
+// all 2^24 colours, checked exhaustively: the sum of the three quotients and the quotient of the
+// sum round alike).
+constexpr int kLuminance = 5;
+
 // Rows of pixels whose `n` components of kSize bytes are table entries of the channels `channels`.
 // A buffer that keeps all its bits (kStored) is read in place: `channels` then index its stored
-// bytes, 4 standing for an alpha that reads 255.
+// bytes, 4 standing for an alpha that reads 255 (and kLuminance for luminance in either).
 template <int kSize, bool kStored>
 void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table, const int* channels, int n, int x0,
                int x1, int y0, int y1, uint8_t* first, size_t row_stride) {
+  bool luminance = false;
+  for (int c = 0; c < n; ++c) luminance |= channels[c] == kLuminance;
   for (int y = y0; y < y1; ++y) {
     const uint8_t* src = cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0);
     uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
     for (int x = x0; x < x1; ++x, src += 4, dst += n * kSize) {
-      uint8_t bytes[5];
+      uint8_t bytes[6];
       if constexpr (kStored) {
         std::memcpy(bytes, src, 4);
         bytes[4] = 255;
@@ -26,6 +35,7 @@ void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table,
         raster::read_rgba8(cb, src, bytes);
         if (opaque) bytes[3] = 255;
       }
+      if (luminance) bytes[kLuminance] = static_cast<uint8_t>(std::min(bytes[0] + bytes[1] + bytes[2], 255));
       for (int c = 0; c < n; ++c) std::memcpy(dst + c * kSize, table + kSize * bytes[channels[c]], kSize);
     }
   }
@@ -59,7 +69,7 @@ void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table,
                int y0, int y1, uint8_t* first, size_t row_stride) {
   if (cb.reduction.active) return read_rows<kSize, false>(cb, opaque, table, channels, n, x0, x1, y0, y1, first, row_stride);
   const bool bgra = cb.format == raster::ColorFormat::BGRA8;
-  for (int c = 0; c < n; ++c) {  // read_rgba8's order and opaque alpha, as byte indices
+  for (int c = 0; c < n; ++c) {  // read_rgba8's order and opaque alpha, as byte indices (a sum in either order)
     if (bgra && (channels[c] == 0 || channels[c] == 2)) channels[c] = 2 - channels[c];
     if (opaque && channels[c] == 3) channels[c] = 4;
   }
@@ -71,17 +81,14 @@ void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table,
 bool reads_color_components(const raster::ColorBuffer& cb, GLenum format, GLenum type, bool swap_bytes) {
   const int n = color_format_components(format);
   const int size = pixel_type_size(type);
-  if (!cb.base || swap_bytes || n == 0 || size == 0) return false;
-  for (int c = 0; c < n; ++c)
-    if (channel_of(format, c) < 0) return false;
-  return true;
+  return cb.base && !swap_bytes && n != 0 && size != 0;
 }
 
 void read_color_components(const raster::ColorBuffer& cb, bool opaque, GLenum format, GLenum type, int x0, int x1,
                            int y0, int y1, uint8_t* first, size_t row_stride) {
   const int n = color_format_components(format), size = pixel_type_size(type);
   int channels[4] = {0, 0, 0, 0};
-  for (int c = 0; c < n; ++c) channels[c] = channel_of(format, c);
+  for (int c = 0; c < n; ++c) channels[c] = channel_of(format, c) < 0 ? kLuminance : channel_of(format, c);
   const bool stored_order = n == 4 && channels[0] == 0 && channels[1] == 1 && channels[2] == 2 && channels[3] == 3 &&
                             cb.format == raster::ColorFormat::RGBA8 && !cb.reduction.active;
   if (type == GL_FLOAT && stored_order) return read_stored_float_rows(cb, opaque, x0, x1, y0, y1, first, row_stride);

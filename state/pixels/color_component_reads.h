@@ -1,8 +1,8 @@
 // glReadPixels of colour into the unpacked types (GL_FLOAT, GL_UNSIGNED_SHORT, GL_INT, bytes in
-// the formats color_byte_reads.h does not take, ...) with no pixel transfer, for the formats whose
-// components are channels (not luminance): each stored byte k becomes store_color's value of k / 255, looked up in a table
-// of the 256 values instead of converted per component (1024x768 as GL_RGBA GL_FLOAT, one
-// thread: 30 ms through the general path).
+// the formats color_byte_reads.h does not take, ...) with no pixel transfer: each stored byte k
+// becomes store_color's value of k / 255, looked up in a table of the 256 values instead of
+// converted per component (1024x768 as GL_RGBA GL_FLOAT, one thread: 30 ms through the general
+// path), luminance the entry of R + G + B clamped to 255.
 #pragma once
 #include <GL/gl.h>
 

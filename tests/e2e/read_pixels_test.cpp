@@ -414,7 +414,8 @@ TEST_F(ReadPixelsTest, PackedWordsAreTheBytesInWordOrder) {
 TEST_F(ReadPixelsTest, ComponentTypesMatchTheGeneralPath) {
   const int w = width(), h = height();
   const std::vector<uint8_t> drawn = draw_distinct_pixels(w, h);
-  const GLenum formats[] = {GL_RGBA, GL_BGRA, GL_RGB, GL_BGR, GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA};
+  const GLenum formats[] = {GL_RGBA, GL_BGRA,  GL_RGB,       GL_BGR,           GL_RED,
+                            GL_GREEN, GL_BLUE, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA};
   struct Type {
     GLenum type;
     size_t size;
@@ -435,6 +436,18 @@ TEST_F(ReadPixelsTest, ComponentTypesMatchTheGeneralPath) {
   float rgba[4];
   glReadPixels(5, 6, 1, 1, GL_RGBA, GL_FLOAT, rgba);
   for (int c = 0; c < 4; ++c) EXPECT_EQ(rgba[c], float(drawn[(size_t(6) * w + 5) * 4 + c] / 255.0)) << c;
+  // Luminance is R + G + B, at most 1 (GL 2.1 4.3.2).
+  GLubyte luminance[8];
+  glReadPixels(0, 0, 8, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, luminance);
+  int clamped = 0;
+  for (int x = 0; x < 8; ++x) {
+    const uint8_t* p = &drawn[size_t(x) * 4];
+    const int sum = p[0] + p[1] + p[2];
+    clamped += sum > 255;
+    EXPECT_EQ(luminance[x], std::min(sum, 255)) << x;
+  }
+  EXPECT_GT(clamped, 0);
+  EXPECT_LT(clamped, 8);
   ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
