@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <cstring>
 
 #include "state/context.h"
 #include "state/pixels/packed_pixel.h"
@@ -52,6 +54,10 @@ float load_component(const uint8_t* src, GLenum type) {
 template <typename T>
 void load_color_row(const uint8_t* src, GLenum format, int count, float* out) {
   if (format == GL_RGBA) {  // component for component (a loop that vectorizes)
+    if constexpr (std::is_same_v<T, GLfloat>) {  // component_value returns a float as it is
+      std::memcpy(out, src, 4 * sizeof(float) * static_cast<size_t>(count));
+      return;
+    }
     for (size_t i = 0; i < 4 * static_cast<size_t>(count); ++i) out[i] = component_value(load_unaligned<T>(src + i * sizeof(T)));
     return;
   }

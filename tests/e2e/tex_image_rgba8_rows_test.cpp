@@ -231,13 +231,18 @@ TEST_F(TexImageRgba8RowsTest, FloatTexelsClampRoundAndReduce) {
   const Case cases[] = {{GL_RGBA8, {{76, 0, 255, 0}, {0, 2, 2, 255}}},
                         {GL_RGBA4, {{85, 0, 255, 0}, {0, 0, 0, 255}}},
                         {GL_LUMINANCE8, {{76, 0, 0, 255}, {0, 0, 0, 255}}}};
+  // The pair three times over: the first 16 components are converted 16 at a time, the rest one by one.
+  constexpr int kWidth = 6;
+  float row[kWidth][4];
+  for (int p = 0; p < kWidth; ++p) std::copy(texels[p % 2], texels[p % 2] + 4, row[p]);
   glBindTexture(GL_TEXTURE_2D, 1);
   for (const Case& c : cases) {
-    glTexImage2D(GL_TEXTURE_2D, 0, GLint(c.internal), 2, 1, 0, GL_RGBA, GL_FLOAT, texels);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(c.internal), kWidth, 1, 0, GL_RGBA, GL_FLOAT, row);
     ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-    const std::vector<uint8_t> got = stored_level(2, 1);
-    for (int p = 0; p < 2; ++p)
-      for (int k = 0; k < 4; ++k) EXPECT_EQ(got[size_t(4 * p + k)], c.want[p][k]) << std::hex << c.internal << " texel " << p << " component " << k;
+    const std::vector<uint8_t> got = stored_level(kWidth, 1);
+    for (int p = 0; p < kWidth; ++p)
+      for (int k = 0; k < 4; ++k)
+        EXPECT_EQ(got[size_t(4 * p + k)], c.want[p % 2][k]) << std::hex << c.internal << " texel " << p << " component " << k;
   }
 }
 
