@@ -43,24 +43,34 @@ void copy_row(const uint8_t* src, uint8_t* dst, int n, uint32_t alpha) {
   }
 }
 
-// copy_row<kSwap, 3> eight pixels at a time with AVX2 (the same bytes): each 16-byte half's four
-// pixels shuffled to their twelve bytes, the halves' twelve joined by a permute of words.
+// copy_row eight pixels at a time with AVX2 (the same bytes): each 16-byte half's four pixels
+// shuffled to their order (and to their twelve bytes for RGB, the halves' twelve then joined by a
+// permute of words).
 #if !defined(__clang__)  // (clang's copies are baseline code: raster/simd_path.h)
-__attribute__((target("avx2"))) void copy_rgb_row_avx2(const uint8_t* src, uint8_t* dst, int n, bool swap) {
-  const __m128i half = swap ? _mm_setr_epi8(2, 1, 0, 6, 5, 4, 10, 9, 8, 14, 13, 12, -1, -1, -1, -1)
-                            : _mm_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
+__attribute__((target("avx2"))) void copy_row_avx2(const uint8_t* src, uint8_t* dst, int n, bool swap, bool three,
+                                                   uint32_t alpha) {
+  const __m128i half = three ? (swap ? _mm_setr_epi8(2, 1, 0, 6, 5, 4, 10, 9, 8, 14, 13, 12, -1, -1, -1, -1)
+                                     : _mm_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1))
+                             : (swap ? _mm_setr_epi8(2, 1, 0, 3, 6, 5, 4, 7, 10, 9, 8, 11, 14, 13, 12, 15)
+                                     : _mm_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
   const __m256i bytes = _mm256_broadcastsi128_si256(half);
   const __m256i words = _mm256_setr_epi32(0, 1, 2, 4, 5, 6, 3, 7);
+  const __m256i alpha_bits = _mm256_set1_epi32(static_cast<int>(alpha));
+  const int pixel_bytes = three ? 3 : 4;
   int i = 0;
   for (; i + 8 <= n; i += 8) {
-    const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(src + 4 * static_cast<size_t>(i)));
-    const __m256i packed = _mm256_permutevar8x32_epi32(_mm256_shuffle_epi8(v, bytes), words);
-    uint8_t* out = dst + 3 * static_cast<size_t>(i);
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
-    _mm_storel_epi64(reinterpret_cast<__m128i*>(out + 16), _mm256_extracti128_si256(packed, 1));
+    const __m256i v = _mm256_shuffle_epi8(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(src + 4 * static_cast<size_t>(i))), bytes);
+    uint8_t* out = dst + static_cast<size_t>(pixel_bytes) * static_cast<size_t>(i);
+    if (three) {
+      const __m256i packed = _mm256_permutevar8x32_epi32(v, words);
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm256_castsi256_si128(packed));
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(out + 16), _mm256_extracti128_si256(packed, 1));
+    } else {
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_or_si256(v, alpha_bits));
+    }
   }
-  (swap ? copy_row<true, 3> : copy_row<false, 3>)(src + 4 * static_cast<size_t>(i), dst + 3 * static_cast<size_t>(i),
-                                                  n - i, 0);
+  const auto rest = three ? (swap ? &copy_row<true, 3> : &copy_row<false, 3>) : (swap ? &copy_row<true, 4> : &copy_row<false, 4>);
+  rest(src + 4 * static_cast<size_t>(i), dst + static_cast<size_t>(pixel_bytes) * static_cast<size_t>(i), n - i, alpha);
 }
 #endif
 
@@ -84,9 +94,9 @@ void pack_rgba8_row(const uint8_t* src, bool stored_bgra, GLenum format, uint32_
   static const bool avx2 = raster::kCopiesHaveTheirTargets && raster::uses_avx2(raster::simd_path_from_environment());
   if (!swap && !three && alpha == 0) {
     std::memcpy(dst, src, 4 * static_cast<size_t>(n));
-  } else if (three && avx2) {
+  } else if (avx2) {
 #if !defined(__clang__)
-    copy_rgb_row_avx2(src, dst, n, swap);
+    copy_row_avx2(src, dst, n, swap, three, alpha);
 #endif
   } else {
     auto copy = swap ? (three ? &copy_row<true, 3> : &copy_row<true, 4>) : (three ? &copy_row<false, 3> : &copy_row<false, 4>);

@@ -153,6 +153,14 @@ TEST_F(GlxFrontBackTest, ReadPixelsAlphaIsOneWithoutAlphaBits) {
   EXPECT_EQ(rgba[1], 102);
   EXPECT_EQ(rgba[2], 153);
   EXPECT_EQ(rgba[3], 255);
+  // Whole rows (eight pixels at a time where the CPU has AVX2), in both byte orders.
+  for (const GLenum format : {GL_RGBA, GL_BGRA}) {
+    uint8_t row[8 * 4] = {};
+    glReadPixels(0, 3, 8, 1, format, GL_UNSIGNED_BYTE, row);
+    const uint8_t red = 51, blue = 153;
+    const uint8_t want[4] = {format == GL_RGBA ? red : blue, 102, format == GL_RGBA ? blue : red, 255};
+    for (int i = 0; i < 32; ++i) EXPECT_EQ(row[i], want[i % 4]) << std::hex << format << std::dec << " byte " << i;
+  }
   // With alpha bits, the cleared alpha is read back.
   GLXFBConfig with_alpha = rgba8(true, false);
   Window w2 = window(with_alpha, 8, 8);
