@@ -24,6 +24,23 @@ inline bool compare(CompareFunc f, T incoming, T stored) {
   return true;
 }
 
+// compare over the lanes of vectors (GCC vector extensions) of unsigned integers: all ones in
+// the lanes that pass.
+template <typename V>
+inline V compare_lanes(CompareFunc f, V incoming, V stored) {
+  switch (f) {
+    case CompareFunc::Never: return V{};
+    case CompareFunc::Less: return reinterpret_cast<V>(incoming < stored);
+    case CompareFunc::Equal: return reinterpret_cast<V>(incoming == stored);
+    case CompareFunc::LessEqual: return reinterpret_cast<V>(incoming <= stored);
+    case CompareFunc::Greater: return reinterpret_cast<V>(incoming > stored);
+    case CompareFunc::NotEqual: return reinterpret_cast<V>(incoming != stored);
+    case CompareFunc::GreaterEqual: return reinterpret_cast<V>(incoming >= stored);
+    case CompareFunc::Always: break;
+  }
+  return ~V{};
+}
+
 // The alpha test of a draw whose state.alpha_test is on: its function and reference, and on a
 // sample's record under alpha to coverage (DrawRecord::alpha_to_coverage) that sample's
 // threshold. `Record` is DrawRecord (declared after this header).

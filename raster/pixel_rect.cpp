@@ -84,25 +84,47 @@ void PixelFragmentWriter::write_row(int x, int y, int count, ColorOf color_of, D
   const DrawState& s = record_.state;
   for (size_t i = 0; i < n; i += 4) {  // four words at a time, the last group padded
     const size_t m = std::min<size_t>(4, n - i);
-    Words colors = {}, old = {};
-    for (size_t l = 0; l < m; ++l) colors[l] = bgra ? swap_red_blue(color_of(skip + i + l)) : color_of(skip + i + l);
-    if (key.blend) {
-      std::memcpy(&old, dst + 4 * i, 4 * m);
-      colors = blend_words(key.blend8, colors, old);
+    // (Whole groups by one 16-byte move: a variable length went through the stack, and the
+    // vector load after its narrower stores waited on store forwarding.)
+    auto load = [m](Words& words, const void* from) {
+      if (m == 4) std::memcpy(&words, from, sizeof words);
+      else std::memcpy(&words, from, 4 * m);
+    };
+    auto store = [m](void* to, const Words& words) {
+      if (m == 4) std::memcpy(to, &words, sizeof words);
+      else std::memcpy(to, &words, 4 * m);
+    };
+    // Lanes by a loop of four where the group is whole (built in registers, not on the stack).
+    auto lanes = [m, at = skip + i](auto value_of) {
+      if (m == 4) return Words{value_of(at), value_of(at + 1), value_of(at + 2), value_of(at + 3)};
+      Words words = {};
+      for (size_t l = 0; l < m; ++l) words[l] = value_of(at + l);
+      return words;
+    };
+    Words colors = lanes([&](size_t k) { return bgra ? swap_red_blue(color_of(k)) : color_of(k); }), old = {};
+    load(old, dst + 4 * i);
+    if (key.blend) colors = blend_words(key.blend8, colors, old);
+    if (key.depth) {
+      const Words z = lanes(depth_of);
+      Words depths = {};
+      load(depths, stored + i);
+      const Words pass = compare_lanes(s.depth_func, z, depths);
+      colors = pass ? colors : old;
+      if (s.depth_write) store(stored + i, pass ? z : depths);
     }
-    for (size_t l = 0; l < m; ++l) {
-      if (key.depth) {
-        // The quad routines' depth of a constant plane (block_depth_body.inc's flat_depth).
-        const double d = depth_of(skip + i + l);
-        const uint32_t z = static_cast<uint32_t>((d > 0.0 ? (d < 1.0 ? d : 1.0) : 0.0) * record_.depth_max + 0.5);
-        if (!compare(s.depth_func, z, stored[i + l])) continue;
-        if (s.depth_write) stored[i + l] = z;
-      }
-      const uint32_t p = colors[l];
-      std::memcpy(dst + 4 * (i + l), &p, 4);
-    }
+    store(dst + 4 * i, colors);
   }
 }
+
+namespace {
+
+// The quad routines' depth of a constant plane (block_depth_body.inc's flat_depth) of a depth
+// in [0, 1] (clamped here), for a buffer whose largest value is depth_max.
+uint32_t stored_depth(double d, double depth_max) {
+  return static_cast<uint32_t>((d > 0.0 ? (d < 1.0 ? d : 1.0) : 0.0) * depth_max + 0.5);
+}
+
+}  // namespace
 
 void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int count, double depth) {
   if (!record_.key.depth && !record_.key.blend && fb_.color.format == ColorFormat::RGBA8) {  // a copy
@@ -113,11 +135,12 @@ void PixelFragmentWriter::rgba8_row(int x, int y, const uint32_t* rgba, int coun
                   4 * static_cast<size_t>(last - first));
     return;
   }
-  write_row(x, y, count, [&](size_t i) { return rgba[i]; }, [&](size_t) { return depth; });
+  const uint32_t z = stored_depth(depth, record_.depth_max);
+  write_row(x, y, count, [&](size_t i) { return rgba[i]; }, [&](size_t) { return z; });
 }
 
 void PixelFragmentWriter::depth_row(int x, int y, uint32_t rgba, const double* depths, int count) {
-  write_row(x, y, count, [&](size_t) { return rgba; }, [&](size_t i) { return depths[i]; });
+  write_row(x, y, count, [&](size_t) { return rgba; }, [&](size_t i) { return stored_depth(depths[i], record_.depth_max); });
 }
 
 void PixelFragmentWriter::fragment(int x, int y, const float rgba[4], double depth) {

@@ -54,7 +54,7 @@ class PixelFragmentWriter {
   bool rgba8_rows_ = false;
 
   // Fragments x .. x + count - 1 of row y (inside the framebuffer and scissor rectangle) of colour
-  // color_of(i) and depth depth_of(i) (in [0, 1]) for i from 0 at x.
+  // color_of(i) and stored depth depth_of(i) for i from 0 at x.
   template <typename ColorOf, typename DepthOf>
   void write_row(int x, int y, int count, ColorOf color_of, DepthOf depth_of);
 };
