@@ -111,6 +111,19 @@ void downsample_level(const TextureLevelData& src, TextureLevelData& level) {
   const TextureFormat storage = texture_format(src.internal_format).value_or(TextureFormat{});
   const int dx = src.width > 1 ? 1 : 0, dy = src.height > 1 ? 1 : 0, dz = src.depth > 1 ? 1 : 0;
   auto at = [&](int x, int y, int z) { return src.texels[(size_t(z) * src.height + y) * src.width + x]; };
+  if (!storage.depth && src.depth == 1 && keeps_bytes(storage)) {  // requantize_texel keeps every byte
+    for (int y = 0; y < dst.height; ++y) {
+      const uint32_t* row0 = &src.texels[size_t(2 * y) * src.width];
+      const uint32_t* row1 = row0 + size_t(dy) * src.width;
+      uint32_t* out = &dst.texels[size_t(y) * dst.width];
+      for (int x = 0; x < dst.width; ++x) {
+        const uint32_t quad[4] = {row0[2 * x], row0[2 * x + dx], row1[2 * x], row1[2 * x + dx]};
+        out[x] = average(quad);
+      }
+    }
+    level = std::move(dst);
+    return;
+  }
   for (int z = 0; z < dst.depth; ++z)
     for (int y = 0; y < dst.height; ++y)
       for (int x = 0; x < dst.width; ++x) {
