@@ -80,7 +80,8 @@ void PixelFragmentWriter::write_row(int x, int y, int count, ColorOf color_of, D
     }
     return;
   }
-  uint32_t* stored = fb_.depth.base + static_cast<ptrdiff_t>(y) * fb_.depth.stride + first;
+  // (Only with the depth test: a draw without one may have no depth buffer.)
+  uint32_t* stored = key.depth ? fb_.depth.base + static_cast<ptrdiff_t>(y) * fb_.depth.stride + first : nullptr;
   const DrawState& s = record_.state;
   for (size_t i = 0; i < n; i += 4) {  // four words at a time, the last group padded
     const size_t m = std::min<size_t>(4, n - i);
