@@ -6,9 +6,9 @@ namespace pineda::gl {
 namespace {
 
 // One row of n stored depths as `Out`, each stored / max converted as store_component does.
-// Below 32 bits the quotient is taken as a product with 1 / max (which vectorizes; a division
-// does not, or slowly): the same floats, unsigned shorts and unsigned ints for every stored value
-// of 16- and 24-bit buffers, checked exhaustively.
+// Below 32 bits the quotient is taken as a product with 1 / max (cheaper than a division; the
+// loop itself stays scalar at -O2): the same floats, unsigned shorts and unsigned ints for every
+// stored value of 16- and 24-bit buffers (tests/state/depth_row_reads_test.cpp checks them all).
 template <typename Out, typename Convert>
 void depth_row(const uint32_t* src, int n, double max, uint8_t* dst, Convert convert) {
   auto row = [&](auto quotient) {

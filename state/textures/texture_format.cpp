@@ -219,7 +219,7 @@ void to_texels(const float* rgba, int count, const TextureFormat& format, uint32
     max[i] = bits > 0 && bits < 8 ? (1u << bits) - 1 : 255u;
     bytes = bytes && max[i] == 255u;
   }
-  if (bytes && format.base == TexBaseFormat::RGBA) {  // no reduction: byte for component (vectorizes)
+  if (bytes && format.base == TexBaseFormat::RGBA) {  // no reduction: byte for component
     // RGBA8 words: R in the lowest byte.
     to_unorm8_bytes(rgba, 4 * static_cast<size_t>(count), reinterpret_cast<uint8_t*>(out));
     return;
