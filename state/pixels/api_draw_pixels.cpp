@@ -110,6 +110,7 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
   PixelRectImage image;
   image.width = width;
   image.height = height;
+  const ColorImageReader color_reader(ctx, width, format, type, pixels);
   if (format == GL_DEPTH_COMPONENT) {
     image.kind = PixelRectImage::Kind::Depth;
     image.depth = unpack_depth_image(ctx, width, height, type, pixels);
@@ -120,8 +121,8 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
     image.kind = PixelRectImage::Kind::Stencil;
     image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);
   } else {
-    image.rgba8 = unpack_rgba8_image(ctx, width, height, format, type, pixels);
-    if (image.rgba8.empty()) image.color = unpack_color_image(ctx, width, height, format, type, pixels);
+    if (color_reader.reads_rgba8()) image.rgba8_reader = &color_reader;
+    else image.color = unpack_color_image(ctx, width, height, format, type, pixels);
   }
   draw_pixel_rect(ctx, image);
 }

@@ -1,6 +1,7 @@
 #include "state/pixels/pixel_unpack.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -62,6 +63,7 @@ int64_t ClientImage::index(int i, int64_t j) const {
 
 ColorImageReader::ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels)
     : ctx_(ctx),
+      width_(width),
       format_(format),
       type_(type),
       image_(ctx.unpack, width, format, type, pixels),
@@ -92,20 +94,20 @@ bool ColorImageReader::rgba8_texels(int64_t j, int first, int count, uint32_t* o
   return true;
 }
 
+const uint32_t* ColorImageReader::rgba8_row_words(int64_t j, uint32_t* scratch) const {
+  const uint8_t* row = image_.row(j);
+  if (std::endian::native == std::endian::little && rgba8_.bytes == 4 && !rgba8_.reversed && !rgba8_.blue_first &&
+      reinterpret_cast<uintptr_t>(row) % alignof(uint32_t) == 0)
+    return reinterpret_cast<const uint32_t*>(row);
+  rgba8_row_texels(rgba8_, row, width_, scratch);
+  return scratch;
+}
+
 std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
                                       const void* pixels) {
   std::vector<float> out(size_t(width) * size_t(height) * 4);
   const ColorImageReader reader(ctx, width, format, type, pixels);
   for (int j = 0; j < height; ++j) reader.read_row(j, 0, width, &out[size_t(j) * width * 4]);
-  return out;
-}
-
-std::vector<uint32_t> unpack_rgba8_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
-                                         const void* pixels) {
-  std::vector<uint32_t> out(size_t(width) * size_t(height));
-  const ColorImageReader reader(ctx, width, format, type, pixels);
-  for (int j = 0; j < height; ++j)
-    if (!reader.rgba8_texels(j, 0, width, &out[size_t(j) * width])) return {};
   return out;
 }
 

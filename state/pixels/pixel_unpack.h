@@ -43,6 +43,7 @@ class ColorImageReader {
  public:
   // `width`: pixels in a row of the image.
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
+  int width() const { return width_; }
   // Pixel i of row j as RGBA in [0, 1].
   void read(int i, int64_t j, float rgba[4]) const;
   // Pixels first..first + count - 1 of row j as read() gives them, RGBA per pixel to `out`.
@@ -51,9 +52,16 @@ class ColorImageReader {
   // holds bytes in a way rgba8_source takes and no pixel transfer applies, so that read() would
   // give each byte / 255 exactly; false, with nothing written, otherwise.
   bool rgba8_texels(int64_t j, int first, int count, uint32_t* out) const;
+  // Whether rgba8_texels reads this image.
+  bool reads_rgba8() const { return !transfer_ && rgba8_.bytes; }
+  // Row j's `width` pixels as RGBA8 words, when reads_rgba8(): the client row itself where it
+  // holds them so (RGBA bytes or RGBA 8_8_8_8_REV words in this machine's order, on a word
+  // boundary), else converted into `scratch` (`width` words).
+  const uint32_t* rgba8_row_words(int64_t j, uint32_t* scratch) const;
 
  private:
   const Context& ctx_;
+  int width_;
   GLenum format_, type_;
   ClientImage image_;
   bool transfer_;
@@ -64,10 +72,6 @@ class ColorImageReader {
 // is applied.
 std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
                                       const void* pixels);
-// RGBA8 words per pixel (rgba8_rows.h), bottom row first, when ColorImageReader::rgba8_texels
-// reads the image; empty otherwise.
-std::vector<uint32_t> unpack_rgba8_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
-                                         const void* pixels);
 // Depth per pixel in [0, 1], after depth scale and bias.
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels);
 // Stencil indices per pixel, after index shift, offset and MAP_STENCIL.

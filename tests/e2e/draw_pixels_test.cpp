@@ -141,6 +141,43 @@ TEST_F(DrawPixelsTest, ClippedAtTheWindowEdgeAndByScissor) {
   EXPECT_EQ(count_pixels({200, 200, 200, 200}), 12);
 }
 
+// RGBA bytes are drawn from the client's rows where they lie on a word boundary and converted
+// a row at a time where they do not: from each address offset, with a row length and skipped
+// pixels and rows, at zoom 1 and 2 (rows read twice), every pixel lands where it should.
+TEST_F(DrawPixelsTest, RgbaBytesFromAnyAddressDrawTheirPixels) {
+  const int w = 7, h = 5, row_length = 9, skip_pixels = 1, skip_rows = 2;
+  auto byte_of = [](int x, int y, int c) { return GLubyte(x * 29 + y * 71 + c * 50 + 3); };
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, skip_pixels);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, skip_rows);
+  for (int offset = 0; offset < 4; ++offset)
+    for (int zoom_y = 1; zoom_y <= 2; ++zoom_y) {
+      std::vector<GLubyte> storage(size_t(row_length) * (h + skip_rows) * 4 + 4, 0);
+      GLubyte* const image = storage.data() + offset;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+          for (int c = 0; c < 4; ++c)
+            image[((size_t(y) + skip_rows) * row_length + x + skip_pixels) * 4 + c] = byte_of(x, y, c);
+      clear_to(0, 0, 0, 0);
+      glPixelZoom(1.f, float(zoom_y));
+      glWindowPos2i(2, 1);
+      glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, image);
+      ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
+      const std::vector<uint8_t> frame = read_all();
+      for (int y = 0; y < height(); ++y)
+        for (int x = 0; x < width(); ++x) {
+          const int i = x - 2, j = (y - 1) / zoom_y;
+          const bool inside = i >= 0 && i < w && y >= 1 && j < h;
+          for (int c = 0; c < 4; ++c)
+            ASSERT_EQ(frame[(size_t(y) * width() + x) * 4 + c], inside ? byte_of(i, j, c) : 0)
+                << "offset " << offset << " zoom " << zoom_y << " at " << x << "," << y << " component " << c;
+        }
+    }
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+  glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+}
+
 // Byte images on a pipeline that changes nothing but for the depth test and an integer blend
 // (blend8.h) are written straight into the colour buffer (PixelFragmentWriter::rgba8_row); an
 // alpha test that passes everything sends the same image down the per-fragment path. Every
