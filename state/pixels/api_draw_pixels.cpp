@@ -121,8 +121,7 @@ void DrawPixels(Context& ctx, GLsizei width, GLsizei height, GLenum format, GLen
     image.kind = PixelRectImage::Kind::Stencil;
     image.stencil = unpack_stencil_image(ctx, width, height, type, pixels);
   } else {
-    if (color_reader.reads_rgba8()) image.rgba8_reader = &color_reader;
-    else image.color = unpack_color_image(ctx, width, height, format, type, pixels);
+    image.color_reader = &color_reader;
   }
   draw_pixel_rect(ctx, image);
 }

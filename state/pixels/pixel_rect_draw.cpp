@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 
 #include "raster/fragment_ops.h"
 #include "raster/pixel_rect.h"
@@ -34,13 +33,6 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
     span.source[k] = i >= 0 && i < size ? int(i) : -1;
   }
   return span;
-}
-
-// RGBA colours as the RGBA8 words the fragment routines store for them.
-std::vector<uint32_t> rgba8_words(const std::vector<float>& color) {
-  std::vector<uint32_t> words(color.size() / 4);
-  for (size_t k = 0; k < words.size(); ++k) words[k] = raster::to_rgba8_word(&color[4 * k]);
-  return words;
 }
 
 // The image's pixels row by row in runs of framebuffer columns that take one (a column past the
@@ -79,27 +71,46 @@ void for_each_run(const PixelRectImage& image, const Span& cols, const Span& row
   }
 }
 
-// Row j of a colour image as RGBA8 words: in the image's words, or read by its reader (into a
-// scratch row kept for the next call, which a zoomed image's repeated rows reuse).
-class ColorRowWords {
+// Row j of a colour image as RGBA8 words or as RGBA: in the image's own vectors, or read by its
+// reader into scratch rows kept for the next call (a zoomed image's repeated rows reuse them).
+class ColorRows {
  public:
-  explicit ColorRowWords(const PixelRectImage& image) : image_(image) {
-    if (image.rgba8_reader) scratch_.resize(size_t(image.width));
+  explicit ColorRows(const PixelRectImage& image)
+      : image_(image),
+        width_(size_t(image.width)),
+        words_(!image.rgba8.empty() || (image.color_reader && image.color_reader->reads_rgba8())) {}
+  // Whether the colours are RGBA8 words (bytes without pixel transfer), which stand for k / 255.
+  bool words() const { return words_; }
+  // The row's words, or its RGBA as the fragment routines round it (raster::to_rgba8_word).
+  const uint32_t* word_row(int j) {
+    if (words_ && !image_.color_reader) return &image_.rgba8[size_t(j) * width_];
+    if (j == word_row_) return word_data_;
+    word_row_ = j;
+    word_scratch_.resize(width_);
+    if (words_) return word_data_ = image_.color_reader->rgba8_row_words(j, word_scratch_.data());
+    const float* rgba = float_row(j);
+    for (size_t i = 0; i < width_; ++i) word_scratch_[i] = raster::to_rgba8_word(rgba + 4 * i);
+    return word_data_ = word_scratch_.data();
   }
-  const uint32_t* operator()(int j) {
-    if (!image_.rgba8_reader) return &image_.rgba8[size_t(j) * image_.width];
-    if (j != row_) {
-      row_ = j;
-      words_ = image_.rgba8_reader->rgba8_row_words(j, scratch_.data());
+  // The row's RGBA; only when !words().
+  const float* float_row(int j) {
+    if (!image_.color_reader) return &image_.color[4 * size_t(j) * width_];
+    if (j != float_row_) {
+      float_row_ = j;
+      float_scratch_.resize(4 * width_);
+      image_.color_reader->read_row(j, 0, image_.width, float_scratch_.data());
     }
-    return words_;
+    return float_scratch_.data();
   }
 
  private:
   const PixelRectImage& image_;
-  std::vector<uint32_t> scratch_;
-  int row_ = -1;
-  const uint32_t* words_ = nullptr;
+  size_t width_;
+  bool words_;
+  std::vector<uint32_t> word_scratch_;
+  std::vector<float> float_scratch_;
+  int word_row_ = -1, float_row_ = -1;
+  const uint32_t* word_data_ = nullptr;
 };
 
 // Colour pixels given as RGBA8 words straight into the colour buffer (through the depth test and
@@ -131,21 +142,18 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     raster::PixelFragmentWriter writer(fragment_snapshot(ctx), fb, rp.texcoord, rp.distance);
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
-    const bool words = !image.rgba8.empty() || image.rgba8_reader;
-    ColorRowWords row_words(image);
-    if (image.kind == PixelRectImage::Kind::Color && writer.writes_rgba8_rows()) {
-      if (words) return write_rgba8_rows(writer, image, std::ref(row_words), cols, rows, rp.window[2]);
-      const std::vector<uint32_t> color_words = rgba8_words(image.color);
-      return write_rgba8_rows(
-          writer, image, [&](int j) { return &color_words[size_t(j) * image.width]; }, cols, rows, rp.window[2]);
-    }
+    ColorRows colors(image);
+    if (image.kind == PixelRectImage::Kind::Color && writer.writes_rgba8_rows())
+      return write_rgba8_rows(writer, image, [&](int j) { return colors.word_row(j); }, cols, rows, rp.window[2]);
     if (image.kind == PixelRectImage::Kind::Depth && writer.writes_rgba8_rows())
       return write_depth_rows(writer, image, rp.color, cols, rows);
     for (size_t r = 0; r < rows.source.size(); ++r) {
       const int j = rows.source[r];
       if (j < 0) continue;
       const int y = rows.first + int(r);
-      const uint32_t* row_rgba8 = image.kind == PixelRectImage::Kind::Color && words ? row_words(j) : nullptr;
+      const bool color = image.kind == PixelRectImage::Kind::Color;
+      const uint32_t* row_words = color && colors.words() ? colors.word_row(j) : nullptr;
+      const float* row_rgba = color && !colors.words() ? colors.float_row(j) : nullptr;
       for (size_t c = 0; c < cols.source.size(); ++c) {
         const int i = cols.source[c];
         const int x = cols.first + int(c);
@@ -154,12 +162,12 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
         if (!image.present.empty() && !image.present[k]) continue;
         switch (image.kind) {
           case PixelRectImage::Kind::Color: {
-            if (!words) {
-              writer.fragment(x, y, &image.color[4 * k], rp.window[2]);
+            if (row_rgba) {
+              writer.fragment(x, y, row_rgba + 4 * size_t(i), rp.window[2]);
               break;
             }
             float rgba[4];
-            for (int b = 0; b < 4; ++b) rgba[b] = float((row_rgba8[i] >> (8 * b)) & 0xffu) / 255.f;
+            for (int b = 0; b < 4; ++b) rgba[b] = float((row_words[i] >> (8 * b)) & 0xffu) / 255.f;
             writer.fragment(x, y, rgba, rp.window[2]);
             break;
           }

@@ -21,9 +21,9 @@ struct PixelRectImage {
   // Color, in place of `color` when the pixels are bytes without pixel transfer: RGBA8 words
   // (rgba8_rows.h), a component byte k standing for k / 255.
   std::vector<uint32_t> rgba8;
-  // Color, in place of both when glDrawPixels reads client bytes that way: rows read as RGBA8
-  // words as they are drawn (no copy of the whole image).
-  const ColorImageReader* rgba8_reader = nullptr;
+  // Color, in place of both for glDrawPixels: the client's rows read as they are drawn (no copy
+  // of the whole image), as RGBA8 words where the reader reads them so, else as RGBA.
+  const ColorImageReader* color_reader = nullptr;
   std::vector<double> depth;     // Depth, DepthStencil: one value per pixel in [0, 1]
   std::vector<int64_t> stencil;  // Stencil, DepthStencil: one index per pixel
   std::vector<uint8_t> present;  // empty, or 0 for pixels that produce no fragment

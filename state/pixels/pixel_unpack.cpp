@@ -103,14 +103,6 @@ const uint32_t* ColorImageReader::rgba8_row_words(int64_t j, uint32_t* scratch) 
   return scratch;
 }
 
-std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
-                                      const void* pixels) {
-  std::vector<float> out(size_t(width) * size_t(height) * 4);
-  const ColorImageReader reader(ctx, width, format, type, pixels);
-  for (int j = 0; j < height; ++j) reader.read_row(j, 0, width, &out[size_t(j) * width * 4]);
-  return out;
-}
-
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels) {
   std::vector<double> out(size_t(width) * size_t(height));
   const ClientImage image(ctx.unpack, width, GL_DEPTH_COMPONENT, type, pixels);

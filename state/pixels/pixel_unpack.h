@@ -68,10 +68,6 @@ class ColorImageReader {
   Rgba8Source rgba8_;
 };
 
-// RGBA per pixel, bottom row first; colour indices go through the index maps. Pixel transfer
-// is applied.
-std::vector<float> unpack_color_image(const Context& ctx, int width, int height, GLenum format, GLenum type,
-                                      const void* pixels);
 // Depth per pixel in [0, 1], after depth scale and bias.
 std::vector<double> unpack_depth_image(const Context& ctx, int width, int height, GLenum type, const void* pixels);
 // Stencil indices per pixel, after index shift, offset and MAP_STENCIL.

@@ -178,6 +178,48 @@ TEST_F(DrawPixelsTest, RgbaBytesFromAnyAddressDrawTheirPixels) {
   glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
 }
 
+// Images read as floats (GL_FLOAT, and bytes under pixel transfer) are read a row at a time too:
+// every pixel of a multi-row image lands where it should, at zoom 1 and 2 (rows read twice),
+// on the direct rows and on the per-fragment path (an alpha test that passes everything).
+TEST_F(DrawPixelsTest, FloatRowsDrawTheirPixels) {
+  const int w = 6, h = 5;
+  auto byte_of = [](int x, int y, int c) { return GLubyte(x * 37 + y * 59 + c * 61 + 5); };
+  std::vector<GLfloat> floats(size_t(w) * h * 4);
+  std::vector<GLubyte> bytes(floats.size());
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int c = 0; c < 4; ++c) {
+        bytes[(size_t(y) * w + x) * 4 + c] = byte_of(x, y, c);
+        floats[(size_t(y) * w + x) * 4 + c] = byte_of(x, y, c) / 255.f;
+      }
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  for (int source = 0; source < 2; ++source)
+    for (int per_fragment = 0; per_fragment < 2; ++per_fragment)
+      for (int zoom_y = 1; zoom_y <= 2; ++zoom_y) {
+        clear_to(0, 0, 0, 0);
+        if (per_fragment) glEnable(GL_ALPHA_TEST);
+        // Bytes through an identity scale that still selects pixel transfer's float path.
+        glPixelTransferf(GL_RED_BIAS, source == 1 ? 1e-9f : 0.f);
+        glPixelZoom(1.f, float(zoom_y));
+        glWindowPos2i(1, 2);
+        if (source == 0) glDrawPixels(w, h, GL_RGBA, GL_FLOAT, floats.data());
+        else glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        glDisable(GL_ALPHA_TEST);
+        glPixelTransferf(GL_RED_BIAS, 0.f);
+        ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
+        const std::vector<uint8_t> frame = read_all();
+        for (int y = 0; y < height(); ++y)
+          for (int x = 0; x < width(); ++x) {
+            const int i = x - 1, j = (y - 2) / zoom_y;
+            const bool inside = i >= 0 && i < w && y >= 2 && j < h;
+            for (int c = 0; c < 4; ++c)
+              ASSERT_EQ(frame[(size_t(y) * width() + x) * 4 + c], inside ? byte_of(i, j, c) : 0)
+                  << "source " << source << " per fragment " << per_fragment << " zoom " << zoom_y << " at " << x
+                  << "," << y << " component " << c;
+          }
+      }
+}
+
 // Byte images on a pipeline that changes nothing but for the depth test and an integer blend
 // (blend8.h) are written straight into the colour buffer (PixelFragmentWriter::rgba8_row); an
 // alpha test that passes everything sends the same image down the per-fragment path. Every
