@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
@@ -30,6 +31,20 @@ class DrawPixelsTest : public GlTest {
     GLubyte s = 0;
     glReadPixels(x, y, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &s);
     return s;
+  }
+  // That the frame holds a w x h image drawn at (x0, y0) with zoom 1 x zoom_y, component c of
+  // its pixel (i, j) being byte_of(i, j, c), over zeros.
+  template <typename ByteOf>
+  void expect_image_at(int x0, int y0, int w, int h, int zoom_y, ByteOf byte_of, const std::string& what) {
+    const std::vector<uint8_t> frame = read_all();
+    for (int y = 0; y < height(); ++y)
+      for (int x = 0; x < width(); ++x) {
+        const int i = x - x0, j = (y - y0) / zoom_y;
+        const bool inside = i >= 0 && i < w && y >= y0 && j < h;
+        for (int c = 0; c < 4; ++c)
+          ASSERT_EQ(frame[(size_t(y) * width() + x) * 4 + c], inside ? byte_of(i, j, c) : 0)
+              << what << " at " << x << "," << y << " component " << c;
+      }
   }
 };
 
@@ -163,15 +178,8 @@ TEST_F(DrawPixelsTest, RgbaBytesFromAnyAddressDrawTheirPixels) {
       glWindowPos2i(2, 1);
       glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, image);
       ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
-      const std::vector<uint8_t> frame = read_all();
-      for (int y = 0; y < height(); ++y)
-        for (int x = 0; x < width(); ++x) {
-          const int i = x - 2, j = (y - 1) / zoom_y;
-          const bool inside = i >= 0 && i < w && y >= 1 && j < h;
-          for (int c = 0; c < 4; ++c)
-            ASSERT_EQ(frame[(size_t(y) * width() + x) * 4 + c], inside ? byte_of(i, j, c) : 0)
-                << "offset " << offset << " zoom " << zoom_y << " at " << x << "," << y << " component " << c;
-        }
+      expect_image_at(2, 1, w, h, zoom_y, byte_of,
+                      "offset " + std::to_string(offset) + " zoom " + std::to_string(zoom_y));
     }
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
   glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
@@ -207,16 +215,9 @@ TEST_F(DrawPixelsTest, FloatRowsDrawTheirPixels) {
         glDisable(GL_ALPHA_TEST);
         glPixelTransferf(GL_RED_BIAS, 0.f);
         ASSERT_EQ(error(), GLenum(GL_NO_ERROR));
-        const std::vector<uint8_t> frame = read_all();
-        for (int y = 0; y < height(); ++y)
-          for (int x = 0; x < width(); ++x) {
-            const int i = x - 1, j = (y - 2) / zoom_y;
-            const bool inside = i >= 0 && i < w && y >= 2 && j < h;
-            for (int c = 0; c < 4; ++c)
-              ASSERT_EQ(frame[(size_t(y) * width() + x) * 4 + c], inside ? byte_of(i, j, c) : 0)
-                  << "source " << source << " per fragment " << per_fragment << " zoom " << zoom_y << " at " << x
-                  << "," << y << " component " << c;
-          }
+        expect_image_at(1, 2, w, h, zoom_y, byte_of,
+                        "source " + std::to_string(source) + " per fragment " + std::to_string(per_fragment) +
+                            " zoom " + std::to_string(zoom_y));
       }
 }
 
