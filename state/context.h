@@ -133,6 +133,8 @@ class Context {
   // Runs `render` (renderer calls) once per colour buffer that glDrawBuffer selects
   // (draw_buffers.cpp).
   void render_to_draw_buffers(raster::FunctionRef<void()> render);
+  // Whether render_to_draw_buffers runs `render` once (else twice: a window's front and back).
+  bool renders_draw_buffers_in_one_pass() const;
   // While `render` runs for one colour buffer: the index i of the first DRAW_BUFFERi that
   // selects it, so a fragment shader's gl_FragData[i] goes there.
   int draw_pass_output() const { return draw_pass_output_; }

@@ -123,6 +123,11 @@ void Context::use_color_buffer(const raster::ColorBuffer& color, int draw_buffer
   renderer_storage_ = draw_drawable()->kept_storage;
 }
 
+bool Context::renders_draw_buffers_in_one_pass() const {
+  const Drawable* const d = framebuffers.draw_binding ? nullptr : draw_drawable();
+  return !d || draw_targets(draw_buffer, extra_draw_buffers, *d) != Target::Both;
+}
+
 void Context::render_to_draw_buffers(raster::FunctionRef<void()> render) {
   draw_pass_output_ = 0;
   if (framebuffers.draw_binding) {

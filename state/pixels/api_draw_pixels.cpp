@@ -144,7 +144,19 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
   if (!ctx.raster_pos.valid || pixel_rect_feedback(ctx, GL_COPY_PIXEL_TOKEN)) return;
   if (width == 0 || height == 0 || !draw || !read) return;
   ctx.finish();
-  draw_pixel_rect(ctx, read_rect(ctx, ctx.read_framebuffer(), x, y, width, height, type));
+  const raster::Framebuffer& fb = ctx.read_framebuffer();
+  // Colour rows read as they are drawn (PixelRectImage::source_rows) where that order can keep
+  // every source row intact until it is read; else the rectangle copied first.
+  if (type == GL_COLOR && color_transfer_is_identity(ctx.pixel_mode) && !fb.color.reduction.active &&
+      ctx.pixel_mode.zoom_y == 1.f && ctx.renders_draw_buffers_in_one_pass() && x >= 0 && y >= 0 &&
+      int64_t(x) + width <= fb.width && int64_t(y) + height <= fb.height) {
+    PixelRectImage image;
+    image.width = width;
+    image.height = height;
+    image.source_rows = {true, fb.color, x, y};
+    return draw_pixel_rect(ctx, image);
+  }
+  draw_pixel_rect(ctx, read_rect(ctx, fb, x, y, width, height, type));
 }
 
 }  // namespace pineda::gl

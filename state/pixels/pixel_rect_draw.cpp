@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "raster/fragment_ops.h"
 #include "raster/pixel_rect.h"
@@ -40,9 +41,11 @@ Span zoomed_span(double origin, double zoom, int size, int limit) {
 // column) from row j's values row_values(j): emit(x, y, first of the run's values, count). A run
 // of consecutive image columns (zoom 1) is emitted in place, others gathered into a row first.
 template <typename T, typename RowValues, typename Emit>
-void for_each_run(const PixelRectImage& image, const Span& cols, const Span& rows, RowValues row_values, Emit emit) {
+void for_each_run(const PixelRectImage& image, const Span& cols, const Span& rows, bool top_down, RowValues row_values,
+                  Emit emit) {
   std::vector<T> row(cols.source.size());
-  for (size_t r = 0; r < rows.source.size(); ++r) {
+  for (size_t n = 0; n < rows.source.size(); ++n) {
+    const size_t r = top_down ? rows.source.size() - 1 - n : n;
     const int j = rows.source[r];
     if (j < 0) continue;
     const size_t row_start = size_t(j) * image.width;
@@ -78,15 +81,17 @@ class ColorRows {
   explicit ColorRows(const PixelRectImage& image)
       : image_(image),
         width_(size_t(image.width)),
-        words_(!image.rgba8.empty() || (image.color_reader && image.color_reader->reads_rgba8())) {}
+        words_(!image.rgba8.empty() || image.source_rows.set ||
+               (image.color_reader && image.color_reader->reads_rgba8())) {}
   // Whether the colours are RGBA8 words (bytes without pixel transfer), which stand for k / 255.
   bool words() const { return words_; }
   // The row's words, or its RGBA as the fragment routines round it (raster::to_rgba8_word).
   const uint32_t* word_row(int j) {
-    if (words_ && !image_.color_reader) return &image_.rgba8[size_t(j) * width_];
+    if (words_ && !image_.color_reader && !image_.source_rows.set) return &image_.rgba8[size_t(j) * width_];
     if (j == word_row_) return word_data_;
     word_row_ = j;
     word_scratch_.resize(width_);
+    if (image_.source_rows.set) return word_data_ = source_row(j);
     if (words_) return word_data_ = image_.color_reader->rgba8_row_words(j, word_scratch_.data());
     const float* rgba = float_row(j);
     for (size_t i = 0; i < width_; ++i) word_scratch_[i] = raster::to_rgba8_word(rgba + 4 * i);
@@ -104,6 +109,16 @@ class ColorRows {
   }
 
  private:
+  // Row j of the source rows as words (a BGRA8 buffer's with red and blue exchanged).
+  const uint32_t* source_row(int j) {
+    const PixelRectImage::SourceRows& source = image_.source_rows;
+    std::memcpy(word_scratch_.data(), source.buffer.base + source.buffer.stride * (source.y + j) + 4 * source.x,
+                4 * width_);
+    if (source.buffer.format == raster::ColorFormat::BGRA8)
+      for (uint32_t& word : word_scratch_) word = raster::swap_red_blue(word);
+    return word_scratch_.data();
+  }
+
   const PixelRectImage& image_;
   size_t width_;
   bool words_;
@@ -117,8 +132,8 @@ class ColorRows {
 // an integer blend when they are on), a row at a time.
 template <typename RowWords>
 void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, RowWords row_words,
-                      const Span& cols, const Span& rows, double depth) {
-  for_each_run<uint32_t>(image, cols, rows, row_words,
+                      const Span& cols, const Span& rows, bool top_down, double depth) {
+  for_each_run<uint32_t>(image, cols, rows, top_down, row_words,
                          [&](int x, int y, const uint32_t* run, int n) { writer.rgba8_row(x, y, run, n, depth); });
 }
 
@@ -126,8 +141,16 @@ void write_rgba8_rows(raster::PixelFragmentWriter& writer, const PixelRectImage&
 void write_depth_rows(raster::PixelFragmentWriter& writer, const PixelRectImage& image, const float color[4],
                       const Span& cols, const Span& rows) {
   const uint32_t word = raster::to_rgba8_word(color);
-  for_each_run<double>(image, cols, rows, [&](int j) { return &image.depth[size_t(j) * image.width]; },
+  for_each_run<double>(image, cols, rows, false, [&](int j) { return &image.depth[size_t(j) * image.width]; },
                        [&](int x, int y, const double* run, int n) { writer.depth_row(x, y, word, run, n); });
+}
+
+// Whether the framebuffer rows a copy's source rows land on lie above them (each image row's
+// framebuffer row is its source row shifted by one amount at a y zoom of 1).
+bool moves_up(const PixelRectImage::SourceRows& source, const Span& rows) {
+  for (size_t r = 0; r < rows.source.size(); ++r)
+    if (rows.source[r] >= 0) return rows.first + int(r) > source.y + rows.source[r];
+  return false;
 }
 
 }  // namespace
@@ -143,11 +166,14 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
     ColorRows colors(image);
+    const bool top_down = image.source_rows.set && moves_up(image.source_rows, rows);
     if (image.kind == PixelRectImage::Kind::Color && writer.writes_rgba8_rows())
-      return write_rgba8_rows(writer, image, [&](int j) { return colors.word_row(j); }, cols, rows, rp.window[2]);
+      return write_rgba8_rows(writer, image, [&](int j) { return colors.word_row(j); }, cols, rows, top_down,
+                              rp.window[2]);
     if (image.kind == PixelRectImage::Kind::Depth && writer.writes_rgba8_rows())
       return write_depth_rows(writer, image, rp.color, cols, rows);
-    for (size_t r = 0; r < rows.source.size(); ++r) {
+    for (size_t n = 0; n < rows.source.size(); ++n) {
+      const size_t r = top_down ? rows.source.size() - 1 - n : n;
       const int j = rows.source[r];
       if (j < 0) continue;
       const int y = rows.first + int(r);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "raster/framebuffer.h"
 #include "state/context.h"
 
 namespace pineda {
@@ -24,6 +25,15 @@ struct PixelRectImage {
   // Color, in place of both for glDrawPixels: the client's rows read as they are drawn (no copy
   // of the whole image), as RGBA8 words where the reader reads them so, else as RGBA.
   const ColorImageReader* color_reader = nullptr;
+  // Color, in place of the others for glCopyPixels: row j read from `buffer`'s row y + j, from
+  // column x, as it is drawn (set only where drawing goes in one pass at a y zoom of 1 from a
+  // rectangle inside the buffer; the rows then go from the top when the copy moves up, so that
+  // each row is read before the copy overwrites it).
+  struct SourceRows {
+    bool set = false;
+    raster::ColorBuffer buffer;
+    int x = 0, y = 0;
+  } source_rows;
   std::vector<double> depth;     // Depth, DepthStencil: one value per pixel in [0, 1]
   std::vector<int64_t> stencil;  // Stencil, DepthStencil: one index per pixel
   std::vector<uint8_t> present;  // empty, or 0 for pixels that produce no fragment

@@ -203,6 +203,45 @@ TEST_F(CopyPixelsTest, OverlappingRectanglesReadTheSourceFirst) {
   EXPECT_EQ(pixel(0, 0)[0], 10);
 }
 
+// A copy at a y zoom of 1 from inside the buffer reads its rows as it draws them, from the top
+// when it moves up: every shift (up, down, none; left, right, mirrored) gives the source's
+// original pixels, on the direct rows and on the per-fragment path.
+TEST_F(CopyPixelsTest, OverlappingCopiesAtZoomOneMoveTheOriginalPixels) {
+  const int w = width(), h = height();
+  std::vector<GLubyte> image(size_t(w) * h * 4);
+  for (size_t i = 0; i < image.size(); ++i) image[i] = GLubyte(i * 31 + (i >> 7) * 5);
+  const int x0 = 4, y0 = 5, cw = 17, ch = 13;
+  glAlphaFunc(GL_ALWAYS, 0.f);
+  for (int per_fragment = 0; per_fragment < 2; ++per_fragment)
+    for (const float zoom_x : {1.f, -1.f})
+      for (int dy = -2; dy <= 2; dy += 2)
+        for (int dx = -3; dx <= 3; dx += 3) {
+          glPixelZoom(1, 1);
+          glWindowPos2i(0, 0);
+          glDrawPixels(w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.data());
+          if (per_fragment) glEnable(GL_ALPHA_TEST);
+          glPixelZoom(zoom_x, 1);
+          // (Mirrored: the image extends to the left of the raster position.)
+          const int to_x = x0 + dx + (zoom_x < 0 ? cw : 0), to_y = y0 + dy;
+          glWindowPos2i(to_x, to_y);
+          glCopyPixels(x0, y0, cw, ch, GL_COLOR);
+          glDisable(GL_ALPHA_TEST);
+          ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+          const std::vector<uint8_t> frame = read_all();
+          for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+              const int i = x - (x0 + dx), j = y - to_y;
+              const bool copied = i >= 0 && i < cw && j >= 0 && j < ch;
+              const int sx = copied ? x0 + (zoom_x < 0 ? cw - 1 - i : i) : x, sy = copied ? y0 + j : y;
+              for (int c = 0; c < 4; ++c)
+                ASSERT_EQ(frame[(size_t(y) * w + x) * 4 + c], image[(size_t(sy) * w + sx) * 4 + c])
+                    << "per fragment " << per_fragment << " zoom " << zoom_x << " shift " << dx << "," << dy << " at "
+                    << x << "," << y << " component " << c;
+            }
+        }
+  glPixelZoom(1, 1);
+}
+
 TEST_F(CopyPixelsTest, ZoomScissorAndTransfer) {
   const GLubyte c[4] = {100, 0, 0, 255};
   glWindowPos2i(0, 0);

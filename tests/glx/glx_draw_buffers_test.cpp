@@ -155,5 +155,29 @@ TEST_F(GlxDrawBuffersTest, FragDataGoesToItsDrawBuffer) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// glCopyPixels into both buffers from the back one, moving up by two rows: the front gets the
+// back's original rows too (the back is copied first, so the copy into the front cannot read
+// rows the back's pass already overwrote).
+TEST_F(GlxDrawBuffersTest, CopyPixelsIntoBothBuffersCopiesTheOriginalRows) {
+  make_current(false);
+  clear_both(0.2f, 0.2f, 0.2f);
+  glDrawBuffer(GL_BACK);
+  corner_quad(1, 0, 0, 0);  // rows 0-9 red...
+  glColor3f(0, 1, 0);
+  glRecti(0, 0, 10, 3);  // ...but for rows 0-2, green
+  glReadBuffer(GL_BACK);
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glRasterPos2i(0, 2);
+  glCopyPixels(0, 0, 10, 10, GL_COLOR);
+  for (GLenum buffer : {GL_BACK, GL_FRONT}) {
+    for (int y : {2, 3, 4}) EXPECT_EQ(read_from(buffer, 5, y), kGreen) << buffer << " row " << y;
+    for (int y : {5, 6, 11}) EXPECT_EQ(read_from(buffer, 5, y), kRed) << buffer << " row " << y;
+    EXPECT_EQ(read_from(buffer, 5, 12), kGrey) << buffer;
+  }
+  EXPECT_EQ(read_from(GL_BACK, 5, 1), kGreen);
+  EXPECT_EQ(read_from(GL_FRONT, 5, 1), kGrey);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda_test
