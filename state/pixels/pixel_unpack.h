@@ -43,7 +43,6 @@ class ColorImageReader {
  public:
   // `width`: pixels in a row of the image.
   ColorImageReader(const Context& ctx, int width, GLenum format, GLenum type, const void* pixels);
-  int width() const { return width_; }
   // Pixel i of row j as RGBA in [0, 1].
   void read(int i, int64_t j, float rgba[4]) const;
   // Pixels first..first + count - 1 of row j as read() gives them, RGBA per pixel to `out`.
