@@ -45,9 +45,9 @@ struct Rgba8Rows {
 Rgba8Rows read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, bool in_place = true) {
   const size_t row_bytes = size_t(std::max(width, 0)) * 4, rows = size_t(std::max(height, 0));
   std::vector<uint8_t>& out = ctx.copied_pixels;
-  if (out.size() < row_bytes * rows) out.resize(row_bytes * rows);
   const Drawable* d = ctx.read_drawable();
   if (!d || row_bytes * rows == 0) {
+    if (out.size() < row_bytes * rows) out.resize(row_bytes * rows);
     std::fill_n(out.begin(), row_bytes * rows, uint8_t(0));
     return {out.data(), 0};
   }
@@ -58,6 +58,8 @@ Rgba8Rows read_rgba8(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei heig
   if (in_place && inside && plain_rgba8 && d == ctx.window_read_drawable() && d->alpha_bits && fb.color.stride > 0 &&
       fb.color.stride % 4 == 0 && fb.color.stride / 4 <= INT32_MAX)
     return {fb.color.base + fb.color.stride * y + 4 * ptrdiff_t(x), GLint(fb.color.stride / 4)};
+  // (Grown only here: a copy read in place touches no staging memory, which a first frame pays for.)
+  if (out.size() < row_bytes * rows) out.resize(row_bytes * rows);
   // Row by row: the columns inside the framebuffer; RGBA8 and BGRA8 rows in whole words.
   const int64_t col0 = std::clamp<int64_t>(-int64_t(x), 0, width);
   const int64_t col1 = std::clamp<int64_t>(int64_t(fb.width) - x, col0, width);
