@@ -153,7 +153,7 @@ void CopyPixels(Context& ctx, GLint x, GLint y, GLsizei width, GLsizei height, G
     PixelRectImage image;
     image.width = width;
     image.height = height;
-    image.source_rows = {true, fb.color, x, y};
+    image.source_rows = {fb.color, x, y};
     return draw_pixel_rect(ctx, image);
   }
   draw_pixel_rect(ctx, read_rect(ctx, fb, x, y, width, height, type));

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include "raster/fragment_ops.h"
 #include "raster/pixel_rect.h"
 #include "state/draw.h"
+#include "state/pixels/color_byte_reads.h"
 #include "state/pixels/pixel_unpack.h"
 
 namespace pineda {
@@ -81,17 +81,17 @@ class ColorRows {
   explicit ColorRows(const PixelRectImage& image)
       : image_(image),
         width_(size_t(image.width)),
-        words_(!image.rgba8.empty() || image.source_rows.set ||
+        words_(!image.rgba8.empty() || image.source_rows.set() ||
                (image.color_reader && image.color_reader->reads_rgba8())) {}
   // Whether the colours are RGBA8 words (bytes without pixel transfer), which stand for k / 255.
   bool words() const { return words_; }
   // The row's words, or its RGBA as the fragment routines round it (raster::to_rgba8_word).
   const uint32_t* word_row(int j) {
-    if (words_ && !image_.color_reader && !image_.source_rows.set) return &image_.rgba8[size_t(j) * width_];
+    if (words_ && !image_.color_reader && !image_.source_rows.set()) return &image_.rgba8[size_t(j) * width_];
     if (j == word_row_) return word_data_;
     word_row_ = j;
     word_scratch_.resize(width_);
-    if (image_.source_rows.set) return word_data_ = source_row(j);
+    if (image_.source_rows.set()) return word_data_ = source_row(j);
     if (words_) return word_data_ = image_.color_reader->rgba8_row_words(j, word_scratch_.data());
     const float* rgba = float_row(j);
     for (size_t i = 0; i < width_; ++i) word_scratch_[i] = raster::to_rgba8_word(rgba + 4 * i);
@@ -109,13 +109,13 @@ class ColorRows {
   }
 
  private:
-  // Row j of the source rows as words (a BGRA8 buffer's with red and blue exchanged).
+  // Row j of the source rows as words (a BGRA8 buffer's with red and blue exchanged), by
+  // glReadPixels' row packer.
   const uint32_t* source_row(int j) {
     const PixelRectImage::SourceRows& source = image_.source_rows;
-    std::memcpy(word_scratch_.data(), source.buffer.base + source.buffer.stride * (source.y + j) + 4 * source.x,
-                4 * width_);
-    if (source.buffer.format == raster::ColorFormat::BGRA8)
-      for (uint32_t& word : word_scratch_) word = raster::swap_red_blue(word);
+    gl::pack_rgba8_row(source.buffer.base + source.buffer.stride * (source.y + j) + 4 * source.x,
+                       source.buffer.format == raster::ColorFormat::BGRA8, GL_RGBA, 0,
+                       reinterpret_cast<uint8_t*>(word_scratch_.data()), image_.width, false);
     return word_scratch_.data();
   }
 
@@ -166,18 +166,18 @@ void draw_pixel_rect(Context& ctx, const PixelRectImage& image) {
     const Span cols = zoomed_span(rp.window[0], ctx.pixel_mode.zoom_x, image.width, fb.width);
     const Span rows = zoomed_span(rp.window[1], ctx.pixel_mode.zoom_y, image.height, fb.height);
     ColorRows colors(image);
-    const bool top_down = image.source_rows.set && moves_up(image.source_rows, rows);
+    const bool top_down = image.source_rows.set() && moves_up(image.source_rows, rows);
     if (image.kind == PixelRectImage::Kind::Color && writer.writes_rgba8_rows())
       return write_rgba8_rows(writer, image, [&](int j) { return colors.word_row(j); }, cols, rows, top_down,
                               rp.window[2]);
     if (image.kind == PixelRectImage::Kind::Depth && writer.writes_rgba8_rows())
       return write_depth_rows(writer, image, rp.color, cols, rows);
+    const bool color = image.kind == PixelRectImage::Kind::Color;
     for (size_t n = 0; n < rows.source.size(); ++n) {
       const size_t r = top_down ? rows.source.size() - 1 - n : n;
       const int j = rows.source[r];
       if (j < 0) continue;
       const int y = rows.first + int(r);
-      const bool color = image.kind == PixelRectImage::Kind::Color;
       const uint32_t* row_words = color && colors.words() ? colors.word_row(j) : nullptr;
       const float* row_rgba = color && !colors.words() ? colors.float_row(j) : nullptr;
       for (size_t c = 0; c < cols.source.size(); ++c) {

@@ -30,9 +30,9 @@ struct PixelRectImage {
   // rectangle inside the buffer; the rows then go from the top when the copy moves up, so that
   // each row is read before the copy overwrites it).
   struct SourceRows {
-    bool set = false;
-    raster::ColorBuffer buffer;
+    raster::ColorBuffer buffer;  // no base: not set
     int x = 0, y = 0;
+    bool set() const { return buffer.base != nullptr; }
   } source_rows;
   std::vector<double> depth;     // Depth, DepthStencil: one value per pixel in [0, 1]
   std::vector<int64_t> stencil;  // Stencil, DepthStencil: one index per pixel

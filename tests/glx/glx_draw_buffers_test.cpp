@@ -179,5 +179,24 @@ TEST_F(GlxDrawBuffersTest, CopyPixelsIntoBothBuffersCopiesTheOriginalRows) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// The same copy into the back buffer alone reads its rows as it draws them, from a window's
+// BGRA8 rows: the colours come through with red and blue in place.
+TEST_F(GlxDrawBuffersTest, CopyPixelsIntoTheBackBufferKeepsRedAndBlue) {
+  make_current(false);
+  clear_both(0.2f, 0.2f, 0.2f);
+  glDrawBuffer(GL_BACK);
+  corner_quad(1, 0, 0, 0);
+  glColor3f(0, 0, 1);
+  glRecti(0, 0, 10, 3);
+  glReadBuffer(GL_BACK);
+  glRasterPos2i(0, 2);
+  glCopyPixels(0, 0, 10, 10, GL_COLOR);
+  for (int y : {2, 3, 4}) EXPECT_EQ(read_from(GL_BACK, 5, y), kBlue) << "row " << y;
+  for (int y : {5, 6, 11}) EXPECT_EQ(read_from(GL_BACK, 5, y), kRed) << "row " << y;
+  EXPECT_EQ(read_from(GL_BACK, 5, 12), kGrey);
+  EXPECT_EQ(read_from(GL_FRONT, 5, 5), kGrey);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda_test
