@@ -15,6 +15,8 @@ class BenchScene {
   virtual void draw(int frame) = 0;
   // Triangles submitted per frame, quads and strips counted as the triangles they make.
   virtual long trianglesPerFrame() const = 0;
+  // Draw calls per frame, for the scenes that time the calls themselves (0: not reported).
+  virtual long drawCallsPerFrame() const { return 0; }
   virtual bool drawsWithStencil() const { return false; }
 };
 
@@ -34,6 +36,7 @@ std::unique_ptr<BenchScene> createTextured(int width, int height);
 std::unique_ptr<BenchScene> createLitMesh(int width, int height);
 std::unique_ptr<BenchScene> createGears(int width, int height);
 std::unique_ptr<BenchScene> createStateChanges(int width, int height);
+std::unique_ptr<BenchScene> createSmallDraws(int width, int height);
 std::unique_ptr<BenchScene> createCopyBlur(int width, int height);
 std::unique_ptr<BenchScene> createReadPixels(int width, int height);
 std::unique_ptr<BenchScene> createDrawPixels(int width, int height);

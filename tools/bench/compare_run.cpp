@@ -152,6 +152,15 @@ void noteFragmentCounts(const SceneResult& pineda, const SceneResult& llvmpipe) 
                 llvmpipe.fragments);
 }
 
+// The draw-call scenes: the calling thread's time per call (the calls alone, before glFinish).
+void notePerDraw(const SceneResult& pineda, const std::optional<SceneResult>& llvmpipe) {
+  if (pineda.drawCalls <= 0) return;
+  std::printf("  note: %ld draw calls a frame; calling thread us/draw: Pineda %.3f", pineda.drawCalls,
+              microsecondsPerDraw(pineda));
+  if (llvmpipe) std::printf(", llvmpipe %.3f", microsecondsPerDraw(*llvmpipe));
+  std::printf("\n");
+}
+
 void printHeader(const Options& options) {
   std::printf("size %dx%d; ms = median of %d frames after a warm-up frame 0 (frame = draw + glFinish); "
               "first = frame 0's ms\n",
@@ -227,6 +236,7 @@ int runComparison(const Options& options) {
     }
     std::printf("\n");
     if (pineda.result && llvmpipe.result) noteFragmentCounts(*pineda.result, *llvmpipe.result);
+    if (pineda.result) notePerDraw(*pineda.result, llvmpipe.result);
     std::fflush(stdout);
   }
   std::printf("Pineda:   %s (LD_LIBRARY_PATH=%s)\n", pinedaRenderer.empty() ? "?" : pinedaRenderer.c_str(),

@@ -13,11 +13,19 @@
 namespace pineda::bench {
 namespace {
 
-double drawTimed(BenchScene& scene, int frame) {
-  const auto start = std::chrono::steady_clock::now();
+struct FrameTimes {
+  double submitMs;  // the draw calls alone, on the calling thread
+  double frameMs;   // the draw calls and glFinish
+};
+
+FrameTimes drawTimed(BenchScene& scene, int frame) {
+  using Clock = std::chrono::steady_clock;
+  const auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+  const auto start = Clock::now();
   scene.draw(frame);
+  const auto submitted = Clock::now();
   glFinish();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return {ms(submitted - start), ms(Clock::now() - start)};
 }
 
 double median(std::vector<double> values) {
@@ -60,13 +68,19 @@ bool runScene(const BenchSceneEntry& entry, const RunSettings& settings, const s
   reportGlError(entry, "during setup");
   result.scene = std::string(entry.name);
   result.triangles = scene->trianglesPerFrame();
-  result.firstMs = drawTimed(*scene, 0);
+  result.drawCalls = scene->drawCallsPerFrame();
+  result.firstMs = drawTimed(*scene, 0).frameMs;
   const tools::Image image = tools::readFramebuffer(settings.width, settings.height);
   reportGlError(entry, "in frame 0");
 
-  std::vector<double> times;
-  for (int frame = 1; frame <= settings.frames; ++frame) times.push_back(drawTimed(*scene, frame));
+  std::vector<double> times, submitTimes;
+  for (int frame = 1; frame <= settings.frames; ++frame) {
+    const FrameTimes t = drawTimed(*scene, frame);
+    times.push_back(t.frameMs);
+    submitTimes.push_back(t.submitMs);
+  }
   result.medianMs = times.empty() ? result.firstMs : median(times);
+  result.submitMs = submitTimes.empty() ? 0 : median(submitTimes);
   reportGlError(entry, "in the timed frames");
   if (scene->drawsWithStencil())
     result.fragments = -1;

@@ -43,6 +43,7 @@ class GlslManyDraws final : public BenchScene {
   }
 
   long trianglesPerFrame() const override { return 2L * kColumns * kRows; }
+  long drawCallsPerFrame() const override { return long{kColumns} * kRows; }
 
  private:
   void link() {

@@ -11,6 +11,8 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
       {"lit_mesh", "smooth-shaded torus and sphere, GL_LIGHTING with 2 lights, specular", createLitMesh},
       {"gears", "pineda-demo's glxgears-like gears (display lists, lighting)", createGears},
       {"state_changes", "6144 one-quad draw calls changing colour, blend, depth func, texture", createStateChanges},
+      {"small_draws", "20000 one-triangle glDrawArrays from a buffer object, no state change between them",
+       createSmallDraws},
       {"copy_blur", "blur by glCopyTexSubImage2D of the frame, blended back shifted, 4 times a frame", createCopyBlur},
       {"read_pixels", "a smooth-shaded frame read back by glReadPixels as GL_RGBA and as GL_RGB bytes", createReadPixels},
       {"draw_pixels", "a window-sized RGBA byte image by glDrawPixels, then a quarter-size RGB one over it at pixel zoom 2",

@@ -29,11 +29,15 @@ double megaPixelsPerSecond(const SceneResult& result) {
   return result.medianMs > 0 && result.fragments >= 0 ? double(result.fragments) / (result.medianMs * 1000.0) : 0;
 }
 
+double microsecondsPerDraw(const SceneResult& result) {
+  return result.drawCalls > 0 ? result.submitMs * 1000.0 / double(result.drawCalls) : 0;
+}
+
 std::string formatResultLine(const SceneResult& result) {
   char buffer[256];
-  std::snprintf(buffer, sizeof buffer, "%.*s %s %.6f %.6f %ld %ld %d", int(kResultTag.size()), kResultTag.data(),
-                result.scene.c_str(), result.medianMs, result.firstMs, result.triangles, result.fragments,
-                result.fragmentsSaturated ? 1 : 0);
+  std::snprintf(buffer, sizeof buffer, "%.*s %s %.6f %.6f %ld %ld %d %ld %.6f", int(kResultTag.size()),
+                kResultTag.data(), result.scene.c_str(), result.medianMs, result.firstMs, result.triangles,
+                result.fragments, result.fragmentsSaturated ? 1 : 0, result.drawCalls, result.submitMs);
   return buffer;
 }
 
@@ -41,7 +45,8 @@ std::optional<SceneResult> parseResultLine(std::string_view output) {
   std::istringstream line{std::string(lineAfter(output, kResultTag))};
   SceneResult result;
   int saturated = 0;
-  if (!(line >> result.scene >> result.medianMs >> result.firstMs >> result.triangles >> result.fragments >> saturated))
+  if (!(line >> result.scene >> result.medianMs >> result.firstMs >> result.triangles >> result.fragments >> saturated >>
+        result.drawCalls >> result.submitMs))
     return std::nullopt;
   result.fragmentsSaturated = saturated != 0;
   return result;

@@ -13,7 +13,12 @@ struct SceneResult {
   long triangles = 0;   // submitted per frame
   long fragments = -1;  // rasterized in frame 0; -1 when they could not be counted
   bool fragmentsSaturated = false;  // some pixel took 255+ fragments: a lower bound
+  long drawCalls = 0;       // per frame, for the scenes that report them
+  double submitMs = 0;      // median of the timed frames' draw calls alone, before glFinish
 };
+
+// The calling thread's microseconds per draw call (submitMs over drawCalls); 0 when not reported.
+double microsecondsPerDraw(const SceneResult& result);
 
 double megaTrianglesPerSecond(const SceneResult& result);
 double megaPixelsPerSecond(const SceneResult& result);  // 0 when fragments are unknown

@@ -79,6 +79,7 @@ class StateChanges final : public BenchScene {
   }
 
   long trianglesPerFrame() const override { return 2L * quadCount(); }
+  long drawCallsPerFrame() const override { return quadCount(); }
 
  private:
   static constexpr int quadCount() { return kColumns * kRows * kLayers; }
