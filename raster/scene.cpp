@@ -54,8 +54,15 @@ void Scene::reset(const Framebuffer& fb) {
   planes_used_ = 0;
 }
 
-void Scene::begin_draw(DrawRecord&& draw) {
+bool Scene::repeats_current_draw(const DrawState& state, bool fades_points) const {
+  return current_repeatable_ && !draws_.empty() && draws_.back()->fades_points == fades_points &&
+         std::memcmp(current_state_.data(), static_cast<const void*>(&state), sizeof(DrawState)) == 0;
+}
+
+void Scene::begin_draw(DrawRecord&& draw, const DrawState* made_from) {
   draws_.push_back(std::make_shared<const DrawRecord>(std::move(draw)));
+  current_repeatable_ = made_from != nullptr;
+  if (made_from) std::memcpy(current_state_.data(), static_cast<const void*>(made_from), sizeof(DrawState));
   retain_textures(*draws_.back());
 }
 
@@ -259,6 +266,8 @@ void Scene::finish(WorkerPool& pool) {
 void Scene::continue_draw(const Scene& from) {
   if (from.draws_.empty()) return;
   draws_.push_back(from.draws_.back());
+  current_repeatable_ = from.current_repeatable_;
+  current_state_ = from.current_state_;
   retain_textures(*draws_.back());
 }
 

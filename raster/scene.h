@@ -1,6 +1,7 @@
 // The deferred work for one framebuffer: draws, set-up primitives and clears, binned into
 // 64x64 tiles; executed tile by tile, in command order within each tile.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -24,9 +25,15 @@ class Scene {
   // The area primitives may cover: the framebuffer, limited to the largest rendered size.
   PixelRect render_area() const { return {0, 0, tiles_x_ ? render_w_ : 0, tiles_y_ ? render_h_ : 0}; }
 
-  // Primitives added afterwards belong to this draw.
-  void begin_draw(DrawRecord&& draw);
+  // Primitives added afterwards belong to this draw. `made_from`: the DrawState make_draw_record
+  // made the record from, for this scene's framebuffer, so that a later draw of the same state
+  // may go on with the record (null: none may).
+  void begin_draw(DrawRecord&& draw, const DrawState* made_from = nullptr);
   const DrawRecord& current_draw() const { return *draws_.back(); }
+  // Whether the current draw's record is the one make_draw_record would make for a draw of
+  // `state` and `fades_points` (its other inputs, the framebuffer and the SIMD path, do not
+  // change within a scene): its made_from had the same bytes.
+  bool repeats_current_draw(const DrawState& state, bool fades_points) const;
   // A programmable draw's primitives bring their varying planes (`count` of them, copied into
   // the scene with a primitive that touches a tile).
   void add_prim(const PrimSetup& prim, const Plane* varying_planes = nullptr, int count = 0);
@@ -82,6 +89,12 @@ class Scene {
   // draw that filled the scene goes on adding primitives, here or in the next scene, and the
   // pool's threads may read it while this goes on.
   std::deque<std::shared_ptr<const DrawRecord>> draws_;
+  // The bytes of draws_.back()'s made_from, if it had one. Compared bitwise: cheaper than member
+  // by member (a fifth of a one-triangle draw), exact for floats (a zero's sign, NaNs), and
+  // conservative (padding that differs only makes a new record). A pointer that compares equal
+  // names the same object: the record keeps its objects alive.
+  bool current_repeatable_ = false;
+  std::array<unsigned char, sizeof(DrawState)> current_state_{};
   // Room for kMaxPrims records, in zeroed pages touched only as records are written (576 KiB a
   // scene: a program drawing a few primitives no longer first-touches all of it); the first
   // prim_count_ are queued, each holding only the planes its draw uses (a whole PrimSetup is

@@ -509,6 +509,18 @@ TEST_F(MultisampleTest, PointFadeUnderTheThresholdSize) {
   EXPECT_EQ(resolved(5, 11), (Rgba{0, 0, 0, 0}));
 }
 
+// A point drawn right after a rectangle of the same state fades all the same: the rectangle's
+// draw record (made without fading) does not serve it (Scene::repeats_current_draw).
+TEST_F(MultisampleTest, APointAfterARectangleOfTheSameStateStillFades) {
+  glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, 2.0f);
+  glColor4f(1, 1, 1, 1);
+  glPointSize(1.0f);
+  rect(0, 0, 2, 2);
+  point(4.5f, 4.5f);  // diameter 2, alpha 1/4 (64)
+  EXPECT_EQ(resolved(1, 1), (Rgba{255, 255, 255, 255}));
+  EXPECT_EQ(resolved(4, 4), (Rgba{255, 255, 255, 64}));
+}
+
 // With GL_MULTISAMPLE off a fragment covers all samples or none, by its pixel centre, and
 // SAMPLE_COVERAGE no longer applies.
 TEST_F(MultisampleTest, MultisampleDisabledUsesPixelCentres) {

@@ -223,6 +223,37 @@ TEST(Scene, DrawStateAndVerticesAreCopied) {
     }
 }
 
+// Draws of one DrawState in a row go on with one record (Scene::repeats_current_draw): each
+// still draws its own primitives, and a change of the state in place, as a context makes it,
+// reaches the next draw, as does the change back.
+TEST(Scene, DrawsOfAnUnchangedStateDrawTheirOwnPrimitivesAndAChangeReachesTheNext) {
+  OwnedFramebuffer fb(16, 16);
+  Renderer r(1);
+  r.set_framebuffer(fb.fb);
+  clear_all(r);
+  auto rect = [](float x0, float y0, float x1, float y1, float red, float green, float blue) {
+    return std::vector<ClipVertex>{vertex(x0, y0, 0, 1, red, green, blue), vertex(x1, y0, 0, 1, red, green, blue),
+                                   vertex(x1, y1, 0, 1, red, green, blue), vertex(x0, y1, 0, 1, red, green, blue)};
+  };
+  DrawState s = state_for(16, 16);
+  r.draw(s, Primitive::Quads, rect(-1, -1, 0, 1, 1, 0, 0));  // left half red
+  r.draw(s, Primitive::Quads, rect(0, -1, 1, 1, 0, 1, 0));   // right half green
+  s.blend = true;                                             // adding
+  s.blend_state.src_rgb = s.blend_state.dst_rgb = s.blend_state.src_alpha = s.blend_state.dst_alpha = BlendFactor::One;
+  r.draw(s, Primitive::Quads, rect(-1, -1, 1, 1, 0, 0, 1));  // blue over all
+  s.blend = false;
+  r.draw(s, Primitive::Quads, rect(-1, 0, 1, 1, 0, 0, 0));   // the top half black again
+  r.flush();
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const uint8_t* p = fb.pixel(x, y);
+      const bool top = y >= 8, left = x < 8;
+      ASSERT_EQ(p[0], top || !left ? 0 : 255) << x << "," << y;
+      ASSERT_EQ(p[1], top || left ? 0 : 255) << x << "," << y;
+      ASSERT_EQ(p[2], top ? 0 : 255) << x << "," << y;
+    }
+}
+
 TEST(Scene, LargeDrawsFlushOnTheirOwnAndKeepOrder) {
   OwnedFramebuffer fb(8, 8);
   Renderer r(2);
