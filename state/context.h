@@ -196,6 +196,9 @@ class Context {
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
   std::vector<uint8_t> copied_pixels;         // glCopyTex(Sub)Image's colour rectangle; only grows
   TransformedVertices transformed;  // vertex-stage output of the current draw
+  // The current draw's vertex transform (draw.cpp's build_transform fills it): kept from draw to
+  // draw, as constructing one and copying the lighting into it took a tenth of a one-triangle draw.
+  raster::Transform draw_transform;
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
   // (empty when the material did not change inside the primitive); the first is the one in
   // effect at glBegin.

@@ -18,12 +18,20 @@ namespace {
 
 bool is_identity(const glm::mat4& m) { return m == glm::mat4(1.f); }
 
-raster::Transform build_transform(Context& ctx, int texture_units) {
-  raster::Transform t;
+// ctx.draw_transform for a draw reading `texture_units` units: every field the vertex stage reads
+// (the lights only when lighting is on) set from the context.
+raster::Transform& build_transform(Context& ctx, int texture_units) {
+  raster::Transform& t = ctx.draw_transform;
   const glm::dmat4& mv = ctx.modelview.top();
   t.modelview = glm::mat4(mv);
   t.modelview_projection = glm::mat4(ctx.projection.top() * mv);
-  t.lighting = ctx.lighting;
+  if (ctx.lighting.enabled)
+    t.lighting = ctx.lighting;
+  else
+    t.lighting.enabled = false;
+  t.normal_matrix = glm::mat3(1.f);
+  t.normalize = false;
+  t.rescale_factor = 1.f;
   if (ctx.lighting.enabled || texgen_needs_normal(ctx, texture_units)) {
     t.normal_matrix = glm::mat3(glm::inverseTranspose(glm::dmat3(mv)));
     t.normalize = ctx.normalize;
@@ -85,7 +93,7 @@ void transform_in_pieces(Context& ctx, const raster::Transform& transform, std::
 }  // namespace
 
 raster::ClipVertex transform_single_vertex(Context& ctx, const raster::VertexInput& vertex) {
-  const raster::Transform transform = build_transform(ctx, raster::kMaxTextureUnits);
+  const raster::Transform& transform = build_transform(ctx, raster::kMaxTextureUnits);
   std::vector<raster::ClipVertex> out;
   raster::transform_vertices(transform, std::span(&vertex, 1), out);
   return out[0];
@@ -114,7 +122,7 @@ void draw_fixed_function(Context& ctx, raster::Primitive primitive, std::span<co
   const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
   const bool program = ctx.programs.active() != nullptr;  // with one stage only (program_draw.h)
   // A fragment shader may read every unit's coordinates (gl_TexCoord[i]).
-  raster::Transform transform = build_transform(
+  raster::Transform& transform = build_transform(
       ctx, program ? raster::kMaxTextureUnits : feedback ? std::max(texture_units, 1) : texture_units);
   if (!(program && run_vertex_program())) transform_step(transform);
   raster::DrawState& state = ctx.draw_state;
@@ -187,6 +195,12 @@ void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertice
   draw_fixed_function(ctx, primitive, indices, [] { return false; }, [&](const raster::Transform& transform) {
     constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
     const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.count);
+    if (vertices.count <= kFetchRun) {  // one run on this thread, in the context's room (no allocation)
+      if (ctx.fetched.size() < vertices.count) ctx.fetched.resize(vertices.count);  // only grows
+      vertices.fetch(0, vertices.count, ctx.fetched.data());
+      raster::transform_vertices(transform, std::span(ctx.fetched.data(), vertices.count), out);
+      return;
+    }
     ctx.renderer().for_each_piece(vertices.count, raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
       std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
       for (size_t first = begin; first < end; first += kFetchRun) {
