@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "raster/vertex_lighting.h"
 
@@ -38,7 +39,9 @@ Needs needs_of(const Transform& t) {
 class VertexBatch {
  public:
   explicit VertexBatch(const Transform& t)
-      : t_(t), needs_(needs_of(t)), prepared_(t.lighting.enabled ? prepare_lights(t.lighting) : PreparedLights{}) {}
+      : t_(t),
+        needs_(needs_of(t)),
+        prepared_(t.lighting.enabled ? std::optional(prepare_lights(t.lighting)) : std::nullopt) {}
 
   void run(const VertexInput* v, ClipVertex* o, int n) {
     v_ = v;
@@ -158,7 +161,7 @@ class VertexBatch {
     }
     for (int i = 0; i < n_; ++i) colors_[i] = v_[i].color;
     lane_material(lighting, true, colors_, n_, material_);
-    light_lanes(lighting, prepared_, material_, eye_pos_, normal_, n_, color_, specular_);
+    light_lanes(lighting, *prepared_, material_, eye_pos_, normal_, n_, color_, specular_);
     store_lit(&ClipVertex::color, &ClipVertex::secondary);
     if (lighting.two_side) {
       LaneVec3 back_normal;
@@ -168,7 +171,7 @@ class VertexBatch {
         back_normal.z[i] = -normal_.z[i];
       }
       lane_material(lighting, false, colors_, n_, material_);
-      light_lanes(lighting, prepared_, material_, eye_pos_, back_normal, n_, color_, specular_);
+      light_lanes(lighting, *prepared_, material_, eye_pos_, back_normal, n_, color_, specular_);
       store_lit(&ClipVertex::back_color, &ClipVertex::back_secondary);
     } else {
       for (int i = 0; i < n_; ++i) {
@@ -216,7 +219,9 @@ class VertexBatch {
 
   const Transform& t_;
   const Needs needs_;
-  const PreparedLights prepared_;
+  // With lighting only: zeroing the lights of a draw without it was most of a one-triangle
+  // draw's transform.
+  const std::optional<PreparedLights> prepared_;
   const bool in_lanes_ = needs_.eye || needs_.normal;  // positions in lanes (else only clip positions)
   const bool per_vertex_extras_ =
       t_.extras.fog || t_.extras.point_attenuation || t_.extras.clip_planes != 0 || t_.texture_units > 0;

@@ -91,6 +91,7 @@ struct TextureUnitState {
   GLuint bound_3d = 0, bound_cube = 0;
   bool enabled_rect = false;
   GLuint bound_rect = 0;
+  bool any_target_enabled() const { return enabled_1d || enabled_2d || enabled_3d || enabled_cube || enabled_rect; }
   TexEnvState env;
   // The sampler object bound to the unit (glBindSampler), or none.
   std::shared_ptr<SamplerObject> sampler;

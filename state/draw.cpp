@@ -59,6 +59,7 @@ int snapshot_textures(Context& ctx) {
     TextureUnitState& unit = ctx.texture_units[u];
     raster::TextureUnit& out = ctx.draw_state.texture_units[u];
     out.image.reset();
+    if (!unit.any_target_enabled()) continue;
     TextureObject* tex = nullptr;
     for (TexTarget kind : {TexTarget::Cube, TexTarget::Rect, TexTarget::T3D, TexTarget::T2D, TexTarget::T1D}) {  // GL 1.3 3.8.15, ARB_texture_rectangle
       if (!enabled_flag(unit, kind)) continue;

@@ -46,6 +46,10 @@ void read_array(const ClientArray& array, size_t index, float* dst, bool normali
       default: break;
     }
   }
+  if (array.type == GL_UNSIGNED_BYTE && normalize) {  // colours as bytes: read_vertex_component's values
+    for (int c = 0; c < array.size; ++c) dst[c] = p[c] / 255.f;
+    return;
+  }
   for (int c = 0; c < array.size; ++c) dst[c] = read_vertex_component(p + c * component, array.type, normalize);
 }
 
