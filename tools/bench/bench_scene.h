@@ -50,6 +50,7 @@ std::unique_ptr<BenchScene> createGlslProcedural(int width, int height);
 std::unique_ptr<BenchScene> createGlslSprites(int width, int height);
 std::unique_ptr<BenchScene> createGlslRenderToTexture(int width, int height);
 std::unique_ptr<BenchScene> createGlslManyDraws(int width, int height);
+std::unique_ptr<BenchScene> createGlslSmallDraws(int width, int height);
 std::unique_ptr<BenchScene> createGlslMsaa(int width, int height);
 
 }  // namespace pineda::bench

@@ -34,6 +34,8 @@ const std::vector<BenchSceneEntry>& allBenchScenes() {
       {"glsl_rtt", "GLSL: 16 lit quads into a 512x512 texture FBO, composited twice with a 5-tap blur",
        createGlslRenderToTexture},
       {"glsl_many_draws", "GLSL: 12288 one-quad draws, two glUniform calls before each", createGlslManyDraws},
+      {"glsl_small_draws", "GLSL: small_draws' 20000 one-triangle draws through one program, no uniform changed",
+       createGlslSmallDraws},
       {"glsl_msaa", "GLSL: 2 full-screen layers of 8 texture taps and 64 thin triangles into a 4x multisampled FBO, resolved",
        createGlslMsaa},
   };
