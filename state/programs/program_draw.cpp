@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <string_view>
 
 #include <xmmintrin.h>
@@ -40,7 +40,10 @@ bool sampler_target(shader::BaseType b, TexTarget& out) {
 // sampler types choose the target, the enables do not matter).
 void snapshot_sampler_textures(Context& ctx, const shader::Program& program, const std::vector<float>& values,
                                raster::DrawState& state) {
-  for (raster::TextureUnit& unit : state.texture_units) unit = raster::TextureUnit{};
+  // A unit without an image is off whatever else it holds (resetting every unit's fields was a
+  // twentieth of a small program draw).
+  for (raster::TextureUnit& unit : state.texture_units)
+    if (unit.image) unit = raster::TextureUnit{};
   for (const shader::Uniform& u : program.uniforms()) {
     TexTarget target;
     if (u.builtin || !sampler_target(u.type.base, target)) continue;
@@ -50,6 +53,7 @@ void snapshot_sampler_textures(Context& ctx, const shader::Program& program, con
       const int index = static_cast<int>(values[at]);
       if (index < 0 || index >= raster::kMaxTextureImageUnits) continue;
       raster::TextureUnit& out = state.texture_units[index];
+      out = raster::TextureUnit{};
       TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[index], target), binding_enum(target));
       const SamplerObject* sampler = ctx.texture_units[index].sampler.get();
       const TexParams* sampling = sampler ? &sampler->params : nullptr;
@@ -344,16 +348,25 @@ const LinkedProgram* program_in_use(Context& ctx) {
 }
 
 // The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
-std::shared_ptr<raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec) {
+// The program, uniform values (built-ins included) and facing of a draw: the last draw's when
+// they are the same, bit for bit (a uniform's zero that changed sign is a change).
+std::shared_ptr<const raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec, bool two_side) {
   if (!exec.sampler_conflict.empty()) {
     ctx.record_error(GL_INVALID_OPERATION, exec.sampler_conflict);
     return nullptr;
   }
+  std::vector<float>& values = ctx.programs.draw_uniforms;
+  values.assign(exec.values.begin(), exec.values.end());
+  fill_builtin_uniforms(ctx, *exec.program, values);
+  std::shared_ptr<const raster::ShaderDraw>& last = ctx.programs.last_shader_draw;
+  if (last && last->program == exec.program && last->two_side == two_side && last->uniforms.size() == values.size() &&
+      std::memcmp(last->uniforms.data(), values.data(), values.size() * sizeof(float)) == 0)
+    return last;
   auto draw = std::make_shared<raster::ShaderDraw>();
   draw->program = exec.program;
-  draw->uniforms = exec.values;
-  fill_builtin_uniforms(ctx, *exec.program, draw->uniforms);
-  draw->two_side = ctx.programs.two_side;
+  draw->uniforms = values;
+  draw->two_side = two_side;
+  last = draw;
   return draw;
 }
 
@@ -382,7 +395,7 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || !exec->vertex_shader || !exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
-  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  const std::shared_ptr<const raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec, ctx.programs.two_side);
   if (!shader_draw) return true;
 
   raster::DrawState state = ctx.draw_state;
@@ -413,7 +426,7 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || !exec->vertex_shader || exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
-  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  const std::shared_ptr<const raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec, ctx.programs.two_side);
   if (!shader_draw) {
     transformed.resize(0);
     return true;
@@ -453,7 +466,9 @@ bool draw_fragment_program_only(Context& ctx, raster::Primitive primitive, std::
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || exec->vertex_shader || !exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
-  std::shared_ptr<raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec);
+  // The fixed-function stage computed both colours; the back ones apply with two-sided lighting.
+  const std::shared_ptr<const raster::ShaderDraw> shader_draw =
+      shader_draw_for(ctx, *exec, ctx.lighting.enabled && ctx.lighting.two_side);
   if (!shader_draw) return true;
   raster::DrawState state = ctx.draw_state;
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
@@ -474,8 +489,6 @@ bool draw_fragment_program_only(Context& ctx, raster::Primitive primitive, std::
       if (c.components == 3 && var.components == 4 && var.back_offset + 3 < nv) out[var.back_offset + 3] = 1.f;
     }
   }
-  // The fixed-function stage computed both colours; the back ones apply with two-sided lighting.
-  shader_draw->two_side = ctx.lighting.enabled && ctx.lighting.two_side;
   draw_or_feed_back(ctx, state, primitive, vertices, indices, varyings.data());
   return true;
 }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "raster/shader_draw.h"
 #include "shader/program.h"
 #include "state/buffers/buffer_object.h"
 #include "state/programs/program_objects.h"
@@ -56,6 +57,10 @@ struct ProgramState {
   std::vector<float> immediate_generic;
   // The vertex shader's varyings of the current draw (scratch).
   std::vector<float> draw_varyings;
+  // The last draw's program, uniform values and facing: a draw that changed none of them shares
+  // it (program_draw.cpp), and then its record (raster::Scene::repeats_current_draw).
+  std::shared_ptr<const raster::ShaderDraw> last_shader_draw;
+  std::vector<float> draw_uniforms;  // (scratch)
   VertexRunScratch vertex_run;  // (scratch)
 
   // A program with a vertex shader is in use: draws run it.
