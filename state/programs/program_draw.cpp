@@ -360,7 +360,7 @@ std::shared_ptr<const raster::ShaderDraw> shader_draw_for(Context& ctx, const Li
   fill_builtin_uniforms(ctx, *exec.program, values);
   std::shared_ptr<const raster::ShaderDraw>& last = ctx.programs.last_shader_draw;
   if (last && last->program == exec.program && last->two_side == two_side && last->uniforms.size() == values.size() &&
-      std::memcmp(last->uniforms.data(), values.data(), values.size() * sizeof(float)) == 0)
+      (values.empty() || std::memcmp(last->uniforms.data(), values.data(), values.size() * sizeof(float)) == 0))
     return last;
   auto draw = std::make_shared<raster::ShaderDraw>();
   draw->program = exec.program;
