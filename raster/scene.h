@@ -90,7 +90,7 @@ class Scene {
   // pool's threads may read it while this goes on.
   std::deque<std::shared_ptr<const DrawRecord>> draws_;
   // The bytes of draws_.back()'s made_from, if it had one. Compared bitwise: cheaper than member
-  // by member (a fifth of a one-triangle draw), exact for floats (a zero's sign, NaNs), and
+  // by member (which took an eighth of a one-triangle draw), exact for floats (a zero's sign), and
   // conservative (padding that differs only makes a new record). A pointer that compares equal
   // names the same object: the record keeps its objects alive.
   bool current_repeatable_ = false;

@@ -347,9 +347,9 @@ const LinkedProgram* program_in_use(Context& ctx) {
   return exec && exec->program ? exec : nullptr;
 }
 
-// The draw's copy of the uniforms (built-ins filled from GL state); null after an error.
-// The program, uniform values (built-ins included) and facing of a draw: the last draw's when
-// they are the same, bit for bit (a uniform's zero that changed sign is a change).
+// The draw's program, copy of the uniforms (built-ins filled from GL state) and facing; null
+// after an error. The last draw's when all are the same, bit for bit (a uniform's zero that
+// changed sign is a change): its record then serves this draw too.
 std::shared_ptr<const raster::ShaderDraw> shader_draw_for(Context& ctx, const LinkedProgram& exec, bool two_side) {
   if (!exec.sampler_conflict.empty()) {
     ctx.record_error(GL_INVALID_OPERATION, exec.sampler_conflict);
