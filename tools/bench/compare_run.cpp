@@ -177,7 +177,7 @@ void printHeader(const Options& options) {
     std::printf("ref: Pineda with PINEDA_REFERENCE=1; ref max/differ%%/PSNR: Pineda against it\n");
   if (options.threads > 0)
     std::printf("threads: PINEDA_THREADS=%d, LP_NUM_THREADS=%d\n", options.threads, options.threads);
-  std::printf("%-14s %9s %9s", "scene", "Pineda ms", "first");
+  std::printf("%-18s %9s %9s", "scene", "Pineda ms", "first");
   if (options.compareLlvmpipe) std::printf(" %11s %9s %7s", "llvmpipe ms", "first", "ratio");
   std::printf(" %8s %8s", "Mtri/s", "Mpix/s");
   if (options.compareLlvmpipe) std::printf(" %8s %9s %8s", "max diff", "differ %", "PSNR dB");
@@ -214,7 +214,7 @@ int runComparison(const Options& options) {
     if (pinedaRenderer.empty()) pinedaRenderer = pineda.renderer;
     if (llvmpipeRenderer.empty()) llvmpipeRenderer = llvmpipe.renderer;
 
-    std::printf("%-14s %9s %9s", std::string(entry->name).c_str(), number(pineda.result, &SceneResult::medianMs).c_str(),
+    std::printf("%-18s %9s %9s", std::string(entry->name).c_str(), number(pineda.result, &SceneResult::medianMs).c_str(),
                 number(pineda.result, &SceneResult::firstMs).c_str());
     if (options.compareLlvmpipe) {
       std::printf(" %11s %9s", number(llvmpipe.result, &SceneResult::medianMs).c_str(),

@@ -53,7 +53,7 @@ int runLocal(const Options& options) {
               "Mpix/s counts the fragments rasterized per frame (stencil INCR count of frame 0); us/draw: the calling "
               "thread's time in the draw calls (before glFinish) per call, for the draw-call scenes\n",
               options.width, options.height, options.frames);
-  std::printf("%-14s %10s %10s %9s %9s %12s %8s  %s\n", "scene", "ms/frame", "first ms", "Mtri/s", "Mpix/s",
+  std::printf("%-18s %10s %10s %9s %9s %12s %8s  %s\n", "scene", "ms/frame", "first ms", "Mtri/s", "Mpix/s",
               "frags/frame", "us/draw", "png");
   int failures = 0;
   bool first = true;
@@ -72,7 +72,7 @@ int runLocal(const Options& options) {
     }
     char perDraw[16] = "-";
     if (result.drawCalls > 0) std::snprintf(perDraw, sizeof perDraw, "%.3f", microsecondsPerDraw(result));
-    std::printf("%-14s %10.3f %10.3f %9.3f %9.1f %11ld%s %8s  %s\n", result.scene.c_str(), result.medianMs,
+    std::printf("%-18s %10.3f %10.3f %9.3f %9.1f %11ld%s %8s  %s\n", result.scene.c_str(), result.medianMs,
                 result.firstMs, megaTrianglesPerSecond(result), megaPixelsPerSecond(result), result.fragments,
                 result.fragmentsSaturated ? "+" : " ", perDraw, path.c_str());
     std::fflush(stdout);
