@@ -196,19 +196,19 @@ void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertice
   draw_fixed_function(ctx, primitive, indices, [] { return false; }, [&](const raster::Transform& transform) {
     constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
     const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.count);
+    // Vertices [first, first + n) fetched into `room` (n <= kFetchRun) and transformed.
+    const auto run = [&](size_t first, size_t n, raster::VertexInput* room) {
+      vertices.fetch(first, first + n, room);
+      raster::transform_vertices(transform, std::span(room, n), out.subspan(first, n));
+    };
     if (vertices.count <= kFetchRun) {  // one run on this thread, in the context's room (no allocation)
       if (ctx.fetched.size() < vertices.count) ctx.fetched.resize(vertices.count);  // only grows
-      vertices.fetch(0, vertices.count, ctx.fetched.data());
-      raster::transform_vertices(transform, std::span(ctx.fetched.data(), vertices.count), out);
-      return;
+      return run(0, vertices.count, ctx.fetched.data());
     }
     ctx.renderer().for_each_piece(vertices.count, raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
       std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
-      for (size_t first = begin; first < end; first += kFetchRun) {
-        const size_t n = std::min(kFetchRun, end - first);
-        vertices.fetch(first, first + n, fetched.data());
-        raster::transform_vertices(transform, std::span(fetched.data(), n), out.subspan(first, n));
-      }
+      for (size_t first = begin; first < end; first += kFetchRun)
+        run(first, std::min(kFetchRun, end - first), fetched.data());
     });
   });
 }
