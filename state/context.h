@@ -39,6 +39,8 @@
 #include "state/stencil_faces.h"
 #include "state/textures/tex_env_state.h"
 #include "state/transformed_vertices.h"
+#include "state/vertex_arrays/index_runs.h"
+#include "state/vertex_arrays/vertex_fetch_plan.h"
 #include "state/textures/texture_object.h"
 #include "state/vertex_extras_state.h"
 #include "state/vertex_arrays/vertex_array_object.h"
@@ -193,10 +195,14 @@ class Context {
   bool in_begin_end = false;
   GLenum begin_mode = GL_POINTS;
   std::vector<raster::VertexInput> immediate;
+  VertexFetchPlan vertex_fetch_plan;  // the current array draw's (api_arrays.cpp's array_elements)
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
   std::vector<uint8_t> copied_pixels;         // glCopyTex(Sub)Image's colour rectangle; only grows
   TransformedVertices transformed;  // vertex-stage output of the current draw
+  // A large draw's runs (draw.cpp's draw_in_runs): the current run's vertices and indices.
+  IndexRuns index_runs;
+  std::vector<uint32_t> run_vertices, run_indices;
   // The current draw's vertex transform (draw.cpp's build_transform fills it): kept from draw to
   // draw, as constructing one and copying the lighting into it took a tenth of a one-triangle draw.
   raster::Transform draw_transform;

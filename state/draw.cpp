@@ -10,6 +10,7 @@
 #include "state/programs/program_draw.h"
 #include "state/point_parameters.h"
 #include "state/select_feedback.h"
+#include "state/vertex_arrays/index_runs.h"
 #include "state/vertex_arrays/vertex_fetch.h"
 #include "state/vertex_extras_snapshot.h"
 
@@ -173,6 +174,101 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   });
 }
 
+namespace {
+
+constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
+
+// Vertices [0, count) of a draw fetched by fetch(first, n, room) (n <= kFetchRun vertices into
+// `room`) and transformed into `out`, kFetchRun at a time, in pieces on the renderer's threads.
+template <typename Fetch>
+void fetch_and_transform(Context& ctx, const raster::Transform& transform, size_t count, const Fetch& fetch,
+                         std::span<raster::ClipVertex> out) {
+  const auto run = [&](size_t first, size_t n, raster::VertexInput* room) {
+    fetch(first, n, room);
+    raster::transform_vertices(transform, std::span(room, n), out.subspan(first, n));
+  };
+  if (count <= kFetchRun) {  // one run on this thread, in the context's room (no allocation)
+    if (ctx.fetched.size() < count) ctx.fetched.resize(count);  // only grows
+    return run(0, count, ctx.fetched.data());
+  }
+  ctx.renderer().for_each_piece(count, raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
+    std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
+    for (size_t first = begin; first < end; first += kFetchRun)
+      run(first, std::min(kFetchRun, end - first), fetched.data());
+  });
+}
+
+// The vertices of one run of a draw in runs (draw_in_runs).
+constexpr size_t kRunVertices = 4096;
+
+// Vertices per primitive of the modes whose primitives are independent of each other (assembly
+// decides nothing for the draw as a whole: quads take their diagonal from every vertex), else 0.
+size_t independent_group(raster::Primitive primitive) {
+  switch (primitive) {
+    case raster::Primitive::Points: return 1;
+    case raster::Primitive::Lines: return 2;
+    case raster::Primitive::Triangles: return 3;
+    default: return 0;
+  }
+}
+
+// Whether a fixed-function draw of `count` array vertices goes to the renderer in runs: a large
+// draw of independent primitives that is rendered once (not fed back, not to two buffers).
+bool draws_in_runs(Context& ctx, raster::Primitive primitive, size_t count) {
+  return count > kRunVertices && independent_group(primitive) && !ctx.programs.active() && !ctx.es2() &&
+         ctx.render_mode.mode == GL_RENDER && ctx.renders_draw_buffers_in_one_pass();
+}
+
+// draw_fixed_function for a draw that draws_in_runs: each run of its primitives is fetched,
+// transformed and drawn in turn (the same primitives in the same order, so the same pixels).
+void draw_in_runs(Context& ctx, raster::Primitive primitive, const ArrayVertices& vertices,
+                  std::span<const uint32_t> indices) {
+  const int texture_units = snapshot_textures(ctx);
+  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
+  const raster::Transform& transform = build_transform(ctx, texture_units);
+  raster::DrawState& state = ctx.draw_state;
+  state.viewport = ctx.viewport;
+  state.cull_face = ctx.enable_cull;
+  const size_t group = independent_group(primitive);
+  const auto draw_run = [&](std::span<const uint32_t> run_indices) {
+    const std::span<const raster::ClipVertex> transformed = ctx.transformed.vertices();
+    ctx.render_to_draw_buffers([&] { ctx.renderer().draw(state, primitive, transformed, run_indices); });
+  };
+  if (indices.empty()) {
+    const size_t run_length = kRunVertices / group * group;
+    for (size_t first = 0; first < vertices.count; first += run_length) {
+      const size_t n = std::min(run_length, vertices.count - first);
+      fetch_and_transform(ctx, transform, n,
+                          [&](size_t begin, size_t count, raster::VertexInput* room) {
+                            vertices.fetch(first + begin, first + begin + count, room);
+                          },
+                          ctx.transformed.resize(n));
+      draw_run({});
+    }
+    return;
+  }
+  std::vector<uint32_t>& run_vertices = ctx.run_vertices;
+  std::vector<uint32_t>& run_indices = ctx.run_indices;
+  for (size_t position = 0; position < indices.size();) {
+    position = ctx.index_runs.next(indices, position, group, kRunVertices, vertices.count, run_vertices, run_indices);
+    if (run_vertices.empty()) continue;
+    // Consecutive vertices (most of a mesh's new ones) are fetched together.
+    fetch_and_transform(ctx, transform, run_vertices.size(),
+                        [&](size_t begin, size_t count, raster::VertexInput* room) {
+                          for (size_t i = begin, end = begin + count; i < end;) {
+                            size_t next = i + 1;
+                            while (next < end && run_vertices[next] == run_vertices[next - 1] + 1) ++next;
+                            vertices.fetch(run_vertices[i], size_t{run_vertices[next - 1]} + 1, room + (i - begin));
+                            i = next;
+                          }
+                        },
+                        ctx.transformed.resize(run_vertices.size()));
+    draw_run(run_indices);
+  }
+}
+
+}  // namespace
+
 void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices) {
   if (!ctx.draw_drawable() || vertices.count == 0) return;
   if (ctx.programs.active() && vertex_shader_reads_generic_attributes_only(ctx)) {
@@ -193,23 +289,11 @@ void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertice
   }
   raster::Primitive primitive;
   if (!to_primitive(mode, primitive)) return;
+  if (draws_in_runs(ctx, primitive, vertices.count)) return draw_in_runs(ctx, primitive, vertices, indices);
   draw_fixed_function(ctx, primitive, indices, [] { return false; }, [&](const raster::Transform& transform) {
-    constexpr size_t kFetchRun = 256;  // fetched vertices transformed while they are in the cache
-    const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.count);
-    // Vertices [first, first + n) fetched into `room` (n <= kFetchRun) and transformed.
-    const auto run = [&](size_t first, size_t n, raster::VertexInput* room) {
-      vertices.fetch(first, first + n, room);
-      raster::transform_vertices(transform, std::span(room, n), out.subspan(first, n));
-    };
-    if (vertices.count <= kFetchRun) {  // one run on this thread, in the context's room (no allocation)
-      if (ctx.fetched.size() < vertices.count) ctx.fetched.resize(vertices.count);  // only grows
-      return run(0, vertices.count, ctx.fetched.data());
-    }
-    ctx.renderer().for_each_piece(vertices.count, raster::Renderer::kVerticesPerPiece, [&](size_t begin, size_t end) {
-      std::vector<raster::VertexInput> fetched(std::min(kFetchRun, end - begin));
-      for (size_t first = begin; first < end; first += kFetchRun)
-        run(first, std::min(kFetchRun, end - first), fetched.data());
-    });
+    fetch_and_transform(ctx, transform, vertices.count,
+                        [&](size_t first, size_t n, raster::VertexInput* room) { vertices.fetch(first, first + n, room); },
+                        ctx.transformed.resize(vertices.count));
   });
 }
 

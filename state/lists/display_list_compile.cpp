@@ -13,6 +13,7 @@
 #include "state/textures/tex_image_checks.h"
 #include "state/textures/texture_target.h"
 #include "state/vertex_arrays/vertex_fetch.h"
+#include "state/vertex_arrays/vertex_fetch_plan.h"
 
 namespace pineda::gl {
 namespace {
@@ -73,7 +74,9 @@ template <typename Index>
 std::optional<float> fetch_indexed(const Context& ctx, GLsizei count, const Index* indices,
                                    std::vector<raster::VertexInput>& out) {
   out.resize(count);
-  for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, indices[i], out[i]);
+  VertexFetchPlan plan;
+  plan.build(ctx);
+  for (GLsizei i = 0; i < count; ++i) plan.fetch(indices[i], out[i]);
   if (count == 0 || !ctx.index_array.active()) return {};
   return fetch_index(ctx, indices[count - 1]);
 }
@@ -122,7 +125,9 @@ void compile_DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   std::vector<raster::VertexInput> vertices;
   if (error == GL_NO_ERROR && array_sources(ctx).vertex) {
     vertices.resize(count);
-    for (GLsizei i = 0; i < count; ++i) fetch_vertex(ctx, size_t(first) + i, vertices[i]);
+    VertexFetchPlan plan;
+    plan.build(ctx);
+    for (GLsizei i = 0; i < count; ++i) plan.fetch(size_t(first) + i, vertices[i]);
   }
   std::optional<float> last_index;
   if (!vertices.empty() && ctx.index_array.active()) last_index = fetch_index(ctx, size_t(first) + count - 1);

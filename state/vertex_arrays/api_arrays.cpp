@@ -48,7 +48,7 @@ bool can_fetch(const Context& ctx) {
 
 // The vertices of array elements index_of(i), i < count.
 template <typename IndexOf>
-ArrayVertices array_elements(const Context& ctx, size_t count, IndexOf index_of) {
+ArrayVertices array_elements(Context& ctx, size_t count, IndexOf index_of) {
   const auto elements = [index_of](size_t begin, size_t end, uint32_t* out) {
     for (size_t i = begin; i < end; ++i) out[i - begin] = static_cast<uint32_t>(std::min<size_t>(index_of(i), UINT32_MAX - 1));
   };
@@ -59,9 +59,10 @@ ArrayVertices array_elements(const Context& ctx, size_t count, IndexOf index_of)
             },
             elements};
   }
+  ctx.vertex_fetch_plan.build(ctx);
   return {count,
-          [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
-            for (size_t i = begin; i < end; ++i) fetch_vertex(ctx, index_of(i), out[i - begin]);
+          [&plan = ctx.vertex_fetch_plan, index_of](size_t begin, size_t end, raster::VertexInput* out) {
+            for (size_t i = begin; i < end; ++i) plan.fetch(index_of(i), out[i - begin]);
           },
           elements};
 }

@@ -7,11 +7,9 @@
 #include "state/programs/generic_attribs.h"
 #include "state/programs/program_objects.h"
 #include "state/unaligned.h"
+#include "state/vertex_arrays/vertex_fetch_plan.h"
 
 namespace pineda {
-namespace {
-
-}  // namespace
 
 float read_vertex_component(const uint8_t* p, unsigned type, bool normalize) {
   switch (type) {
@@ -34,23 +32,8 @@ namespace {
 // for the components the array does not have, and all of them when the element lies
 // outside the array's buffer object).
 void read_array(const ClientArray& array, size_t index, float* dst, bool normalize) {
-  const int component = gl_type_size(array.type);
-  const uint8_t* p = array_element(array, index, size_t(component) * array.size);
-  if (!p) return;
-  if (array.type == GL_FLOAT) {  // the common case, without a conversion per component (copies of constant size)
-    switch (array.size) {
-      case 4: std::memcpy(dst, p, sizeof(float) * 4); return;
-      case 3: std::memcpy(dst, p, sizeof(float) * 3); return;
-      case 2: std::memcpy(dst, p, sizeof(float) * 2); return;
-      case 1: std::memcpy(dst, p, sizeof(float)); return;
-      default: break;
-    }
-  }
-  if (array.type == GL_UNSIGNED_BYTE && normalize) {  // colours as bytes: read_vertex_component's values
-    for (int c = 0; c < array.size; ++c) dst[c] = p[c] / 255.f;
-    return;
-  }
-  for (int c = 0; c < array.size; ++c) dst[c] = read_vertex_component(p + c * component, array.type, normalize);
+  const uint8_t* p = array_element(array, index, size_t(gl_type_size(array.type)) * array.size);
+  if (p) read_components(p, array.type, array.size, normalize, dst);
 }
 
 }  // namespace
@@ -98,37 +81,9 @@ bool array_edge_flag(const Context& ctx, size_t index) {
 }
 
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out) {
-  out = raster::VertexInput{};
-  out.source = static_cast<uint32_t>(std::min<size_t>(index, UINT32_MAX - 1));
-  fetch_array_position(ctx, index, out.position);
-  if (ctx.color_array.active()) {
-    read_array(ctx.color_array, index, out.color, true);
-  } else {
-    std::copy(ctx.current_color, ctx.current_color + 4, out.color);
-  }
-  if (ctx.normal_array.active()) {
-    read_array(ctx.normal_array, index, out.normal, true);
-  } else {
-    std::copy(ctx.current_normal, ctx.current_normal + 3, out.normal);
-  }
-  for (int u = 0; u < raster::kMaxTextureUnits; ++u) {
-    const TextureUnitState& unit = ctx.texture_units[u];
-    if (unit.texcoord_array.active()) {
-      out.texcoord[u][3] = 1.f;
-      read_array(unit.texcoord_array, index, out.texcoord[u], false);
-    } else
-      std::copy(unit.current_texcoord, unit.current_texcoord + 4, out.texcoord[u]);
-  }
-  if (ctx.secondary_color_array.active())
-    read_array(ctx.secondary_color_array, index, out.secondary_color, true);
-  else
-    std::copy(ctx.extras.current_secondary_color, ctx.extras.current_secondary_color + 3, out.secondary_color);
-  if (ctx.point_size_array.active()) read_array(ctx.point_size_array, index, &out.point_size, false);
-  if (ctx.fog_coord_array.active())
-    read_array(ctx.fog_coord_array, index, &out.fog_coord, false);
-  else
-    out.fog_coord = ctx.extras.current_fog_coord;
-  out.edge_flag = array_edge_flag(ctx, index);
+  VertexFetchPlan plan;
+  plan.build(ctx);
+  plan.fetch(index, out);
 }
 
 void fetch_vertex_source(const Context& ctx, size_t index, raster::VertexInput& out) {

@@ -1,6 +1,9 @@
 // Reading vertices out of the application's client arrays.
 #pragma once
+#include <GL/gl.h>
+
 #include <cstdint>
+#include <cstring>
 
 #include "raster/vertex.h"
 
@@ -10,7 +13,7 @@ class Context;
 struct ClientArray;
 
 // Builds vertex `index` from the enabled client arrays, taking the current values for
-// disabled ones.
+// disabled ones (VertexFetchPlan's fetch; build one plan for many vertices).
 void fetch_vertex(const Context& ctx, size_t index, raster::VertexInput& out);
 
 // Vertex `index` as a draw whose vertex shader reads generic attributes alone needs it: its
@@ -47,5 +50,25 @@ float read_vertex_component(const uint8_t* p, unsigned type, bool normalize);
 
 // Byte size of one component of a GL array type, 0 when the type is not one.
 int gl_type_size(unsigned type);
+
+// `size` components of type `type` at p into dst, as read_vertex_component reads each. Inline,
+// with the common cases first: it runs once per array and vertex.
+inline void read_components(const uint8_t* p, unsigned type, int size, bool normalize, float* dst) {
+  if (type == GL_FLOAT) {  // copies of constant size, without a conversion per component
+    switch (size) {
+      case 4: std::memcpy(dst, p, sizeof(float) * 4); return;
+      case 3: std::memcpy(dst, p, sizeof(float) * 3); return;
+      case 2: std::memcpy(dst, p, sizeof(float) * 2); return;
+      case 1: std::memcpy(dst, p, sizeof(float)); return;
+      default: break;
+    }
+  }
+  if (type == GL_UNSIGNED_BYTE && normalize) {  // colours as bytes: read_vertex_component's values
+    for (int c = 0; c < size; ++c) dst[c] = p[c] / 255.f;
+    return;
+  }
+  const int component = gl_type_size(type);
+  for (int c = 0; c < size; ++c) dst[c] = read_vertex_component(p + c * component, type, normalize);
+}
 
 }  // namespace pineda
