@@ -41,7 +41,15 @@ class VertexBatch {
   explicit VertexBatch(const Transform& t)
       : t_(t),
         needs_(needs_of(t)),
-        prepared_(t.lighting.enabled ? std::optional(prepare_lights(t.lighting)) : std::nullopt) {}
+        prepared_(t.lighting.enabled ? std::optional(prepare_lights(t.lighting)) : std::nullopt) {
+    // Zero where not computed, as each vertex alone would have them (set once: no batch writes
+    // them), when lighting or the extras read them: a draw of a few vertices without either
+    // spent half of its transform zeroing them.
+    if (per_vertex_extras_ || t.lighting.enabled) {
+      eye4_ = LaneVec4{};
+      normal_ = LaneVec3{};
+    }
+  }
 
   void run(const VertexInput* v, ClipVertex* o, int n) {
     v_ = v;
@@ -229,9 +237,8 @@ class VertexBatch {
   ClipVertex* o_ = nullptr;
   int n_ = 0;
   LaneVec4 obj_;
-  // Zero where not needed, as each vertex alone would have them (set once: no batch writes them).
-  LaneVec4 eye4_{};
-  LaneVec3 normal_{}, eye_pos_;
+  LaneVec4 eye4_;  // (zero where not computed: the constructor)
+  LaneVec3 normal_, eye_pos_;
   LaneMaterial material_;
   LaneVec4 color_;
   LaneVec3 specular_;
