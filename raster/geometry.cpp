@@ -38,11 +38,12 @@ constexpr double kResolvableDepthSteps = 2.0;
 }  // namespace
 
 GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::vector<Plane>& varying_planes,
-                             std::function<void()> on_full, bool reference)
+                             PrimSetup& filled_triangle, std::function<void()> on_full, bool reference)
     : scene_(scene),
       on_full_(std::move(on_full)),
       reference_(reference),
       window_cache_(window_cache),
+      cached_prim_(filled_triangle),
       varying_planes_(varying_planes) {
   const DrawState& s = scene_.current_draw().state;
   const Viewport& vp = s.viewport;

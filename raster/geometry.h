@@ -20,8 +20,10 @@ class GeometryStage final : public PrimitiveSink {
   // `reference`: primitives are rasterized at once by the reference path, not binned.
   // `window_cache`: the renderer's, which this draw's vertices take over (window_cache.h).
   // `varying_planes`: the renderer's room for a programmable primitive's planes, kept between
-  // draws (not allocated per draw).
-  GeometryStage(Scene& scene, WindowCache& window_cache, std::vector<Plane>& varying_planes,
+  // draws (not allocated per draw). `filled_triangle`: the renderer's room for the setup of the
+  // filled triangles (fill_window_triangle), kept between draws (constructing a PrimSetup per
+  // draw was a quarter of a one-triangle draw's GeometryStage).
+  GeometryStage(Scene& scene, WindowCache& window_cache, std::vector<Plane>& varying_planes, PrimSetup& filled_triangle,
                 std::function<void()> on_full, bool reference = false);
 
   void point(const ClipVertex& v) override;
@@ -114,9 +116,11 @@ class GeometryStage final : public PrimitiveSink {
   WindowCache& window_cache_;
   size_t vertex_count_ = 0;
   ClipVert cache_clip_;  // the vertex being cached (large: not on the stack per call)
-  // The cached triangles' setup, reused: a PrimSetup is large, and setup_triangle writes the
-  // same fields for every triangle of the draw (the others keep their defaults).
-  PrimSetup cached_prim_;
+  // The cached triangles' setup, reused from triangle to triangle and draw to draw: a PrimSetup
+  // is large, and only setup_triangle writes this one, every field a triangle reads each time
+  // (the line, smooth and sample-point fields keep their defaults; planes past the draw's count
+  // are not read).
+  PrimSetup& cached_prim_;
 
   // Programmable draws (DrawState::shader)
   const ShaderDraw* shader_ = nullptr;

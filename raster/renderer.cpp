@@ -56,6 +56,7 @@ struct Renderer::Impl {
   ZeroedStore<PreparedWindow> windows;  // room for a large draw's vertices
   WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
   std::vector<Plane> varying_planes;  // GeometryStage's
+  PrimSetup filled_triangle;  // GeometryStage's
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
@@ -99,7 +100,8 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     }
     scene.begin_draw(std::move(record), impl_->reference ? nullptr : &state);
   }
-  GeometryStage geometry(scene, impl_->window_cache, impl_->varying_planes, [this] { submit(); }, impl_->reference);
+  GeometryStage geometry(scene, impl_->window_cache, impl_->varying_planes, impl_->filled_triangle, [this] { submit(); },
+                         impl_->reference);
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   // A draw's window positions, ahead of assembly, in vector lanes and on every thread: a large
