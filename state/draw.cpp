@@ -109,6 +109,19 @@ const raster::DrawState& fragment_snapshot(Context& ctx) {
 
 namespace {
 
+// A fixed-function draw's state: the texture units' snapshot, per-vertex point sizes, the
+// viewport, culling and the vertex transform, which it returns (for every unit's coordinates
+// with a `program`, whose fragment shader may read them as gl_TexCoord[i]).
+raster::Transform& prepare_fixed_function(Context& ctx, bool program) {
+  const int texture_units = snapshot_textures(ctx);
+  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
+  ctx.draw_state.viewport = ctx.viewport;
+  ctx.draw_state.cull_face = ctx.enable_cull;
+  // Feedback reports unit 0's coordinates even when no texture is enabled.
+  const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
+  return build_transform(ctx, program ? raster::kMaxTextureUnits : feedback ? std::max(texture_units, 1) : texture_units);
+}
+
 // The draw after the program check: the fixed-function vertex stage (or a vertex-only
 // program's) into ctx.transformed by `transform_step(transform)` unless such a program ran,
 // then the primitives to the renderer (or feedback).
@@ -118,18 +131,10 @@ void draw_fixed_function(Context& ctx, raster::Primitive primitive, std::span<co
   // OpenGL ES 2.0 has no fixed function: without a program the results are undefined (ES 2.0
   // 2.15); Pineda draws nothing.
   if (ctx.es2()) return;
-  const int texture_units = snapshot_textures(ctx);
-  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
-  // Feedback reports unit 0's coordinates even when no texture is enabled.
-  const bool feedback = ctx.render_mode.mode == GL_FEEDBACK;
   const bool program = ctx.programs.active() != nullptr;  // with one stage only (program_draw.h)
-  // A fragment shader may read every unit's coordinates (gl_TexCoord[i]).
-  raster::Transform& transform = build_transform(
-      ctx, program ? raster::kMaxTextureUnits : feedback ? std::max(texture_units, 1) : texture_units);
+  raster::Transform& transform = prepare_fixed_function(ctx, program);
   if (!(program && run_vertex_program())) transform_step(transform);
   raster::DrawState& state = ctx.draw_state;
-  state.viewport = ctx.viewport;
-  state.cull_face = ctx.enable_cull;
   const std::span<const raster::ClipVertex> transformed = ctx.transformed.vertices();
   if (program && draw_fragment_program_only(ctx, primitive, transformed, indices)) return;
   if (ctx.render_mode.mode != GL_RENDER) return select_feedback_draw(ctx, state, primitive, transformed, indices);
@@ -223,12 +228,8 @@ bool draws_in_runs(Context& ctx, raster::Primitive primitive, size_t count) {
 // transformed and drawn in turn (the same primitives in the same order, so the same pixels).
 void draw_in_runs(Context& ctx, raster::Primitive primitive, const ArrayVertices& vertices,
                   std::span<const uint32_t> indices) {
-  const int texture_units = snapshot_textures(ctx);
-  ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
-  const raster::Transform& transform = build_transform(ctx, texture_units);
-  raster::DrawState& state = ctx.draw_state;
-  state.viewport = ctx.viewport;
-  state.cull_face = ctx.enable_cull;
+  const raster::Transform& transform = prepare_fixed_function(ctx, false);
+  const raster::DrawState& state = ctx.draw_state;
   const size_t group = independent_group(primitive);
   const auto draw_run = [&](std::span<const uint32_t> run_indices) {
     const std::span<const raster::ClipVertex> transformed = ctx.transformed.vertices();
