@@ -120,6 +120,8 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
 }
 
 
+int Renderer::threads() const { return impl_->pool.threads(); }
+
 void Renderer::for_each_piece(size_t count, size_t grain, FunctionRef<void(size_t, size_t)> fn) {
   if (count == 0) return;
   Impl& r = *impl_;

@@ -45,6 +45,8 @@ class Renderer {
   // are at least two pieces, otherwise at once on this thread. For per-element work whose
   // results do not depend on the pieces (the vertex stages); fn must be safe to run in parallel.
   void for_each_piece(size_t count, size_t grain, FunctionRef<void(size_t, size_t)> fn);
+  // The threads that render (the calling one included).
+  int threads() const;
   // The grain of the vertex stages: big enough that a piece costs far more than handing it to
   // a thread; a multiple of the vertices one vertex-shader run takes.
   static constexpr size_t kVerticesPerPiece = 1024;

@@ -200,9 +200,7 @@ class Context {
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
   std::vector<uint8_t> copied_pixels;         // glCopyTex(Sub)Image's colour rectangle; only grows
   TransformedVertices transformed;  // vertex-stage output of the current draw
-  // A large draw's runs (draw.cpp's draw_in_runs): the current run's vertices and indices.
-  IndexRuns index_runs;
-  std::vector<uint32_t> run_vertices, run_indices;
+  IndexRuns index_runs;  // a large draw's runs (draw.cpp's draw_in_runs)
   // The current draw's vertex transform (draw.cpp's build_transform fills it): kept from draw to
   // draw, as constructing one and copying the lighting into it took a tenth of a one-triangle draw.
   raster::Transform draw_transform;

@@ -218,10 +218,13 @@ size_t independent_group(raster::Primitive primitive) {
 }
 
 // Whether a fixed-function draw of `count` array vertices goes to the renderer in runs: a large
-// draw of independent primitives that is rendered once (not fed back, not to two buffers).
+// draw of independent primitives that is rendered once (not fed back, not to two buffers), by a
+// renderer of one thread. With more, the whole draw's vertices are transformed on all of them
+// before binning starts, where a run's are the calling thread's alone while the pool rasterizes
+// the scene before (small_tris with two threads: 8-13% slower in runs, first frame aside).
 bool draws_in_runs(Context& ctx, raster::Primitive primitive, size_t count) {
   return count > kRunVertices && independent_group(primitive) && !ctx.programs.active() && !ctx.es2() &&
-         ctx.render_mode.mode == GL_RENDER && ctx.renders_draw_buffers_in_one_pass();
+         ctx.render_mode.mode == GL_RENDER && ctx.renders_draw_buffers_in_one_pass() && ctx.renderer().threads() == 1;
 }
 
 // draw_fixed_function for a draw that draws_in_runs: each run of its primitives is fetched,
@@ -248,10 +251,9 @@ void draw_in_runs(Context& ctx, raster::Primitive primitive, const ArrayVertices
     }
     return;
   }
-  std::vector<uint32_t>& run_vertices = ctx.run_vertices;
-  std::vector<uint32_t>& run_indices = ctx.run_indices;
   for (size_t position = 0; position < indices.size();) {
-    position = ctx.index_runs.next(indices, position, group, kRunVertices, vertices.count, run_vertices, run_indices);
+    position = ctx.index_runs.next(indices, position, group, kRunVertices, vertices.count);
+    const std::span<const uint32_t> run_vertices = ctx.index_runs.vertices();
     if (run_vertices.empty()) continue;
     // Consecutive vertices (most of a mesh's new ones) are fetched together.
     fetch_and_transform(ctx, transform, run_vertices.size(),
@@ -264,7 +266,7 @@ void draw_in_runs(Context& ctx, raster::Primitive primitive, const ArrayVertices
                           }
                         },
                         ctx.transformed.resize(run_vertices.size()));
-    draw_run(run_indices);
+    draw_run(ctx.index_runs.run_indices());
   }
 }
 

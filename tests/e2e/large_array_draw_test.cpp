@@ -7,6 +7,9 @@
 // window cache's slot sharing, window_cache_collision_test.cpp.)
 #define GL_GLEXT_PROTOTYPES
 #include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
@@ -36,10 +39,16 @@ std::vector<Vertex> scattered_vertices(size_t count, int width, int height) {
   return out;
 }
 
-class LargeArrayDrawTest : public GlTest, public ::testing::WithParamInterface<GLenum> {
+// The mode, and the renderer's threads (PINEDA_THREADS): with one, large fixed-function draws of
+// points, lines and triangles reach the renderer in runs (state/draw.cpp's draw_in_runs), with
+// more as a whole.
+class LargeArrayDrawTest : public GlTest, public ::testing::WithParamInterface<std::tuple<GLenum, const char*>> {
  protected:
+  static GLenum mode() { return std::get<0>(GetParam()); }
   void SetUp() override {
+    setenv("PINEDA_THREADS", std::get<1>(GetParam()), 1);
     GlTest::SetUp();
+    unsetenv("PINEDA_THREADS");
     pixel_projection();
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -154,11 +163,11 @@ std::vector<uint32_t> scattered_order(size_t count) {
 TEST_P(LargeArrayDrawTest, DrawArraysEqualsImmediateMode) {
   std::vector<uint32_t> order(kCount);
   for (size_t i = 0; i < kCount; ++i) order[i] = static_cast<uint32_t>(i);
-  const std::vector<uint8_t> expected = immediate(GetParam(), order);
+  const std::vector<uint8_t> expected = immediate(mode(), order);
   const GLuint expected_samples = samples();
   ASSERT_GT(expected_samples, 10000u);
   start();
-  glDrawArrays(GetParam(), 0, static_cast<GLsizei>(kCount));
+  glDrawArrays(mode(), 0, static_cast<GLsizei>(kCount));
   EXPECT_EQ(finish(), expected);
   EXPECT_EQ(samples(), expected_samples);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
@@ -166,11 +175,11 @@ TEST_P(LargeArrayDrawTest, DrawArraysEqualsImmediateMode) {
 
 TEST_P(LargeArrayDrawTest, DrawElementsEqualsImmediateMode) {
   const std::vector<uint32_t> order = scattered_order(kCount);
-  const std::vector<uint8_t> expected = immediate(GetParam(), order);
+  const std::vector<uint8_t> expected = immediate(mode(), order);
   const GLuint expected_samples = samples();
   ASSERT_GT(expected_samples, 10000u);
   start();
-  glDrawElements(GetParam(), static_cast<GLsizei>(order.size()), GL_UNSIGNED_INT, order.data());
+  glDrawElements(mode(), static_cast<GLsizei>(order.size()), GL_UNSIGNED_INT, order.data());
   EXPECT_EQ(finish(), expected);
   EXPECT_EQ(samples(), expected_samples);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
@@ -183,26 +192,30 @@ TEST_P(LargeArrayDrawTest, WithAProgramDrawArraysAndDrawElementsEqualImmediateMo
   const std::vector<uint32_t> scattered = scattered_order(kCount);
   const std::vector<uint32_t>* const orders[] = {&in_order, &scattered};
   for (const std::vector<uint32_t>* order : orders) {
-    const std::vector<uint8_t> expected = immediate_generic(GetParam(), *order);
+    const std::vector<uint8_t> expected = immediate_generic(mode(), *order);
     const GLuint expected_samples = samples();
     ASSERT_GT(expected_samples, 10000u);
     start();
-    if (order == &in_order) glDrawArrays(GetParam(), 0, static_cast<GLsizei>(kCount));
-    else glDrawElements(GetParam(), static_cast<GLsizei>(order->size()), GL_UNSIGNED_INT, order->data());
+    if (order == &in_order) glDrawArrays(mode(), 0, static_cast<GLsizei>(kCount));
+    else glDrawElements(mode(), static_cast<GLsizei>(order->size()), GL_UNSIGNED_INT, order->data());
     EXPECT_EQ(finish(), expected) << (order == &in_order ? "DrawArrays" : "DrawElements");
     EXPECT_EQ(samples(), expected_samples);
   }
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, LargeArrayDrawTest, ::testing::Values(GL_POINTS, GL_LINES, GL_TRIANGLES, GL_QUADS),
-                         [](const ::testing::TestParamInfo<GLenum>& info) {
-                           switch (info.param) {
-                             case GL_POINTS: return "Points";
-                             case GL_LINES: return "Lines";
-                             case GL_TRIANGLES: return "Triangles";
-                             default: return "Quads";
+INSTANTIATE_TEST_SUITE_P(Modes, LargeArrayDrawTest,
+                         ::testing::Combine(::testing::Values(GL_POINTS, GL_LINES, GL_TRIANGLES, GL_QUADS),
+                                            ::testing::Values("1", "2")),
+                         [](const ::testing::TestParamInfo<std::tuple<GLenum, const char*>>& info) {
+                           const char* name = "Quads";
+                           switch (std::get<0>(info.param)) {
+                             case GL_POINTS: name = "Points"; break;
+                             case GL_LINES: name = "Lines"; break;
+                             case GL_TRIANGLES: name = "Triangles"; break;
+                             default: break;
                            }
+                           return std::string(name) + "_Threads" + std::get<1>(info.param);
                          });
 
 }  // namespace

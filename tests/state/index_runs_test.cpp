@@ -5,20 +5,23 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
-#include <set>
+#include <span>
 #include <vector>
 
 namespace pineda {
 namespace {
 
+std::vector<uint32_t> as_vector(std::span<const uint32_t> s) { return {s.begin(), s.end()}; }
+
 // The primitives' indices as the runs give them back, with the runs' sizes checked.
 std::vector<uint32_t> through_runs(const std::vector<uint32_t>& indices, size_t group, size_t max_vertices,
                                    size_t vertex_count, size_t* runs = nullptr) {
   IndexRuns splitter;
-  std::vector<uint32_t> vertices, run_indices, out;
+  std::vector<uint32_t> out;
   size_t count = 0;
   for (size_t position = 0; position < indices.size();) {
-    const size_t next = splitter.next(indices, position, group, max_vertices, vertex_count, vertices, run_indices);
+    const size_t next = splitter.next(indices, position, group, max_vertices, vertex_count);
+    const std::span<const uint32_t> vertices = splitter.vertices(), run_indices = splitter.run_indices();
     EXPECT_GT(next, position);
     position = next;
     EXPECT_LE(vertices.size(), max_vertices);
@@ -51,25 +54,33 @@ TEST(IndexRuns, AGridMeshComesBackInOrderInRunsOfAtMostTheBound) {
 TEST(IndexRuns, EachVertexTakesOnePlaceInARun) {
   const std::vector<uint32_t> indices = {7, 3, 9, 3, 9, 12, 7, 7, 7};
   IndexRuns splitter;
-  std::vector<uint32_t> vertices, run_indices;
-  EXPECT_EQ(splitter.next(indices, 0, 3, 100, 13, vertices, run_indices), indices.size());
-  EXPECT_EQ(vertices, (std::vector<uint32_t>{7, 3, 9, 12}));
-  EXPECT_EQ(run_indices, (std::vector<uint32_t>{0, 1, 2, 1, 2, 3, 0, 0, 0}));
+  EXPECT_EQ(splitter.next(indices, 0, 3, 100, 13), indices.size());
+  EXPECT_EQ(as_vector(splitter.vertices()), (std::vector<uint32_t>{7, 3, 9, 12}));
+  EXPECT_EQ(as_vector(splitter.run_indices()), (std::vector<uint32_t>{0, 1, 2, 1, 2, 3, 0, 0, 0}));
   // A second run starts with no vertex of the first.
-  EXPECT_EQ(splitter.next(indices, 6, 3, 100, 13, vertices, run_indices), indices.size());
-  EXPECT_EQ(vertices, (std::vector<uint32_t>{7}));
-  EXPECT_EQ(run_indices, (std::vector<uint32_t>{0, 0, 0}));
+  EXPECT_EQ(splitter.next(indices, 6, 3, 100, 13), indices.size());
+  EXPECT_EQ(as_vector(splitter.vertices()), (std::vector<uint32_t>{7}));
+  EXPECT_EQ(as_vector(splitter.run_indices()), (std::vector<uint32_t>{0, 0, 0}));
 }
 
 TEST(IndexRuns, ARunEndsBeforeAPrimitiveThatCouldPassTheBound) {
   const std::vector<uint32_t> indices = {0, 1, 2, 3, 4, 5, 0, 1, 2};
   IndexRuns splitter;
-  std::vector<uint32_t> vertices, run_indices;
   // Four vertices at most: the second triangle's three new ones would make six.
-  EXPECT_EQ(splitter.next(indices, 0, 3, 4, 6, vertices, run_indices), 3u);
-  EXPECT_EQ(vertices, (std::vector<uint32_t>{0, 1, 2}));
-  EXPECT_EQ(splitter.next(indices, 3, 3, 4, 6, vertices, run_indices), 6u);
-  EXPECT_EQ(vertices, (std::vector<uint32_t>{3, 4, 5}));
+  EXPECT_EQ(splitter.next(indices, 0, 3, 4, 6), 3u);
+  EXPECT_EQ(as_vector(splitter.vertices()), (std::vector<uint32_t>{0, 1, 2}));
+  EXPECT_EQ(splitter.next(indices, 3, 3, 4, 6), 6u);
+  EXPECT_EQ(as_vector(splitter.vertices()), (std::vector<uint32_t>{3, 4, 5}));
+}
+
+TEST(IndexRuns, ARunOfFewVerticesEndsAtEightIndicesAVertex) {
+  // 100 triangles of the same three vertices, at most six vertices a run: 48 indices (16
+  // triangles) a run, 7 runs.
+  std::vector<uint32_t> indices;
+  for (int i = 0; i < 100; ++i) indices.insert(indices.end(), {0, 1, 2});
+  size_t runs = 0;
+  EXPECT_EQ(through_runs(indices, 3, 6, 3, &runs), indices);
+  EXPECT_EQ(runs, 7u);
 }
 
 TEST(IndexRuns, PrimitivesPastTheVerticesAndAnIncompleteLastOneAreLeftOut) {
