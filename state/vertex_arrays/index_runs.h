@@ -36,7 +36,7 @@ class IndexRuns {
   std::vector<Slot> slots_;
   uint32_t run_ = 0;
   // The current run, at the front of rooms of the bounds' size (written through pointers:
-  // push_back's capacity tests were a tenth of the loop).
+  // no capacity test per index, as push_back makes).
   std::vector<uint32_t> vertices_, run_indices_;
   size_t vertex_count_ = 0, index_count_ = 0;
 };
