@@ -19,17 +19,13 @@ struct ShaderDraw {
   // program->fragment_uniform_values(uniforms), computed by the first block that asks (on any
   // worker thread); null when the fragment shader has none.
   const float* fragment_uniform_values() const {
-    // Once computed, a flag read (every quad row asks). A mutex, not std::call_once: glibc's
-    // pthread_once ends every first call with a futex wake system call, once per draw here
-    // (2-3% of glmark2's ideas scene, many small draws, under this VM's costly system calls).
-    if (!uniform_values_.ready.load(std::memory_order_acquire)) {
-      const std::lock_guard lock(uniform_values_.mutex);
-      if (!uniform_values_.ready.load(std::memory_order_relaxed)) {
-        if (program) program->fragment_uniform_values(uniforms.data(), uniform_values_.values);
-        uniform_values_.ready.store(true, std::memory_order_release);
-      }
-    }
-    return uniform_values_.values.empty() ? nullptr : uniform_values_.values.data();
+    return computed(fragment_uniform_values_, &shader::Program::fragment_uniform_values);
+  }
+  // The same of the vertex shader, computed by the first run that asks: a draw whose uniforms
+  // are unchanged shares the last draw's ShaderDraw, and so these (glsl_small_draws computed
+  // them per draw).
+  const float* vertex_uniform_values() const {
+    return computed(vertex_uniform_values_, &shader::Program::vertex_uniform_values);
   }
 
  private:
@@ -42,7 +38,22 @@ struct ShaderDraw {
     UniformValues(const UniformValues&) {}
     UniformValues& operator=(const UniformValues&) { return *this; }
   };
-  mutable UniformValues uniform_values_;
+  mutable UniformValues fragment_uniform_values_, vertex_uniform_values_;
+
+  using ComputeValues = void (shader::Program::*)(const float* uniforms, std::vector<float>& out) const;
+  const float* computed(UniformValues& values, ComputeValues compute) const {
+    // Once computed, a flag read (every quad row asks). A mutex, not std::call_once: glibc's
+    // pthread_once ends every first call with a futex wake system call, once per draw here
+    // (2-3% of glmark2's ideas scene, many small draws, under this VM's costly system calls).
+    if (!values.ready.load(std::memory_order_acquire)) {
+      const std::lock_guard lock(values.mutex);
+      if (!values.ready.load(std::memory_order_relaxed)) {
+        if (program) (*program.*compute)(uniforms.data(), values.values);
+        values.ready.store(true, std::memory_order_release);
+      }
+    }
+    return values.values.empty() ? nullptr : values.values.data();
+  }
 };
 
 }  // namespace pineda::raster

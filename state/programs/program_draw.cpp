@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <string_view>
 
 #include <xmmintrin.h>
@@ -182,8 +183,8 @@ PointSizes point_sizes(const Context& ctx, const shader::Program& program) {
 // Runs the vertex shader over `vertices`: clip positions, clip distances, point sizes and edge
 // flags into `out`, the varyings into `varyings` (program.varying_floats() per vertex); with
 // `conventional_outputs` the other (fixed-function) fields of `out` start at zero, else they
-// are left as they were. Texture lookups read `units`.
-void run_vertex_shader(Context& ctx, const shader::Program& program, const float* uniforms,
+// are left as they were. The uniforms are `draw`'s; texture lookups read `units`.
+void run_vertex_shader(Context& ctx, const shader::Program& program, const raster::ShaderDraw& draw,
                        const std::array<raster::TextureUnit, raster::kMaxTextureImageUnits>& units,
                        const ShaderVertices& vertices, AttribSource source, const PointSizes& sizes,
                        bool conventional_outputs, TransformedVertices& transformed,
@@ -205,9 +206,9 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
   const Context& state = ctx;
   // Array elements take their edge flags from the edge flag array only when it is enabled.
   const bool edge_flag_array = vertices.inputs.empty() && ctx.edge_flag_array.active();
-  // What the shader computes from uniforms alone, once for the draw (not once per run).
-  program.vertex_uniform_values(uniforms, scratch.uniform_values);
-  const std::vector<float>& uniform_values = scratch.uniform_values;
+  const float* const uniforms = draw.uniforms.data();
+  // What the shader computes from uniforms alone, once for the draw's uniforms (not once per run).
+  const float* const uniform_values = draw.vertex_uniform_values();
   const auto clamped_size = [&sizes](float size) { return std::clamp(std::isfinite(size) ? size : 1.f, sizes.min, sizes.max); };
   const float fixed_size = clamped_size(sizes.fixed);
   const bool one_piece = vertices.size() <= raster::Renderer::kVerticesPerPiece;  // run here, on this thread
@@ -274,14 +275,17 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const float
           }
         }
       }
-      shader::VertexBatch batches[shader::kMaxBlocksPerRun];
-      for (int b = 0; b < batch_count; ++b) {
-        batches[b].count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes));
-        batches[b].inputs = in.data() + static_cast<size_t>(b) * in_floats;
-        batches[b].outputs = result.data() + static_cast<size_t>(b) * out_floats;
-        batches[b].uniform_values = uniform_values.empty() ? nullptr : uniform_values.data();
-        batches[b].denormals_flushed = true;
-      }
+      // Only the batches that run are made (default-initializing all of them was a `rep stos`
+      // whose start-up cost showed in draws of a few vertices).
+      alignas(shader::VertexBatch) std::byte batch_room[sizeof(shader::VertexBatch) * shader::kMaxBlocksPerRun];
+      auto* const batches = reinterpret_cast<shader::VertexBatch*>(batch_room);
+      for (int b = 0; b < batch_count; ++b)
+        new (&batches[b]) shader::VertexBatch{
+            .count = static_cast<int>(std::min<size_t>(kLanes, count - static_cast<size_t>(b) * kLanes)),
+            .inputs = in.data() + static_cast<size_t>(b) * in_floats,
+            .outputs = result.data() + static_cast<size_t>(b) * out_floats,
+            .uniform_values = uniform_values,
+            .denormals_flushed = true};
       program.run_vertex_batches(uniforms, &textures, batches, batch_count);
       for (size_t i = 0; i < count; ++i) {
         const float* r = result.data() + (i / kLanes) * out_floats;
@@ -415,7 +419,7 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   std::vector<float>& varyings = ctx.programs.draw_varyings;
   // Feedback reports the fixed-function colours and coordinates: zero (the varyings are not mapped back).
   const bool conventional_outputs = ctx.render_mode.mode != GL_RENDER;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), state.texture_units, vertices, source,
+  run_vertex_shader(ctx, program, *shader_draw, state.texture_units, vertices, source,
                     point_sizes(ctx, program), conventional_outputs, ctx.transformed, varyings);
   draw_or_feed_back(ctx, state, primitive, ctx.transformed.vertices(), indices, varyings.data());
   return true;
@@ -435,7 +439,7 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
   snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
   raster::drop_unusable_textures(state.texture_units);
   std::vector<float>& varyings = ctx.programs.draw_varyings;
-  run_vertex_shader(ctx, program, shader_draw->uniforms.data(), state.texture_units, {vertices, {}},
+  run_vertex_shader(ctx, program, *shader_draw, state.texture_units, {vertices, {}},
                     source, point_sizes(ctx, program), true, transformed, varyings);
   const std::span<raster::ClipVertex> out = transformed.vertices();
   const int nv = program.varying_floats();

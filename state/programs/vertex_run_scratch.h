@@ -20,7 +20,6 @@ struct InputFetch {
 
 struct VertexRunScratch {
   std::vector<InputFetch> fetches;
-  std::vector<float> uniform_values;  // Program::vertex_uniform_values
   // The inputs and outputs of the batches run at once, for a draw run on the calling thread
   // alone (a draw of more pieces allocates them per piece).
   std::vector<float> in, result;
