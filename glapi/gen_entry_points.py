@@ -24,6 +24,12 @@ import xml.etree.ElementTree as ET
 # converted copy of the framebuffer (OSMesa's 3-byte formats) is told to update it.
 FLUSH_FUNCTIONS = {"glFinish", "glFlush"}
 
+# The calls that change no state a draw works out from it (state/state_key.h): the array draws
+# and glGetError. Every other call counts itself as one that may.
+STATE_KEEPING_FUNCTIONS = {"glDrawArrays", "glDrawArraysEXT", "glDrawElements", "glDrawRangeElements",
+                           "glDrawRangeElementsEXT", "glMultiDrawArrays", "glMultiDrawArraysEXT",
+                           "glMultiDrawElements", "glMultiDrawElementsEXT", "glGetError"}
+
 
 class Command:
     def __init__(self, name, ret, params, lens=None, elements=None):
@@ -301,6 +307,8 @@ def gl_outputs(selected, es_commands, es_enums, es_extensions):
         c.append(f"  if (!ctx) {zero_return(cmd)}")
         c.append("  const auto shared_lock = pineda::lock_if_shared(*ctx->share_group());")
         c.append(f'  ctx->current_call = "{cmd.name}";')
+        if cmd.name not in STATE_KEEPING_FUNCTIONS:
+            c.append("  ctx->count_state_call(shared_lock.locked());")
         body = api_gate(cmd, flags, es_commands)
         body += list_recording(cmd, flags)
         if "inside_begin_end" not in flags:

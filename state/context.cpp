@@ -47,6 +47,7 @@ Context::Context(const ContextAttribs& attribs, std::shared_ptr<ShareGroup> shar
 Context::~Context() { share_group_->leave(); }
 
 void Context::make_current(Drawable* draw, Drawable* read) {
+  note_state_changed();
   draw_ = draw;
   read_ = read;
   // GL: the viewport, scissor and draw/read buffers take their initial values from the
@@ -63,12 +64,16 @@ void Context::make_current(Drawable* draw, Drawable* read) {
 }
 
 void Context::release_current() {
+  note_state_changed();
   renderer_->flush();
   draw_ = read_ = nullptr;
   renderer_->set_framebuffer(raster::Framebuffer{});
   renderer_storage_.clear();
 }
 
-void Context::drawable_changed() { bind_framebuffer(); }
+void Context::drawable_changed() {
+  note_state_changed();
+  bind_framebuffer();
+}
 
 }  // namespace pineda

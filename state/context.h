@@ -36,6 +36,7 @@
 #include "state/query_object.h"
 #include "state/select_feedback.h"
 #include "state/share_group.h"
+#include "state/state_key.h"
 #include "state/stencil_faces.h"
 #include "state/textures/tex_env_state.h"
 #include "state/transformed_vertices.h"
@@ -171,6 +172,15 @@ class Context {
   }
   bool inside_begin_end() const { return in_begin_end; }
 
+  // The state as StateKey counts it. A GL call that may change state counts itself (glapi/, with
+  // `shared`: it holds the share group's lock); so does whatever changes state outside such calls.
+  StateKey state_key() const { return {state_changes_, share_group_->changes.load(std::memory_order_relaxed)}; }
+  void count_state_call(bool shared) {
+    ++state_changes_;
+    if (shared) share_group_->changes.store(share_group_->changes.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  }
+  void note_state_changed() { ++state_changes_; }
+
   // Display-list compilation (glNewList .. glEndList).
   bool compiling_list() const { return compilation.name != 0; }
   bool executing_while_compiling() const { return compilation.mode == GL_COMPILE_AND_EXECUTE; }
@@ -196,6 +206,13 @@ class Context {
   GLenum begin_mode = GL_POINTS;
   std::vector<raster::VertexInput> immediate;
   VertexFetchPlan vertex_fetch_plan;  // the current array draw's (api_arrays.cpp's array_elements)
+  StateKey vertex_fetch_planned;      // the state it was built from
+  // The state and the last array element that arrays_ready (buffers/buffer_draw.cpp) found
+  // inside every enabled array's buffer then.
+  struct ArraysReady {
+    StateKey state;
+    size_t through = 0;
+  } arrays_known_ready;
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
   std::vector<uint8_t> copied_pixels;         // glCopyTex(Sub)Image's colour rectangle; only grows
@@ -204,6 +221,10 @@ class Context {
   // The current draw's vertex transform (draw.cpp's build_transform fills it): kept from draw to
   // draw, as constructing one and copying the lighting into it took a tenth of a one-triangle draw.
   raster::Transform draw_transform;
+  // The state that draw_transform and draw_state's texture units, viewport, culling and per-vertex
+  // point sizes were worked out from for a fixed-function draw (draw.cpp's prepare_fixed_function);
+  // a draw that changes one of them resets it.
+  StateKey fixed_function_prepared;
   // Materials set between glBegin and glEnd: vertices from `first` on are lit with them
   // (empty when the material did not change inside the primitive); the first is the one in
   // effect at glBegin.
@@ -315,6 +336,7 @@ class Context {
   ContextAttribs attribs_;
   GLenum error_ = GL_NO_ERROR;
   uint64_t errors_recorded_ = 0;
+  uint64_t state_changes_ = 1;  // (StateKey)
   // The storage that the renderer's framebuffer points into (Drawable::kept_storage), alive
   // until it no longer does (another context may respecify or delete the renderbuffers and
   // textures meanwhile). Before renderer_: a scene still running when the context goes writes it.

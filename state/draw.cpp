@@ -113,6 +113,11 @@ namespace {
 // viewport, culling and the vertex transform, which it returns (for every unit's coordinates
 // with a `program`, whose fragment shader may read them as gl_TexCoord[i]).
 raster::Transform& prepare_fixed_function(Context& ctx, bool program) {
+  // Worked out once while the state stays the same (the transform's matrix products and the
+  // texture snapshots were a tenth of a small draw's time on the calling thread).
+  const StateKey key = ctx.state_key();
+  if (key == ctx.fixed_function_prepared) return ctx.draw_transform;
+  ctx.fixed_function_prepared = key;
   const int texture_units = snapshot_textures(ctx);
   ctx.draw_state.point_params.size_per_vertex = ctx.point_size_array.active();
   ctx.draw_state.viewport = ctx.viewport;
@@ -165,6 +170,7 @@ void draw_vertices(Context& ctx, GLenum mode, std::span<const raster::VertexInpu
   draw_fixed_function(ctx, primitive, indices, run_vertex_program, [&](raster::Transform& transform) {
     if (materials.empty() || !ctx.lighting.enabled) return transform_in_pieces(ctx, transform, vertices);
     // Each run of vertices is lit with the material in effect when they were specified.
+    ctx.fixed_function_prepared = {};  // (the transform's materials change)
     const std::span<raster::ClipVertex> out = ctx.transformed.resize(vertices.size());
     std::vector<raster::ClipVertex> run_out;
     for (size_t i = 0; i < materials.size(); ++i) {

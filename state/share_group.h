@@ -34,6 +34,8 @@ struct ShareGroup {
   // A member joined a group of one: the first call under the lock waits for that member's
   // call in flight without it, if any (finish_join).
   std::atomic<bool> join_pending{false};
+  // The calls made under the lock that may change state (StateKey); written with the lock held.
+  std::atomic<uint64_t> changes{0};
 
   void join() {
     if (members.fetch_add(1, std::memory_order_seq_cst) >= 1) join_pending.store(true, std::memory_order_relaxed);
@@ -75,6 +77,8 @@ class SharedCallGuard {
       unlocked_->unlocked_calls.store(unlocked_->unlocked_calls.load(std::memory_order_relaxed) - 1,
                                       std::memory_order_release);
   }
+  // Whether the call holds the group's lock (the group has more than one member).
+  bool locked() const { return lock_.owns_lock(); }
   SharedCallGuard(const SharedCallGuard&) = delete;
   SharedCallGuard& operator=(const SharedCallGuard&) = delete;
 

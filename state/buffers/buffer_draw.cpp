@@ -1,5 +1,6 @@
 #include "state/buffers/buffer_draw.h"
 
+#include <algorithm>
 #include <cstdint>
 
 #include "state/context.h"
@@ -24,6 +25,11 @@ size_t element_bytes(const ClientArray& a, bool edge_flags) {
 }  // namespace
 
 bool arrays_ready(Context& ctx, size_t last_index) {
+  // An element inside every buffer is so for the elements before it too: a draw of the same
+  // state needs no look at the arrays up to the last one found ready.
+  Context::ArraysReady& known = ctx.arrays_known_ready;
+  const StateKey key = ctx.state_key();
+  if (key == known.state && last_index <= known.through) return true;
   bool mapped = false, inside = true;
   for_each_array(ctx, [&](const ClientArray& a) {
     if (!a.active() || !a.buffer) return;
@@ -32,7 +38,10 @@ bool arrays_ready(Context& ctx, size_t last_index) {
   });
   check_generic_arrays(ctx, last_index, mapped, inside);
   if (mapped) ctx.record_error(GL_INVALID_OPERATION, "the buffer of an enabled array is mapped");
-  return !mapped && inside;
+  if (mapped || !inside) return false;
+  if (key != known.state) known = {key, last_index};
+  known.through = std::max(known.through, last_index);
+  return true;
 }
 
 const void* element_indices(Context& ctx, const void* indices, size_t bytes) {

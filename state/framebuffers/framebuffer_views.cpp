@@ -294,8 +294,11 @@ void refresh_framebuffer_views(Context& ctx) {
 }
 
 void note_draw_framebuffer_rendered(Context& ctx) {
-  if (const FramebufferObject* fb = ctx.framebuffers.draw_object(); fb && renders_into_textures(*fb))
+  if (const FramebufferObject* fb = ctx.framebuffers.draw_object(); fb && renders_into_textures(*fb)) {
+    // The next draw that samples them resolves them first (a draw working it out anew, StateKey).
+    if (!ctx.framebuffers.textures_rendered) ctx.note_state_changed();
     ctx.framebuffers.textures_rendered = true;
+  }
 }
 
 void resolve_rendered_textures(Context& ctx) {

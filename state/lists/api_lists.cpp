@@ -19,7 +19,10 @@ void call_list(Context& ctx, GLuint name) {
     explicit Nesting(int& d) : depth(++d) {}
     ~Nesting() { --depth; }
   } nesting(ctx.list_depth);
-  for (const ListCommand& command : list->commands) command(ctx);
+  for (const ListCommand& command : list->commands) {
+    ctx.note_state_changed();  // each command as a call of its own (StateKey)
+    command(ctx);
+  }
 }
 
 // The list-name offsets of glCallLists, decoded by type; false for an invalid type.

@@ -374,6 +374,35 @@ std::shared_ptr<const raster::ShaderDraw> shader_draw_for(Context& ctx, const Li
   return draw;
 }
 
+// The state of a draw with `exec`: ctx.programs.draw_state, worked out again only when the
+// state changed (StateKey: copying the context's draw state, filling the built-in uniforms and
+// taking the samplers' textures were a tenth of a small draw on the calling thread); null
+// after an error.
+const raster::DrawState* program_draw_state(Context& ctx, const LinkedProgram& exec) {
+  ProgramState& ps = ctx.programs;
+  const StateKey key = ctx.state_key();
+  if (key == ps.draw_state_prepared && ps.draw_state.shader) return &ps.draw_state;
+  ps.draw_state_prepared = {};
+  std::shared_ptr<const raster::ShaderDraw> shader_draw = shader_draw_for(ctx, exec, ps.two_side);
+  if (!shader_draw) return nullptr;
+  raster::DrawState& state = ps.draw_state;
+  state = ctx.draw_state;
+  snapshot_sampler_textures(ctx, *exec.program, shader_draw->uniforms, state);
+  state.viewport = ctx.viewport;
+  state.cull_face = ctx.enable_cull;
+  // Each vertex brings its size: the shader's, or glPointSize (no distance attenuation
+  // without eye coordinates), clamped to the point parameters' range.
+  state.point_params.size_per_vertex = true;
+  state.point_params.attenuation[0] = 1.f;
+  state.point_params.attenuation[1] = state.point_params.attenuation[2] = 0.f;
+  state.shader = std::move(shader_draw);
+  state.clip_planes = enabled_clip_planes(ctx);  // the planes test gl_ClipVertex (run_vertex_shader)
+  // Vertex-shader texture lookups read the same (usable) images the fragments will.
+  raster::drop_unusable_textures(state.texture_units);
+  ps.draw_state_prepared = key;
+  return &state;
+}
+
 void draw_or_feed_back(Context& ctx, const raster::DrawState& state, raster::Primitive primitive,
                        std::span<const raster::ClipVertex> vertices, std::span<const uint32_t> indices,
                        const float* varyings) {
@@ -399,28 +428,14 @@ bool draw_with_program(Context& ctx, raster::Primitive primitive, const ShaderVe
   const LinkedProgram* exec = program_in_use(ctx);
   if (!exec || !exec->vertex_shader || !exec->fragment_shader) return false;
   const shader::Program& program = *exec->program;
-  const std::shared_ptr<const raster::ShaderDraw> shader_draw = shader_draw_for(ctx, *exec, ctx.programs.two_side);
-  if (!shader_draw) return true;
-
-  raster::DrawState state = ctx.draw_state;
-  snapshot_sampler_textures(ctx, program, shader_draw->uniforms, state);
-  state.viewport = ctx.viewport;
-  state.cull_face = ctx.enable_cull;
-  // Each vertex brings its size: the shader's, or glPointSize (no distance attenuation
-  // without eye coordinates), clamped to the point parameters' range.
-  state.point_params.size_per_vertex = true;
-  state.point_params.attenuation[0] = 1.f;
-  state.point_params.attenuation[1] = state.point_params.attenuation[2] = 0.f;
-  state.shader = shader_draw;
-  state.clip_planes = enabled_clip_planes(ctx);  // the planes test gl_ClipVertex (run_vertex_shader)
-
-  // Vertex-shader texture lookups read the same (usable) images the fragments will.
-  raster::drop_unusable_textures(state.texture_units);
+  const raster::DrawState* prepared = program_draw_state(ctx, *exec);
+  if (!prepared) return true;
+  const raster::DrawState& state = *prepared;
   std::vector<float>& varyings = ctx.programs.draw_varyings;
   // Feedback reports the fixed-function colours and coordinates: zero (the varyings are not mapped back).
   const bool conventional_outputs = ctx.render_mode.mode != GL_RENDER;
-  run_vertex_shader(ctx, program, *shader_draw, state.texture_units, vertices, source,
-                    point_sizes(ctx, program), conventional_outputs, ctx.transformed, varyings);
+  run_vertex_shader(ctx, program, *state.shader, state.texture_units, vertices, source, point_sizes(ctx, program),
+                    conventional_outputs, ctx.transformed, varyings);
   draw_or_feed_back(ctx, state, primitive, ctx.transformed.vertices(), indices, varyings.data());
   return true;
 }
@@ -462,6 +477,7 @@ bool run_vertex_program_only(Context& ctx, std::span<const raster::VertexInput> 
     if (!has_back_secondary || !ctx.programs.two_side) std::copy(v.secondary, v.secondary + 3, v.back_secondary);
   }
   ctx.draw_state.point_params.size_per_vertex = true;  // the sizes are the shader's or glPointSize
+  ctx.fixed_function_prepared = {};
   return true;
 }
 

@@ -8,11 +8,13 @@
 #include <memory>
 #include <vector>
 
+#include "raster/draw_state.h"
 #include "raster/shader_draw.h"
 #include "shader/program.h"
 #include "state/buffers/buffer_object.h"
 #include "state/programs/program_objects.h"
 #include "state/programs/vertex_run_scratch.h"
+#include "state/state_key.h"
 
 namespace pineda {
 
@@ -61,6 +63,10 @@ struct ProgramState {
   // it (program_draw.cpp), and then its record (raster::Scene::repeats_current_draw).
   std::shared_ptr<const raster::ShaderDraw> last_shader_draw;
   std::vector<float> draw_uniforms;  // (scratch)
+  // The last draw's whole state (last_shader_draw, the textures its samplers read, ...) and the
+  // state it was worked out from: a draw of the same state takes it as it is (program_draw.cpp).
+  raster::DrawState draw_state;
+  StateKey draw_state_prepared;
   VertexRunScratch vertex_run;  // (scratch)
 
   // A program with a vertex shader is in use: draws run it.

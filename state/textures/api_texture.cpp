@@ -202,7 +202,8 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   unpack_texels(ctx, l, storage, box, format, type, pixels);
   // The last draw's state still holds the images it sampled (each draw takes them again): let
   // them go, so that an image no queued draw holds is changed in place.
-  for (raster::TextureUnit& unit : ctx.draw_state.texture_units) unit.image.reset();
+  for (raster::DrawState* state : {&ctx.draw_state, &ctx.programs.draw_state})
+    for (raster::TextureUnit& unit : state->texture_units) unit.image.reset();
   tex.box_changed(level, target.face, {xoffset, yoffset, zoffset, width, height, depth});
 }
 

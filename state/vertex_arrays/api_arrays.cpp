@@ -59,7 +59,10 @@ ArrayVertices array_elements(Context& ctx, size_t count, IndexOf index_of) {
             },
             elements};
   }
-  ctx.vertex_fetch_plan.build(ctx);
+  if (const StateKey key = ctx.state_key(); key != ctx.vertex_fetch_planned) {
+    ctx.vertex_fetch_plan.build(ctx);
+    ctx.vertex_fetch_planned = key;
+  }
   return {count,
           [&plan = ctx.vertex_fetch_plan, index_of](size_t begin, size_t end, raster::VertexInput* out) {
             for (size_t i = begin; i < end; ++i) plan.fetch(index_of(i), out[i - begin]);

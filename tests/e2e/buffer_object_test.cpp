@@ -257,6 +257,27 @@ TEST_F(BufferObjectTest, OutOfRangeReadsDropTheDraw) {
   EXPECT_EQ(count_pixels({255, 255, 255, 255}), 8 * 8);
 }
 
+// A draw whose arrays a draw before found inside their buffer is not let through on that alone
+// after the store shrank (arrays_ready keeps what it found while the state stays the same).
+TEST_F(BufferObjectTest, ADrawAfterTheBufferShrankIsDropped) {
+  const GLuint b = make_buffer(GL_ARRAY_BUFFER, kQuads, sizeof kQuads);  // 8 vertices
+  glVertexPointer(2, GL_FLOAT, 0, nullptr);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glColor3f(1, 1, 1);
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 8 * 8);
+  clear_to(0, 0, 0, 0);
+  glDrawArrays(GL_QUADS, 0, 8);  // a larger draw of the same state: both quads
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 8 * 8 + 4 * 4);
+  clear_to(0, 0, 0, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, b);
+  glBufferData(GL_ARRAY_BUFFER, 3 * 2 * sizeof(GLfloat), kQuads, GL_STATIC_DRAW);  // 3 vertices
+  glDrawArrays(GL_QUADS, 0, 4);
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(count_pixels({0, 0, 0, 0}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(BufferObjectTest, ClientAttribStackKeepsBufferBindings) {
   const GLuint a = make_buffer(GL_ARRAY_BUFFER, kQuads, sizeof kQuads);
   glVertexPointer(2, GL_FLOAT, 0, nullptr);

@@ -44,6 +44,33 @@ TEST_F(DisplayListTest, ListDrawsWhatImmediateModeDraws) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// Each command of a list changes the state for the commands after it, draws of an otherwise
+// unchanged state included (a draw keeps what it worked out from the state while no call changes
+// it: a list's commands count as calls).
+TEST_F(DisplayListTest, CommandsBetweenDrawsOfAListChangeTheDrawsAfterThem) {
+  static const GLfloat kSquare[] = {0, 0, 8, 0, 8, 8, 0, 8};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, kSquare);
+  glColor3f(1, 1, 1);
+  glNewList(1, GL_COMPILE);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glTranslatef(16, 0, 0);
+  glDrawArrays(GL_QUADS, 0, 4);
+  glColor3f(1, 0, 0);
+  glDrawArrays(GL_QUADS, 0, 4);  // over the second square, red
+  glEndList();
+  glCallList(1);
+  EXPECT_EQ(count_pixels({255, 255, 255, 255}), 8 * 8);
+  EXPECT_EQ(count_pixels({255, 0, 0, 255}), 8 * 8);
+  EXPECT_TRUE(near_rgba(pixel(4, 4), {255, 255, 255, 255}));
+  EXPECT_TRUE(near_rgba(pixel(20, 4), {255, 0, 0, 255}));
+  // After the list, the state it left: a draw of the square lands at x 16 and is red.
+  clear_to(0, 0, 0, 0);
+  glDrawArrays(GL_QUADS, 0, 4);
+  EXPECT_EQ(count_pixels({255, 0, 0, 255}), 8 * 8);
+  EXPECT_TRUE(near_rgba(pixel(20, 4), {255, 0, 0, 255}));
+}
+
 TEST_F(DisplayListTest, ArraysAreReadAtCompileTime) {
   GLfloat vertices[8] = {0, 0, 8, 0, 8, 8, 0, 8};
   glEnableClientState(GL_VERTEX_ARRAY);

@@ -83,6 +83,45 @@ TEST_F(RenderToTextureTest, FeedbackLoopSamplesThePreviousImage) {
   glDeleteTextures(1, &tex);
 }
 
+// The same with two draws and no call between them: the second samples what the first rendered
+// (a draw keeps what it worked out from the state while no call changes it, the texture's image
+// included: a draw into a texture counts as a change).
+TEST_F(RenderToTextureTest, FeedbackLoopDrawsOfAnUnchangedStateSampleWhatTheDrawBeforeRendered) {
+  const GLuint tex = make_texture(GL_RGBA8, 2, 1);
+  const GLubyte red_blue[] = {255, 0, 0, 255, 0, 0, 255, 255};
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 2, 1, GL_RGBA, GL_UNSIGNED_BYTE, red_blue);
+  const GLuint fb = make_fbo();
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+  ASSERT_EQ(status(), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glViewport(0, 0, 2, 1);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 2, 0, 1, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  // Pixel 0 takes texel 1 (blue); then pixel 1 takes texel 0, which the first draw made blue.
+  GLfloat positions[] = {0, 0, 1, 0, 1, 1, 0, 1};
+  GLfloat texcoords[] = {0.75f, 0.5f, 0.75f, 0.5f, 0.75f, 0.5f, 0.75f, 0.5f};
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 0, positions);
+  glTexCoordPointer(2, GL_FLOAT, 0, texcoords);
+  glDrawArrays(GL_QUADS, 0, 4);
+  for (int i = 0; i < 4; ++i) {
+    positions[2 * i] += 1;
+    texcoords[2 * i] = 0.25f;
+  }
+  glDrawArrays(GL_QUADS, 0, 4);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glDisable(GL_TEXTURE_2D);
+  EXPECT_TRUE(near_rgba(pixel(0, 0), {0, 0, 255, 255}));
+  EXPECT_TRUE(near_rgba(pixel(1, 0), {0, 0, 255, 255}));
+  glDeleteFramebuffers(1, &fb);
+  glDeleteTextures(1, &tex);
+}
+
 TEST_F(RenderToTextureTest, CubeFaceAnd3DLayerAndLevel) {
   GLuint cube = 0;
   glGenTextures(1, &cube);
