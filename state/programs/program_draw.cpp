@@ -201,7 +201,11 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const raste
   if (const size_t floats = vertices.size() * static_cast<size_t>(nv); varyings.size() < floats) varyings.resize(floats);
   VertexRunScratch& scratch = ctx.programs.vertex_run;
   const std::vector<InputFetch>& fetches = scratch.fetches;
-  input_fetches(ctx, program, source, slots, scratch.fetches);
+  if (const StateKey key = ctx.state_key(); key != scratch.fetches_state || source != scratch.fetches_source) {
+    input_fetches(ctx, program, source, slots, scratch.fetches);
+    scratch.fetches_state = key;
+    scratch.fetches_source = source;
+  }
   const uint32_t planes = enabled_clip_planes(ctx);
   const Context& state = ctx;
   // Array elements take their edge flags from the edge flag array only when it is enabled.

@@ -6,6 +6,7 @@
 
 #include "shader/program.h"
 #include "state/programs/generic_attribs.h"
+#include "state/state_key.h"
 
 namespace pineda {
 
@@ -20,6 +21,8 @@ struct InputFetch {
 
 struct VertexRunScratch {
   std::vector<InputFetch> fetches;
+  StateKey fetches_state;  // the state and source they were found for (state/state_key.h)
+  AttribSource fetches_source = AttribSource::Arrays;
   // The inputs and outputs of the batches run at once, for a draw run on the calling thread
   // alone (a draw of more pieces allocates them per piece).
   std::vector<float> in, result;
