@@ -207,11 +207,11 @@ class Context {
   std::vector<raster::VertexInput> immediate;
   VertexFetchPlan vertex_fetch_plan;  // the current array draw's (api_arrays.cpp's array_elements)
   StateKey vertex_fetch_planned;      // the state it was built from
-  // The state and the last array element that arrays_ready (buffers/buffer_draw.cpp) found
-  // inside every enabled array's buffer then.
+  // The state and how many elements every enabled array's buffer held then (arrays_ready,
+  // buffers/buffer_draw.cpp).
   struct ArraysReady {
     StateKey state;
-    size_t through = 0;
+    size_t elements = 0;
   } arrays_known_ready;
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly

@@ -25,23 +25,26 @@ size_t element_bytes(const ClientArray& a, bool edge_flags) {
 }  // namespace
 
 bool arrays_ready(Context& ctx, size_t last_index) {
-  // An element inside every buffer is so for the elements before it too: a draw of the same
-  // state needs no look at the arrays up to the last one found ready.
+  // While the state stays the same, so do how many elements the arrays' buffers hold.
   Context::ArraysReady& known = ctx.arrays_known_ready;
   const StateKey key = ctx.state_key();
-  if (key == known.state && last_index <= known.through) return true;
-  bool mapped = false, inside = true;
+  if (key == known.state && last_index < known.elements) return true;
+  bool mapped = false;
+  size_t elements = SIZE_MAX;  // that every enabled buffer-backed array holds
   for_each_array(ctx, [&](const ClientArray& a) {
     if (!a.active() || !a.buffer) return;
     mapped |= a.buffer->mapped;
-    inside &= array_element(a, last_index, element_bytes(a, &a == &ctx.edge_flag_array)) != nullptr;
+    const size_t bytes = element_bytes(a, &a == &ctx.edge_flag_array);  // array_element's test
+    elements = std::min(elements, elements_inside(*a.buffer, reinterpret_cast<uintptr_t>(a.pointer),
+                                                  a.stride ? size_t(a.stride) : bytes, bytes));
   });
-  check_generic_arrays(ctx, last_index, mapped, inside);
-  if (mapped) ctx.record_error(GL_INVALID_OPERATION, "the buffer of an enabled array is mapped");
-  if (mapped || !inside) return false;
-  if (key != known.state) known = {key, last_index};
-  known.through = std::max(known.through, last_index);
-  return true;
+  check_generic_arrays(ctx, mapped, elements);
+  if (mapped) {
+    ctx.record_error(GL_INVALID_OPERATION, "the buffer of an enabled array is mapped");
+    return false;
+  }
+  known = {key, elements};
+  return last_index < elements;
 }
 
 const void* element_indices(Context& ctx, const void* indices, size_t bytes) {

@@ -47,6 +47,9 @@ struct BufferState {
 
 // The `size` bytes at `offset` in the buffer's store, or null when they are not all inside it.
 const uint8_t* buffer_range(const BufferObject& buffer, uintptr_t offset, size_t size);
+// How many elements of `bytes` bytes, `stride` apart from `offset` on, buffer_range finds inside
+// the store: element i is when offset + stride * i + bytes <= its size (SIZE_MAX with stride 0).
+size_t elements_inside(const BufferObject& buffer, uintptr_t offset, size_t stride, size_t bytes);
 
 inline GLuint buffer_name(const std::shared_ptr<BufferObject>& b) { return b ? b->name : 0; }
 

@@ -56,10 +56,9 @@ bool float_array_view(const Context& ctx, AttribSource source, int index, FloatA
     out.count = SIZE_MAX;
     return true;
   }
-  // Element i lies inside the buffer when offset + i * stride + bytes <= its size.
   const size_t total = a.buffer->data.size(), offset = reinterpret_cast<uintptr_t>(a.pointer);
   out.base = a.buffer->data.data() + std::min(offset, total);
-  out.count = offset > total || bytes > total - offset ? 0 : (total - offset - bytes) / out.stride + 1;
+  out.count = elements_inside(*a.buffer, offset, out.stride, bytes);
   return true;
 }
 
@@ -70,13 +69,15 @@ bool read_generic_position(const Context& ctx, size_t index, float out[4]) {
   return true;
 }
 
-void check_generic_arrays(const Context& ctx, size_t last, bool& mapped, bool& inside) {
+void check_generic_arrays(const Context& ctx, bool& mapped, size_t& elements) {
   const bool program = ctx.programs.active() != nullptr;
   for (int i = 0; i < kMaxVertexAttribs; ++i) {
     const GenericArray& a = ctx.programs.arrays[i];
     if (!a.active() || !a.buffer || (i > 0 && !program)) continue;
     mapped |= a.buffer->mapped;
-    inside &= generic_element(a, last) != nullptr;
+    const size_t bytes = size_t(gl_type_size(a.type)) * size_t(a.size);  // generic_element's test
+    elements = std::min(elements, elements_inside(*a.buffer, reinterpret_cast<uintptr_t>(a.pointer),
+                                                  a.stride ? size_t(a.stride) : bytes, bytes));
   }
 }
 

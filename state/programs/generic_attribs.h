@@ -66,7 +66,8 @@ const uint8_t* generic_element(const GenericArray& a, size_t index);
 // position. False when it is disabled.
 bool read_generic_position(const Context& ctx, size_t index, float out[4]);
 
-// Whether an enabled generic array is backed by a mapped buffer, or misses element `last`.
-void check_generic_arrays(const Context& ctx, size_t last, bool& mapped, bool& inside);
+// Whether an enabled generic array (that the draw reads) is backed by a mapped buffer; `elements`
+// lowered to how many elements each such array's buffer holds.
+void check_generic_arrays(const Context& ctx, bool& mapped, size_t& elements);
 
 }  // namespace pineda

@@ -23,11 +23,9 @@ void VertexFetchPlan::add(const ClientArray& array, bool normalize, size_t field
     r.first = static_cast<const uint8_t*>(array.pointer);
     r.count = SIZE_MAX;
   } else {
-    // array_element's test, solved for the index: offset + stride * index + bytes <= size.
     const size_t total = array.buffer->data.size(), offset = reinterpret_cast<uintptr_t>(array.pointer);
     r.first = array.buffer->data.data() + std::min(offset, total);
-    if (offset > total || bytes > total - offset) r.count = 0;
-    else r.count = r.stride ? (total - offset - bytes) / r.stride + 1 : SIZE_MAX;
+    r.count = elements_inside(*array.buffer, offset, r.stride, bytes);  // array_element's test
   }
 }
 
