@@ -41,11 +41,12 @@ void fetch_generic_element(const Context& ctx, int index, size_t element, float 
   if (ps.arrays[index].active()) read_generic_array(ps.arrays[index], element, out);
 }
 
-bool float_array_view(const Context& ctx, AttribSource source, int index, FloatArrayView& out) {
+bool direct_array_view(const Context& ctx, AttribSource source, int index, DirectArrayView& out) {
   if (source != AttribSource::Arrays || index < 0 || index >= kMaxVertexAttribs) return false;
   const GenericArray& a = ctx.programs.arrays[index];
-  if (!a.active() || a.type != GL_FLOAT) return false;
-  const size_t bytes = sizeof(float) * size_t(a.size);
+  out.unorm8 = a.type == GL_UNSIGNED_BYTE && a.normalized;
+  if (!a.active() || (a.type != GL_FLOAT && !out.unorm8)) return false;
+  const size_t bytes = size_t(gl_type_size(a.type)) * size_t(a.size);
   out.stride = a.stride ? size_t(a.stride) : bytes;
   out.size = a.size;
   // The position (array 0) of an element outside the buffer is a fetched vertex's default.

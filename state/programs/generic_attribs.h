@@ -28,13 +28,15 @@ void fetch_generic(const Context& ctx, AttribSource source, const raster::Vertex
 // fetch_generic gives for the vertex fetched from that element.
 void fetch_generic_element(const Context& ctx, int index, size_t element, float out[4]);
 
-// An enabled GL_FLOAT generic array, resolved once per draw so that each element is read
-// straight from memory: the same values fetch_generic gives.
-struct FloatArrayView {
+// An enabled generic array of GL_FLOAT or normalized GL_UNSIGNED_BYTE (colours) elements,
+// resolved once per draw so that each element is read straight from memory: the same values
+// fetch_generic gives.
+struct DirectArrayView {
   const uint8_t* base = nullptr;
   size_t stride = 0;
   size_t count = 0;               // elements inside the buffer object (SIZE_MAX in client memory)
   int size = 4;
+  bool unorm8 = false;             // normalized GL_UNSIGNED_BYTE components (else GL_FLOAT)
   const float* current = nullptr;  // the attribute's current value, for elements outside the buffer
   // Inline, with a copy of constant size per case: the vertex shader's input loop calls it per
   // vertex and attribute (a variable-size memcpy became a library call).
@@ -46,6 +48,10 @@ struct FloatArrayView {
     const uint8_t* element = base + stride * index;
     out[0] = out[1] = out[2] = 0.f;
     out[3] = 1.f;
+    if (unorm8) {
+      for (int c = 0; c < size; ++c) out[c] = element[c] / 255.f;  // read_vertex_component's
+      return;
+    }
     switch (size) {
       case 4: std::memcpy(out, element, sizeof(float) * 4); break;
       case 3: std::memcpy(out, element, sizeof(float) * 3); break;
@@ -55,9 +61,9 @@ struct FloatArrayView {
   }
 };
 
-// Whether generic attribute `index` of a draw from `source` is read from a GL_FLOAT array; if
+// Whether generic attribute `index` of a draw from `source` is read from an array directly; if
 // so, `out` is its view.
-bool float_array_view(const Context& ctx, AttribSource source, int index, FloatArrayView& out);
+bool direct_array_view(const Context& ctx, AttribSource source, int index, DirectArrayView& out);
 
 // The bytes of element `index` of a generic array, null outside its buffer object.
 const uint8_t* generic_element(const GenericArray& a, size_t index);

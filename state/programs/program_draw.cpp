@@ -110,20 +110,20 @@ void input_fetches(const Context& ctx, const shader::Program& program, AttribSou
       f.location = a.location + s;
       if (f.builtin == shader::BuiltinAttribute::None) {
         if (f.location < 0 || f.location >= kMaxVertexAttribs) continue;
-        f.from_view = float_array_view(ctx, source, f.location, f.view);
+        f.from_view = direct_array_view(ctx, source, f.location, f.view);
       }
       fetches.push_back(f);
     }
   }
 }
 
-// A float array's elements[0..count) into an input slot's lanes: component c of vertex i at
-// lanes[(i / kLanes) * batch_floats + c * kLanes + i % kLanes], missing components (0, 0, 0, 1)
-// and an element past the buffer the attribute's current value, as FloatArrayView::read gives
-// them. One routine per element size, so that the loop has no branch but the buffer's end.
-template <int kSize>
-void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elements, size_t count, float* lanes,
-                                size_t batch_floats) {
+// A directly read array's elements[0..count) into an input slot's lanes: component c of vertex i
+// at lanes[(i / kLanes) * batch_floats + c * kLanes + i % kLanes], missing components (0, 0, 0, 1)
+// and an element past the buffer the attribute's current value, as DirectArrayView::read gives
+// them. One routine per element size and type, so that the loop has no branch but the buffer's end.
+template <int kSize, bool kUnorm8>
+void gather_direct_array_of(const DirectArrayView& view, const uint32_t* elements, size_t count, float* lanes,
+                            size_t batch_floats) {
   // Four vertices at a time (consecutive lanes of one batch, which holds a multiple of four)
   // through a 4x4 transpose: one float at a time, the stores were most of this loop's time. Each
   // element is put together in a register (stored in pieces and loaded whole, it waited for the
@@ -131,13 +131,26 @@ void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elem
   const auto element_vector = [&](size_t i) {
     const size_t element = elements[i];
     if (element >= view.count) return _mm_loadu_ps(view.current);
-    const float* f = reinterpret_cast<const float*>(view.base + view.stride * element);
+    const uint8_t* at = view.base + view.stride * element;
     const __m128 zero = _mm_setzero_ps(), w = _mm_set_ss(1.f);  // (1, 0, 0, 0)
-    if constexpr (kSize == 4) return _mm_loadu_ps(f);
-    if constexpr (kSize == 1) return _mm_shuffle_ps(_mm_load_ss(f), w, _MM_SHUFFLE(0, 1, 1, 0));  // (x, 0, 0, 1)
-    const __m128 xy = _mm_loadl_pi(zero, reinterpret_cast<const __m64*>(f));
-    if constexpr (kSize == 2) return _mm_movelh_ps(xy, _mm_shuffle_ps(w, w, _MM_SHUFFLE(1, 1, 0, 1)));  // (x, y, 0, 1)
-    return _mm_movelh_ps(xy, _mm_unpacklo_ps(_mm_load_ss(f + 2), w));  // (x, y, z, 1)
+    if constexpr (kUnorm8) {
+      // Bytes to 32-bit lanes, each divided by 255 as read_vertex_component does (the missing
+      // bytes are 0: w gets 1 below).
+      uint32_t bytes = 0;
+      std::memcpy(&bytes, at, kSize);
+      const __m128i none = _mm_setzero_si128();
+      const __m128i words = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(static_cast<int>(bytes)), none), none);
+      const __m128 v = _mm_div_ps(_mm_cvtepi32_ps(words), _mm_set1_ps(255.f));
+      if constexpr (kSize == 4) return v;
+      return _mm_or_ps(v, _mm_shuffle_ps(w, w, _MM_SHUFFLE(0, 1, 1, 1)));  // w = 1
+    } else {
+      const float* f = reinterpret_cast<const float*>(at);
+      if constexpr (kSize == 4) return _mm_loadu_ps(f);
+      if constexpr (kSize == 1) return _mm_shuffle_ps(_mm_load_ss(f), w, _MM_SHUFFLE(0, 1, 1, 0));  // (x, 0, 0, 1)
+      const __m128 xy = _mm_loadl_pi(zero, reinterpret_cast<const __m64*>(f));
+      if constexpr (kSize == 2) return _mm_movelh_ps(xy, _mm_shuffle_ps(w, w, _MM_SHUFFLE(1, 1, 0, 1)));  // (x, y, 0, 1)
+      return _mm_movelh_ps(xy, _mm_unpacklo_ps(_mm_load_ss(f + 2), w));  // (x, y, z, 1)
+    }
   };
   size_t i = 0;
   for (; i + 4 <= count; i += 4) {
@@ -157,14 +170,21 @@ void gather_float_array_of_size(const FloatArrayView& view, const uint32_t* elem
   }
 }
 
-void gather_float_array(const FloatArrayView& view, const uint32_t* elements, size_t count, float* lanes,
-                        size_t batch_floats) {
+template <bool kUnorm8>
+void gather_direct_array_of_type(const DirectArrayView& view, const uint32_t* elements, size_t count, float* lanes,
+                                 size_t batch_floats) {
   switch (view.size) {
-    case 4: return gather_float_array_of_size<4>(view, elements, count, lanes, batch_floats);
-    case 3: return gather_float_array_of_size<3>(view, elements, count, lanes, batch_floats);
-    case 2: return gather_float_array_of_size<2>(view, elements, count, lanes, batch_floats);
-    default: return gather_float_array_of_size<1>(view, elements, count, lanes, batch_floats);
+    case 4: return gather_direct_array_of<4, kUnorm8>(view, elements, count, lanes, batch_floats);
+    case 3: return gather_direct_array_of<3, kUnorm8>(view, elements, count, lanes, batch_floats);
+    case 2: return gather_direct_array_of<2, kUnorm8>(view, elements, count, lanes, batch_floats);
+    default: return gather_direct_array_of<1, kUnorm8>(view, elements, count, lanes, batch_floats);
   }
+}
+
+void gather_direct_array(const DirectArrayView& view, const uint32_t* elements, size_t count, float* lanes,
+                         size_t batch_floats) {
+  if (view.unorm8) return gather_direct_array_of_type<true>(view, elements, count, lanes, batch_floats);
+  gather_direct_array_of_type<false>(view, elements, count, lanes, batch_floats);
 }
 
 // Each vertex's point size: the shader's (`from_shader`) or glPointSize's, clamped to the point
@@ -241,7 +261,7 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const raste
       if (vertices.inputs.empty()) {  // array elements: each input read straight from its array
         for (const InputFetch& f : fetches) {
           if (f.from_view) {
-            gather_float_array(f.view, vertices.elements.data() + first, count,
+            gather_direct_array(f.view, vertices.elements.data() + first, count,
                                in.data() + static_cast<size_t>(f.slot) * 4 * kLanes, in_floats);
             continue;
           }

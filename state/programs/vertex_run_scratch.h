@@ -15,8 +15,8 @@ struct InputFetch {
   int slot = 0;
   shader::BuiltinAttribute builtin = shader::BuiltinAttribute::None;
   int location = 0;        // generic attribute, when not built-in
-  bool from_view = false;  // a GL_FLOAT array: `view`
-  FloatArrayView view;
+  bool from_view = false;  // an array read directly: `view`
+  DirectArrayView view;
 };
 
 struct VertexRunScratch {

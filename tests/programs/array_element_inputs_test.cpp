@@ -19,7 +19,20 @@ class ArrayElementInputsTest : public ProgramTest {
                 "void main() { c = col; gl_Position = pos; }\n",
                 "varying vec4 c; void main() { gl_FragColor = c; }\n", {{0, "pos"}, {3, "col"}});
   }
+  // Attribute 0 from 19 vertices (a batch of 16 and three more, neither a multiple of four past
+  // the first twelve), a strip round the viewport's corners: its last triangles, drawn over the
+  // others, hold the last vertices.
+  void use_corner_strip() {
+    const GLfloat corners[4][2] = {{-1.f, -1.f}, {1.f, -1.f}, {-1.f, 1.f}, {1.f, 1.f}};
+    for (int v = 0; v < 19; ++v) {
+      strip_[v][0] = corners[v % 4][0];
+      strip_[v][1] = corners[v % 4][1];
+    }
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, strip_);
+    glEnableVertexAttribArray(0);
+  }
   const GLfloat quad_[8] = {-1, -1, 1, -1, 1, 1, -1, 1};
+  GLfloat strip_[19][2] = {};
 };
 
 // Generic array 0 disabled: attribute 0 is the vertex array's position (GL 2.0 2.7).
@@ -31,6 +44,23 @@ TEST_F(ArrayElementInputsTest, PositionFromTheVertexArrayAndNormalizedByteColour
   glEnableVertexAttribArray(3);
   glDrawArrays(GL_TRIANGLE_FAN, 0, 4);
   EXPECT_EQ(count_pixels({255, 0, 51, 255}), width() * height());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+// Normalized byte arrays of fewer components than the attribute: the rest are (0, 0, 1), over a
+// batch of 16 vertices and three more (vertices four at a time, then one at a time).
+TEST_F(ArrayElementInputsTest, NormalizedByteArraysOfFewerComponentsEndInOne) {
+  use_corner_strip();
+  std::vector<GLubyte> rgb;
+  for (int v = 0; v < 19; ++v) rgb.insert(rgb.end(), {51, 102, 0});
+  glVertexAttribPointer(3, 3, GL_UNSIGNED_BYTE, GL_TRUE, 0, rgb.data());
+  glEnableVertexAttribArray(3);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 19);
+  EXPECT_EQ(count_pixels({51, 102, 0, 255}), width() * height());
+  const std::vector<GLubyte> red(19, 204);
+  glVertexAttribPointer(3, 1, GL_UNSIGNED_BYTE, GL_TRUE, 0, red.data());
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 19);
+  EXPECT_EQ(count_pixels({204, 0, 0, 255}), width() * height());
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
@@ -50,18 +80,9 @@ TEST_F(ArrayElementInputsTest, DisabledArraysGiveTheCurrentValue) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
-// 19 vertices (a batch of 16 and three more, neither a multiple of four past the first twelve):
-// the disabled array's current value reaches every lane. The strip goes round the viewport's
-// corners, so its last triangles, drawn over the others, hold the last vertices.
+// 19 vertices: the disabled array's current value reaches every lane.
 TEST_F(ArrayElementInputsTest, DisabledArraysGiveTheCurrentValueToEveryVertexOfAPartBatch) {
-  const GLfloat corners[4][2] = {{-1.f, -1.f}, {1.f, -1.f}, {-1.f, 1.f}, {1.f, 1.f}};
-  GLfloat strip[19][2];
-  for (int v = 0; v < 19; ++v) {
-    strip[v][0] = corners[v % 4][0];
-    strip[v][1] = corners[v % 4][1];
-  }
-  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, strip);
-  glEnableVertexAttribArray(0);
+  use_corner_strip();
   glDisableVertexAttribArray(3);
   glVertexAttrib4f(3, 0.f, 0.4f, 0.8f, 1.f);
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 19);
