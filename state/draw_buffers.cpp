@@ -132,7 +132,7 @@ void Context::render_to_draw_buffers(raster::FunctionRef<void()> render) {
   draw_pass_output_ = 0;
   if (framebuffers.draw_binding) {
     // The view holds every draw buffer: one pass writes them all (raster/draw_targets.h).
-    refresh_framebuffer_views(*this);
+    refresh_changed_framebuffer_views(*this);
     note_draw_framebuffer_rendered(*this);
     return render();
   }

@@ -25,6 +25,7 @@
 #include "state/framebuffers/renderable_format.h"
 #include "state/framebuffers/renderbuffer.h"
 #include "state/framebuffers/view_source.h"
+#include "state/state_key.h"
 
 namespace pineda {
 
@@ -84,6 +85,8 @@ struct FramebufferState {
   ExtraDrawBuffers window_extra_draw_buffers{};
   // Set when queued rendering may write a texture attached to the draw framebuffer.
   bool textures_rendered = false;
+  // The state at a draw's last refresh of the views (refresh_changed_framebuffer_views).
+  StateKey views_refreshed;
 
   FramebufferObject* draw_object() const { return find(draw_binding); }
   FramebufferObject* read_object() const { return find(read_binding); }
@@ -105,6 +108,9 @@ GLenum framebuffer_status(Context& ctx, const FramebufferObject& fb, bool ext_ru
 // Rebuilds the views of the bound framebuffer objects (after attachments, storage or the
 // draw/read buffer changed) and points the context at them.
 void refresh_framebuffer_views(Context& ctx);
+// The same for a draw, unless no call changed the state since a draw's last refresh (StateKey:
+// a draw into a framebuffer object refreshed them twice, a twentieth of a small draw's time).
+void refresh_changed_framebuffer_views(Context& ctx);
 
 // Called for every command that renders into the draw framebuffer.
 void note_draw_framebuffer_rendered(Context& ctx);

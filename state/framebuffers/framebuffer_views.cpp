@@ -293,6 +293,13 @@ void refresh_framebuffer_views(Context& ctx) {
   ctx.set_framebuffer_views(draw ? &draw->draw_view : nullptr, read ? &read->read_view : nullptr);
 }
 
+void refresh_changed_framebuffer_views(Context& ctx) {
+  const StateKey key = ctx.state_key();
+  if (key == ctx.framebuffers.views_refreshed) return;
+  refresh_framebuffer_views(ctx);
+  ctx.framebuffers.views_refreshed = key;
+}
+
 void note_draw_framebuffer_rendered(Context& ctx) {
   if (const FramebufferObject* fb = ctx.framebuffers.draw_object(); fb && renders_into_textures(*fb)) {
     // The next draw that samples them resolves them first (a draw working it out anew, StateKey).
@@ -305,6 +312,7 @@ void resolve_rendered_textures(Context& ctx) {
   FramebufferState& fs = ctx.framebuffers;
   if (!fs.textures_rendered) return;
   fs.textures_rendered = false;
+  ctx.note_state_changed();  // the textures change (a draw may resolve them: StateKey)
   ctx.finish();
   FramebufferObject* fb = fs.draw_object();
   if (!fb) return;
@@ -337,7 +345,7 @@ void resolve_if_rendered(Context& ctx, const TextureObject& tex) {
 bool check_draw_framebuffer(Context& ctx) {
   FramebufferObject* fb = ctx.framebuffers.draw_object();
   if (!fb) return true;
-  refresh_framebuffer_views(ctx);
+  refresh_changed_framebuffer_views(ctx);
   if (fb->draw_status == GL_FRAMEBUFFER_COMPLETE) return true;
   ctx.record_error(GL_INVALID_FRAMEBUFFER_OPERATION, "the draw framebuffer is not complete");
   return false;
