@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "raster/clear.h"
 #include "raster/cleared_tiles.h"
@@ -57,6 +58,7 @@ struct Renderer::Impl {
   WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
   std::vector<Plane> varying_planes;  // GeometryStage's
   PrimSetup filled_triangle;  // GeometryStage's
+  std::optional<GeometryStage> geometry;  // the current draw record's (Renderer::draw)
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
 };
 
@@ -70,6 +72,7 @@ Renderer::~Renderer() { impl_->finish_running(); }
 void Renderer::set_framebuffer(const Framebuffer& fb) {
   flush();
   impl_->fb = fb;
+  impl_->geometry.reset();  // (the scene's draws go: no draw repeats)
   impl_->scene.reset(fb);
   impl_->running.reset(fb);
 }
@@ -99,9 +102,13 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
       record.sample_routine = nullptr;  // multisampled: the reference routine on each sample plane
     }
     scene.begin_draw(std::move(record), impl_->reference ? nullptr : &state);
+    impl_->geometry.reset();
   }
-  GeometryStage geometry(scene, impl_->window_cache, impl_->varying_planes, impl_->filled_triangle, [this] { submit(); },
-                         impl_->reference);
+  // Kept for the next draw while it repeats this draw's record (the only one begin_draw made).
+  if (impl_->geometry) impl_->geometry->begin_repeat();
+  else impl_->geometry.emplace(scene, impl_->window_cache, impl_->varying_planes, impl_->filled_triangle, [this] { submit(); },
+                               impl_->reference);
+  GeometryStage& geometry = *impl_->geometry;
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
   // A draw's window positions, ahead of assembly, in vector lanes and on every thread: a large

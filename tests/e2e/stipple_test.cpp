@@ -74,6 +74,20 @@ TEST_F(StippleTest, StripContinuesIndependentLinesRestart) {
   EXPECT_EQ(row(6), "1111111111110000");
 }
 
+// Each draw is a strip of its own, even one whose state repeats the previous draw's (drawn
+// before anything reads the pixels).
+TEST_F(StippleTest, EveryDrawOfAStripStartsThePatternAgain) {
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(1, 0x00ff);
+  const GLfloat strips[] = {0, 2.5f, 4, 2.5f, 12, 2.5f, 0, 6.5f, 16, 6.5f};
+  glVertexPointer(2, GL_FLOAT, 0, strips);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glDrawArrays(GL_LINE_STRIP, 0, 3);
+  glDrawArrays(GL_LINE_STRIP, 3, 2);
+  EXPECT_EQ(row(2), "1111111100000000");
+  EXPECT_EQ(row(6), "1111111100000000");
+}
+
 TEST_F(StippleTest, LineStippleOffDrawsEverything) {
   glLineStipple(1, 0x0001);
   horizontal_line(0, 16, 2.5f);

@@ -82,5 +82,28 @@ TEST_F(PreparedWindowsTest, ALargeDrawGivesThePixelsOfSmallOnes) {
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+// A small draw right after a large one of the same state (nothing read in between) takes its
+// own vertices to the window, not the large draw's prepared ones.
+TEST_F(PreparedWindowsTest, ASmallDrawAfterALargeOneOfTheSameStateDrawsItsOwnVertices) {
+  glDisable(GL_DEPTH_TEST);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  // 400 red triangles over the left half, then one green triangle over the right half.
+  std::vector<GLfloat> pos, col;
+  for (int t = 0; t < 400; ++t) {
+    pos.insert(pos.end(), {-1, -1, 0, 1, 0, -1, 0, 1, -1, 1, 0, 1});
+    for (int v = 0; v < 3; ++v) col.insert(col.end(), {1, 0, 0});
+  }
+  pos.insert(pos.end(), {0, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1});
+  for (int v = 0; v < 3; ++v) col.insert(col.end(), {0, 1, 0});
+  glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, pos.data());
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, col.data());
+  glDrawArrays(GL_TRIANGLES, 0, 1200);
+  glDrawArrays(GL_TRIANGLES, 1200, 3);
+  EXPECT_EQ(pixel(2, height() / 4), (Rgba{255, 0, 0, 255}));
+  EXPECT_EQ(pixel(width() - 2, height() / 4), (Rgba{0, 255, 0, 255}));
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 }  // namespace
 }  // namespace pineda::test
