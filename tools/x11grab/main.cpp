@@ -1,6 +1,6 @@
 // pineda-x11grab NAME OUT.png: writes the contents of the first mapped X window whose name
 // (WM_NAME) is NAME as a PNG, whichever driver drew it (the same picture for Pineda and
-// llvmpipe). Exit 1 when no such window exists, 2 on other errors.
+// llvmpipe); NAME --root: the whole screen. Exit 1 when no such window exists, 2 on other errors.
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 
@@ -33,7 +33,7 @@ Window find_named(Display* dpy, Window w, const char* name) {
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::fprintf(stderr, "usage: pineda-x11grab WINDOW_NAME OUT.png\n");
+    std::fprintf(stderr, "usage: pineda-x11grab WINDOW_NAME|--root OUT.png\n");
     return 2;
   }
   Display* dpy = XOpenDisplay(nullptr);
@@ -41,7 +41,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pineda-x11grab: cannot open the X display\n");
     return 2;
   }
-  const Window w = find_named(dpy, DefaultRootWindow(dpy), argv[1]);
+  const bool whole_screen = std::strcmp(argv[1], "--root") == 0;
+  const Window w = whole_screen ? DefaultRootWindow(dpy) : find_named(dpy, DefaultRootWindow(dpy), argv[1]);
   if (!w) {
     std::fprintf(stderr, "pineda-x11grab: no mapped window named '%s'\n", argv[1]);
     return 1;
