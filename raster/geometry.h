@@ -37,19 +37,14 @@ class GeometryStage final : public PrimitiveSink {
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
   bool active() const { return active_; }
 
-  // Another draw of the scene's current draw record: what the constructor derived from the
-  // record stays, what belonged to the previous draw goes (the renderer keeps the stage while
-  // the record repeats: constructing one was a tenth of a one-triangle draw's time).
-  void begin_repeat() {
-    prepared_ = nullptr;
-    varyings_ = nullptr;
-  }
-
   // The draw's vertices (the ones assembly passes are elements of it): triangles inside the
-  // clip volume take their window positions from a cache of the recent ones.
+  // clip volume take their window positions from a cache of the recent ones. Begins a draw: the
+  // renderer keeps the stage for every draw of one record (constructing one was a tenth of a
+  // one-triangle draw's time), and an earlier draw's prepared windows are not this one's.
   void set_vertices(std::span<const ClipVertex> vertices) {
     vertex_base_ = vertices.data();
     vertex_count_ = vertices.size();
+    prepared_ = nullptr;
     window_cache_.begin_draw(vertex_count_);
   }
 

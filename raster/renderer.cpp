@@ -105,9 +105,9 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     impl_->geometry.reset();
   }
   // Kept for the next draw while it repeats this draw's record (the only one begin_draw made).
-  if (impl_->geometry) impl_->geometry->begin_repeat();
-  else impl_->geometry.emplace(scene, impl_->window_cache, impl_->varying_planes, impl_->filled_triangle, [this] { submit(); },
-                               impl_->reference);
+  if (!impl_->geometry)
+    impl_->geometry.emplace(scene, impl_->window_cache, impl_->varying_planes, impl_->filled_triangle, [this] { submit(); },
+                            impl_->reference);
   GeometryStage& geometry = *impl_->geometry;
   geometry.set_vertices(vertices);
   if (state.shader) geometry.set_varyings(vertices.data(), varyings);
