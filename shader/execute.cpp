@@ -254,8 +254,8 @@ jit::FrameOperand jit::frame_operand(ir::Operand o, int registers) {
 
 namespace {
 
-// call_texture's general route, apart so that the short one's frame stays small (the two
-// together realigned the stack and saved every register for each lookup).
+// call_texture's general route, apart so that the short one's frame stays small (together they
+// realigned the stack and saved six registers for every lookup).
 #if !defined(__clang__)
 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq")))
 #endif
