@@ -80,10 +80,11 @@ void plane_depths(const DrawRecord& d, const PrimSetup& p, F4 ox, F4 oy, uint32_
 
 // A quad to shade: its place, its pixels, and the primitive it belongs to (a block may hold
 // quads of several primitives of one draw, from several rows).
+// Left uninitialized: every field is set before a block reads it (group_quads, QuadBlocks::add_row).
 struct Quad {
-  int x = 0, y = 0;
-  unsigned mask = 0;
-  const PrimSetup* prim = nullptr;
+  int x, y;
+  unsigned mask;
+  const PrimSetup* prim;
   F4 ox, oy;  // pixel centres relative to the primitive's reference point
 };
 
@@ -107,15 +108,21 @@ bool writes_color(const DrawRecord& d, const Framebuffer& fb,
 
 // Up to four blocks shaded together (shader::Program::run_fragment_blocks): each block's
 // quads, its fragment inputs, and what it needs after the run.
+// Made for each row of quads shade_quads is given, it initializes only `count`: the rest of
+// block k is set when the block is filled (group_quads, QuadBlocks::close_block, begin_block).
+// Zeroing the blocks' fields and quads stored to 24 lines a row (glsl_sprites: a tenth of shading).
 struct RowBlocks {
   static constexpr int kMax = shader::kMaxBlocksPerRun;
+  RowBlocks() {}  // (not = default: that would construct `blocks`)
   int count = 0;
   Quad quads[kMax][4];
-  int quad_count[kMax] = {};
+  int quad_count[kMax];
   // Block k's quads all of prim[k] (null: of several), and in one row left to right (one_row[k]).
-  const PrimSetup* prim[kMax] = {};
-  bool one_row[kMax] = {};
-  shader::FragmentBlock blocks[kMax];
+  const PrimSetup* prim[kMax];
+  bool one_row[kMax];
+  union {  // not constructed: begin_block sets every field a run reads
+    shader::FragmentBlock blocks[kMax];
+  };
   alignas(64) float varyings[kMax][shader::kMaxVaryingFloats][kLanes];
 };
 
