@@ -83,6 +83,7 @@ GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::vecto
     front.flat = s.flat_shading;
     shader_fill_params_ = params(front);
   }
+  pairs_rectangles_ = !reference && scene_.framebuffer().samples == 1 && !s.flat_shading;  // (reference: as given)
 }
 
 void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
@@ -293,11 +294,13 @@ void GeometryStage::draw_sample_point(const WinVert& v, const Style& style, floa
 
 void GeometryStage::point(const ClipVertex& v) {
   if (!active_ || !finite_position(v)) return;
+  emit_held_half();
   draw_point(to_clip(v), style_for(v, false), point_size_of(v));
 }
 
 void GeometryStage::line(const ClipVertex& a, const ClipVertex& b, const ClipVertex& provoking) {
   if (!active_ || !finite_position(a) || !finite_position(b)) return;
+  emit_held_half();
   // A line inside the view volume, clipping would leave as it is: its ends' window vertices
   // come from the cache, so a strip's vertices are taken to the window once, not twice (the
   // same positions and front attributes draw_line computes). Conditions as polygon()'s, and
@@ -424,15 +427,69 @@ bool GeometryStage::fill_window_triangle(const Vertex* const (&w)[3], const Clip
   if (s.cull_face && (front ? s.cull_front : s.cull_back)) return true;
   if (!front || s.polygon_front != PolygonMode::Fill || s.offset_fill) return false;
   if (area == 0) return true;
-  bool covered;
+  // (A draw of three vertices has no second triangle: holding its one back would only cost.)
+  if (pairs_rectangles_ && vertex_count_ > 3 && pair_into_rectangle(w, provoking)) return true;
+  emit_held_half();
+  if (setup_filled_triangle(*w[0], *w[1], *w[2], provoking)) emit(cached_prim_);
+  return true;
+}
+
+template <typename Vertex>
+bool GeometryStage::setup_filled_triangle(const Vertex& a, const Vertex& b, const Vertex& c,
+                                          const ClipVertex& provoking) {
   if (shader_) {
     varying_planes_.back() = Plane{};  // (a point of the draw, from glPolygonMode, set it)
-    covered = setup_triangle(*w[0], *w[1], *w[2], shader_fill_params_, cached_prim_);
-  } else {
-    covered = setup_triangle(*w[0], *w[1], *w[2], params(style_for(provoking, false)), cached_prim_);
+    return setup_triangle<WinPosition>(a, b, c, shader_fill_params_, cached_prim_);
   }
-  if (covered) emit(cached_prim_);
+  if constexpr (std::is_same_v<Vertex, WinVert>) return setup_triangle(a, b, c, params(style_for(provoking, false)), cached_prim_);
+  return false;  // (prepared windows are a programmable draw's)
+}
+
+template <typename Vertex>
+bool GeometryStage::pair_into_rectangle(const Vertex* const (&w)[3], const ClipVertex& provoking) {
+  int corner = 0;
+  int64_t x0, y0, x1, y1;
+  if (!rectangle_corner(*w[0], *w[1], *w[2], corner, x0, y0, x1, y1)) return false;
+  const int count = shader_ ? varying_count_ : scene_.current_draw().planes;
+  auto values = [&](const auto& v) -> const float* {
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, WinVert>) return shader_ ? v.varyings : v.attr;
+    return v.varyings;
+  };
+  if (!shader_ && !std::is_same_v<Vertex, WinVert>) return false;
+  if (holding_) {
+    const float* held_values[3] = {values(held_.v[0]), values(held_.v[1]), values(held_.v[2])};
+    const WinPosition* v[3] = {w[0], w[1], w[2]};
+    const float* v_values[3] = {values(*w[0]), values(*w[1]), values(*w[2])};
+    if (completes_rectangle(held_, held_values, v, v_values, count)) {
+      holding_ = false;
+      // The held half's setup (its planes are the rectangle's), then the rectangle's coverage.
+      if (setup_filled_triangle(held_.v[0], held_.v[1], held_.v[2], *held_provoking_)) {
+        make_rectangle(held_, clip_rect_, cached_prim_);
+        if (!cached_prim_.bounds.empty()) emit(cached_prim_);
+      }
+      return true;
+    }
+    emit_held_half();
+  }
+  // Held: its vertices copied (a cached window may be replaced by the next triangle's).
+  for (int i = 0; i < 3; ++i) {
+    static_cast<WinPosition&>(held_.v[i]) = *w[i];
+    if (!shader_) std::copy_n(values(*w[i]), count, held_.v[i].attr);
+  }
+  held_.corner = corner;
+  held_.x0 = x0;
+  held_.y0 = y0;
+  held_.x1 = x1;
+  held_.y1 = y1;
+  held_provoking_ = &provoking;
+  holding_ = true;
   return true;
+}
+
+void GeometryStage::emit_held_half() {
+  if (!holding_) return;
+  holding_ = false;
+  if (setup_filled_triangle(held_.v[0], held_.v[1], held_.v[2], *held_provoking_)) emit(cached_prim_);
 }
 
 bool GeometryStage::reads_edge_flags() const {
@@ -446,6 +503,7 @@ void GeometryStage::polygon(std::span<const ClipVertex* const> v, std::span<cons
   // Not for flat-shaded gl_Color varyings, which polygon() takes from the provoking vertex.
   if (v.size() == 3 && vertex_base_ && flat_ranges_.empty() && !reference_ && fill_cached_triangle(v, provoking))
     return;
+  emit_held_half();
   for (const ClipVertex* p : v)
     if (!finite_position(*p)) return;
   in_.resize(v.size());

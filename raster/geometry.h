@@ -7,6 +7,7 @@
 
 #include "raster/clip.h"
 #include "raster/primitive.h"
+#include "raster/rectangle_pair.h"
 #include "raster/scene.h"
 #include "raster/setup.h"
 #include "raster/window_cache.h"
@@ -36,6 +37,9 @@ class GeometryStage final : public PrimitiveSink {
 
   // False when the draw cannot produce any fragment (empty viewport or clip rectangle).
   bool active() const { return active_; }
+
+  // Ends the draw's assembly: a triangle held back as half of a rectangle goes to the scene.
+  void finish_assembly() { emit_held_half(); }
 
   // The draw's vertices (the ones assembly passes are elements of it): triangles inside the
   // clip volume take their window positions from a cache of the recent ones. Begins a draw: the
@@ -97,6 +101,13 @@ class GeometryStage final : public PrimitiveSink {
   bool fill_cached_triangle(std::span<const ClipVertex* const> v, const ClipVertex& provoking);
   template <typename Vertex>
   bool fill_window_triangle(const Vertex* const (&w)[3], const ClipVertex& provoking);
+  // fill_window_triangle's rectangles (rectangle_pair.h): true when w was held back or merged.
+  template <typename Vertex>
+  bool pair_into_rectangle(const Vertex* const (&w)[3], const ClipVertex& provoking);
+  void emit_held_half();
+  // A front-facing filled triangle's setup into cached_prim_; false when it covers no pixel.
+  template <typename Vertex>
+  bool setup_filled_triangle(const Vertex& a, const Vertex& b, const Vertex& c, const ClipVertex& provoking);
   void use_back_varyings(ClipVert& v) const;
   void flatten_varyings(ClipVert& v, const ClipVertex& provoking) const;
 
@@ -131,6 +142,12 @@ class GeometryStage final : public PrimitiveSink {
   const float* varyings_ = nullptr;
   int varying_count_ = 0;
   const PreparedWindow* prepared_ = nullptr;
+  // Filled triangles may pair into rectangles (single-sampled, smooth-shaded, not the reference
+  // path); held_ is the last one when it is half of one and not yet in the scene.
+  bool pairs_rectangles_ = false;
+  bool holding_ = false;
+  RectangleHalf held_;
+  const ClipVertex* held_provoking_ = nullptr;
   // GL_FLAT: the colour varyings (offset, count) that take the provoking vertex's values.
   std::vector<std::pair<int, int>> flat_ranges_;
   // The setup parameters of every front-facing filled triangle of the draw (fill_window_triangle),

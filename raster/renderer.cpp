@@ -122,7 +122,10 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
                    [&](size_t begin, size_t end) { geometry.window_positions(begin, end, windows + begin, impl_->simd); });
     geometry.use_window_positions(windows);
   }
-  if (geometry.active()) assemble_primitives(mode, vertices, indices, geometry);
+  if (geometry.active()) {
+    assemble_primitives(mode, vertices, indices, geometry);
+    geometry.finish_assembly();
+  }
   if (scene.full()) submit();
 }
 

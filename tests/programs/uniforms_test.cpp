@@ -8,7 +8,7 @@
 namespace pineda::test {
 namespace {
 
-const char* kVs = R"(#version 120
+const char* kUniformsVertex = R"(#version 120
 attribute vec4 position;
 attribute vec3 normal_in;
 attribute mat2 pair;
@@ -20,7 +20,7 @@ void main() {
   gl_Position = mvp * position;
 }
 )";
-const char* kFs = R"(#version 120
+const char* kUniformsFragment = R"(#version 120
 struct Light { vec3 color; float power; };
 uniform Light light;
 uniform vec4 tint[3];
@@ -40,7 +40,7 @@ class UniformsTest : public ProgramTest {
  protected:
   void SetUp() override {
     ProgramTest::SetUp();
-    program_ = link(kVs, kFs);
+    program_ = link(kUniformsVertex, kUniformsFragment);
     ASSERT_EQ(program_int(program_, GL_LINK_STATUS), GL_TRUE) << program_log(program_);
     glUseProgram(program_);
     ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));

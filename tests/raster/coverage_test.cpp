@@ -12,32 +12,8 @@ namespace {
 
 constexpr int kSize = 256;  // a power of two: window <-> NDC conversions are exact
 
-// The reference: snapped vertices (1/256 px), edge functions at every pixel centre,
-// pixel centres on an edge belong to the triangle when the edge is a left edge or a
-// bottom edge (y up).
 std::vector<uint8_t> reference_coverage(const int64_t x[3], const int64_t y[3]) {
-  std::vector<uint8_t> out(kSize * kSize, 0);
-  int64_t px[3] = {x[0], x[1], x[2]}, py[3] = {y[0], y[1], y[2]};
-  const int64_t area = (px[1] - px[0]) * (py[2] - py[0]) - (px[2] - px[0]) * (py[1] - py[0]);
-  if (area == 0) return out;
-  if (area < 0) {
-    std::swap(px[1], px[2]);
-    std::swap(py[1], py[2]);
-  }
-  for (int j = 0; j < kSize; ++j)
-    for (int i = 0; i < kSize; ++i) {
-      const int64_t cx = i * 256 + 128, cy = j * 256 + 128;
-      bool inside = true;
-      for (int e = 0; e < 3 && inside; ++e) {
-        const int64_t x0 = px[e], y0 = py[e], x1 = px[(e + 1) % 3], y1 = py[(e + 1) % 3];
-        // Positive on the left of the directed edge, i.e. inside a counter-clockwise triangle.
-        const int64_t v = (x1 - x0) * (cy - y0) - (y1 - y0) * (cx - x0);
-        const bool left_or_bottom = (y1 < y0) || (y1 == y0 && x1 > x0);
-        inside = left_or_bottom ? v >= 0 : v > 0;
-      }
-      out[j * kSize + i] = inside;
-    }
-  return out;
+  return reference_triangle_coverage(x, y, kSize);
 }
 
 std::vector<uint8_t> render_coverage(const int64_t x[3], const int64_t y[3], int threads = 1) {

@@ -1,0 +1,215 @@
+// Two triangles of one draw that make an axis-aligned rectangle are rasterized as the
+// rectangle (rectangle_pair.h): the same pixels, each once, the same depths, and the pairing
+// only for halves whose values lie on one plane.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "raster/rectangle_pair.h"
+#include "tests/raster/test_support.h"
+
+namespace pineda::raster::test {
+namespace {
+
+constexpr int kSize = 128;  // a power of two: window <-> NDC conversions are exact
+
+ClipVertex at(int64_t x, int64_t y, float red, float z = 0.f) {
+  ClipVertex v = window_vertex(static_cast<double>(x) / 256.0, static_cast<double>(y) / 256.0, kSize, kSize, z);
+  v.color[0] = v.back_color[0] = red;
+  return v;
+}
+
+// How often each pixel is drawn: additive blending of 1/255 per fragment.
+std::vector<int> draw_counted(const std::vector<std::vector<ClipVertex>>& draws) {
+  OwnedFramebuffer fb(kSize, kSize);
+  Renderer r(1);
+  r.set_framebuffer(fb.fb);
+  clear_all(r);
+  DrawState s = state_for(kSize, kSize);
+  s.blend = true;
+  s.blend_state.src_rgb = s.blend_state.dst_rgb = BlendFactor::One;
+  for (const std::vector<ClipVertex>& v : draws) r.draw(s, Primitive::Triangles, v);
+  r.flush();
+  std::vector<int> out(kSize * kSize);
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) out[j * kSize + i] = fb.pixel(i, j)[0];
+  return out;
+}
+
+TEST(RectanglePair, TheTwoTrianglesPixelsEachOnce) {
+  std::mt19937 rng(53);
+  std::uniform_int_distribution<int64_t> corner(-10 * 256, 138 * 256), size(1, 60 * 256);
+  for (int iter = 0; iter < 300; ++iter) {
+    int64_t x0 = corner(rng), y0 = corner(rng), x1 = x0 + size(rng), y1 = y0 + (iter % 7 == 0 ? 3 : size(rng));
+    if (iter % 4 == 0) {  // sides through pixel centres
+      x0 = x0 / 128 * 128, y0 = y0 / 128 * 128, x1 = x1 / 128 * 128 + 128, y1 = y1 / 128 * 128 + 128;
+    }
+    // Corners counter-clockwise from (x0, y0); the diagonal from corner k to k + 2.
+    const int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    const int k = iter % 2, first = iter % 3;
+    int order[6] = {k, k + 1, k + 2, k, k + 2, k + 3};
+    for (int& i : order) i %= 4;
+    std::vector<ClipVertex> v;
+    int64_t tx[2][3], ty[2][3];
+    for (int i = 0; i < 6; ++i) {
+      const int c = order[(i / 3) * 3 + (i % 3 + first) % 3];  // each triangle's vertices rotated
+      v.push_back(at(cx[c], cy[c], 1.f / 255.f));
+      tx[i / 3][i % 3] = cx[c];
+      ty[i / 3][i % 3] = cy[c];
+    }
+    const std::vector<uint8_t> a = reference_triangle_coverage(tx[0], ty[0], kSize),
+                               b = reference_triangle_coverage(tx[1], ty[1], kSize);
+    std::vector<int> expected(a.size());
+    for (size_t i = 0; i < a.size(); ++i) expected[i] = a[i] + b[i];
+    ASSERT_EQ(draw_counted({v}), expected) << "rectangle " << iter;
+  }
+}
+
+TEST(RectanglePair, OneDrawGivesTheImageAndDepthsOfTwo) {
+  // A colour ramp across a rectangle at one depth: drawn in one draw (a rectangle), then its
+  // triangles each in a draw of its own (not paired) with the depth test EQUAL: every pixel passes.
+  const int64_t x0 = 3 * 256 + 77, y0 = 5 * 256 + 128, x1 = 101 * 256 + 3, y1 = 90 * 256 + 200;
+  auto corner = [&](int64_t x, int64_t y) {
+    ClipVertex v = at(x, y, 0.f, 0.25f);
+    v.color[0] = v.back_color[0] = static_cast<float>(x - x0) / static_cast<float>(x1 - x0);
+    v.color[1] = v.back_color[1] = static_cast<float>(y - y0) / static_cast<float>(y1 - y0);
+    return v;
+  };
+  const std::vector<ClipVertex> first = {corner(x0, y0), corner(x1, y0), corner(x1, y1)};
+  const std::vector<ClipVertex> second = {corner(x0, y0), corner(x1, y1), corner(x0, y1)};
+  std::vector<ClipVertex> both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  OwnedFramebuffer merged(kSize, kSize), split(kSize, kSize);
+  for (OwnedFramebuffer* fb : {&merged, &split}) {
+    Renderer r(1);
+    r.set_framebuffer(fb->fb);
+    clear_all(r);
+    DrawState s = state_for(kSize, kSize);
+    s.depth_test = true;
+    if (fb == &merged) {
+      r.draw(s, Primitive::Triangles, both);
+    } else {
+      r.draw(s, Primitive::Triangles, first);
+      r.draw(s, Primitive::Triangles, second);
+    }
+    r.flush();
+  }
+  EXPECT_EQ(merged.color, split.color);
+  EXPECT_EQ(merged.depth, split.depth);
+  // The split triangles over the rectangle at the same depths.
+  Renderer r(1);
+  r.set_framebuffer(merged.fb);
+  DrawState s = state_for(kSize, kSize);
+  s.depth_test = true;
+  s.depth_func = CompareFunc::Equal;
+  s.stencil_test = true;
+  s.stencil_front.func = CompareFunc::Always;
+  s.stencil_front.depth_pass = StencilOp::Incr;
+  s.stencil_back = s.stencil_front;
+  r.draw(s, Primitive::Triangles, first);
+  r.draw(s, Primitive::Triangles, second);
+  r.flush();
+  int drawn = 0, passed = 0;
+  for (int j = 0; j < kSize; ++j)
+    for (int i = 0; i < kSize; ++i) {
+      drawn += merged.depth_at(i, j) != 0xffffffu;
+      passed += merged.stencil_at(i, j);
+    }
+  EXPECT_EQ(drawn, 98 * 86);
+  EXPECT_EQ(passed, drawn);
+}
+
+// Window vertices of a rectangle's corners (sub-pixels), with two values each.
+struct Corners {
+  WinVert v[4];  // (x0, y0), (x1, y0), (x1, y1), (x0, y1)
+  float values[4][2];
+  Corners() {
+    const int64_t x[4] = {256, 2560, 2560, 256}, y[4] = {512, 512, 1280, 1280};
+    for (int i = 0; i < 4; ++i) {
+      v[i].x = x[i];
+      v[i].y = y[i];
+      v[i].fx = static_cast<double>(x[i]) / 256.0;
+      v[i].fy = static_cast<double>(y[i]) / 256.0;
+      v[i].z = 100.0;
+      values[i][0] = static_cast<float>(i == 1 || i == 2);  // a ramp along x
+      values[i][1] = 0.5f;
+    }
+  }
+  // The half with its right angle at corner c, whose other vertices are c's neighbours.
+  bool completes(int c_held, int c_new) const {
+    RectangleHalf half;
+    const int held[3] = {c_held, (c_held + 1) % 4, (c_held + 3) % 4};
+    for (int i = 0; i < 3; ++i) half.v[i] = v[held[i]];
+    int64_t x0, y0, x1, y1;
+    if (!rectangle_corner(half.v[0], half.v[1], half.v[2], half.corner, x0, y0, x1, y1)) return false;
+    half.x0 = x0, half.y0 = y0, half.x1 = x1, half.y1 = y1;
+    const float* held_values[3] = {values[held[0]], values[held[1]], values[held[2]]};
+    const int next[3] = {(c_new + 1) % 4, c_new, (c_new + 3) % 4};
+    const WinPosition* w[3] = {&v[next[0]], &v[next[1]], &v[next[2]]};
+    const float* w_values[3] = {values[next[0]], values[next[1]], values[next[2]]};
+    return completes_rectangle(half, held_values, w, w_values, 2);
+  }
+};
+
+TEST(RectanglePair, PairsOnlyOppositeHalvesOnOnePlane) {
+  Corners c;
+  EXPECT_TRUE(c.completes(0, 2));
+  EXPECT_TRUE(c.completes(1, 3));
+  EXPECT_TRUE(c.completes(3, 1));
+  EXPECT_FALSE(c.completes(0, 1));  // overlapping halves
+  EXPECT_FALSE(c.completes(0, 0));
+  Corners bent;
+  bent.values[2][1] = 0.75f;  // not on the plane of the other three
+  EXPECT_FALSE(bent.completes(0, 2));
+  Corners deep;
+  deep.v[2].z = 101.0;  // another depth at one corner
+  EXPECT_FALSE(deep.completes(0, 2));
+  Corners perspective;
+  perspective.v[2].inv_w = 0.5;
+  EXPECT_FALSE(perspective.completes(0, 2));
+  Corners skewed;
+  skewed.v[2].fx += 1.0 / 1024.0;  // the same snapped corner, another exact one
+  EXPECT_FALSE(skewed.completes(0, 2));
+}
+
+TEST(RectanglePair, OnlyRightTrianglesAlongTheAxesAreHalves) {
+  WinPosition a, b, c;
+  a.x = 0, a.y = 0, b.x = 512, b.y = 0, c.x = 0, c.y = 300;
+  int corner = -1;
+  int64_t x0, y0, x1, y1;
+  ASSERT_TRUE(rectangle_corner(b, c, a, corner, x0, y0, x1, y1));
+  EXPECT_EQ(corner, 2);
+  EXPECT_EQ(x0, 0);
+  EXPECT_EQ(x1, 512);
+  EXPECT_EQ(y0, 0);
+  EXPECT_EQ(y1, 300);
+  c.x = 1;  // a leg off the axis
+  EXPECT_FALSE(rectangle_corner(a, b, c, corner, x0, y0, x1, y1));
+  c.x = 0, c.y = 0;  // degenerate
+  EXPECT_FALSE(rectangle_corner(a, b, c, corner, x0, y0, x1, y1));
+}
+
+TEST(RectanglePair, TheRectanglesPixelsFollowTheFillRule) {
+  RectangleHalf half;
+  // Sides through the centres of columns 10 and 20 and rows 5 and 8: the left and bottom sides'
+  // centres are inside, the right and top sides' outside.
+  half.x0 = 10 * 256 + 128, half.x1 = 20 * 256 + 128, half.y0 = 5 * 256 + 128, half.y1 = 8 * 256 + 128;
+  PrimSetup prim;
+  make_rectangle(half, PixelRect{0, 0, 100, 100}, prim);
+  EXPECT_EQ(prim.bounds.x0, 10);
+  EXPECT_EQ(prim.bounds.x1, 20);
+  EXPECT_EQ(prim.bounds.y0, 5);
+  EXPECT_EQ(prim.bounds.y1, 8);
+  half.x0 = 10 * 256 + 129, half.x1 = 20 * 256 + 129;  // just past the centres
+  make_rectangle(half, PixelRect{0, 0, 100, 100}, prim);
+  EXPECT_EQ(prim.bounds.x0, 11);
+  EXPECT_EQ(prim.bounds.x1, 21);
+  make_rectangle(half, PixelRect{0, 0, 15, 6}, prim);  // and the clip rectangle
+  EXPECT_EQ(prim.bounds.x1, 15);
+  EXPECT_EQ(prim.bounds.y1, 6);
+}
+
+}  // namespace
+}  // namespace pineda::raster::test
