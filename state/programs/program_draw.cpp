@@ -223,6 +223,9 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const raste
   const std::vector<InputFetch>& fetches = scratch.fetches;
   if (const StateKey key = ctx.state_key(); key != scratch.fetches_state || source != scratch.fetches_source) {
     input_fetches(ctx, program, source, slots, scratch.fetches);
+    std::vector<bool> fetched(static_cast<size_t>(slots));
+    for (const InputFetch& f : scratch.fetches) fetched[static_cast<size_t>(f.slot)] = true;
+    scratch.fetches_fill_slots = std::find(fetched.begin(), fetched.end(), false) == fetched.end();
     scratch.fetches_state = key;
     scratch.fetches_source = source;
   }
@@ -249,9 +252,10 @@ void run_vertex_shader(Context& ctx, const shader::Program& program, const raste
     for (size_t first = begin; first < end; first += kRunVertices) {
       const size_t count = std::min(kRunVertices, end - first);
       const int batch_count = static_cast<int>((count + kLanes - 1) / kLanes);
-      // The lanes past the last vertex (their outputs are not read) hold zeros, as the slots no
-      // fetch writes (the scratch's, from an earlier draw, too); the outputs start at zero.
-      if (count % kLanes != 0 || (one_piece && first == begin))
+      // The slots no fetch writes hold zeros (the scratch's, from an earlier draw, too), and so
+      // do the lanes past the last vertex then (their outputs are not read); the outputs start at
+      // zero.
+      if (!scratch.fetches_fill_slots && (count % kLanes != 0 || (one_piece && first == begin)))
         std::fill_n(in.begin(), in_floats * static_cast<size_t>(batch_count), 0.f);
       std::fill_n(result.begin(), out_floats * static_cast<size_t>(batch_count), 0.f);
       // Vertex i's component c of input slot `slot`.

@@ -45,6 +45,9 @@ void link_program(Context& ctx, ProgramObject& p) {
     }
     const auto& attributes = exec->program->attributes();
     for (size_t i = 0; i < attributes.size(); ++i) exec->attributes.push_back(static_cast<int>(i));
+    exec->generic_attributes_only = std::all_of(attributes.begin(), attributes.end(), [](const shader::Attribute& a) {
+      return a.builtin == shader::BuiltinAttribute::None;
+    });
     exec->sampler_conflict = sampler_unit_conflict(*exec);
   }
   p.executable = std::move(exec);

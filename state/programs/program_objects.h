@@ -33,6 +33,7 @@ struct LinkedProgram {
   std::vector<float> values;    // shader::Program::uniform_floats() values
   std::vector<int> attributes;  // indices into program->attributes() (built-ins included)
   bool vertex_shader = false, fragment_shader = false;  // which stages the program replaces
+  bool generic_attributes_only = false;  // the vertex shader reads no built-in attribute (gl_Vertex, ...)
   std::string sampler_conflict;  // sampler_unit_conflict(*this): a draw is INVALID_OPERATION unless empty
 };
 

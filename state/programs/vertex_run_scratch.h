@@ -23,6 +23,9 @@ struct VertexRunScratch {
   std::vector<InputFetch> fetches;
   StateKey fetches_state;  // the state and source they were found for (state/state_key.h)
   AttribSource fetches_source = AttribSource::Arrays;
+  // Every input slot has a fetch, which writes its four components for each vertex: the lanes
+  // past a draw's last vertex may keep an earlier draw's values (their outputs are not read).
+  bool fetches_fill_slots = false;
   // The inputs and outputs of the batches run at once, for a draw run on the calling thread
   // alone (a draw of more pieces allocates them per piece).
   std::vector<float> in, result;

@@ -95,10 +95,7 @@ void fetch_vertex_source(const Context& ctx, size_t index, raster::VertexInput& 
 
 bool vertex_shader_reads_generic_attributes_only(const Context& ctx) {
   const LinkedProgram* exec = ctx.programs.active();
-  if (!exec || !exec->program || !exec->vertex_shader) return false;
-  const auto& attributes = exec->program->attributes();
-  return std::all_of(attributes.begin(), attributes.end(),
-                     [](const shader::Attribute& a) { return a.builtin == shader::BuiltinAttribute::None; });
+  return exec && exec->program && exec->vertex_shader && exec->generic_attributes_only;
 }
 
 }  // namespace pineda
