@@ -449,7 +449,8 @@ template <typename Vertex>
 bool GeometryStage::pair_into_rectangle(const Vertex* const (&w)[3], const ClipVertex& provoking) {
   int corner = 0;
   int64_t x0, y0, x1, y1;
-  if (!rectangle_corner(*w[0], *w[1], *w[2], corner, x0, y0, x1, y1)) return false;
+  if (!may_be_rectangle_half(*w[0], *w[1], *w[2]) || !rectangle_corner(*w[0], *w[1], *w[2], corner, x0, y0, x1, y1))
+    return false;
   const int count = shader_ ? varying_count_ : scene_.current_draw().planes;
   auto values = [&](const auto& v) -> const float* {
     if constexpr (std::is_same_v<std::decay_t<decltype(v)>, WinVert>) return shader_ ? v.varyings : v.attr;
