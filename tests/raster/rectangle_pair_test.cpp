@@ -22,7 +22,7 @@ ClipVertex at(int64_t x, int64_t y, float red, float z = 0.f) {
 }
 
 // How often each pixel is drawn: additive blending of 1/255 per fragment.
-std::vector<int> draw_counted(const std::vector<std::vector<ClipVertex>>& draws) {
+std::vector<int> draw_counted(const std::vector<std::vector<ClipVertex>>& draws, Primitive mode = Primitive::Triangles) {
   OwnedFramebuffer fb(kSize, kSize);
   Renderer r(1);
   r.set_framebuffer(fb.fb);
@@ -30,7 +30,7 @@ std::vector<int> draw_counted(const std::vector<std::vector<ClipVertex>>& draws)
   DrawState s = state_for(kSize, kSize);
   s.blend = true;
   s.blend_state.src_rgb = s.blend_state.dst_rgb = BlendFactor::One;
-  for (const std::vector<ClipVertex>& v : draws) r.draw(s, Primitive::Triangles, v);
+  for (const std::vector<ClipVertex>& v : draws) r.draw(s, mode, v);
   r.flush();
   std::vector<int> out(kSize * kSize);
   for (int j = 0; j < kSize; ++j)
@@ -64,6 +64,32 @@ TEST(RectanglePair, TheTwoTrianglesPixelsEachOnce) {
     std::vector<int> expected(a.size());
     for (size_t i = 0; i < a.size(); ++i) expected[i] = a[i] + b[i];
     ASSERT_EQ(draw_counted({v}), expected) << "rectangle " << iter;
+  }
+}
+
+TEST(RectanglePair, StripsFansAndQuadsOfFourPairToo) {
+  std::mt19937 rng(530);
+  std::uniform_int_distribution<int64_t> corner(-10 * 256, 138 * 256), size(1, 60 * 256);
+  for (int iter = 0; iter < 60; ++iter) {
+    const int64_t x0 = corner(rng), y0 = corner(rng), x1 = x0 + size(rng), y1 = y0 + size(rng);
+    const int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};  // counter-clockwise
+    std::vector<ClipVertex> around;
+    for (int c = 0; c < 4; ++c) around.push_back(at(cx[c], cy[c], 1.f / 255.f));
+    // A fan and a quad: triangles 0 1 2 and 0 2 3; a strip 0 1 3 2: triangles 0 1 3 and 3 1 2.
+    auto expected = [&](const int (&t)[2][3]) {
+      std::vector<int> sum(kSize * kSize, 0);
+      for (const auto& tri : t) {
+        const int64_t tx[3] = {cx[tri[0]], cx[tri[1]], cx[tri[2]]}, ty[3] = {cy[tri[0]], cy[tri[1]], cy[tri[2]]};
+        const std::vector<uint8_t> c = reference_triangle_coverage(tx, ty, kSize);
+        for (size_t i = 0; i < c.size(); ++i) sum[i] += c[i];
+      }
+      return sum;
+    };
+    const int fan[2][3] = {{0, 1, 2}, {0, 2, 3}}, strip[2][3] = {{0, 1, 3}, {3, 1, 2}};
+    ASSERT_EQ(draw_counted({around}, Primitive::TriangleFan), expected(fan)) << "fan " << iter;
+    ASSERT_EQ(draw_counted({around}, Primitive::Quads), expected(fan)) << "quad " << iter;
+    const std::vector<ClipVertex> zigzag = {around[0], around[1], around[3], around[2]};
+    ASSERT_EQ(draw_counted({zigzag}, Primitive::TriangleStrip), expected(strip)) << "strip " << iter;
   }
 }
 
