@@ -83,7 +83,7 @@ GeometryStage::GeometryStage(Scene& scene, WindowCache& window_cache, std::vecto
     front.flat = s.flat_shading;
     shader_fill_params_ = params(front);
   }
-  pairs_rectangles_ = !reference && scene_.framebuffer().samples == 1 && !s.flat_shading;  // (reference: as given)
+  pairs_rectangles_ = !reference && scene_.framebuffer().samples == 1;  // (reference: as given)
 }
 
 void GeometryStage::to_clip(const ClipVertex& v, ClipVert& c) const {
@@ -461,7 +461,7 @@ bool GeometryStage::pair_into_rectangle(const Vertex* const (&w)[3], const ClipV
     const float* held_values[3] = {values(held_.v[0]), values(held_.v[1]), values(held_.v[2])};
     const WinPosition* v[3] = {w[0], w[1], w[2]};
     const float* v_values[3] = {values(*w[0]), values(*w[1]), values(*w[2])};
-    if (completes_rectangle(held_, held_values, v, v_values, count)) {
+    if (completes_rectangle(held_, held_values, v, v_values, count) && same_flat_color(*held_provoking_, provoking)) {
       holding_ = false;
       // The held half's setup (its planes are the rectangle's), then the rectangle's coverage.
       if (setup_filled_triangle(held_.v[0], held_.v[1], held_.v[2], *held_provoking_)) {
@@ -485,6 +485,14 @@ bool GeometryStage::pair_into_rectangle(const Vertex* const (&w)[3], const ClipV
   held_provoking_ = &provoking;
   holding_ = true;
   return true;
+}
+
+// Whether two triangles' provoking vertices give them the same flat colour (GL_FLAT: the
+// fixed-function colours are the provoking vertex's; a program's varyings are not flat here).
+bool GeometryStage::same_flat_color(const ClipVertex& a, const ClipVertex& b) const {
+  if (shader_ || !scene_.current_draw().state.flat_shading) return true;
+  const Style sa = style_for(a, false), sb = style_for(b, false);
+  return std::equal(sa.flat_color, sa.flat_color + 4, sb.flat_color);
 }
 
 void GeometryStage::emit_held_half() {

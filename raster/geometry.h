@@ -105,6 +105,7 @@ class GeometryStage final : public PrimitiveSink {
   template <typename Vertex>
   bool pair_into_rectangle(const Vertex* const (&w)[3], const ClipVertex& provoking);
   void emit_held_half();
+  bool same_flat_color(const ClipVertex& a, const ClipVertex& b) const;
   // A front-facing filled triangle's setup into cached_prim_; false when it covers no pixel.
   template <typename Vertex>
   bool setup_filled_triangle(const Vertex& a, const Vertex& b, const Vertex& c, const ClipVertex& provoking);
@@ -142,8 +143,8 @@ class GeometryStage final : public PrimitiveSink {
   const float* varyings_ = nullptr;
   int varying_count_ = 0;
   const PreparedWindow* prepared_ = nullptr;
-  // Filled triangles may pair into rectangles (single-sampled, smooth-shaded, not the reference
-  // path); held_ is the last one when it is half of one and not yet in the scene.
+  // Filled triangles may pair into rectangles (single-sampled, not the reference path); held_ is
+  // the last one when it is half of one and not yet in the scene.
   bool pairs_rectangles_ = false;
   bool holding_ = false;
   RectangleHalf held_;

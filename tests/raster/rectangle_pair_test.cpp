@@ -147,6 +147,37 @@ TEST(RectanglePair, OneDrawGivesTheImageAndDepthsOfTwo) {
   EXPECT_EQ(passed, drawn);
 }
 
+TEST(RectanglePair, FlatShadedHalvesPairOnlyWithOneFlatColour) {
+  // GL_FLAT takes each triangle's colour from its last vertex. Both quads' colours lie on one
+  // plane; the first's two provoking vertices agree (one colour: paired), the second's do not.
+  const int64_t x0 = 7 * 256 + 10, y0 = 9 * 256 + 128, x1 = 77 * 256 + 1, y1 = 60 * 256 + 90;
+  for (const bool one_colour : {true, false}) {
+    const float c = 0.25f, p = one_colour ? 0.25f : 0.5f, d = 0.75f, q = one_colour ? 0.75f : 0.5f;
+    const std::vector<ClipVertex> first = {at(x0, y0, c), at(x1, y0, p), at(x1, y1, d)};
+    const std::vector<ClipVertex> second = {at(x0, y0, c), at(x1, y1, d), at(x0, y1, q)};
+    std::vector<ClipVertex> both = first;
+    both.insert(both.end(), second.begin(), second.end());
+    OwnedFramebuffer merged(kSize, kSize), split(kSize, kSize);
+    for (OwnedFramebuffer* fb : {&merged, &split}) {
+      Renderer r(1);
+      r.set_framebuffer(fb->fb);
+      clear_all(r);
+      DrawState s = state_for(kSize, kSize);
+      s.flat_shading = true;
+      if (fb == &merged) {
+        r.draw(s, Primitive::Triangles, both);
+      } else {
+        r.draw(s, Primitive::Triangles, first);
+        r.draw(s, Primitive::Triangles, second);
+      }
+      r.flush();
+    }
+    EXPECT_EQ(merged.color, split.color) << "one colour " << one_colour;
+    EXPECT_EQ(merged.pixel(70, 15)[0], 191) << "one colour " << one_colour;  // below the diagonal: d
+    EXPECT_EQ(merged.pixel(10, 55)[0], one_colour ? 191 : 128) << "one colour " << one_colour;  // above: q
+  }
+}
+
 // Window vertices of a rectangle's corners (sub-pixels), with two values each.
 struct Corners {
   WinVert v[4];  // (x0, y0), (x1, y0), (x1, y1), (x0, y1)
