@@ -38,6 +38,25 @@ std::vector<int> draw_counted(const std::vector<std::vector<ClipVertex>>& draws,
   return out;
 }
 
+// Two triangles drawn with `s` into `merged` in one draw (paired) and into `split` in a draw each.
+void draw_merged_and_split(const DrawState& s, const std::vector<ClipVertex>& first, const std::vector<ClipVertex>& second,
+                           OwnedFramebuffer& merged, OwnedFramebuffer& split) {
+  std::vector<ClipVertex> both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  for (OwnedFramebuffer* fb : {&merged, &split}) {
+    Renderer r(1);
+    r.set_framebuffer(fb->fb);
+    clear_all(r);
+    if (fb == &merged) {
+      r.draw(s, Primitive::Triangles, both);
+    } else {
+      r.draw(s, Primitive::Triangles, first);
+      r.draw(s, Primitive::Triangles, second);
+    }
+    r.flush();
+  }
+}
+
 TEST(RectanglePair, TheTwoTrianglesPixelsEachOnce) {
   std::mt19937 rng(53);
   std::uniform_int_distribution<int64_t> corner(-10 * 256, 138 * 256), size(1, 60 * 256);
@@ -105,23 +124,10 @@ TEST(RectanglePair, OneDrawGivesTheImageAndDepthsOfTwo) {
   };
   const std::vector<ClipVertex> first = {corner(x0, y0), corner(x1, y0), corner(x1, y1)};
   const std::vector<ClipVertex> second = {corner(x0, y0), corner(x1, y1), corner(x0, y1)};
-  std::vector<ClipVertex> both = first;
-  both.insert(both.end(), second.begin(), second.end());
   OwnedFramebuffer merged(kSize, kSize), split(kSize, kSize);
-  for (OwnedFramebuffer* fb : {&merged, &split}) {
-    Renderer r(1);
-    r.set_framebuffer(fb->fb);
-    clear_all(r);
-    DrawState s = state_for(kSize, kSize);
-    s.depth_test = true;
-    if (fb == &merged) {
-      r.draw(s, Primitive::Triangles, both);
-    } else {
-      r.draw(s, Primitive::Triangles, first);
-      r.draw(s, Primitive::Triangles, second);
-    }
-    r.flush();
-  }
+  DrawState tested = state_for(kSize, kSize);
+  tested.depth_test = true;
+  draw_merged_and_split(tested, first, second, merged, split);
   EXPECT_EQ(merged.color, split.color);
   EXPECT_EQ(merged.depth, split.depth);
   // The split triangles over the rectangle at the same depths.
@@ -155,23 +161,10 @@ TEST(RectanglePair, FlatShadedHalvesPairOnlyWithOneFlatColour) {
     const float c = 0.25f, p = one_colour ? 0.25f : 0.5f, d = 0.75f, q = one_colour ? 0.75f : 0.5f;
     const std::vector<ClipVertex> first = {at(x0, y0, c), at(x1, y0, p), at(x1, y1, d)};
     const std::vector<ClipVertex> second = {at(x0, y0, c), at(x1, y1, d), at(x0, y1, q)};
-    std::vector<ClipVertex> both = first;
-    both.insert(both.end(), second.begin(), second.end());
     OwnedFramebuffer merged(kSize, kSize), split(kSize, kSize);
-    for (OwnedFramebuffer* fb : {&merged, &split}) {
-      Renderer r(1);
-      r.set_framebuffer(fb->fb);
-      clear_all(r);
-      DrawState s = state_for(kSize, kSize);
-      s.flat_shading = true;
-      if (fb == &merged) {
-        r.draw(s, Primitive::Triangles, both);
-      } else {
-        r.draw(s, Primitive::Triangles, first);
-        r.draw(s, Primitive::Triangles, second);
-      }
-      r.flush();
-    }
+    DrawState flat = state_for(kSize, kSize);
+    flat.flat_shading = true;
+    draw_merged_and_split(flat, first, second, merged, split);
     EXPECT_EQ(merged.color, split.color) << "one colour " << one_colour;
     EXPECT_EQ(merged.pixel(70, 15)[0], 191) << "one colour " << one_colour;  // below the diagonal: d
     EXPECT_EQ(merged.pixel(10, 55)[0], one_colour ? 191 : 128) << "one colour " << one_colour;  // above: q
