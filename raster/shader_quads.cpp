@@ -110,7 +110,7 @@ bool writes_color(const DrawRecord& d, const Framebuffer& fb,
 // quads, its fragment inputs, and what it needs after the run.
 // Made for each row of quads shade_quads is given, it initializes only `count`: the rest of
 // block k is set when the block is filled (group_quads, QuadBlocks::close_block, begin_block).
-// Zeroing the blocks' fields and quads stored to 24 lines a row (glsl_sprites: a tenth of shading).
+// Zeroing the blocks' fields and quads stored to 24 lines a row (glsl_sprites: 4% of a frame).
 struct RowBlocks {
   static constexpr int kMax = shader::kMaxBlocksPerRun;
   RowBlocks() {}  // (not = default: that would construct `blocks`)
