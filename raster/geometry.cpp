@@ -428,7 +428,8 @@ bool GeometryStage::fill_window_triangle(const Vertex* const (&w)[3], const Clip
   if (!front || s.polygon_front != PolygonMode::Fill || s.offset_fill) return false;
   if (area == 0) return true;
   // (A draw of three vertices has no second triangle: holding its one back would only cost.)
-  if (pairs_rectangles_ && vertex_count_ > 3 && pair_into_rectangle(w, provoking)) return true;
+  if (pairs_rectangles_ && vertex_count_ > 3 && unpaired_ < kUnpairedHalves && pair_into_rectangle(w, provoking))
+    return true;
   emit_held_half();
   if (setup_filled_triangle(*w[0], *w[1], *w[2], provoking)) emit(cached_prim_);
   return true;
@@ -463,6 +464,7 @@ bool GeometryStage::pair_into_rectangle(const Vertex* const (&w)[3], const ClipV
     const float* v_values[3] = {values(*w[0]), values(*w[1]), values(*w[2])};
     if (completes_rectangle(held_, held_values, v, v_values, count) && same_flat_color(*held_provoking_, provoking)) {
       holding_ = false;
+      unpaired_ = 0;
       // The held half's setup (its planes are the rectangle's), then the rectangle's coverage.
       if (setup_filled_triangle(held_.v[0], held_.v[1], held_.v[2], *held_provoking_)) {
         make_rectangle(held_, clip_rect_, cached_prim_);
@@ -471,6 +473,7 @@ bool GeometryStage::pair_into_rectangle(const Vertex* const (&w)[3], const ClipV
       return true;
     }
     emit_held_half();
+    ++unpaired_;
   }
   // Held: its vertices copied (a cached window may be replaced by the next triangle's).
   for (int i = 0; i < 3; ++i) {

@@ -39,7 +39,10 @@ class GeometryStage final : public PrimitiveSink {
   bool active() const { return active_; }
 
   // Ends the draw's assembly: a triangle held back as half of a rectangle goes to the scene.
-  void finish_assembly() { emit_held_half(); }
+  void finish_assembly() {
+    emit_held_half();
+    unpaired_ = 0;
+  }
 
   // The draw's vertices (the ones assembly passes are elements of it): triangles inside the
   // clip volume take their window positions from a cache of the recent ones. Begins a draw: the
@@ -146,6 +149,11 @@ class GeometryStage final : public PrimitiveSink {
   // Filled triangles may pair into rectangles (single-sampled, not the reference path); held_ is
   // the last one when it is half of one and not yet in the scene.
   bool pairs_rectangles_ = false;
+  // Halves held and not completed since the draw's last rectangle: a mesh of right triangles
+  // whose values do not lie on one plane (a grid seen from above) stops holding them at
+  // kUnpairedHalves (each hold copies three vertices).
+  static constexpr int kUnpairedHalves = 16;
+  int unpaired_ = 0;
   bool holding_ = false;
   RectangleHalf held_;
   const ClipVertex* held_provoking_ = nullptr;

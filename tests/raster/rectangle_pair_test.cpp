@@ -3,6 +3,7 @@
 // only for halves whose values lie on one plane.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -110,6 +111,41 @@ TEST(RectanglePair, StripsFansAndQuadsOfFourPairToo) {
     const std::vector<ClipVertex> zigzag = {around[0], around[1], around[3], around[2]};
     ASSERT_EQ(draw_counted({zigzag}, Primitive::TriangleStrip), expected(strip)) << "strip " << iter;
   }
+}
+
+TEST(RectanglePair, ADrawOfManyUnpairedHalvesStillGivesEachPixelOnce) {
+  // 40 grid cells whose corners' values do not lie on one plane (no pair: the stage stops
+  // holding halves after 16), then 10 rectangles that would pair, in one draw.
+  std::vector<ClipVertex> v;
+  std::vector<int> expected(kSize * kSize, 0);
+  auto add_cell = [&](int64_t x0, int64_t y0, int64_t x1, int64_t y1, float bent) {
+    const int64_t cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    const float red[4] = {1.f / 255.f, 1.f / 255.f, bent, 1.f / 255.f};
+    static const int kTriangles[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    for (const auto& t : kTriangles) {
+      int64_t tx[3], ty[3];
+      for (int i = 0; i < 3; ++i) {
+        v.push_back(at(cx[t[i]], cy[t[i]], red[t[i]]));
+        tx[i] = cx[t[i]];
+        ty[i] = cy[t[i]];
+      }
+      const std::vector<uint8_t> c = reference_triangle_coverage(tx, ty, kSize);
+      for (size_t i = 0; i < c.size(); ++i) expected[i] += c[i];
+    }
+  };
+  for (int i = 0; i < 40; ++i) add_cell((i % 8) * 1600 + 40, (i / 8) * 1500 + 70, (i % 8) * 1600 + 1500, (i / 8) * 1500 + 1400, 0.5f);
+  for (int i = 0; i < 10; ++i) add_cell(i * 3000 + 100, 9000 + 40 * i, i * 3000 + 2900, 12000 + 33 * i, 1.f / 255.f);
+  // The bent corners add their own amount where they interpolate: compare coverage only.
+  std::vector<int> drawn = draw_counted({v});
+  for (int& d : drawn) d = d != 0;
+  for (int& e : expected) {
+    ASSERT_LE(e, 1);
+  }
+  EXPECT_EQ(drawn, expected);
+  // And the rectangles of the same draw without the grid before them, each pixel once.
+  const std::vector<ClipVertex> rectangles(v.begin() + 40 * 6, v.end());
+  const std::vector<int> counted = draw_counted({rectangles});
+  EXPECT_EQ(*std::max_element(counted.begin(), counted.end()), 1);
 }
 
 TEST(RectanglePair, OneDrawGivesTheImageAndDepthsOfTwo) {
