@@ -60,7 +60,8 @@ bool completes_rectangle(const RectangleHalf& half, const float* const (&half_va
   if (!same_values(values[vp], half_values[pi], count) || !same_values(values[vq], half_values[qi], count)) return false;
   // A rectangle before snapping too, with one depth and one 1/w.
   if (!(c.fx == q.fx && c.fy == p.fy && d.fx == p.fx && d.fy == q.fy)) return false;
-  if (!(c.z == p.z && c.z == d.z && c.inv_w == p.inv_w && c.inv_w == d.inv_w)) return false;
+  if (!(c.z == p.z && c.z == q.z && c.z == d.z && c.inv_w == p.inv_w && c.inv_w == q.inv_w && c.inv_w == d.inv_w))
+    return false;
   // On one plane: the same change along x on both rows, along y on both columns.
   const float *fc = half_values[half.corner], *fp = half_values[pi], *fq = half_values[qi], *fd = values[corner];
   for (int k = 0; k < count; ++k)

@@ -252,9 +252,15 @@ TEST(RectanglePair, PairsOnlyOppositeHalvesOnOnePlane) {
   Corners deep;
   deep.v[2].z = 101.0;  // another depth at one corner
   EXPECT_FALSE(deep.completes(0, 2));
+  Corners shared_deep;
+  shared_deep.v[3].z = 101.0;  // at a corner both halves share
+  EXPECT_FALSE(shared_deep.completes(0, 2));
   Corners perspective;
   perspective.v[2].inv_w = 0.5;
   EXPECT_FALSE(perspective.completes(0, 2));
+  Corners shared_perspective;
+  shared_perspective.v[1].inv_w = 0.5;
+  EXPECT_FALSE(shared_perspective.completes(0, 2));
   Corners skewed;
   skewed.v[2].fx += 1.0 / 1024.0;  // the same snapped corner, another exact one
   EXPECT_FALSE(skewed.completes(0, 2));
