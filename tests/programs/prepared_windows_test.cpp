@@ -47,10 +47,7 @@ class PreparedWindowsTest : public ProgramTest {
     glEnableVertexAttribArray(1);
   }
 
-  struct Image {
-    std::vector<uint8_t> colour;
-    std::vector<GLuint> depth;
-  };
+  using Image = ColourAndDepth;
   Image draw(bool at_once) {
     glClearColor(0, 0, 0, 0);
     glClearDepth(1.0);
@@ -60,9 +57,7 @@ class PreparedWindowsTest : public ProgramTest {
     } else {
       for (size_t t = 0; t < indices_.size(); t += 3) glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_INT, &indices_[t]);
     }
-    Image out{read_all(), std::vector<GLuint>(size_t(width()) * height())};
-    glReadPixels(0, 0, width(), height(), GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, out.depth.data());
-    return out;
+    return read_colour_and_depth();
   }
 
   std::vector<GLfloat> positions_, colours_;

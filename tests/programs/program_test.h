@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "tests/e2e/support/gl_test.h"
 
@@ -53,6 +54,16 @@ class ProgramTest : public GlTest {
     EXPECT_EQ(program_int(p, GL_LINK_STATUS), GL_TRUE) << program_log(p);
     glUseProgram(p);
     return p;
+  }
+  // The whole window's colours (read_all) and 32-bit depths.
+  struct ColourAndDepth {
+    std::vector<uint8_t> colour;
+    std::vector<GLuint> depth;
+  };
+  ColourAndDepth read_colour_and_depth() {
+    ColourAndDepth out{read_all(), std::vector<GLuint>(size_t(width()) * height())};
+    glReadPixels(0, 0, width(), height(), GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, out.depth.data());
+    return out;
   }
 };
 

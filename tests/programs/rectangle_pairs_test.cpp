@@ -38,10 +38,7 @@ class RectanglePairsTest : public ProgramTest {
     for (GLuint a = 0; a < 3; ++a) glEnableVertexAttribArray(a);
   }
 
-  struct Image {
-    std::vector<uint8_t> colour;
-    std::vector<GLuint> depth;
-  };
+  using Image = ColourAndDepth;
   // `per_draw` vertices a draw (6: a sprite; 3: a triangle) or all at once (0).
   Image draw(int per_draw) {
     glClearColor(0, 0, 0, 0);
@@ -50,9 +47,7 @@ class RectanglePairsTest : public ProgramTest {
     const int count = kSprites * 6;
     for (int first = 0; first < count; first += per_draw ? per_draw : count)
       glDrawArrays(GL_TRIANGLES, first, per_draw ? per_draw : count);
-    Image out{read_all(), std::vector<GLuint>(size_t(width()) * height())};
-    glReadPixels(0, 0, width(), height(), GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, out.depth.data());
-    return out;
+    return read_colour_and_depth();
   }
 
   static constexpr int kSprites = 400;
