@@ -40,6 +40,7 @@
 #include "state/stencil_faces.h"
 #include "state/textures/tex_env_state.h"
 #include "state/transformed_vertices.h"
+#include "state/vertex_arrays/held_draws.h"
 #include "state/vertex_arrays/index_runs.h"
 #include "state/vertex_arrays/vertex_fetch_plan.h"
 #include "state/textures/texture_object.h"
@@ -176,10 +177,14 @@ class Context {
   // `shared`: it holds the share group's lock); so does whatever changes state outside such calls.
   StateKey state_key() const { return {state_changes_, share_group_->changes.load(std::memory_order_relaxed)}; }
   void count_state_call(bool shared) {
+    if (!held_draws.elements.empty()) draw_held_back(*this);
     ++state_changes_;
     if (shared) share_group_->changes.store(share_group_->changes.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
   }
-  void note_state_changed() { ++state_changes_; }
+  void note_state_changed() {
+    if (!held_draws.elements.empty()) draw_held_back(*this);
+    ++state_changes_;
+  }
 
   // Display-list compilation (glNewList .. glEndList).
   bool compiling_list() const { return compilation.name != 0; }
@@ -188,10 +193,16 @@ class Context {
 
   raster::Renderer& renderer() { return *renderer_; }
   // The queued rendering done; the caller may then write the framebuffer's memory.
-  void finish() { renderer_->flush(); }
+  void finish() {
+    if (!held_draws.elements.empty()) draw_held_back(*this);
+    renderer_->flush();
+  }
   // The same for a caller that only reads it (glFinish, swaps, glReadPixels): tiles known to
   // hold a clear's value stay known (raster/cleared_tiles.h).
-  void finish_for_reading() { renderer_->flush_for_reading(); }
+  void finish_for_reading() {
+    if (!held_draws.elements.empty()) draw_held_back(*this);
+    renderer_->flush_for_reading();
+  }
 
   // ---- state, read and written by the state/ implementation files ----
  private:
@@ -212,7 +223,9 @@ class Context {
   struct ArraysReady {
     StateKey state;
     size_t elements = 0;
+    bool client_memory = false;  // an enabled array reads client memory (no buffer object)
   } arrays_known_ready;
+  HeldDraws held_draws;  // state/vertex_arrays/held_draws.h
   std::vector<raster::VertexInput> fetched;   // room for a draw's client-array vertices (its first ones); only grows
   std::vector<uint32_t> fetched_elements;     // a draw's array elements, for a shader reading them directly
   std::vector<uint8_t> copied_pixels;         // glCopyTex(Sub)Image's colour rectangle; only grows

@@ -279,6 +279,7 @@ void draw_in_runs(Context& ctx, raster::Primitive primitive, const ArrayVertices
 }  // namespace
 
 void draw_array_vertices(Context& ctx, GLenum mode, const ArrayVertices& vertices, std::span<const uint32_t> indices) {
+  if (!ctx.held_draws.elements.empty()) draw_held_back(ctx);  // they come first
   if (!ctx.draw_drawable() || vertices.count == 0) return;
   if (ctx.programs.active() && vertex_shader_reads_generic_attributes_only(ctx)) {
     // The shader reads each input straight from its array: no vertex is fetched before.

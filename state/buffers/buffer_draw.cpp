@@ -29,9 +29,10 @@ bool arrays_ready(Context& ctx, size_t last_index) {
   Context::ArraysReady& known = ctx.arrays_known_ready;
   const StateKey key = ctx.state_key();
   if (key == known.state && last_index < known.elements) return true;
-  bool mapped = false;
+  bool mapped = false, client_memory = false;
   size_t elements = SIZE_MAX;  // that every enabled buffer-backed array holds
   for_each_array(ctx, [&](const ClientArray& a) {
+    client_memory |= a.active() && !a.buffer;
     if (!a.active() || !a.buffer) return;
     mapped |= a.buffer->mapped;
     const size_t bytes = element_bytes(a, &a == &ctx.edge_flag_array);  // array_element's test
@@ -43,7 +44,8 @@ bool arrays_ready(Context& ctx, size_t last_index) {
     ctx.record_error(GL_INVALID_OPERATION, "the buffer of an enabled array is mapped");
     return false;
   }
-  known = {key, elements};
+  for (const GenericArray& a : ctx.programs.arrays) client_memory |= a.active() && !a.buffer;
+  known = {key, elements, client_memory};
   return last_index < elements;
 }
 

@@ -15,6 +15,8 @@
 #include "state/programs/generic_attribs.h"
 #include "state/enum_translate.h"
 #include "state/render_mode_get.h"
+#include "state/vertex_arrays/array_elements.h"
+#include "state/vertex_arrays/held_draws.h"
 #include "state/vertex_arrays/vertex_fetch.h"
 
 namespace pineda::gl {
@@ -44,30 +46,6 @@ bool valid_mode(Context& ctx, GLenum mode) {
 // OpenGL ES 2.0: attribute 0 is not special, a program draws with any arrays or none.
 bool can_fetch(const Context& ctx) {
   return ctx.vertex_array.active() || ctx.programs.arrays[0].active() || (ctx.es2() && ctx.programs.active());
-}
-
-// The vertices of array elements index_of(i), i < count.
-template <typename IndexOf>
-ArrayVertices array_elements(Context& ctx, size_t count, IndexOf index_of) {
-  const auto elements = [index_of](size_t begin, size_t end, uint32_t* out) {
-    for (size_t i = begin; i < end; ++i) out[i - begin] = static_cast<uint32_t>(std::min<size_t>(index_of(i), UINT32_MAX - 1));
-  };
-  if (vertex_shader_reads_generic_attributes_only(ctx)) {
-    return {count,
-            [&ctx, index_of](size_t begin, size_t end, raster::VertexInput* out) {
-              for (size_t i = begin; i < end; ++i) fetch_vertex_source(ctx, index_of(i), out[i - begin]);
-            },
-            elements};
-  }
-  if (const StateKey key = ctx.state_key(); key != ctx.vertex_fetch_planned) {
-    ctx.vertex_fetch_plan.build(ctx);
-    ctx.vertex_fetch_planned = key;
-  }
-  return {count,
-          [&plan = ctx.vertex_fetch_plan, index_of](size_t begin, size_t end, raster::VertexInput* out) {
-            for (size_t i = begin; i < end; ++i) plan.fetch(index_of(i), out[i - begin]);
-          },
-          elements};
 }
 
 template <typename Index>
@@ -146,7 +124,11 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (first < 0) return ctx.record_error(GL_INVALID_VALUE, "first is negative");
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
-  draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [first](size_t i) { return size_t(first) + i; }), {});
+  if (!hold_back_draw(ctx, mode, first, count)) {
+    const uint64_t errors = ctx.errors_recorded();
+    draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [first](size_t i) { return size_t(first) + i; }), {});
+    note_draw_ran(ctx, mode, ctx.errors_recorded() == errors);
+  }
   take_current_index(ctx, size_t(first) + count - 1);  // GL leaves it indeterminate: the last element's
 }
 

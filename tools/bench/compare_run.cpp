@@ -152,12 +152,15 @@ void noteFragmentCounts(const SceneResult& pineda, const SceneResult& llvmpipe) 
                 llvmpipe.fragments);
 }
 
-// The draw-call scenes: the calling thread's time per call (the calls alone, before glFinish).
+// The draw-call scenes: the calling thread's time per call (the calls alone, before glFinish),
+// and the frame's time per call (microsecondsPerDraw: Pineda runs held-back draws at glFinish).
 void notePerDraw(const SceneResult& pineda, const std::optional<SceneResult>& llvmpipe) {
   if (pineda.drawCalls <= 0) return;
   std::printf("  note: %ld draw calls a frame; calling thread us/draw: Pineda %.3f", pineda.drawCalls,
               microsecondsPerDraw(pineda));
   if (llvmpipe) std::printf(", llvmpipe %.3f", microsecondsPerDraw(*llvmpipe));
+  std::printf("; frame us/draw: Pineda %.3f", frameMicrosecondsPerDraw(pineda));
+  if (llvmpipe) std::printf(", llvmpipe %.3f", frameMicrosecondsPerDraw(*llvmpipe));
   std::printf("\n");
 }
 

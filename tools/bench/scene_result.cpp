@@ -33,6 +33,10 @@ double microsecondsPerDraw(const SceneResult& result) {
   return result.drawCalls > 0 ? result.submitMs * 1000.0 / double(result.drawCalls) : 0;
 }
 
+double frameMicrosecondsPerDraw(const SceneResult& result) {
+  return result.drawCalls > 0 ? result.medianMs * 1000.0 / double(result.drawCalls) : 0;
+}
+
 std::string formatResultLine(const SceneResult& result) {
   char buffer[256];
   std::snprintf(buffer, sizeof buffer, "%.*s %s %.6f %.6f %ld %ld %d %ld %.6f", int(kResultTag.size()),

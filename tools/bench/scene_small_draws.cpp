@@ -2,7 +2,7 @@
 // (a 160x125 grid of small smooth-shaded triangles, about 18 pixels each at 1024x768) from one
 // vertex buffer object, each call drawing its own three vertices; fixed function (small_draws)
 // or through a GLSL 1.20 program whose uniforms stay as they are (glsl_small_draws). The bench
-// reports the calling thread's time per draw.
+// reports the calling thread's time per draw and the frame's.
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>

@@ -1,0 +1,59 @@
+#include "state/vertex_arrays/held_draws.h"
+
+#include <new>
+#include <stdexcept>
+#include <utility>
+
+#include "state/context.h"
+#include "state/draw.h"
+#include "state/vertex_arrays/array_elements.h"
+
+namespace pineda {
+namespace {
+
+// At most this many vertices wait (a few hundred kilobytes of elements; the renderer takes
+// draws in pieces of its own).
+constexpr size_t kMaxHeldElements = size_t{1} << 16;
+
+}  // namespace
+
+bool hold_back_draw(Context& ctx, GLenum mode, GLint first, GLsizei count) {
+  HeldDraws& held = ctx.held_draws;
+  if (mode != GL_TRIANGLES || count % 3 != 0 || !held.ready || held.ready_state != ctx.state_key()) return false;
+  // Another context of the group could change a buffer the held draws read before they run.
+  if (ctx.share_group()->members.load(std::memory_order_relaxed) > 1) return false;
+  if (held.elements.size() + static_cast<size_t>(count) > kMaxHeldElements) return false;
+  for (GLsizei i = 0; i < count; ++i) held.elements.push_back(static_cast<uint32_t>(first + i));
+  return true;
+}
+
+void note_draw_ran(Context& ctx, GLenum mode, bool clean) {
+  HeldDraws& held = ctx.held_draws;
+  const StateKey key = ctx.state_key();
+  // Client memory may change between the calls without a GL call; lists, feedback and
+  // selection draw their own ways. The arrays' check (arrays_ready) must be of this state.
+  held.ready = clean && mode == GL_TRIANGLES && ctx.list_depth == 0 && !ctx.compiling_list() &&
+               ctx.render_mode.mode == GL_RENDER && ctx.arrays_known_ready.state == key &&
+               !ctx.arrays_known_ready.client_memory;
+  held.ready_state = key;
+}
+
+void draw_held_back(Context& ctx) {
+  // Taken out first: the draw may note a change of state, which would draw them again.
+  std::vector<uint32_t> elements;
+  elements.swap(ctx.held_draws.elements);
+  const char* const call = std::exchange(ctx.current_call, "glDrawArrays");
+  try {
+    draw_array_vertices(ctx, GL_TRIANGLES,
+                        array_elements(ctx, elements.size(), [&elements](size_t i) { return size_t{elements[i]}; }), {});
+  } catch (const std::bad_alloc&) {  // (the calls that may draw them catch nothing before)
+    ctx.record_error(GL_OUT_OF_MEMORY, "the memory this call needs could not be allocated");
+  } catch (const std::length_error&) {
+    ctx.record_error(GL_OUT_OF_MEMORY, "the memory this call needs could not be allocated");
+  }
+  ctx.current_call = call;
+  elements.clear();
+  if (ctx.held_draws.elements.empty()) ctx.held_draws.elements.swap(elements);  // its room, for the next ones
+}
+
+}  // namespace pineda
