@@ -48,14 +48,9 @@ bool can_fetch(const Context& ctx) {
   return ctx.vertex_array.active() || ctx.programs.arrays[0].active() || (ctx.es2() && ctx.programs.active());
 }
 
+// A draw of indexed elements, its indices in [lo, hi].
 template <typename Index>
-void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {
-  Index lo = indices[0], hi = indices[0];
-  for (GLsizei i = 1; i < count; ++i) {
-    lo = std::min(lo, indices[i]);
-    hi = std::max(hi, indices[i]);
-  }
-  if (!arrays_ready(ctx, hi)) return;
+void draw_indexed_now(Context& ctx, GLenum mode, GLsizei count, const Index* indices, Index lo, Index hi) {
   const size_t range = size_t(hi) - lo + 1;
   if (range <= size_t(count) * 4) {
     // Dense indices: transform each referenced vertex once and pass the indices along.
@@ -74,6 +69,24 @@ void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices
   } else {
     draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [indices](size_t i) { return size_t(indices[i]); }), {});
   }
+}
+
+template <typename Index>
+void draw_indexed(Context& ctx, GLenum mode, GLsizei count, const Index* indices) {
+  Index lo = indices[0], hi = indices[0];
+  for (GLsizei i = 1; i < count; ++i) {
+    lo = std::min(lo, indices[i]);
+    hi = std::max(hi, indices[i]);
+  }
+  if (!arrays_ready(ctx, hi)) return;
+  if (count <= kMaxHeldIndices && may_hold_back(ctx, mode, count)) {
+    hold_back(ctx.held_draws, count, [indices](GLsizei i) { return indices[i]; });
+    take_current_index(ctx, indices[count - 1]);
+    return;
+  }
+  const uint64_t errors = ctx.errors_recorded();
+  draw_indexed_now(ctx, mode, count, indices, lo, hi);
+  note_draw_ran(ctx, mode, ctx.errors_recorded() == errors);
   take_current_index(ctx, indices[count - 1]);  // GL leaves it indeterminate: the last element's
 }
 
@@ -124,7 +137,9 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (first < 0) return ctx.record_error(GL_INVALID_VALUE, "first is negative");
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
-  if (!hold_back_draw(ctx, mode, first, count)) {
+  if (may_hold_back(ctx, mode, count)) {
+    hold_back(ctx.held_draws, count, [first](GLsizei i) { return first + i; });
+  } else {
     const uint64_t errors = ctx.errors_recorded();
     draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [first](size_t i) { return size_t(first) + i; }), {});
     note_draw_ran(ctx, mode, ctx.errors_recorded() == errors);

@@ -18,14 +18,12 @@ constexpr size_t kMaxHeldElements = 4096;
 
 }  // namespace
 
-bool hold_back_draw(Context& ctx, GLenum mode, GLint first, GLsizei count) {
-  HeldDraws& held = ctx.held_draws;
+bool may_hold_back(const Context& ctx, GLenum mode, GLsizei count) {
+  const HeldDraws& held = ctx.held_draws;
   if (mode != GL_TRIANGLES || count % 3 != 0 || !held.ready || held.ready_state != ctx.state_key()) return false;
   // Another context of the group could change a buffer the held draws read before they run.
   if (ctx.share_group()->members.load(std::memory_order_relaxed) > 1) return false;
-  if (held.elements.size() + static_cast<size_t>(count) > kMaxHeldElements) return false;
-  for (GLsizei i = 0; i < count; ++i) held.elements.push_back(static_cast<uint32_t>(first + i));
-  return true;
+  return held.elements.size() + static_cast<size_t>(count) <= kMaxHeldElements;
 }
 
 void note_draw_ran(Context& ctx, GLenum mode, bool clean) {

@@ -1,5 +1,5 @@
-// Consecutive glDrawArrays(GL_TRIANGLES) calls with nothing changed between them, run as one
-// draw: a program of many small draws pays the vertex stage, the draw's set-up and the
+// Consecutive glDrawArrays and glDrawElements calls of GL_TRIANGLES with nothing changed between
+// them, run as one draw: a program of many small draws pays the vertex stage, the draw's set-up and the
 // renderer's per-draw work once per run of them instead of once per call (glsl_small_draws'
 // 20000 calls of one triangle each). A held-back draw runs before anything that could tell:
 // every GL call but the draws and glGetError (Context::count_state_call), any other change of
@@ -26,12 +26,22 @@ struct HeldDraws {
   StateKey ready_state;
 };
 
-// Takes glDrawArrays(mode, first, count), its checks passed, as a held-back draw when it may
-// be; false when it must run now.
-bool hold_back_draw(Context& ctx, GLenum mode, GLint first, GLsizei count);
+// Whether a glDrawArrays or glDrawElements of `count` vertices in `mode`, its checks passed,
+// may be held back (hold_back) rather than run now.
+bool may_hold_back(const Context& ctx, GLenum mode, GLsizei count);
 
-// After glDrawArrays ran a draw at once: whether the calls after it, in the state it left,
-// may be held back (`clean`: it recorded no error).
+// An indexed draw is held back only up to this many indices: held draws run every index's
+// vertex through the vertex stage, where a draw of its own runs each vertex it names once.
+constexpr GLsizei kMaxHeldIndices = 96;
+
+// Holds back the vertices of such a draw: array elements element_of(i), i < count.
+template <typename ElementOf>
+void hold_back(HeldDraws& held, GLsizei count, ElementOf element_of) {
+  for (GLsizei i = 0; i < count; ++i) held.elements.push_back(static_cast<uint32_t>(element_of(i)));
+}
+
+// After a glDrawArrays or glDrawElements ran at once: whether the calls after it, in the state
+// it left, may be held back (`clean`: it recorded no error).
 void note_draw_ran(Context& ctx, GLenum mode, bool clean);
 
 // Runs the held-back draws, if any, as one draw of GL_TRIANGLES.

@@ -1,7 +1,8 @@
-// Consecutive glDrawArrays(GL_TRIANGLES) calls with nothing changed between them are held back
-// and run as one draw (state/vertex_arrays/held_draws.h): the pixels, depths, query counts and
-// errors are those of the calls run one at a time, and held draws run before whatever follows
-// them (a uniform, new buffer contents) and never read client memory after their call.
+// Consecutive glDrawArrays and glDrawElements calls of GL_TRIANGLES with nothing changed
+// between them are held back and run as one draw (state/vertex_arrays/held_draws.h): the pixels,
+// depths, query counts and errors are those of the calls run one at a time, and held draws run
+// before whatever follows them (a uniform, new buffer contents) and never read client memory
+// after their call.
 #include <random>
 #include <vector>
 
@@ -65,25 +66,32 @@ class HeldDrawsTest : public ProgramTest {
     }
     return out;
   }
+  // Triangle t of the buffer: glDrawArrays, or with `indexed` glDrawElements of its three
+  // vertices named from the second on.
+  static void draw_triangle(int t, bool indexed) {
+    if (!indexed) return glDrawArrays(GL_TRIANGLES, 3 * t, 3);
+    const GLushort indices[3] = {GLushort(3 * t + 1), GLushort(3 * t + 2), GLushort(3 * t)};
+    glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_SHORT, indices);
+  }
   // A query that is not a draw between each two: every draw runs at its call.
-  static void draw_each_at_once(int triangles) {
+  static void draw_each_at_once(int triangles, bool indexed = false) {
     for (int t = 0; t < triangles; ++t) {
-      glDrawArrays(GL_TRIANGLES, 3 * t, 3);
+      draw_triangle(t, indexed);
       GLint viewport[4];
       glGetIntegerv(GL_VIEWPORT, viewport);
     }
   }
-  static void draw_each(int triangles) {
-    for (int t = 0; t < triangles; ++t) glDrawArrays(GL_TRIANGLES, 3 * t, 3);
+  static void draw_each(int triangles, bool indexed = false) {
+    for (int t = 0; t < triangles; ++t) draw_triangle(t, indexed);
   }
   // The triangles of the buffer, depth-tested, drawn a call each: held back, and each run at its
   // call, give the same pixels and depths, most of the window drawn. Returns the held ones'.
-  ColourAndDepth expect_held_as_at_once(int triangles) {
+  ColourAndDepth expect_held_as_at_once(int triangles, bool indexed = false) {
     glEnable(GL_DEPTH_TEST);
-    draw_each_at_once(triangles);
+    draw_each_at_once(triangles, indexed);
     const ColourAndDepth at_once = read_colour_and_depth();
     clear();
-    draw_each(triangles);
+    draw_each(triangles, indexed);
     ColourAndDepth held = read_colour_and_depth();
     EXPECT_EQ(held.colour, at_once.colour);
     EXPECT_EQ(held.depth, at_once.depth);
@@ -125,6 +133,29 @@ TEST_F(HeldDrawsTest, FixedFunctionDrawsGiveThePixelsOfDrawsRunOneAtATime) {
   expect_held_as_at_once(kTriangles);
 }
 
+TEST_F(HeldDrawsTest, IndexedDrawsGiveThePixelsOfDrawsRunOneAtATime) {
+  constexpr int kTriangles = 600;
+  use_buffer(random_triangles(kTriangles));
+  expect_held_as_at_once(kTriangles, true);
+}
+
+// Held array and indexed draws run in their calls' order: the later one's colour shows where
+// they overlap.
+TEST_F(HeldDrawsTest, HeldArrayAndIndexedDrawsKeepTheirOrder) {
+  std::vector<GLfloat> vertices;
+  add_triangle(vertices, -1.f, -1.f, 0.5f, 0.f, kHeldBlue);  // runs at its call
+  add_triangle(vertices, -0.8f, 0.f, 1.f, 0.f, kHeldRed);
+  add_triangle(vertices, -0.5f, 0.f, 1.f, 0.f, kHeldGreen);
+  use_buffer(vertices);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  draw_triangle(1, true);
+  glDrawArrays(GL_TRIANGLES, 6, 3);
+  draw_triangle(1, true);
+  EXPECT_EQ(at(-0.9f, -0.9f), (Rgba{0, 0, 255, 255}));
+  EXPECT_EQ(at(-0.45f, 0.1f), (Rgba{255, 0, 0, 255}));  // the last draw's
+  EXPECT_EQ(at(0.3f, 0.1f), (Rgba{0, 255, 0, 255}));
+}
+
 // The second red triangle is held back when the tint changes: it stays red, and the green one
 // drawn after it covers it where they overlap.
 TEST_F(HeldDrawsTest, HeldDrawsRunBeforeTheNextCall) {
@@ -144,8 +175,8 @@ TEST_F(HeldDrawsTest, HeldDrawsRunBeforeTheNextCall) {
   EXPECT_EQ(at(0.6f, 0.6f), (Rgba{0, 0, 0, 0}));        // none
 }
 
-// A draw that is not held (glDrawElements) runs after the held ones: where it overlaps the
-// held red triangle, its green shows.
+// A draw that is not held (a triangle fan) runs after the held ones: where it overlaps the held
+// red triangle, its green shows.
 TEST_F(HeldDrawsTest, HeldDrawsRunBeforeTheNextDrawOfAnotherKind) {
   std::vector<GLfloat> vertices;
   add_triangle(vertices, -1.f, -1.f, 0.5f, 0.f, kHeldBlue);
@@ -154,8 +185,7 @@ TEST_F(HeldDrawsTest, HeldDrawsRunBeforeTheNextDrawOfAnotherKind) {
   use_buffer(vertices);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDrawArrays(GL_TRIANGLES, 3, 3);
-  const GLubyte green[3] = {6, 7, 8};
-  glDrawElements(GL_TRIANGLES, 3, GL_UNSIGNED_BYTE, green);
+  glDrawArrays(GL_TRIANGLE_FAN, 6, 3);
   EXPECT_EQ(at(-0.75f, 0.1f), (Rgba{255, 0, 0, 255}));
   EXPECT_EQ(at(-0.45f, 0.1f), (Rgba{0, 255, 0, 255}));
   EXPECT_EQ(at(0.3f, 0.1f), (Rgba{0, 255, 0, 255}));
