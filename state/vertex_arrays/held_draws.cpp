@@ -12,8 +12,8 @@ namespace pineda {
 namespace {
 
 // At most this many vertices wait: a run's vertex outputs, windows and varyings then stay in the
-// cache from one stage to the next (glsl_small_draws, one thread: 7.0 ms a frame with 65536,
-// 6.0 with 4096; 2048 and 8192 about as 4096, 1024 slower).
+// cache from one stage to the next (glsl_small_draws, one thread: 7.05 ms a frame with 65536,
+// 6.22 with 4096, medians of five; 2048 and 8192 about as 4096, 1024 slower).
 constexpr size_t kMaxHeldElements = 4096;
 
 }  // namespace
@@ -45,7 +45,7 @@ void draw_held_back(Context& ctx) {
   try {
     draw_array_vertices(ctx, GL_TRIANGLES,
                         array_elements(ctx, elements.size(), [&elements](size_t i) { return size_t{elements[i]}; }), {});
-  } catch (const std::bad_alloc&) {  // (the calls that may draw them catch nothing before)
+  } catch (const std::bad_alloc&) {  // (count_state_call runs before an entry point's try block)
     ctx.record_error(GL_OUT_OF_MEMORY, "the memory this call needs could not be allocated");
   } catch (const std::length_error&) {
     ctx.record_error(GL_OUT_OF_MEMORY, "the memory this call needs could not be allocated");
