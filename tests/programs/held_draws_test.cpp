@@ -3,6 +3,7 @@
 // depths, query counts and errors are those of the calls run one at a time, and held draws run
 // before whatever follows them (a uniform, new buffer contents) and never read client memory
 // after their call.
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -42,8 +43,12 @@ class HeldDrawsTest : public ProgramTest {
   }
   // The attributes at `base` (an offset into the bound buffer, or client memory).
   static void point_at(const GLfloat* base) {
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(GLfloat), base);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(GLfloat), base + 3);
+    // Integer arithmetic: the buffer's offset 0 is a null pointer, which C++ forbids offsetting.
+    const auto at = [base](size_t floats) {
+      return reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(base) + floats * sizeof(GLfloat));
+    };
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(GLfloat), at(0));
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(GLfloat), at(3));
     glEnableVertexAttribArray(0);
     glEnableVertexAttribArray(1);
   }
