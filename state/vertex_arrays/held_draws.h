@@ -1,10 +1,10 @@
-// Consecutive glDrawArrays and glDrawElements calls of GL_TRIANGLES with nothing changed between
-// them, run as one draw: a program of many small draws pays the vertex stage, the draw's set-up and the
-// renderer's per-draw work once per run of them instead of once per call (glsl_small_draws'
-// 20000 calls of one triangle each). A held-back draw runs before anything that could tell:
-// every GL call but the draws and glGetError (Context::count_state_call), any other change of
-// state (Context::note_state_changed), another draw, and every finish (glFinish, glFlush,
-// swaps, reading the framebuffer).
+// Consecutive glDrawArrays and glDrawElements calls of GL_TRIANGLES with nothing changed
+// between them, run as one draw: a program of many small draws pays the vertex stage, the draw's
+// set-up and the renderer's per-draw work once per run of them instead of once per call
+// (glsl_small_draws' 20000 calls of one triangle each). A held-back draw runs before anything
+// that could tell: every GL call but the draws and glGetError (Context::count_state_call), any
+// other change of state (Context::note_state_changed), another draw that is not held, and every
+// finish (glFinish, glFlush, swaps, reading the framebuffer).
 #pragma once
 #include <GL/gl.h>
 
@@ -19,9 +19,9 @@ class Context;
 
 struct HeldDraws {
   std::vector<uint32_t> elements;  // the held-back triangles' array elements, in order
-  // Set by a glDrawArrays that ran at once in state `ready_state` without recording an error
-  // (so that a held-back call records each error its own run would at the call): while the
-  // state stays that, the next such calls may be held back.
+  // Set by a glDrawArrays or glDrawElements that ran at once in state `ready_state` without
+  // recording an error (so that a held-back call records each error its own run would at the
+  // call): while the state stays that, the next such calls may be held back.
   bool ready = false;
   StateKey ready_state;
 };

@@ -18,10 +18,11 @@ struct SceneResult {
 };
 
 // The calling thread's microseconds per draw call (submitMs over drawCalls); 0 when not reported.
-// Pineda holds back draws made with nothing changed since the last and runs them at the next
-// other call (glFinish here): their work is then outside the calls' time, and inside the frame's.
+// Pineda holds back draws made with nothing changed since the last and runs them at a later call
+// (a later draw, or glFinish): the work of the last ones is outside the calls' time, inside the
+// frame's.
 double microsecondsPerDraw(const SceneResult& result);
-// The frame's microseconds per draw call (medianMs over drawCalls): everything a call costs.
+// The frame's wall-clock microseconds per draw call (medianMs over drawCalls).
 double frameMicrosecondsPerDraw(const SceneResult& result);
 
 double megaTrianglesPerSecond(const SceneResult& result);
