@@ -138,9 +138,7 @@ void DrawArrays(Context& ctx, GLenum mode, GLint first, GLsizei count) {
   if (!check_draw_framebuffer(ctx)) return;
   if (count == 0 || !can_fetch(ctx) || !arrays_ready(ctx, size_t(first) + size_t(count) - 1)) return;
   if (may_hold_back(ctx, mode, count)) {
-    // Clamped as array_elements clamps them.
-    hold_back(ctx.held_draws, count,
-              [first](GLsizei i) { return std::min<size_t>(size_t(first) + size_t(i), UINT32_MAX - 1); });
+    hold_back(ctx.held_draws, count, [first](GLsizei i) { return size_t(first) + size_t(i); });
   } else {
     const uint64_t errors = ctx.errors_recorded();
     draw_array_vertices(ctx, mode, array_elements(ctx, size_t(count), [first](size_t i) { return size_t(first) + i; }), {});

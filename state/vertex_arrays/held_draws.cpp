@@ -20,7 +20,7 @@ constexpr size_t kMaxHeldElements = 4096;
 
 bool may_hold_back(const Context& ctx, GLenum mode, GLsizei count) {
   const HeldDraws& held = ctx.held_draws;
-  if (mode != GL_TRIANGLES || count % 3 != 0 || !held.ready || held.ready_state != ctx.state_key()) return false;
+  if (mode != GL_TRIANGLES || count % 3 != 0 || held.ready_state != ctx.state_key()) return false;
   // Another context of the group could change a buffer the held draws read before they run.
   if (ctx.share_group()->members.load(std::memory_order_relaxed) > 1) return false;
   return held.elements.size() + static_cast<size_t>(count) <= kMaxHeldElements;
@@ -31,10 +31,10 @@ void note_draw_ran(Context& ctx, GLenum mode, bool clean) {
   const StateKey key = ctx.state_key();
   // Client memory may change between the calls without a GL call; lists, feedback and
   // selection draw their own ways. The arrays' check (arrays_ready) must be of this state.
-  held.ready = clean && mode == GL_TRIANGLES && ctx.list_depth == 0 && !ctx.compiling_list() &&
-               ctx.render_mode.mode == GL_RENDER && ctx.arrays_known_ready.state == key &&
-               !ctx.arrays_known_ready.client_memory;
-  held.ready_state = key;
+  const bool ready = clean && mode == GL_TRIANGLES && ctx.list_depth == 0 && !ctx.compiling_list() &&
+                     ctx.render_mode.mode == GL_RENDER && ctx.arrays_known_ready.state == key &&
+                     !ctx.arrays_known_ready.client_memory;
+  held.ready_state = ready ? key : StateKey{};
 }
 
 void draw_held_back(Context& ctx) {

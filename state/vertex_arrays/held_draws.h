@@ -8,6 +8,8 @@
 #pragma once
 #include <GL/gl.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,10 +21,10 @@ class Context;
 
 struct HeldDraws {
   std::vector<uint32_t> elements;  // the held-back triangles' array elements, in order
-  // Set by a glDrawArrays or glDrawElements that ran at once in state `ready_state` without
-  // recording an error (so that a held-back call records each error its own run would at the
-  // call): while the state stays that, the next such calls may be held back.
-  bool ready = false;
+  // The state in which a glDrawArrays or glDrawElements that may be followed by held calls ran
+  // at once without recording an error (so that a held-back call records each error its own run
+  // would at the call): while the state stays that, the next such calls may be held back. A
+  // default key, which matches no state, when none may.
   StateKey ready_state;
 };
 
@@ -34,10 +36,12 @@ bool may_hold_back(const Context& ctx, GLenum mode, GLsizei count);
 // vertex through the vertex stage, where a draw of its own runs each vertex it names once.
 constexpr GLsizei kMaxHeldIndices = 96;
 
-// Holds back the vertices of such a draw: array elements element_of(i), i < count.
+// Holds back the vertices of such a draw: array elements element_of(i), i < count, clamped as
+// array_elements clamps them.
 template <typename ElementOf>
 void hold_back(HeldDraws& held, GLsizei count, ElementOf element_of) {
-  for (GLsizei i = 0; i < count; ++i) held.elements.push_back(static_cast<uint32_t>(element_of(i)));
+  for (GLsizei i = 0; i < count; ++i)
+    held.elements.push_back(static_cast<uint32_t>(std::min<size_t>(element_of(i), UINT32_MAX - 1)));
 }
 
 // After a glDrawArrays or glDrawElements ran at once: whether the calls after it, in the state
