@@ -89,15 +89,9 @@ bool sample_block_at_one_level(BlockSampler block, const TextureImage& image, co
 
 bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t, shader::LaneMask live,
                                         float* const out[4]) const {
-  // (sample_block_at_one_level's route for one level, without its checks: the quads without a
-  // live lane read the level as the others.)
-  if (unit >= 0 && unit < kMaxTextureImageUnits) {
-    const FastSamplers* known = chosen_samplers_ ? &(*chosen_samplers_)[static_cast<size_t>(unit)]
-                                : (chosen_ & (1u << unit)) ? &fast_[static_cast<size_t>(unit)] : nullptr;
-    if (known && known->level_zero_image) {
-      known->block(*known->level_zero_image, BlockLevels{}, s, t, out);
-      return true;
-    }
+  if (const FastSamplers* known = level_zero_route(unit)) {
+    known->block(*known->level_zero_image, BlockLevels{}, s, t, out);
+    return true;
   }
   const TextureUnit* tu = unit >= 0 && unit < kMaxTextureImageUnits ? &units_[unit] : nullptr;
   const TextureImage* image = tu && tu->image ? tu->image.get() : nullptr;
@@ -105,6 +99,24 @@ bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t
   const FastSamplers& f = fast_samplers(unit, *image);
   return f.block && sample_block_at_one_level(f.block, *image, tu->sampler, s, t, shader::LodMode::Implicit, nullptr,
                                               live, out);
+}
+
+bool UnitTextureAccess::sample_2d_blocks(int unit, int count, const float* const* s, const float* const* t,
+                                         shader::LaneMask live, float* const (*out)[4]) const {
+  if (const FastSamplers* known = level_zero_route(unit)) {
+    for (int k = 0; k < count; ++k) known->block(*known->level_zero_image, BlockLevels{}, s[k], t[k], out[k]);
+    return count > 0;
+  }
+  return TextureAccess::sample_2d_blocks(unit, count, s, t, live, out);
+}
+
+// sample_block_at_one_level's route for one level, without its checks (the quads without a live
+// lane read the level as the others), where the unit's samplers are chosen and have it.
+const FastSamplers* UnitTextureAccess::level_zero_route(int unit) const {
+  if (unit < 0 || unit >= kMaxTextureImageUnits) return nullptr;
+  const FastSamplers* known = chosen_samplers_ ? &(*chosen_samplers_)[static_cast<size_t>(unit)]
+                              : (chosen_ & (1u << unit)) ? &fast_[static_cast<size_t>(unit)] : nullptr;
+  return known && known->level_zero_image ? known : nullptr;
 }
 
 const FastSamplers& UnitTextureAccess::fast_samplers(int unit, const TextureImage& image) const {

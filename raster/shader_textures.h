@@ -23,10 +23,13 @@ class UnitTextureAccess final : public shader::TextureAccess {
               const float* lod, shader::LaneMask live, float (*out)[shader::kLanes]) const override;
   bool sample_2d_block(int unit, const float* s, const float* t, shader::LaneMask live,
                        float* const out[4]) const override;
+  bool sample_2d_blocks(int unit, int count, const float* const* s, const float* const* t, shader::LaneMask live,
+                        float* const (*out)[4]) const override;
 
  private:
   // The fast quad and block samplers of a unit's image for 2D lookups.
   const FastSamplers& fast_samplers(int unit, const TextureImage& image) const;
+  const FastSamplers* level_zero_route(int unit) const;
 
   const std::array<TextureUnit, kMaxTextureImageUnits>& units_;
   const std::array<FastSamplers, kMaxTextureImageUnits>* chosen_samplers_;

@@ -60,6 +60,43 @@ std::vector<char> feeds_lookups(ir::Code& code) {
   return feeds;
 }
 
+// The operands the instruction at `at` reads and writes (registers only).
+void registers_of(ir::Code& code, size_t at, std::vector<Operand>& reads, std::vector<Operand>& writes) {
+  reads.clear();
+  writes.clear();
+  ir::for_each_use(code, code.insts[at], [&](Operand& o) { if (o >= 0) reads.push_back(o); });
+  ir::for_each_def(code, code.insts[at], [&](Operand& o) { if (o >= 0) writes.push_back(o); });
+}
+
+// Moves each lookup down to just before the next lookup of its stretch when nothing between
+// them depends on it or it on them, from the last lookup up, so that the lookups of a stretch
+// end side by side (compiled code calls out once for such a run: jit::call_texture_run).
+bool group_texture_lookups(ir::Code& code) {
+  bool moved = false;
+  std::vector<Operand> reads, writes, between_reads, between_writes;
+  auto holds = [](const std::vector<Operand>& set, Operand o) { return std::find(set.begin(), set.end(), o) != set.end(); };
+  for (size_t at = code.insts.size(); at-- > 0;) {
+    if (code.insts[at].op != Op::Texture) continue;
+    size_t next = at + 1;
+    while (next < code.insts.size() && code.insts[next].op != Op::Texture && !ir::is_structure(code.insts[next].op) &&
+           code.insts[next].op != Op::Gather && code.insts[next].op != Op::Scatter)
+      ++next;
+    if (next == code.insts.size() || code.insts[next].op != Op::Texture || next == at + 1) continue;
+    registers_of(code, at, reads, writes);
+    bool independent = true;
+    for (size_t k = at + 1; k < next && independent; ++k) {
+      registers_of(code, k, between_reads, between_writes);
+      for (Operand o : between_reads) independent = independent && !holds(writes, o);
+      for (Operand o : between_writes) independent = independent && !holds(reads, o) && !holds(writes, o);
+    }
+    if (!independent) continue;
+    const auto first = code.insts.begin() + static_cast<std::ptrdiff_t>(at);
+    std::rotate(first, first + 1, code.insts.begin() + static_cast<std::ptrdiff_t>(next));
+    moved = true;
+  }
+  return moved;
+}
+
 }  // namespace
 
 bool move_texture_lookups_early(ir::Code& code) {
@@ -74,6 +111,7 @@ bool move_texture_lookups_early(ir::Code& code) {
   for (size_t at = 0; at < n; ++at) lookups[at] = code.insts[at].op == Op::Texture;
   for (size_t at = 0; at < n; ++at)
     if (lookups[at]) moved |= move_up(code, lookups, at);
+  moved |= group_texture_lookups(code);
   return moved;
 }
 

@@ -13,7 +13,9 @@ namespace pineda::shader {
 // discard), dynamic register indexing and the previous one of its kind (so both keep their
 // order). Values are
 // unchanged: a lookup depends only on its operands and the lanes that run, which do not change
-// within a stretch. Returns whether anything moved.
+// within a stretch. Then each lookup moves down to just before the next lookup of its stretch
+// when nothing between them depends on it or it on them, so that the stretch's lookups stand
+// side by side (compiled code calls out once for such a run). Returns whether anything moved.
 bool move_texture_lookups_early(ir::Code& code);
 
 }  // namespace pineda::shader

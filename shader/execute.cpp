@@ -281,6 +281,24 @@ void jit::call_texture(const Frame* frame, const FrameTextureLookup* t) {
   texture_lanes_of_frame(frame, t);
 }
 
+void jit::call_texture_run(const Frame* frame, const FrameTextureRun* run) {
+  auto lanes = [&](FrameOperand o) { return frame_lanes(*frame, o); };
+  if (run->one_2d_sampler && frame->textures && frame->mask == 0xFFFF && frame->needed) {
+    const float* s[kMaxTextureRun];
+    const float* t[kMaxTextureRun];
+    float* dst[kMaxTextureRun][4];
+    for (int k = 0; k < run->count; ++k) {
+      const FrameTextureLookup& l = *run->lookups[k];
+      s[k] = lanes(l.coord[0]);
+      t[k] = lanes(l.coord[1]);
+      for (int c = 0; c < 4; ++c) dst[k][c] = lanes(l.dst[c]);
+    }
+    const int unit = sampler_unit(lanes(run->lookups[0]->sampler)[0]);
+    if (frame->textures->sample_2d_blocks(unit, run->count, s, t, frame->needed, dst)) return;
+  }
+  for (int k = 0; k < run->count; ++k) call_texture(frame, run->lookups[k]);
+}
+
 bool runs_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mask) {
   return stage.compiled && compiled_code_fits(kind, blocks, mask);
 }

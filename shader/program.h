@@ -134,6 +134,15 @@ class TextureAccess {
     (void)unit, (void)s, (void)t, (void)live, (void)out;
     return false;
   }
+  // sample_2d_block for `count` lookups of one unit in order (lookup k reads s[k] and t[k] and
+  // writes out[k]; no lookup reads what an earlier one writes); false, with nothing written,
+  // where the unit has no such route (which depends on the unit alone).
+  virtual bool sample_2d_blocks(int unit, int count, const float* const* s, const float* const* t, LaneMask live,
+                                float* const (*out)[4]) const {
+    if (count < 1 || !sample_2d_block(unit, s[0], t[0], live, out[0])) return false;
+    for (int k = 1; k < count; ++k) sample_2d_block(unit, s[k], t[k], live, out[k]);
+    return true;
+  }
 };
 
 // One block of 16 fragments (value-initialize it, FragmentBlock{}, for zeros: the arrays have

@@ -59,11 +59,27 @@ bool called_out(Op op) {
          (op >= Op::Neg && op < Op::Count && !natively_emitted(op));
 }
 
+// How many texture lookups from instruction `at` on make one run (FrameTextureRun): those side by
+// side, none reading what an earlier one of the run writes.
+int texture_run_length(const std::vector<ir::Inst>& insts, const std::vector<ir::TextureLookup>& textures, size_t at) {
+  std::vector<Operand> written;
+  int n = 0;
+  for (size_t i = at; i < insts.size() && n < kMaxTextureRun && insts[i].op == Op::Texture; ++i, ++n) {
+    const ir::TextureLookup& t = textures[static_cast<size_t>(insts[i].i0)];
+    for (Operand o : {t.sampler, t.coord[0], t.coord[1], t.coord[2], t.coord[3], t.lod})
+      if (o != ir::kNone && std::find(written.begin(), written.end(), o) != written.end()) return n;
+    written.insert(written.end(), std::begin(t.dst), std::end(t.dst));
+  }
+  return n;
+}
+
 class Generator {
  public:
+  // `run_at[i]`: the run of lookups that starts at instruction i (null: none).
   Generator(const std::vector<ir::Inst>& insts, const std::vector<ir::TextureLookup>& textures, int registers, int slots,
-            const FrameCall* calls, const FrameTextureLookup* lookups)
-      : insts_(insts), textures_(textures), calls_(calls), lookups_(lookups), registers_(registers), slots_(slots) {
+            const FrameCall* calls, const FrameTextureLookup* lookups, std::vector<const FrameTextureRun*> run_at)
+      : insts_(insts), textures_(textures), calls_(calls), lookups_(lookups), run_at_(std::move(run_at)),
+        registers_(registers), slots_(slots) {
     const int constants = constant_count();
     values_ = registers + slots + constants;
     reads_.resize(static_cast<size_t>(values_));
@@ -193,7 +209,10 @@ class Generator {
       }
       if (in.op == Op::Pow || in.op == Op::Exp || in.op == Op::Exp2 || in.op == Op::Sin || in.op == Op::Cos)
         library_op(i, stable_insts + i);
-      else if (called_out(in.op)) call(i, stable_insts + i);
+      else if (const FrameTextureRun* run = run_at_[static_cast<size_t>(i)]) {
+        call_run(i, *run);
+        i += run->count - 1;
+      } else if (called_out(in.op)) call(i, stable_insts + i);
       else native(i, in);
     }
     epilogue();
@@ -488,6 +507,13 @@ class Generator {
     if (stable->op == Op::Texture) emit_call(&call_texture, &lookups_[stable->i0]);
     else emit_call(&call_out, &calls_[at]);
   }
+  // A run of lookups from instruction `at` on, as call() makes each in turn.
+  void call_run(int at, const FrameTextureRun& run) {
+    flush_registers(at);
+    for (int k = at; k < at + run.count; ++k)
+      for (Operand o : sources(insts_[static_cast<size_t>(k)], k)) zero_home_if_unwritten(id(o), k);
+    emit_call(&call_texture_run, &run);
+  }
   // function(frame, operands); then the fixed registers and k7 again.
   template <typename Operands>
   void emit_call(void (*function)(const Frame*, const Operands*), const Operands* operands) {
@@ -740,6 +766,7 @@ class Generator {
   const std::vector<ir::TextureLookup>& textures_;
   const FrameCall* calls_;             // insts_' operands found, at addresses that stay
   const FrameTextureLookup* lookups_;  // textures_' likewise
+  const std::vector<const FrameTextureRun*> run_at_;
   int registers_, slots_, values_ = 0;
   std::vector<std::vector<int>> reads_, writes_;
   std::vector<int> where_;
@@ -776,7 +803,30 @@ std::unique_ptr<CompiledStage> CompiledStage::compile(const std::vector<ir::Inst
     f.sampler = frame_operand(t.sampler, registers);
     f.lod = frame_operand(t.lod, registers);
   }
-  Generator generator(insts, textures, registers, slots, stage->calls_.data(), stage->lookups_.data());
+  std::vector<size_t> run_starts;
+  for (size_t i = 0; i < insts.size(); ++i) {
+    const int n = insts[i].op == Op::Texture ? texture_run_length(insts, textures, i) : 0;
+    if (n > 1) run_starts.push_back(i);
+    if (n > 1) i += static_cast<size_t>(n - 1);
+  }
+  stage->runs_.resize(run_starts.size());
+  std::vector<const FrameTextureRun*> run_at(insts.size(), nullptr);
+  for (size_t r = 0; r < run_starts.size(); ++r) {
+    FrameTextureRun& run = stage->runs_[r];
+    const size_t first = run_starts[r];
+    run.count = texture_run_length(insts, textures, first);
+    const ir::TextureLookup& head = textures[static_cast<size_t>(insts[first].i0)];
+    run.one_2d_sampler = true;
+    for (int k = 0; k < run.count; ++k) {
+      const int index = insts[first + static_cast<size_t>(k)].i0;
+      const ir::TextureLookup& t = textures[static_cast<size_t>(index)];
+      run.lookups[k] = &stage->lookups_[static_cast<size_t>(index)];
+      run.one_2d_sampler = run.one_2d_sampler && t.kind == SamplerKind::Tex2D && t.mode == LodMode::Implicit &&
+                           t.sampler == head.sampler;
+    }
+    run_at[first] = &run;
+  }
+  Generator generator(insts, textures, registers, slots, stage->calls_.data(), stage->lookups_.data(), std::move(run_at));
   if (!generator.generate(insts.data())) return nullptr;
   const std::vector<uint8_t>& bytes = generator.bytes();
   void* memory = mmap(nullptr, bytes.size(), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);

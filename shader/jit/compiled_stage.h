@@ -32,6 +32,7 @@ class CompiledStage {
   using Entry = void (*)(Frame*);
   std::vector<FrameCall> calls_;               // the call-outs, by instruction: the code holds their addresses
   std::vector<FrameTextureLookup> lookups_;  // likewise, by TextureLookup index
+  std::vector<FrameTextureRun> runs_;        // likewise, in the code's order
   void* memory_ = nullptr;
   size_t size_ = 0;
   Entry entry_ = nullptr;

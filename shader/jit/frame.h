@@ -58,4 +58,16 @@ struct FrameTextureLookup {
 // A texture lookup of the compiled code, as the interpreter does it.
 void call_texture(const Frame* frame, const FrameTextureLookup* t);
 
+// Lookups side by side in the code, none reading what an earlier one writes: one call-out for
+// all (TextureAccess::sample_2d_blocks when they are 2D lookups of one sampler).
+constexpr int kMaxTextureRun = 8;
+struct FrameTextureRun {
+  int count = 0;
+  bool one_2d_sampler = false;  // every lookup Tex2D and Implicit, with the same sampler operand
+  const FrameTextureLookup* lookups[kMaxTextureRun] = {};
+};
+
+// The run's lookups, as call_texture does each in order.
+void call_texture_run(const Frame* frame, const FrameTextureRun* run);
+
 }  // namespace pineda::shader::jit

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <xmmintrin.h>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstring>
@@ -44,11 +45,12 @@ struct Block {
 // Runs `stage` over `block` with the compiled code or the interpreter; returns colour 0's lanes
 // and the vertex outputs.
 std::vector<uint32_t> run(const StageCode& stage, Stage kind, Block block, const std::vector<float>& uniforms,
-                          bool compiled) {
+                          bool compiled, const TextureAccess* textures) {
   StageCode copy = stage;
   if (!compiled) copy.compiled = nullptr;
   LaneIo io;
   io.uniforms = uniforms.data();
+  io.textures = textures;
   std::vector<float> outputs(8 * kLanes, 0.0f);
   block.fragment.varyings = block.varyings.data();
   io.blocks[0] = &block.fragment;
@@ -86,7 +88,7 @@ bool is_nan(uint32_t bits) { return (bits & 0x7F800000u) == 0x7F800000u && (bits
 
 // Both tiers over many random blocks (of special values by default); the stage must have compiled.
 void expect_same_bits(ir::Code code, Stage kind, const std::vector<float>& uniforms, const char* what,
-                      Block (*make_block)(std::mt19937&) = random_block) {
+                      Block (*make_block)(std::mt19937&) = random_block, const TextureAccess* textures = nullptr) {
   StageCode stage;
   stage.code = std::move(code);
   stage.prepare();
@@ -94,8 +96,8 @@ void expect_same_bits(ir::Code code, Stage kind, const std::vector<float>& unifo
   std::mt19937 random(7);
   for (int trial = 0; trial < 200; ++trial) {
     const Block block = make_block(random);
-    const std::vector<uint32_t> interpreted = run(stage, kind, block, uniforms, false);
-    const std::vector<uint32_t> compiled = run(stage, kind, block, uniforms, true);
+    const std::vector<uint32_t> interpreted = run(stage, kind, block, uniforms, false, textures);
+    const std::vector<uint32_t> compiled = run(stage, kind, block, uniforms, true, textures);
     for (size_t i = 0; i < interpreted.size(); ++i) {
       if (is_nan(compiled[i]) && is_nan(interpreted[i])) continue;
       ASSERT_EQ(compiled[i], interpreted[i]) << what << " trial " << trial << " value " << i;
@@ -327,6 +329,80 @@ TEST_F(CompiledTier, RunsOfUniformGathersWithOneIndex) {
   }
   store(code, Stage::Fragment, g[4], 3);
   expect_same_bits(std::move(code), Stage::Fragment, {0.5f, 3, 7, 1, 2, 6, 4, 5, 2.5f, 0, 1, 3, 9, -1, 2, 8}, "gathers");
+}
+
+// Texels made up from the coordinates, the unit and the channel; unit 0 has the 2D block route
+// (sample_2d_block), unit 1 only the general one. Counts the lookups of each sample_2d_blocks call.
+class MadeUpTextures final : public TextureAccess {
+ public:
+  static float texel(int unit, int channel, float s, float t) { return s * 0.5f - t * 0.25f + static_cast<float>(4 * unit + channel); }
+  void sample(int unit, SamplerKind, const float (*coords)[kLanes], LodMode, const float*, LaneMask,
+              float (*out)[kLanes]) const override {
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < kLanes; ++l) out[c][l] = texel(unit, c, coords[0][l], coords[1][l]);
+  }
+  bool sample_2d_block(int unit, const float* s, const float* t, LaneMask, float* const out[4]) const override {
+    if (unit != 0) return false;
+    float texels[4][kLanes];  // (out may be s or t)
+    for (int c = 0; c < 4; ++c)
+      for (int l = 0; l < kLanes; ++l) texels[c][l] = texel(unit, c, s[l], t[l]);
+    for (int c = 0; c < 4; ++c) std::memcpy(out[c], texels[c], sizeof texels[c]);
+    return true;
+  }
+  bool sample_2d_blocks(int unit, int count, const float* const* s, const float* const* t, LaneMask live,
+                        float* const (*out)[4]) const override {
+    run_counts.push_back(count);
+    return TextureAccess::sample_2d_blocks(unit, count, s, t, live, out);
+  }
+  mutable std::vector<int> run_counts;
+};
+
+// Lookups side by side run as one call-out where none reads what an earlier one wrote: a lookup
+// that writes an earlier one's coordinate stays in the run, one that reads an earlier one's
+// result starts a new run, and a run of several units takes each lookup's own route.
+TEST_F(CompiledTier, RunsOfTextureLookupsKeepTheirOrder) {
+  ir::Code code;
+  const Operand s = load(code, Stage::Fragment, 0), t = load(code, Stage::Fragment, 1);
+  const Operand unit0 = code.new_register(), unit1 = code.new_register();
+  code.insts.push_back(ir::Inst{Op::LoadUniform, unit0, ir::kNone, ir::kNone, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::LoadUniform, unit1, ir::kNone, ir::kNone, ir::kNone, 1, 0});
+  auto lookup = [&](Operand unit, Operand ls, Operand lt, std::array<Operand, 4> dst) {
+    ir::TextureLookup l;
+    l.sampler = unit;
+    l.coord[0] = ls;
+    l.coord[1] = lt;
+    for (int c = 0; c < 4; ++c) l.dst[c] = dst[static_cast<size_t>(c)];
+    code.textures.push_back(l);
+    code.insts.push_back(ir::Inst{Op::Texture, ir::kNone, ir::kNone, ir::kNone, ir::kNone,
+                                  static_cast<int32_t>(code.textures.size() - 1), 0});
+  };
+  auto fresh = [&] {
+    std::array<Operand, 4> r;
+    for (Operand& o : r) o = code.new_register();
+    return r;
+  };
+  const std::array<Operand, 4> a = fresh(), b = fresh(), c = fresh(), d = fresh(), e = fresh();
+  const Operand s_copy = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Mov, s_copy, s, ir::kNone, ir::kNone, 0, 0});
+  lookup(unit0, s, t, a);
+  lookup(unit0, s_copy, t, {b[0], b[1], s, b[3]});  // writes the first one's s: one run of three
+  lookup(unit0, t, s_copy, c);
+  lookup(unit0, a[0], t, d);  // reads the first one's result: a run of its own and the next
+  lookup(unit1, t, a[1], e);  // another unit: each by its own route
+  for (int k = 0; k < 4; ++k) {
+    Operand sum = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Add, sum, a[static_cast<size_t>(k)], k == 2 ? s : b[static_cast<size_t>(k)], ir::kNone, 0, 0});
+    for (const auto* r : {&c, &d, &e}) {
+      const Operand next = code.new_register();
+      code.insts.push_back(ir::Inst{Op::Add, next, sum, (*r)[static_cast<size_t>(k)], ir::kNone, 0, 0});
+      sum = next;
+    }
+    store(code, Stage::Fragment, sum, k);
+  }
+  const MadeUpTextures textures;
+  expect_same_bits(std::move(code), Stage::Fragment, {0, 1}, "texture runs", random_block, &textures);
+  // The compiled code's runs of one unit, one for every block it ran: the three lookups.
+  EXPECT_EQ(textures.run_counts, std::vector<int>(200, 3));
 }
 
 // Sixty values live at once (more than the registers) and a call-out among them.

@@ -93,6 +93,31 @@ TEST(EarlyTextures, ALookupStaysBelowWhatReadsOrWritesItsResultOrWritesItsCoordi
   EXPECT_LT(position(1), position(2));
 }
 
+// Two lookups with arithmetic between them that neither reads the first one's result nor writes
+// its operands: the first moves down to the second. A third after a use of the second's result
+// rises to just below the second.
+TEST(EarlyTextures, LookupsMoveDownToTheNextLookupOfTheirStretch) {
+  ir::Code code;
+  code.registers = 40;
+  const int k = code.constant(2.0f);
+  code.insts.push_back({Op::LoadVarying, 0, ir::kNone, ir::kNone, ir::kNone, 0});
+  code.insts.push_back({Op::LoadUniform, 2, ir::kNone, ir::kNone, ir::kNone, 0});
+  code.insts.push_back(lookup(code, 2, 0, 0, 10));
+  code.insts.push_back({Op::Sin, 3, 0});           // not arithmetic a lookup reads: it stays
+  code.insts.push_back({Op::Mul, 30, 3, k});       // nor this
+  code.insts.push_back(lookup(code, 2, 0, 30, 14));
+  code.insts.push_back({Op::Mul, 31, 14, k});      // reads the second one's result
+  code.insts.push_back(lookup(code, 2, 0, 0, 18));
+  code.insts.push_back({Op::Add, 32, 10, 31});
+  code.insts.push_back({Op::Add, 33, 32, 18});
+  code.insts.push_back({Op::StoreColor, ir::kNone, 33, ir::kNone, ir::kNone, 0});
+  ASSERT_TRUE(move_texture_lookups_early(code));
+  const std::vector<Op> expected = {Op::LoadVarying, Op::LoadUniform, Op::Sin, Op::Mul, Op::Texture, Op::Texture,
+                                    Op::Texture, Op::Mul, Op::Add, Op::Add, Op::StoreColor};
+  EXPECT_EQ(ops(code), expected);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(code.insts[4 + static_cast<size_t>(i)].i0, i);  // in their order
+}
+
 TEST(EarlyTextures, LookupsDoNotLeaveTheirBranch) {
   ir::Code code;
   code.registers = 40;
