@@ -30,4 +30,13 @@ using BlockSampler = void (*)(const TextureImage& image, const BlockLevels& leve
 // The block sampler for an image and sampler that select_bilinear8_sampler takes.
 BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
 
+// `count` lookups of level 0 of one image, lookup k at s[k] and t[k] into out[k], as the block
+// sampler makes each (BlockLevels{}) in turn, where no lookup reads what an earlier one writes:
+// the AVX-512 copy reads up to kMaxBlockLookups lookups' coordinates before it writes, and reads
+// the texels they share once (a filter kernel's taps).
+constexpr int kMaxBlockLookups = 8;
+using BlockLookupsSampler = void (*)(const TextureImage& image, int count, const float* const* s, const float* const* t,
+                                     float* const (*out)[4]);
+BlockLookupsSampler select_bilinear8_block_lookups_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
+
 }  // namespace pineda::raster

@@ -76,7 +76,8 @@ BlockSampler block_sampler_for_wrap_t(TexWrap t, SimdPath path) {
 
 // pick.operator()<kWrapS, kWrapT>() for s and t each REPEAT or CLAMP_TO_EDGE; null for others.
 template <class Pick>
-BlockSampler for_wrap_pair(TexWrap s, TexWrap t, const Pick& pick) {
+auto for_wrap_pair(TexWrap s, TexWrap t, const Pick& pick)
+    -> decltype(pick.template operator()<TexWrap::Repeat, TexWrap::Repeat>()) {
   constexpr TexWrap kRepeat = TexWrap::Repeat, kEdge = TexWrap::ClampToEdge;
   if (s == kRepeat && t == kRepeat) return pick.template operator()<kRepeat, kRepeat>();
   if (s == kRepeat && t == kEdge) return pick.template operator()<kRepeat, kEdge>();
@@ -90,6 +91,15 @@ BlockSampler for_wrap_pair(TexWrap s, TexWrap t, const Pick& pick) {
 BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path) {
   return sampler.wrap_s == TexWrap::Repeat ? block_sampler_for_wrap_t<TexWrap::Repeat>(sampler.wrap_t, path)
                                            : block_sampler_for_wrap_t<TexWrap::ClampToEdge>(sampler.wrap_t, path);
+}
+
+BlockLookupsSampler select_bilinear8_block_lookups_sampler(const Sampler& sampler, SimdPath path) {
+  const auto for_path = [path]<TexWrap kWrapS, TexWrap kWrapT>() -> BlockLookupsSampler {
+    if (uses_avx512(path)) return &block_lanes_avx512::sample_block_lookups<kWrapS, kWrapT>;
+    if (uses_avx2(path)) return &block_lanes_avx2::sample_block_lookups<kWrapS, kWrapT>;
+    return &block_lanes_sse2::sample_block_lookups<kWrapS, kWrapT>;
+  };
+  return for_wrap_pair(sampler.wrap_s, sampler.wrap_t, for_path);
 }
 
 BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path) {

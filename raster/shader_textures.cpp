@@ -104,7 +104,9 @@ bool UnitTextureAccess::sample_2d_block(int unit, const float* s, const float* t
 bool UnitTextureAccess::sample_2d_blocks(int unit, int count, const float* const* s, const float* const* t,
                                          shader::LaneMask live, float* const (*out)[4]) const {
   if (const FastSamplers* known = level_zero_route(unit)) {
-    for (int k = 0; k < count; ++k) known->block(*known->level_zero_image, BlockLevels{}, s[k], t[k], out[k]);
+    if (known->lookups) known->lookups(*known->level_zero_image, count, s, t, out);
+    else
+      for (int k = 0; k < count; ++k) known->block(*known->level_zero_image, BlockLevels{}, s[k], t[k], out[k]);
     return count > 0;
   }
   return TextureAccess::sample_2d_blocks(unit, count, s, t, live, out);
@@ -136,6 +138,7 @@ FastSamplers choose_fast_samplers(const TextureImage& image, const Sampler& samp
   // (The block samplers scale coordinates by the size: none for a rectangle.)
   const bool planar = image.kind == TexKind::Planar;
   f.block = f.quad && planar ? select_bilinear8_block_sampler(sampler, path) : nullptr;
+  f.lookups = f.block ? select_bilinear8_block_lookups_sampler(sampler, path) : nullptr;
   if (!f.quad) {
     f.quad = select_nearest8_sampler(image, sampler);
     f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
