@@ -16,7 +16,7 @@ namespace pineda::raster {
 struct FastSamplers {
   QuadSampler quad;
   BlockSampler block;
-  BlockLookupsSampler lookups;  // the block sampler's for several lookups (bilinear only)
+  BlockLookupsSampler lookups;  // the block sampler's form for several lookups
   // TextureAccess::sample_2d_block's whole route: the unit's 2D image, whose block sampler reads
   // level 0 for every quad (no mipmap filter); null when the route needs more.
   const TextureImage* level_zero_image;

@@ -18,5 +18,7 @@ QuadSampler select_nearest8_sampler(const TextureImage& image, const Sampler& sa
 // Its 16-lane form (shader_block_lanes.cpp) for an image and sampler it takes, or null
 // (MIRRORED_REPEAT). The BlockLevels argument is not read: the level is 0.
 BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
+// Its form for several lookups (sampler_bilinear_block.h's BlockLookupsSampler).
+BlockLookupsSampler select_nearest8_block_lookups_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);
 
 }  // namespace pineda::raster

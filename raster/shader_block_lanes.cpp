@@ -114,6 +114,17 @@ BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path
   return for_wrap_pair(s, t, for_path);
 }
 
+BlockLookupsSampler select_nearest8_block_lookups_sampler(const Sampler& sampler, SimdPath path) {
+  const auto for_path = [path]<TexWrap kWrapS, TexWrap kWrapT>() -> BlockLookupsSampler {
+    if (uses_avx512(path)) return &block_lanes_avx512::sample_nearest_block_lookups<kWrapS, kWrapT>;
+    if (uses_avx2(path)) return &block_lanes_avx2::sample_nearest_block_lookups<kWrapS, kWrapT>;
+    return &block_lanes_sse2::sample_nearest_block_lookups<kWrapS, kWrapT>;
+  };
+  // As select_nearest8_block_sampler.
+  const auto edge = [](TexWrap w) { return w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
+  return for_wrap_pair(edge(sampler.wrap_s), edge(sampler.wrap_t), for_path);
+}
+
 BlockSampler select_depth_block_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {
   if (!image.depth || image.kind != TexKind::Planar || image.depth_swizzle != kIdentitySwizzle || image.levels.empty())
     return nullptr;

@@ -142,6 +142,7 @@ FastSamplers choose_fast_samplers(const TextureImage& image, const Sampler& samp
   if (!f.quad) {
     f.quad = select_nearest8_sampler(image, sampler);
     f.block = f.quad ? select_nearest8_block_sampler(sampler, path) : nullptr;
+    f.lookups = f.block ? select_nearest8_block_lookups_sampler(sampler, path) : nullptr;
   }
   // Depth images: a block form only (the quad loop of `sample` takes the other lookups).
   if (!f.quad) f.block = select_depth_block_sampler(image, sampler, path);
