@@ -217,12 +217,16 @@ RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mas
 }
 
 // The lanes of an operand of compiled code in its frame.
-float* frame_lanes(const jit::Frame& frame, jit::FrameOperand o) {
+// The frame's lane buffers by jit::FrameOperand::base.
+struct FrameBases {
+  explicit FrameBases(const jit::Frame& frame)
+      : at{const_cast<float*>(kZeros), const_cast<float*>(frame.constants), frame.spill, const_cast<float*>(frame.slots)} {}
+  float* operator()(jit::FrameOperand o) const { return at[o.base] + o.offset; }
   static constexpr float kZeros[kLanes] = {};
-  float* const bases[4] = {const_cast<float*>(kZeros), const_cast<float*>(frame.constants), frame.spill,
-                           const_cast<float*>(frame.slots)};
-  return bases[o.base] + o.offset;
-}
+  float* const at[4];
+};
+
+float* frame_lanes(const jit::Frame& frame, jit::FrameOperand o) { return FrameBases(frame)(o); }
 
 }  // namespace
 
@@ -282,16 +286,15 @@ void jit::call_texture(const Frame* frame, const FrameTextureLookup* t) {
 }
 
 void jit::call_texture_run(const Frame* frame, const FrameTextureRun* run) {
-  auto lanes = [&](FrameOperand o) { return frame_lanes(*frame, o); };
   if (run->one_2d_sampler && frame->textures && frame->mask == 0xFFFF && frame->needed) {
+    const FrameBases lanes(*frame);
     const float* s[kMaxTextureRun];
     const float* t[kMaxTextureRun];
     float* dst[kMaxTextureRun][4];
     for (int k = 0; k < run->count; ++k) {
-      const FrameTextureLookup& l = *run->lookups[k];
-      s[k] = lanes(l.coord[0]);
-      t[k] = lanes(l.coord[1]);
-      for (int c = 0; c < 4; ++c) dst[k][c] = lanes(l.dst[c]);
+      s[k] = lanes(run->s[k]);
+      t[k] = lanes(run->t[k]);
+      for (int c = 0; c < 4; ++c) dst[k][c] = lanes(run->dst[k][c]);
     }
     const int unit = sampler_unit(lanes(run->lookups[0]->sampler)[0]);
     if (frame->textures->sample_2d_blocks(unit, run->count, s, t, frame->needed, dst)) return;

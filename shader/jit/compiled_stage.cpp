@@ -821,6 +821,9 @@ std::unique_ptr<CompiledStage> CompiledStage::compile(const std::vector<ir::Inst
       const int index = insts[first + static_cast<size_t>(k)].i0;
       const ir::TextureLookup& t = textures[static_cast<size_t>(index)];
       run.lookups[k] = &stage->lookups_[static_cast<size_t>(index)];
+      run.s[k] = run.lookups[k]->coord[0];
+      run.t[k] = run.lookups[k]->coord[1];
+      for (int c = 0; c < 4; ++c) run.dst[k][c] = run.lookups[k]->dst[c];
       run.one_2d_sampler = run.one_2d_sampler && t.kind == SamplerKind::Tex2D && t.mode == LodMode::Implicit &&
                            t.sampler == head.sampler;
     }

@@ -65,6 +65,8 @@ struct FrameTextureRun {
   int count = 0;
   bool one_2d_sampler = false;  // every lookup Tex2D and Implicit, with the same sampler operand
   const FrameTextureLookup* lookups[kMaxTextureRun] = {};
+  // With one_2d_sampler, the lookups' s, t and destinations side by side (read for every block).
+  FrameOperand s[kMaxTextureRun], t[kMaxTextureRun], dst[kMaxTextureRun][4];
 };
 
 // The run's lookups, as call_texture does each in order.
