@@ -34,7 +34,7 @@ BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath pat
 // sampler makes each (BlockLevels{}) in turn, where no lookup reads what an earlier one writes:
 // the AVX-512 copy reads up to kMaxBlockLookups lookups' coordinates before it writes, and reads
 // the texels they share once (a filter kernel's taps).
-constexpr int kMaxBlockLookups = 8;
+constexpr int kMaxBlockLookups = 16;
 using BlockLookupsSampler = void (*)(const TextureImage& image, int count, const float* const* s, const float* const* t,
                                      float* const (*out)[4]);
 BlockLookupsSampler select_bilinear8_block_lookups_sampler(const Sampler& sampler, SimdPath path = SimdPath::Best);

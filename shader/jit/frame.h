@@ -60,7 +60,7 @@ void call_texture(const Frame* frame, const FrameTextureLookup* t);
 
 // Lookups side by side in the code, none reading what an earlier one writes: one call-out for
 // all (TextureAccess::sample_2d_blocks when they are 2D lookups of one sampler).
-constexpr int kMaxTextureRun = 8;
+constexpr int kMaxTextureRun = 16;
 struct FrameTextureRun {
   int count = 0;
   bool one_2d_sampler = false;  // every lookup Tex2D and Implicit, with the same sampler operand

@@ -52,7 +52,7 @@ void expect_block_samplers_values(const TextureImage& image, BlockSampler block,
             << c << " lane " << l << " s " << in.s[k][l] << " t " << in.t[k][l];
 }
 
-// Kernels of 1 to 8 taps (counts in turn over the trials) around a block of four quads side by
+// Kernels of 1 to kMaxBlockLookups taps (counts in turn over the trials) around a block of four quads side by
 // side (8 pixels by 2) at up to `scale` texels a pixel anywhere from a texel before each level
 // to one past it, the taps up to `reach` texels away or, every fourth trial, `far`; each lookup
 // compared by `compare(image, sampler, in, count, own_output)`. Returns the lookups compared.
@@ -96,8 +96,12 @@ int expect_kernels(std::initializer_list<std::pair<int, int>> sizes, std::initia
   return lookups;
 }
 
-// 100 trials take counts 1 to 8 in turn: 12 rounds of 36 and 1 + 2 + 3 + 4.
-constexpr int kLookupsPer100Trials = 12 * 36 + 10;
+// 100 trials take counts 1 to kMaxBlockLookups in turn.
+constexpr int kLookupsPer100Trials = [] {
+  int lookups = 0;
+  for (int trial = 0; trial < 100; ++trial) lookups += 1 + trial % kMaxBlockLookups;
+  return lookups;
+}();
 
 // Bilinear taps most of which share an 8x8 window.
 TEST(BlockLookups, BilinearKernelTapsGiveTheBlockSamplersValuesOnEveryPath) {
