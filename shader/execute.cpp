@@ -216,8 +216,7 @@ RunMask run_compiled(const StageCode& stage, Stage kind, int blocks, RunMask mas
   return discarded;
 }
 
-// The lanes of an operand of compiled code in its frame.
-// The frame's lane buffers by jit::FrameOperand::base.
+// The frame's lane buffers by jit::FrameOperand::base: an operand's lanes.
 struct FrameBases {
   explicit FrameBases(const jit::Frame& frame)
       : at{const_cast<float*>(kZeros), const_cast<float*>(frame.constants), frame.spill, const_cast<float*>(frame.slots)} {}
@@ -226,6 +225,7 @@ struct FrameBases {
   float* const at[4];
 };
 
+// The lanes of an operand of compiled code in its frame.
 float* frame_lanes(const jit::Frame& frame, jit::FrameOperand o) { return FrameBases(frame)(o); }
 
 }  // namespace

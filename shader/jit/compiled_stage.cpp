@@ -806,8 +806,10 @@ std::unique_ptr<CompiledStage> CompiledStage::compile(const std::vector<ir::Inst
   std::vector<size_t> run_starts;
   for (size_t i = 0; i < insts.size(); ++i) {
     const int n = insts[i].op == Op::Texture ? texture_run_length(insts, textures, i) : 0;
-    if (n > 1) run_starts.push_back(i);
-    if (n > 1) i += static_cast<size_t>(n - 1);
+    if (n > 1) {
+      run_starts.push_back(i);
+      i += static_cast<size_t>(n - 1);
+    }
   }
   stage->runs_.resize(run_starts.size());
   std::vector<const FrameTextureRun*> run_at(insts.size(), nullptr);
