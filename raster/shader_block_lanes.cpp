@@ -86,6 +86,14 @@ auto for_wrap_pair(TexWrap s, TexWrap t, const Pick& pick)
   return nullptr;
 }
 
+// for_wrap_pair for the nearest samplers: CLAMP picks the texels CLAMP_TO_EDGE does
+// (nearest_index); MIRRORED_REPEAT keeps the quad sampler.
+template <class Pick>
+auto for_nearest_wrap_pair(const Sampler& sampler, const Pick& pick) {
+  const auto edge = [](TexWrap w) { return w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
+  return for_wrap_pair(edge(sampler.wrap_s), edge(sampler.wrap_t), pick);
+}
+
 }  // namespace
 
 BlockSampler select_bilinear8_block_sampler(const Sampler& sampler, SimdPath path) {
@@ -108,10 +116,7 @@ BlockSampler select_nearest8_block_sampler(const Sampler& sampler, SimdPath path
     if (uses_avx2(path)) return &block_lanes_avx2::sample_nearest_block<kWrapS, kWrapT>;
     return &block_lanes_sse2::sample_nearest_block<kWrapS, kWrapT>;
   };
-  // CLAMP picks the texels CLAMP_TO_EDGE does (nearest_index); MIRRORED_REPEAT keeps the quad sampler.
-  const auto edge = [](TexWrap w) { return w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
-  const TexWrap s = edge(sampler.wrap_s), t = edge(sampler.wrap_t);
-  return for_wrap_pair(s, t, for_path);
+  return for_nearest_wrap_pair(sampler, for_path);
 }
 
 BlockLookupsSampler select_nearest8_block_lookups_sampler(const Sampler& sampler, SimdPath path) {
@@ -120,9 +125,7 @@ BlockLookupsSampler select_nearest8_block_lookups_sampler(const Sampler& sampler
     if (uses_avx2(path)) return &block_lanes_avx2::sample_nearest_block_lookups<kWrapS, kWrapT>;
     return &block_lanes_sse2::sample_nearest_block_lookups<kWrapS, kWrapT>;
   };
-  // As select_nearest8_block_sampler.
-  const auto edge = [](TexWrap w) { return w == TexWrap::Clamp ? TexWrap::ClampToEdge : w; };
-  return for_wrap_pair(edge(sampler.wrap_s), edge(sampler.wrap_t), for_path);
+  return for_nearest_wrap_pair(sampler, for_path);
 }
 
 BlockSampler select_depth_block_sampler(const TextureImage& image, const Sampler& sampler, SimdPath path) {

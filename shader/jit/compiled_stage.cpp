@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 
 #include "raster/simd_path.h"
 #include "shader/jit/emit_library_ops.h"
@@ -803,20 +804,20 @@ std::unique_ptr<CompiledStage> CompiledStage::compile(const std::vector<ir::Inst
     f.sampler = frame_operand(t.sampler, registers);
     f.lod = frame_operand(t.lod, registers);
   }
-  std::vector<size_t> run_starts;
+  std::vector<std::pair<size_t, int>> run_starts;  // first instruction, lookups
   for (size_t i = 0; i < insts.size(); ++i) {
     const int n = insts[i].op == Op::Texture ? texture_run_length(insts, textures, i) : 0;
     if (n > 1) {
-      run_starts.push_back(i);
+      run_starts.emplace_back(i, n);
       i += static_cast<size_t>(n - 1);
     }
   }
-  stage->runs_.resize(run_starts.size());
+  stage->runs_.resize(run_starts.size());  // never resized again: the code holds their addresses
   std::vector<const FrameTextureRun*> run_at(insts.size(), nullptr);
   for (size_t r = 0; r < run_starts.size(); ++r) {
     FrameTextureRun& run = stage->runs_[r];
-    const size_t first = run_starts[r];
-    run.count = texture_run_length(insts, textures, first);
+    const size_t first = run_starts[r].first;
+    run.count = run_starts[r].second;
     const ir::TextureLookup& head = textures[static_cast<size_t>(insts[first].i0)];
     run.one_2d_sampler = true;
     for (int k = 0; k < run.count; ++k) {
