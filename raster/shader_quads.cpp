@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <type_traits>
@@ -174,27 +175,28 @@ bool adjacent_quads(const RowBlocks& row, int k) {
   return true;
 }
 
-// The early tests of block k of `row` (early_tests), in the quads' order: four adjacent quads
-// of one primitive inside the buffer and one tile without stencil at once (block_depth.h),
-// others quad by quad.
+// The early tests of block k of `row` (early_tests), in the quads' order: up to four adjacent
+// quads of one primitive without stencil at once (block_depth.h) when the 8x2 pixels from the
+// first lie inside the buffer and one tile (the lanes of missing quads test nothing), others
+// quad by quad.
 void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks& row, int k, uint32_t& passed) {
   Quad* quads = row.quads[k];
   const int n = row.quad_count[k];
   const int x = quads[0].x, y = quads[0].y;
   const PrimSetup& p = *quads[0].prim;
-  const bool adjacent = n == 4 && row.prim[k] && adjacent_quads(row, k);
+  const bool adjacent = row.prim[k] && adjacent_quads(row, k);
   if (!d.key.stencil && adjacent && x >= 0 && x + 8 <= fb.width && y >= 0 && y + 2 <= fb.height &&
       (x & (kTileSize - 1)) + 8 <= kTileSize) {
     static const BlockDepthTest test = select_block_depth_test(simd_path_from_environment());
     alignas(64) float ox[kLanes], oy[kLanes];
     unsigned quad_bits = 0;
     for (int j = 0; j < 4; ++j) {
-      store4(&ox[4 * j], quads[j].ox);
-      store4(&oy[4 * j], quads[j].oy);
-      quad_bits |= quads[j].mask << (4 * j);
+      store4(&ox[4 * j], j < n ? quads[j].ox : quads[0].ox + splat(static_cast<float>(2 * j)));
+      store4(&oy[4 * j], quads[j < n ? j : 0].oy);
+      if (j < n) quad_bits |= quads[j].mask << (4 * j);
     }
     quad_bits = test(d, p, fb, x, y, ox, oy, quad_bits);
-    for (int j = 0; j < 4; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
+    for (int j = 0; j < n; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
     if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
     return;
   }
@@ -227,6 +229,36 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
     planes.perspective[j] = p.perspective;
   }
   interpolate_quads(planes, nv, ox, oy, varyings, w);
+}
+
+// gl_FragCoord (window z only when `components` has it) and, when `point_coord`, gl_PointCoord
+// of block k's lanes, a quad at a time; w: the lanes' 1/w.
+void fill_frag_coords(const DrawRecord& d, int nv, const RowBlocks& row, int k, const float* w, unsigned components,
+                      bool point_coord, shader::FragmentBlock& block) {
+  using I4 = int32_t __attribute__((vector_size(16)));
+  const Quad* quads = row.quads[k];
+  const int n = row.quad_count[k];
+  for (int j = 0; j < 4; ++j) {
+    const Quad& q = quads[j < n ? j : 0];
+    const PrimSetup& p = *q.prim;
+    const F4 fx = __builtin_convertvector((I4{q.x, q.x + 1, q.x, q.x + 1}), F4) + splat(0.5f);
+    const F4 fy = __builtin_convertvector((I4{q.y, q.y, q.y + 1, q.y + 1}), F4) + splat(0.5f);
+    store4(&block.frag_coord[0][4 * j], fx);
+    store4(&block.frag_coord[1][4 * j], fy);
+    if (components & 4u)
+      for (int i = 0; i < 4; ++i) {
+        double z = p.z0 + p.dzdx * static_cast<double>(q.ox[i]) + p.dzdy * static_cast<double>(q.oy[i]);
+        z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
+        block.frag_coord[2][4 * j + i] = static_cast<float>(z / d.depth_max);
+      }
+    if (!point_coord) continue;
+    // Zeros where there is no sprite.
+    const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
+    const bool sprite = point && point[2] > 0.f;
+    store4(&block.point_coord[0][4 * j], sprite ? splat(0.5f) + (fx - splat(point[0])) / splat(point[2]) : F4{});
+    store4(&block.point_coord[1][4 * j], sprite ? splat(0.5f) - (fy - splat(point[1])) / splat(point[2]) : F4{});
+  }
+  std::memcpy(block.frag_coord[3], w, sizeof block.frag_coord[3]);
 }
 
 // Fills block k of `row` for its quads (after any early tests); returns false when no pixel is
@@ -270,31 +302,8 @@ bool begin_block(const DrawRecord& d, const Framebuffer& fb, const float* unifor
   }
   // Only the components the program reads (glmark2's conditionals, function and loop scenes read
   // gl_FragCoord.xy: the depth's per-lane doubles took half of begin_block there).
-  const unsigned frag_coord = facts.frag_coord_components;
-  const bool point_coord = facts.reads_point_coord;
-  if (frag_coord || point_coord) {
-    for (int j = 0; j < 4; ++j) {
-      const Quad& q = quads[j < n ? j : 0];
-      const PrimSetup& p = *q.prim;
-      const float* point = p.kind == CoverageKind::Point && p.varying_planes ? &p.varying_planes[nv].a0 : nullptr;
-      for (int i = 0; i < 4; ++i) {
-        const int lane = 4 * j + i;
-        const float fx = static_cast<float>(q.x + (i & 1)) + 0.5f, fy = static_cast<float>(q.y + (i >> 1)) + 0.5f;
-        block.frag_coord[0][lane] = fx;
-        block.frag_coord[1][lane] = fy;
-        if (frag_coord & 4u) {
-          double z = p.z0 + p.dzdx * static_cast<double>(q.ox[i]) + p.dzdy * static_cast<double>(q.oy[i]);
-          z = z > 0.0 ? (z < d.depth_max ? z : d.depth_max) : 0.0;
-          block.frag_coord[2][lane] = static_cast<float>(z / d.depth_max);
-        }
-        block.frag_coord[3][lane] = w[lane];
-        // Zeros where there is no sprite.
-        const bool sprite = point && point[2] > 0.f;
-        block.point_coord[0][lane] = sprite ? 0.5f + (fx - point[0]) / point[2] : 0.f;
-        block.point_coord[1][lane] = sprite ? 0.5f - (fy - point[1]) / point[2] : 0.f;
-      }
-    }
-  }
+  if (facts.frag_coord_components || facts.reads_point_coord)
+    fill_frag_coords(d, nv, row, k, w, facts.frag_coord_components, facts.reads_point_coord, block);
   // A colour buffer the program does not write reads as zeros.
   if (sd.color_output >= facts.draw_buffers_written)
     std::fill(&block.color[sd.color_output][0][0], &block.color[sd.color_output][0][0] + 4 * kLanes, 0.f);
