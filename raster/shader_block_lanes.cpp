@@ -168,6 +168,11 @@ BlockDepthTest select_block_depth_test(SimdPath path) {
   return uses_avx2(path) ? &block_lanes_avx2::depth_test_block : &block_lanes_sse2::depth_test_block;
 }
 
+QuadsDepthTest select_quads_depth_test(SimdPath path) {
+  if (uses_avx512(path)) return &block_lanes_avx512::depth_test_quads;
+  return uses_avx2(path) ? &block_lanes_avx2::depth_test_quads : &block_lanes_sse2::depth_test_quads;
+}
+
 BlockWriter select_block_writer(SimdPath path) {
   if (uses_avx512(path)) return &block_lanes_avx512::write_block;
   return uses_avx2(path) ? &block_lanes_avx2::write_block : &block_lanes_sse2::write_block;

@@ -175,10 +175,22 @@ bool adjacent_quads(const RowBlocks& row, int k) {
   return true;
 }
 
+// Whether the first n quads lie inside the framebuffer, no two at one place (so that testing
+// them at once gives what testing them in order would).
+bool apart_inside(const Framebuffer& fb, const Quad* quads, int n) {
+  for (int i = 0; i < n; ++i) {
+    const Quad& q = quads[i];
+    if (q.x < 0 || q.y < 0 || q.x + 2 > fb.width || q.y + 2 > fb.height) return false;
+    for (int j = 0; j < i; ++j)
+      if (quads[j].x == q.x && quads[j].y == q.y) return false;
+  }
+  return true;
+}
+
 // The early tests of block k of `row` (early_tests), in the quads' order: up to four adjacent
 // quads of one primitive without stencil at once (block_depth.h) when the 8x2 pixels from the
-// first lie inside the buffer and one tile (the lanes of missing quads test nothing), others
-// quad by quad.
+// first lie inside the buffer and one tile (the lanes of missing quads test nothing), else
+// without stencil two to four quads inside the buffer and apart at once, others quad by quad.
 void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks& row, int k, uint32_t& passed) {
   Quad* quads = row.quads[k];
   const int n = row.quad_count[k];
@@ -196,6 +208,25 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
       if (j < n) quad_bits |= quads[j].mask << (4 * j);
     }
     quad_bits = test(d, p, fb, x, y, ox, oy, quad_bits);
+    for (int j = 0; j < n; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
+    if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
+    return;
+  }
+  if (!d.key.stencil && n > 1 && apart_inside(fb, quads, n)) {  // small triangles' quads (QuadBlocks)
+    static const QuadsDepthTest test = select_quads_depth_test(simd_path_from_environment());
+    BlockQuads places;
+    alignas(64) float ox[kLanes], oy[kLanes];
+    unsigned quad_bits = 0;
+    for (int j = 0; j < 4; ++j) {
+      const Quad& q = quads[j < n ? j : 0];
+      places.x[j] = q.x;
+      places.y[j] = q.y;
+      places.prim[j] = q.prim;
+      store4(&ox[4 * j], q.ox);
+      store4(&oy[4 * j], q.oy);
+      if (j < n) quad_bits |= q.mask << (4 * j);
+    }
+    quad_bits = test(d, places, fb, ox, oy, quad_bits);
     for (int j = 0; j < n; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
     if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
     return;
