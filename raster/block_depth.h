@@ -1,7 +1,7 @@
 // The early depth test of a shader block without stencil, tested and written as
 // quad_ops::depth_only tests each quad (the same window depths, comparison and writes), 16 lanes
 // at a time: four adjacent quads (8x2 pixels) of one primitive that lie inside the framebuffer
-// and one tile, or four quads anywhere in one tile.
+// and one tile, or up to four quads apart in one tile.
 #pragma once
 #include <cstdint>
 

@@ -212,7 +212,8 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
     if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
     return;
   }
-  if (!d.key.stencil && n > 1 && apart_inside(fb, quads, n)) {  // small triangles' quads (QuadBlocks)
+  // Small triangles' quads packed into one block (QuadBlocks), a row's last two or three quads.
+  if (!d.key.stencil && n > 1 && apart_inside(fb, quads, n)) {
     static const QuadsDepthTest test = select_quads_depth_test(simd_path_from_environment());
     BlockQuads places;
     alignas(64) float ox[kLanes], oy[kLanes];
