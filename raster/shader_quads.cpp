@@ -187,6 +187,26 @@ bool apart_inside(const Framebuffer& fb, const Quad* quads, int n) {
   return true;
 }
 
+// The lanes' offsets of a block of the first n quads (lanes of missing quads repeat quad 0's) for
+// a block test, and its quads' pixels as its bits (bit 4j + i: quad j's pixel i).
+unsigned block_offsets(const Quad* quads, int n, float* ox, float* oy) {
+  unsigned quad_bits = 0;
+  for (int j = 0; j < 4; ++j) {
+    const Quad& q = quads[j < n ? j : 0];
+    store4(&ox[4 * j], q.ox);
+    store4(&oy[4 * j], q.oy);
+    if (j < n) quad_bits |= q.mask << (4 * j);
+  }
+  return quad_bits;
+}
+
+// The first n quads keep their pixels of quad_bits (bit 4j + i: quad j's pixel i), which a test
+// of the block passed; adds them to `passed` when the draw counts samples.
+void keep_passing(const DrawRecord& d, Quad* quads, int n, unsigned quad_bits, uint32_t& passed) {
+  for (int j = 0; j < n; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
+  if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
+}
+
 // The early tests of block k of `row` (early_tests), in the quads' order, without stencil at
 // once (block_depth.h): four adjacent quads of one primitive inside the buffer and one tile, or
 // two to four quads inside the buffer and apart; others quad by quad. (A block of fewer adjacent
@@ -201,36 +221,22 @@ void early_tests_of_block(const DrawRecord& d, const Framebuffer& fb, RowBlocks&
       (x & (kTileSize - 1)) + 8 <= kTileSize) {
     static const BlockDepthTest test = select_block_depth_test(simd_path_from_environment());
     alignas(64) float ox[kLanes], oy[kLanes];
-    unsigned quad_bits = 0;
-    for (int j = 0; j < 4; ++j) {
-      store4(&ox[4 * j], quads[j].ox);
-      store4(&oy[4 * j], quads[j].oy);
-      quad_bits |= quads[j].mask << (4 * j);
-    }
-    quad_bits = test(d, p, fb, x, y, ox, oy, quad_bits);
-    for (int j = 0; j < 4; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
-    if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
-    return;
+    const unsigned quad_bits = block_offsets(quads, 4, ox, oy);
+    return keep_passing(d, quads, 4, test(d, p, fb, x, y, ox, oy, quad_bits), passed);
   }
   // Small triangles' quads packed into one block (QuadBlocks), a row's last two or three quads.
   if (!d.key.stencil && n > 1 && apart_inside(fb, quads, n)) {
     static const QuadsDepthTest test = select_quads_depth_test(simd_path_from_environment());
     BlockQuads places;
-    alignas(64) float ox[kLanes], oy[kLanes];
-    unsigned quad_bits = 0;
     for (int j = 0; j < 4; ++j) {
       const Quad& q = quads[j < n ? j : 0];
       places.x[j] = q.x;
       places.y[j] = q.y;
       places.prim[j] = q.prim;
-      store4(&ox[4 * j], q.ox);
-      store4(&oy[4 * j], q.oy);
-      if (j < n) quad_bits |= q.mask << (4 * j);
     }
-    quad_bits = test(d, places, fb, ox, oy, quad_bits);
-    for (int j = 0; j < n; ++j) quads[j].mask = (quad_bits >> (4 * j)) & 0xFu;
-    if (d.key.count_samples) passed += static_cast<uint32_t>(__builtin_popcount(quad_bits));
-    return;
+    alignas(64) float ox[kLanes], oy[kLanes];
+    const unsigned quad_bits = block_offsets(quads, n, ox, oy);
+    return keep_passing(d, quads, n, test(d, places, fb, ox, oy, quad_bits), passed);
   }
   for (int q = 0; q < n; ++q) quads[q].mask = early_depth_stencil(d, fb, quads[q], quads[q].mask, passed);
 }
