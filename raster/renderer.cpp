@@ -11,6 +11,7 @@
 #include "raster/fragment_pipeline.h"
 #include "raster/geometry.h"
 #include "raster/multisample.h"
+#include "raster/parallel_binning.h"
 #include "raster/prefetch_for_write.h"
 #include "raster/primitive.h"
 #include "raster/reference_lines_points.h"
@@ -24,9 +25,13 @@ namespace pineda::raster {
 
 struct Renderer::Impl {
   explicit Impl(int threads, bool reference_mode, SimdPath simd_path)
-      : reference(reference_mode), simd(simd_path), pool(reference ? 1 : resolve_thread_count(threads)) {
+      : reference(reference_mode),
+        simd(simd_path),
+        pool(reference ? 1 : resolve_thread_count(threads)),
+        parallel_binning(pool.threads()) {
     scene.reset(fb);
     running.reset(fb);
+    parallel_binning.reset(fb);
     // Each scene is read by the pool's threads between its turns at binning.
     const bool prefetch = pool.threads() > 1 && cpu_has_prefetchw();
     scene.prefetch_writes(prefetch);
@@ -60,6 +65,7 @@ struct Renderer::Impl {
   PrimSetup filled_triangle;  // GeometryStage's
   std::optional<GeometryStage> geometry;  // the current draw record's (Renderer::draw)
   WorkerPool pool;  // after the scenes: its threads are joined before the scenes go
+  ParallelBinning parallel_binning;  // (its threads are idle between its draws)
 };
 
 Renderer::Renderer(int threads) : impl_(std::make_unique<Impl>(threads, reference_mode_from_environment(), simd_path_from_environment())) {}
@@ -75,6 +81,7 @@ void Renderer::set_framebuffer(const Framebuffer& fb) {
   impl_->geometry.reset();  // (the scene's draws go: no draw repeats)
   impl_->scene.reset(fb);
   impl_->running.reset(fb);
+  impl_->parallel_binning.reset(fb);
 }
 
 const Framebuffer& Renderer::framebuffer() const { return impl_->fb; }
@@ -123,12 +130,18 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
     geometry.use_window_positions(windows);
   }
   if (geometry.active()) {
+    const GeometryInput input{mode, vertices, indices, state.shader ? varyings : nullptr,
+                              ahead ? impl_->windows.data() : nullptr};
+    if (impl_->parallel_binning.takes(state, input)) {
+      impl_->finish_running();
+      impl_->parallel_binning.draw(scene, input, impl_->pool, ScopedFloatModes::current());
+      return;
+    }
     assemble_primitives(mode, vertices, indices, geometry);
     geometry.finish_assembly();
   }
   if (scene.full()) submit();
 }
-
 
 int Renderer::threads() const { return impl_->pool.threads(); }
 

@@ -63,7 +63,6 @@ class Renderer {
  private:
   void submit();  // a full scene: executed, on the pool's threads while binning goes on
 
-
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -37,6 +37,8 @@ void Scene::reset(const Framebuffer& fb) {
   fb_ = fb;
   render_w_ = std::clamp(fb.width, 0, kMaxRenderSize);
   render_h_ = std::clamp(fb.height, 0, kMaxRenderSize);
+  band_y0_ = 0;
+  band_y1_ = render_h_;
   tiles_x_ = (render_w_ + kTileSize - 1) / kTileSize;
   tiles_y_ = (render_h_ + kTileSize - 1) / kTileSize;
   if (tiles_x_ == 0 || tiles_y_ == 0) tiles_x_ = tiles_y_ = 0;
@@ -219,7 +221,7 @@ void Scene::run_tile(int tile) const {
 
 void Scene::execute(WorkerPool& pool) {
   if (commands_ > 0) {
-    if (fb_.cleared_tiles) fb_.cleared_tiles->prepare(bins_.size());
+    prepare_cleared_tiles();
     if (!worth_sharing()) {
       for (const int t : touched_tiles_) run_tile(t);
     } else {
@@ -227,6 +229,19 @@ void Scene::execute(WorkerPool& pool) {
       pool.run(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
     }
   }
+  end_execution();
+}
+
+void Scene::execute_here() {
+  for (const int t : touched_tiles_) run_tile(t);
+  end_execution();
+}
+
+void Scene::prepare_cleared_tiles() const {
+  if (fb_.cleared_tiles) fb_.cleared_tiles->prepare(bins_.size());
+}
+
+void Scene::end_execution() {
   drop_commands();
   if (draws_.size() > 1) draws_.erase(draws_.begin(), draws_.end() - 1);
   if (!draws_.empty()) retain_textures(*draws_.back());
@@ -252,7 +267,7 @@ bool Scene::worth_sharing() const { return commands_ >= kSmallScene && (share_sm
 bool Scene::worth_starting(const WorkerPool& pool) const { return worth_sharing() && pool.threads() > 1; }
 
 void Scene::start(WorkerPool& pool) {
-  if (fb_.cleared_tiles) fb_.cleared_tiles->prepare(bins_.size());
+  prepare_cleared_tiles();
   order_for_threads();
   pool.start(static_cast<int>(touched_tiles_.size()), [this](int i) { run_tile(touched_tiles_[i]); });
 }

@@ -1,6 +1,7 @@
 // The deferred work for one framebuffer: draws, set-up primitives and clears, binned into
 // 64x64 tiles; executed tile by tile, in command order within each tile.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <deque>
@@ -22,8 +23,17 @@ class Scene {
   // Drops everything queued and bins for `fb` from now on.
   void reset(const Framebuffer& fb);
   const Framebuffer& framebuffer() const { return fb_; }
-  // The area primitives may cover: the framebuffer, limited to the largest rendered size.
-  PixelRect render_area() const { return {0, 0, tiles_x_ ? render_w_ : 0, tiles_y_ ? render_h_ : 0}; }
+  // The area primitives may cover: the framebuffer, limited to the largest rendered size (and to
+  // the rows of limit_to_rows).
+  PixelRect render_area() const {
+    return tiles_x_ ? PixelRect{0, band_y0_, render_w_, band_y1_} : PixelRect{0, 0, 0, 0};
+  }
+  // Until the next reset, primitives are binned only where they cover rows [y0, y1)
+  // (parallel_binning.h); y0 and y1 on tile edges or the render area's.
+  void limit_to_rows(int y0, int y1) {
+    band_y0_ = std::clamp(y0, 0, render_h_);
+    band_y1_ = std::clamp(y1, band_y0_, render_h_);
+  }
 
   // Primitives added afterwards belong to this draw. `made_from`: the DrawState make_draw_record
   // made the record from, for this scene's framebuffer, so that a later draw of the same state
@@ -46,6 +56,10 @@ class Scene {
   // Runs all commands; afterwards the scene is empty but keeps the current draw, so that a
   // draw interrupted by a full scene can go on adding primitives.
   void execute(WorkerPool& pool);
+  // As execute, every tile on the calling thread, the framebuffer's cleared tiles already
+  // prepared (prepare_cleared_tiles) for a scene that runs beside others.
+  void execute_here();
+  void prepare_cleared_tiles() const;
   // Between draws, after execute: lets the current draw's record go too, and the texture images
   // it keeps alive (a texture changed now can then be changed in place: TextureObject).
   void forget_draws() { draws_.clear(); }
@@ -78,12 +92,15 @@ class Scene {
   bool worth_sharing() const;
   void run_tile(int tile) const;
   void order_for_threads();  // of touched_tiles_ (scene.cpp)
+  // execute's end: drops the commands and every draw but the current one.
+  void end_execution();
   void retain_textures(const DrawRecord& draw);
   // Drops the executed commands and what they kept alive; the draws stay.
   void drop_commands();
 
   Framebuffer fb_;
   int render_w_ = 0, render_h_ = 0;
+  int band_y0_ = 0, band_y1_ = 0;  // render_area's rows
   int tiles_x_ = 0, tiles_y_ = 0;
   // Shared, and never changed once begun: the current draw's record stays where it is while a
   // draw that filled the scene goes on adding primitives, here or in the next scene, and the

@@ -168,6 +168,74 @@ TEST(Scene, TinyTrianglesGiveIdenticalImages) {
   EXPECT_EQ(one.stencil_buf, two.stencil_buf);
 }
 
+// Draws large enough that every thread bins and rasterizes them in a band of its own
+// (parallel_binning.h), in every polygon mode: triangles of every size, many across the bands'
+// edges, some clipped, indexed with indices past the end, axis-aligned rectangles as pairs of
+// triangles (some in step with the draw's pairs, some not), flat shading, culling, a scissor;
+// blended and stencil-counted, so that a fragment drawn twice, missed or out of order shows.
+void render_large_draws(Renderer& r, OwnedFramebuffer& fb) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> pos(-1.2f, 1.2f), unit(0.f, 1.f), spread(-0.05f, 0.05f), w(0.6f, 2.f);
+  r.set_framebuffer(fb.fb);
+  clear_all(r, 0.4f, 1.0, 0);
+  constexpr size_t kVertices = 13000;  // above ParallelBinning's kMinVertices
+  const Primitive modes[] = {Primitive::Triangles, Primitive::TriangleStrip, Primitive::TriangleFan,
+                             Primitive::Quads,     Primitive::QuadStrip,     Primitive::Polygon};
+  for (int d = 0; d < 9; ++d) {
+    DrawState s = state_for(kW, kH);
+    s.depth_test = d % 2 == 0;
+    s.depth_func = CompareFunc::LessEqual;
+    s.blend = true;
+    s.blend_state.src_rgb = BlendFactor::SrcAlpha;
+    s.blend_state.dst_rgb = BlendFactor::OneMinusSrcAlpha;
+    s.stencil_test = true;
+    s.stencil_front.depth_pass = StencilOp::IncrWrap;
+    s.stencil_back.depth_pass = StencilOp::Invert;
+    s.flat_shading = d % 3 == 1;
+    s.cull_face = d == 4;
+    s.cull_front = d == 4;
+    if (d == 5) {
+      s.scissor_test = true;
+      s.scissor = {25, 40, 230, 120};
+    }
+    std::vector<ClipVertex> v;
+    const Primitive mode = d < 6 ? modes[d] : Primitive::Triangles;
+    if (d == 6 || d == 7) {
+      // Rectangles of 1 to 40 pixels as two triangles each, one colour per rectangle so that
+      // they pair; d == 7 starts with a lone triangle, putting the pairs out of step.
+      if (d == 7) v.insert(v.end(), {vertex(0, 0), vertex(0.1f, 0), vertex(0, 0.1f)});
+      while (v.size() + 6 <= kVertices) {
+        const float x0 = pos(rng), y0 = pos(rng), x1 = x0 + unit(rng) * 0.25f, y1 = y0 + unit(rng) * 0.4f;
+        const float red = unit(rng), green = unit(rng), blue = unit(rng), alpha = unit(rng);
+        auto at = [&](float x, float y) { return vertex(x, y, 0.25f, 1.f, red, green, blue, alpha); };
+        v.insert(v.end(), {at(x0, y0), at(x1, y0), at(x1, y1), at(x0, y0), at(x1, y1), at(x0, y1)});
+      }
+    } else {
+      float cx = pos(rng), cy = pos(rng);
+      for (size_t i = 0; i < kVertices; ++i) {
+        if (i % 40 == 0) cx = pos(rng), cy = pos(rng);  // strips wander, then jump
+        const float size = i % 97 == 0 ? 20.f : 1.f;      // now and then a large one
+        const float ww = i % 13 == 0 ? w(rng) : 1.f;
+        v.push_back(vertex((cx + spread(rng) * size) * ww, (cy + spread(rng) * size) * ww, (unit(rng) * 2 - 1) * ww, ww,
+                           unit(rng), unit(rng), unit(rng), unit(rng)));
+        cx += spread(rng) * 0.3f;
+        cy += spread(rng) * 0.3f;
+      }
+    }
+    if (d == 8) {
+      std::vector<uint32_t> indices;
+      std::uniform_int_distribution<uint32_t> index(0, static_cast<uint32_t>(v.size()) + 50);  // some past the end
+      for (size_t i = 0; i < kVertices; ++i) indices.push_back(index(rng));
+      r.draw(s, mode, v, indices);
+    } else {
+      r.draw(s, mode, v);
+    }
+  }
+  r.flush();
+}
+
+TEST(Scene, LargeDrawsBinnedInBandsGiveIdenticalImages) { expect_same_for_thread_counts(render_large_draws, 4); }
+
 // A scene of 200 triangles with legs of `size` pixels: whether the pool's threads take it.
 bool scene_of_triangles_is_shared(double size) {
   OwnedFramebuffer fb(256, 256);
