@@ -1,6 +1,7 @@
 #include "raster/parallel_binning.h"
 
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <optional>
 
@@ -30,40 +31,38 @@ ParallelBinning::ParallelBinning(int threads) {
 ParallelBinning::~ParallelBinning() = default;
 
 void ParallelBinning::reset(const Framebuffer& fb) {
-  const int lanes = static_cast<int>(lanes_.size());
-  const int rows = std::clamp(fb.height, 0, kMaxRenderSize);
-  const int tile_rows = (rows + kTileSize - 1) / kTileSize;
-  bands_ = std::min(lanes, tile_rows);
-  for (int i = 0; i < lanes; ++i) {
-    Lane& lane = *lanes_[static_cast<size_t>(i)];
-    lane.geometry.reset();
-    lane.scene.reset(fb);
-    // Lane i: tile rows [i * tile_rows / bands, (i + 1) * tile_rows / bands).
-    const int first = i < bands_ ? i * tile_rows / bands_ : tile_rows;
-    const int end = i < bands_ ? (i + 1) * tile_rows / bands_ : tile_rows;
-    lane.scene.limit_to_rows(first * kTileSize, std::min(end * kTileSize, rows));
+  pixel_rows_ = std::clamp(fb.height, 0, kMaxRenderSize);
+  const int tile_rows = (pixel_rows_ + kTileSize - 1) / kTileSize;
+  split_.reset(tile_rows, std::min(static_cast<int>(lanes_.size()), tile_rows));
+  for (auto& lane : lanes_) {
+    lane->geometry.reset();
+    lane->scene.reset(fb);
   }
 }
 
 bool ParallelBinning::takes(const DrawState& state, const GeometryInput& input) const {
   const bool polygons = input.mode != Primitive::Points && input.mode != Primitive::Lines &&
                         input.mode != Primitive::LineLoop && input.mode != Primitive::LineStrip;
-  return bands_ > 1 && polygons && input.count() >= kMinVertices && state.polygon_front == PolygonMode::Fill &&
+  return split_.bands() > 1 && polygons && input.count() >= kMinVertices && state.polygon_front == PolygonMode::Fill &&
          state.polygon_back == PolygonMode::Fill;
 }
 
 void ParallelBinning::draw(Scene& queued, const GeometryInput& input, WorkerPool& pool, unsigned float_modes) {
   queued.execute(pool);
   queued.prepare_cleared_tiles();  // here, not on the lanes' threads at once
-  for (int i = 0; i < bands_; ++i) {
+  const int bands = split_.bands();
+  for (int i = 0; i < bands; ++i) {
     Lane& l = *lanes_[static_cast<size_t>(i)];
+    l.scene.limit_to_rows(split_.first(i) * kTileSize, std::min(split_.end(i) * kTileSize, pixel_rows_));
     l.scene.continue_draw(queued);
     l.geometry.emplace(l.scene, l.window_cache, l.varying_planes, l.filled_triangle, [&l] { l.scene.execute_here(); });
     l.geometry->set_vertices(input.vertices);
     if (input.varyings) l.geometry->set_varyings(input.vertices.data(), input.varyings);
     if (input.windows) l.geometry->use_window_positions(input.windows);
   }
-  pool.run(bands_, [&](int i) {
+  times_.assign(static_cast<size_t>(bands), 0.0);
+  pool.run(bands, [&](int i) {
+    const auto start = std::chrono::steady_clock::now();
     Lane& l = *lanes_[static_cast<size_t>(i)];
     try {
       const ScopedFloatModes modes(float_modes);
@@ -75,9 +74,11 @@ void ParallelBinning::draw(Scene& queued, const GeometryInput& input, WorkerPool
       l.failure = std::current_exception();
     }
     l.scene.execute_here();
+    times_[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   });
+  split_.record(times_);
   std::exception_ptr failure;
-  for (int i = 0; i < bands_; ++i) {
+  for (int i = 0; i < bands; ++i) {
     Lane& l = *lanes_[static_cast<size_t>(i)];
     l.geometry.reset();
     l.scene.forget_draws();

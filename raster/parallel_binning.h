@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "raster/band_split.h"
 #include "raster/draw_state.h"
 #include "raster/framebuffer.h"
 #include "raster/vertex.h"
@@ -38,7 +39,7 @@ struct GeometryInput {
 
 class ParallelBinning {
  public:
-  // One lane (band) per thread of the pool.
+  // One lane per thread of the pool.
   explicit ParallelBinning(int threads);
   ~ParallelBinning();
   void reset(const Framebuffer& fb);
@@ -56,7 +57,9 @@ class ParallelBinning {
   static constexpr size_t kMinVertices = 3 * 4096;
   struct Lane;
   std::vector<std::unique_ptr<Lane>> lanes_;
-  int bands_ = 0;  // lanes with tile rows of their own in the current framebuffer
+  int pixel_rows_ = 0;     // the framebuffer's rendered rows
+  BandSplit split_;        // lane i draws in band i
+  std::vector<double> times_;  // each band's time in the draw (s)
 };
 
 }  // namespace pineda::raster
