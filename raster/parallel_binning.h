@@ -53,12 +53,13 @@ class ParallelBinning {
   void draw(Scene& queued, const GeometryInput& input, WorkerPool& pool, unsigned float_modes);
 
  private:
-  // Below this, binning on one thread while the others rasterize is not slower.
+  // Smaller draws keep binning on the calling thread while the others run full scenes (a choice,
+  // not tuned: small_tris' and glsl_skinned's draws are far above it, glsl_many_draws' far below).
   static constexpr size_t kMinVertices = 3 * 4096;
   struct Lane;
   std::vector<std::unique_ptr<Lane>> lanes_;
-  int pixel_rows_ = 0;     // the framebuffer's rendered rows
-  BandSplit split_;        // lane i draws in band i
+  int pixel_rows_ = 0;         // the framebuffer's rendered rows
+  BandSplit split_;            // lane i draws in band i
   std::vector<double> times_;  // each band's time in the draw (s)
 };
 
