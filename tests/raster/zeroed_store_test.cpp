@@ -56,6 +56,25 @@ TEST(ZeroedStore, ALargeStoreIsZeroAndWritableToItsEnd) {
   EXPECT_EQ(store.grow(kCount)[kCount - 1] + store.data()[0], 12u);
 }
 
+TEST(ZeroedStore, KeepsItsElementsFromSmallPagesIntoAHugeBlockAndBetweenHugeBlocks) {
+  ZeroedStore<uint64_t> store;
+  uint64_t* p = store.grow(1000);
+  for (size_t i = 0; i < 1000; ++i) p[i] = i * 3 + 1;
+  const size_t huge = kHugeStoreBytes / sizeof(uint64_t) + 5;
+  const size_t larger = (size_t{3} << 20) / sizeof(uint64_t);
+  for (size_t count : {huge, larger}) {
+    p = store.grow(count);
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(p) % kHugePageBytes, 0u) << count;
+    for (size_t i = 0; i < 1000; ++i) ASSERT_EQ(p[i], i * 3 + 1) << count;
+    EXPECT_EQ(p[1000] + p[count - 1], 0u) << count;
+    p[count - 1] = 11;
+  }
+  EXPECT_EQ(p[huge - 1], 11u);
+  ZeroedStore<uint64_t> moved(std::move(store));
+  EXPECT_EQ(moved.data()[larger - 1] + moved.data()[999], 11u + 2998u);
+  EXPECT_EQ(store.data(), nullptr);
+}
+
 TEST(ZeroedStore, AMoveLeavesTheSourceEmptyAndAbleToGrow) {
   ZeroedStore<int> a;
   int* p = a.grow(4);
