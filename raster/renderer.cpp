@@ -14,6 +14,7 @@
 #include "raster/parallel_binning.h"
 #include "raster/prefetch_for_write.h"
 #include "raster/primitive.h"
+#include "raster/record_pool.h"
 #include "raster/reference_lines_points.h"
 #include "raster/reference_mode.h"
 #include "raster/scene.h"
@@ -60,6 +61,7 @@ struct Renderer::Impl {
   std::chrono::steady_clock::time_point last_small_hand_off;
   bool timing_small = false, last_small_shared = false;
   ZeroedStore<PreparedWindow> windows;  // room for a large draw's vertices
+  std::shared_ptr<RecordPool> records = std::make_shared<RecordPool>();  // Scene::begin_draw's
   WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
   std::vector<Plane> varying_planes;  // GeometryStage's
   PrimSetup filled_triangle;  // GeometryStage's
@@ -108,7 +110,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
       record.routine = reference_plane_quads;
       record.sample_routine = nullptr;  // multisampled: the reference routine on each sample plane
     }
-    scene.begin_draw(std::move(record), impl_->reference ? nullptr : &state);
+    scene.begin_draw(make_pooled_record(impl_->records, std::move(record)), impl_->reference ? nullptr : &state);
     impl_->geometry.reset();
   }
   // Kept for the next draw while it repeats this draw's record (the only one begin_draw made).

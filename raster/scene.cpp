@@ -61,8 +61,8 @@ bool Scene::repeats_current_draw(const DrawState& state, bool fades_points) cons
          std::memcmp(current_state_.data(), static_cast<const void*>(&state), sizeof(DrawState)) == 0;
 }
 
-void Scene::begin_draw(DrawRecord&& draw, const DrawState* made_from) {
-  draws_.push_back(std::make_shared<const DrawRecord>(std::move(draw)));
+void Scene::begin_draw(std::shared_ptr<const DrawRecord> draw, const DrawState* made_from) {
+  draws_.push_back(std::move(draw));
   current_repeatable_ = made_from != nullptr;
   if (made_from) std::memcpy(current_state_.data(), static_cast<const void*>(made_from), sizeof(DrawState));
   retain_textures(*draws_.back());

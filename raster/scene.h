@@ -38,7 +38,7 @@ class Scene {
   // Primitives added afterwards belong to this draw. `made_from`: the DrawState make_draw_record
   // made the record from, for this scene's framebuffer, so that a later draw of the same state
   // may go on with the record (null: none may).
-  void begin_draw(DrawRecord&& draw, const DrawState* made_from = nullptr);
+  void begin_draw(std::shared_ptr<const DrawRecord> draw, const DrawState* made_from = nullptr);
   const DrawRecord& current_draw() const { return *draws_.back(); }
   // Whether the current draw's record is the one make_draw_record would make for a draw of
   // `state` and `fades_points` (its other inputs, the framebuffer and the SIMD path, do not

@@ -242,7 +242,7 @@ bool scene_of_triangles_is_shared(double size) {
   WorkerPool pool(2);
   Scene scene;
   scene.reset(fb.fb);
-  scene.begin_draw(make_draw_record(state_for(256, 256), fb.fb));
+  scene.begin_draw(std::make_shared<const DrawRecord>(make_draw_record(state_for(256, 256), fb.fb)));
   SetupParams params;
   params.clip = {0, 0, 256, 256};
   for (int i = 0; i < 200; ++i) {
