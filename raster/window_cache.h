@@ -3,15 +3,17 @@
 // vertex lies inside the clip volume (shared vertices of a mesh are taken to the window once,
 // not once per triangle or line). One per renderer, kept from draw to draw: a slot belongs to
 // the draw whose number it holds, so a new draw starts with no slot of its own and nothing to
-// clear (per draw, clearing the slots of a 65-vertex line strip cost more than its lines).
+// clear (per draw, clearing the slots of a 65-vertex line strip cost more than its lines). The
+// slots lie in zeroed pages (a zero slot belongs to no draw), first touched only when used: a
+// program's first draws of a few vertices touch a few of them, not all 1024 (176 KiB).
 #pragma once
 #include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #include "raster/setup.h"
+#include "raster/zeroed_store.h"
 
 namespace pineda::raster {
 
@@ -36,8 +38,7 @@ class WindowCache {
   // The slot of vertex `index`; `fresh` when it held another vertex or draw (then it is the
   // caller's to fill: `index` and the draw are recorded, usable and in_view reset).
   WindowSlot& slot(size_t index, bool& fresh) {
-    if (slots_.empty()) slots_.resize(kSlots);
-    WindowSlot& s = slots_[index & mask_];
+    WindowSlot& s = slots_.grow(kSlots)[index & mask_];
     fresh = s.draw != draw_ || s.index != index;
     if (fresh) {
       s.draw = draw_;
@@ -50,7 +51,7 @@ class WindowCache {
 
  private:
   static constexpr size_t kSlots = 1024;
-  std::vector<WindowSlot> slots_;
+  ZeroedStore<WindowSlot> slots_;
   uint64_t draw_ = 0;
   size_t mask_ = 0;
 };

@@ -51,7 +51,7 @@ void expect_blocks_of_levels(std::mt19937& random, std::initializer_list<std::pa
     TextureImage image;
     std::vector<uint32_t> texels(static_cast<size_t>(w * h));
     for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-    image.levels.push_back({w, h, std::move(texels)});
+    image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
     for (TexWrap wrap : {TexWrap::Repeat, TexWrap::ClampToEdge})
       for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
         for (int trial = 0; trial < 200; ++trial) {
@@ -75,7 +75,7 @@ TEST(Bilinear8BlockSampler, EdgesGiveTheQuadSamplersTexelsOnEveryPath) {
       TextureImage image;
       std::vector<uint32_t> texels(static_cast<size_t>(w * h));
       for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-      image.levels.push_back({w, h, std::move(texels)});
+      image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
       for (TexWrap ws : {TexWrap::Repeat, TexWrap::ClampToEdge})
         for (TexWrap wt : {TexWrap::Repeat, TexWrap::ClampToEdge})
           for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
@@ -155,7 +155,7 @@ TEST(Bilinear8BlockSampler, UnusualCoordinatesGiveTheQuadSamplersTexelsOnEveryPa
     TextureImage image;
     std::vector<uint32_t> texels(static_cast<size_t>(w * h));
     for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-    image.levels.push_back({w, h, std::move(texels)});
+    image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
     for (TexWrap ws : {TexWrap::Repeat, TexWrap::ClampToEdge})
       for (TexWrap wt : {TexWrap::Repeat, TexWrap::ClampToEdge})
         for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})

@@ -14,7 +14,7 @@ namespace {
 
 TextureImage one_level(int w, int h, std::vector<uint32_t> texels) {
   TextureImage image;
-  image.levels.push_back({w, h, std::move(texels)});
+  image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
   return image;
 }
 
@@ -111,7 +111,7 @@ TEST(Bilinear8BlockSampler, SixteenLanesGiveTheQuadSamplersTexelsOnEveryPath) {
   for (int w = 16, h = 8; w >= 2; w /= 2, h /= 2) {
     std::vector<uint32_t> texels(static_cast<size_t>(w * h));
     for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-    image.levels.push_back({w, h, std::move(texels)});
+    image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
   }
   image.levels.push_back({1, 1, {0x80402010u}});
   // Steps and corners in 1/256ths: s0 + ds - s0 is exactly ds in every quad.
@@ -160,7 +160,7 @@ TEST(Bilinear8BlockSampler, QuadsBetweenTheSameLevelsKeepTheirOwnWeights) {
   for (int w = 16; w >= 1; w /= 2) {
     std::vector<uint32_t> texels(static_cast<size_t>(w * w));
     for (uint32_t& t : texels) t = static_cast<uint32_t>(random());
-    image.levels.push_back({w, w, std::move(texels)});
+    image.levels.push_back({w, w, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
   }
   std::uniform_real_distribution<float> corner(-1.f, 2.f), texels_per_pixel(2.1f, 3.9f);  // lambda in (1, 2)
   int blocks = 0, weights_differ = 0;

@@ -18,7 +18,7 @@ namespace {
 TextureImage mipmapped(int width, int height) {
   TextureImage image;
   for (int w = width, h = height;; w = std::max(w / 2, 1), h = std::max(h / 2, 1)) {
-    image.levels.push_back({w, h, std::vector<uint32_t>(static_cast<size_t>(w) * h)});
+    image.levels.push_back({w, h, CacheLineVector<uint32_t>(static_cast<size_t>(w) * h)});
     if (w == 1 && h == 1) break;
   }
   return image;

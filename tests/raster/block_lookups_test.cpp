@@ -65,7 +65,7 @@ int expect_kernels(std::initializer_list<std::pair<int, int>> sizes, std::initia
     TextureImage image;
     std::vector<uint32_t> texels(static_cast<size_t>(w * h));
     for (uint32_t& texel : texels) texel = static_cast<uint32_t>(random());
-    image.levels.push_back({w, h, std::move(texels)});
+    image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
     for (TexWrap wrap : wraps)
       for (SimdPath path : {SimdPath::Best, SimdPath::Avx2, SimdPath::Baseline})
         for (int trial = 0; trial < 100; ++trial) {

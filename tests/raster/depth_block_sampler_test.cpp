@@ -20,7 +20,7 @@ TextureImage depth_image(int w, int h, TexBaseFormat mode, std::mt19937& rng) {
   std::uniform_real_distribution<float> depth(0.f, 1.f);
   std::vector<uint32_t> texels(static_cast<size_t>(w) * h);
   for (uint32_t& t : texels) t = std::bit_cast<uint32_t>(depth(rng));
-  image.levels.push_back({w, h, std::move(texels)});
+  image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
   return image;
 }
 

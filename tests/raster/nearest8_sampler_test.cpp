@@ -17,7 +17,7 @@ TextureImage random_level(int w, int h, std::mt19937& rng) {
   TextureImage image;
   std::vector<uint32_t> texels(static_cast<size_t>(w) * h);
   for (uint32_t& t : texels) t = rng();
-  image.levels.push_back({w, h, std::move(texels)});
+  image.levels.push_back({w, h, CacheLineVector<uint32_t>(texels.begin(), texels.end())});
   return image;
 }
 

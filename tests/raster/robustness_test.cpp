@@ -27,8 +27,8 @@ float garbage(std::mt19937& rng) {
 TEST(Robustness, RandomGarbageNeverCrashes) {
   std::mt19937 rng(2024);
   auto tex = std::make_shared<TextureImage>();
-  tex->levels.push_back({3, 5, std::vector<uint32_t>(15, 0x80ff40c0u)});
-  tex->levels.push_back({1, 2, std::vector<uint32_t>(2, 0xffffffffu)});
+  tex->levels.push_back({3, 5, CacheLineVector<uint32_t>(15, 0x80ff40c0u)});
+  tex->levels.push_back({1, 2, CacheLineVector<uint32_t>(2, 0xffffffffu)});
   for (int round = 0; round < (std::getenv("PINEDA_FUZZ_ROUNDS") ? std::atoi(std::getenv("PINEDA_FUZZ_ROUNDS")) : 6); ++round) {
     const int w = 1 + static_cast<int>(rng() % 150), h = 1 + static_cast<int>(rng() % 90);
     OwnedFramebuffer fb(w, h, round % 2 ? 16 : 32, round % 3 != 0, round % 2 ? ColorFormat::BGRA8 : ColorFormat::RGBA8);

@@ -114,9 +114,9 @@ TEST(Texture, NearestWrapModesOutsideZeroOne) {
 
 std::shared_ptr<TextureImage> mip_chain() {
   auto t = std::make_shared<TextureImage>();
-  t->levels.push_back({4, 4, std::vector<uint32_t>(16, rgba(255, 0, 0, 255))});
-  t->levels.push_back({2, 2, std::vector<uint32_t>(4, rgba(0, 255, 0, 255))});
-  t->levels.push_back({1, 1, std::vector<uint32_t>(1, rgba(0, 0, 255, 255))});
+  t->levels.push_back({4, 4, CacheLineVector<uint32_t>(16, rgba(255, 0, 0, 255))});
+  t->levels.push_back({2, 2, CacheLineVector<uint32_t>(4, rgba(0, 255, 0, 255))});
+  t->levels.push_back({1, 1, CacheLineVector<uint32_t>(1, rgba(0, 0, 255, 255))});
   return t;
 }
 
@@ -220,7 +220,7 @@ TEST(Texture, ProjectiveCoordinatesDivideByQ) {
 
 TEST(Texture, IncompleteImagesDisableTheUnit) {
   auto t = std::make_shared<TextureImage>();
-  t->levels.push_back({4, 4, std::vector<uint32_t>(3, 0)});  // too few texels
+  t->levels.push_back({4, 4, CacheLineVector<uint32_t>(3, 0)});  // too few texels
   Textured q(2, 2);
   TextureUnit u = unit_with(t, TexFilter::Nearest, TexFilter::Nearest, TexWrap::Repeat);
   q.draw(u, 0, 1);
