@@ -3,6 +3,7 @@
 #include <sys/mman.h>
 
 #include <cstdint>
+#include <mutex>
 #include <new>
 
 namespace pineda::raster {
@@ -12,6 +13,57 @@ namespace {
 size_t whole_huge_pages(size_t bytes) {
   const size_t rounded = (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
   return rounded < bytes ? 0 : rounded;
+}
+
+struct Block {
+  void* start = nullptr;
+  size_t size = 0;  // whole huge pages
+};
+
+// The blocks released for take_huge_block: the process's, as the heap's free memory is (a block
+// may be released by another context, or on a worker thread). At most kMaxBlocks blocks of
+// kMaxBytes in all; the one released longest ago goes first.
+class KeptBlocks {
+ public:
+  void* take(size_t size) {
+    std::lock_guard lock(mutex_);
+    for (int i = count_ - 1; i >= 0; --i)
+      if (kept_[i].size == size) {
+        void* start = kept_[i].start;
+        for (int j = i; j + 1 < count_; ++j) kept_[j] = kept_[j + 1];
+        --count_;
+        return start;
+      }
+    return nullptr;
+  }
+  // Keeps `block`, unmapping those released longest ago while there are too many.
+  void keep(Block block) {
+    if (block.size > kMaxBytes) return release(block);
+    std::lock_guard lock(mutex_);
+    size_t total = block.size;
+    for (int i = 0; i < count_; ++i) total += kept_[i].size;
+    while (count_ > 0 && (count_ == kMaxBlocks || total > kMaxBytes)) {
+      total -= kept_[0].size;
+      release(kept_[0]);
+      for (int j = 0; j + 1 < count_; ++j) kept_[j] = kept_[j + 1];
+      --count_;
+    }
+    kept_[count_++] = block;
+  }
+
+ private:
+  static void release(Block block) { munmap(block.start, block.size); }
+
+  static constexpr int kMaxBlocks = 4;
+  static constexpr size_t kMaxBytes = size_t{32} << 20;
+  std::mutex mutex_;
+  Block kept_[kMaxBlocks];
+  int count_ = 0;
+};
+
+KeptBlocks& kept_blocks() {
+  static KeptBlocks* const kept = new KeptBlocks;  // never destroyed: vectors may outlive static destructors
+  return *kept;
 }
 
 }  // namespace
@@ -33,6 +85,16 @@ void* map_huge_block(size_t bytes) {
 
 void unmap_huge_block(void* block, size_t bytes) noexcept {
   if (block) munmap(block, whole_huge_pages(bytes));
+}
+
+void* take_huge_block(size_t bytes) {
+  if (void* kept = kept_blocks().take(whole_huge_pages(bytes))) return kept;
+  return map_huge_block(bytes);
+}
+
+void release_huge_block(void* block, size_t bytes) noexcept {
+  if (!block) return;
+  kept_blocks().keep({block, whole_huge_pages(bytes)});
 }
 
 }  // namespace pineda::raster

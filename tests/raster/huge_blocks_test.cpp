@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <new>
+#include <set>
+#include <vector>
 
 namespace pineda::raster {
 namespace {
@@ -35,6 +37,34 @@ TEST(HugeBlocks, ASizeNoMappingHoldsIsRefused) {
   EXPECT_THROW(map_huge_block(SIZE_MAX), std::bad_alloc);
   EXPECT_THROW(map_huge_block(SIZE_MAX - kHugePageBytes), std::bad_alloc);
   EXPECT_THROW(map_huge_block(size_t{1} << 62), std::bad_alloc);
+}
+
+TEST(HugeBlocks, AReleasedBlockIsTakenAgainForTheSameSizeAndFourAreKept) {
+  constexpr size_t kBytes = (size_t{6} << 20) + 123;  // a size no other test releases
+  std::vector<void*> released;  // in the order they are released
+  for (int i = 0; i < 5; ++i) {
+    void* b = take_huge_block(kBytes);
+    ASSERT_NE(b, nullptr);
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(b) % kHugePageBytes, 0u);
+    static_cast<uint8_t*>(b)[kBytes - 1] = static_cast<uint8_t>(i + 1);
+    released.push_back(b);
+  }
+  EXPECT_EQ(std::set<void*>(released.begin(), released.end()).size(), 5u);
+  for (void* b : released) release_huge_block(b, kBytes);
+  void* other = take_huge_block(kHugePageBytes);  // another size: none of the kept (all four come back below)
+  // A kept block comes back as it was left; a new mapping (maybe at a freed block's address) is zero.
+  std::set<int> kept_marks;
+  std::vector<void*> taken;
+  for (int i = 0; i < 5; ++i) {
+    taken.push_back(take_huge_block(kBytes));
+    uint8_t& last = static_cast<uint8_t*>(taken.back())[kBytes - 1];
+    if (last != 0) kept_marks.insert(last);
+    last = 9;  // writable to its end
+  }
+  EXPECT_EQ(kept_marks, (std::set<int>{2, 3, 4, 5}));  // the eldest of the five was unmapped
+  for (void* b : taken) release_huge_block(b, kBytes);
+  release_huge_block(other, kHugePageBytes);
+  release_huge_block(nullptr, kBytes);
 }
 
 }  // namespace
