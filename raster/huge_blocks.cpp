@@ -9,10 +9,11 @@
 namespace pineda::raster {
 namespace {
 
-// `bytes` in whole huge pages (0 when that does not fit a size_t).
-size_t whole_huge_pages(size_t bytes) {
-  const size_t rounded = (bytes + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
-  return rounded < bytes ? 0 : rounded;
+// `n` (a size or an address) rounded up to a whole number of huge pages (0 when that does not
+// fit a size_t).
+size_t huge_page_ceiling(size_t n) {
+  const size_t rounded = (n + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+  return rounded < n ? 0 : rounded;
 }
 
 struct Block {
@@ -28,12 +29,7 @@ class KeptBlocks {
   void* take(size_t size) {
     std::lock_guard lock(mutex_);
     for (int i = count_ - 1; i >= 0; --i)
-      if (kept_[i].size == size) {
-        void* start = kept_[i].start;
-        for (int j = i; j + 1 < count_; ++j) kept_[j] = kept_[j + 1];
-        --count_;
-        return start;
-      }
+      if (kept_[i].size == size) return remove(i).start;
     return nullptr;
   }
   // Keeps `block`, unmapping those released longest ago while there are too many.
@@ -43,16 +39,21 @@ class KeptBlocks {
     size_t total = block.size;
     for (int i = 0; i < count_; ++i) total += kept_[i].size;
     while (count_ > 0 && (count_ == kMaxBlocks || total > kMaxBytes)) {
-      total -= kept_[0].size;
-      release(kept_[0]);
-      for (int j = 0; j + 1 < count_; ++j) kept_[j] = kept_[j + 1];
-      --count_;
+      const Block eldest = remove(0);
+      total -= eldest.size;
+      release(eldest);
     }
     kept_[count_++] = block;
   }
 
  private:
   static void release(Block block) { munmap(block.start, block.size); }
+  Block remove(int i) {  // with mutex_ held
+    const Block removed = kept_[i];
+    for (int j = i; j + 1 < count_; ++j) kept_[j] = kept_[j + 1];
+    --count_;
+    return removed;
+  }
 
   static constexpr int kMaxBlocks = 4;
   static constexpr size_t kMaxBytes = size_t{32} << 20;
@@ -69,13 +70,13 @@ KeptBlocks& kept_blocks() {
 }  // namespace
 
 void* map_huge_block(size_t bytes) {
-  const size_t size = whole_huge_pages(bytes);
+  const size_t size = huge_page_ceiling(bytes);
   if (size == 0 || size > SIZE_MAX - kHugePageBytes) throw std::bad_alloc();
   // One huge page more than needed, then trimmed to start on a huge-page boundary.
   void* raw = mmap(nullptr, size + kHugePageBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (raw == MAP_FAILED) throw std::bad_alloc();
   const uintptr_t start = reinterpret_cast<uintptr_t>(raw);
-  const uintptr_t block = (start + kHugePageBytes - 1) & ~(kHugePageBytes - 1);
+  const uintptr_t block = huge_page_ceiling(start);
   const uintptr_t end = start + size + kHugePageBytes;
   if (block > start) munmap(raw, block - start);
   if (end > block + size) munmap(reinterpret_cast<void*>(block + size), end - (block + size));
@@ -84,17 +85,17 @@ void* map_huge_block(size_t bytes) {
 }
 
 void unmap_huge_block(void* block, size_t bytes) noexcept {
-  if (block) munmap(block, whole_huge_pages(bytes));
+  if (block) munmap(block, huge_page_ceiling(bytes));
 }
 
 void* take_huge_block(size_t bytes) {
-  if (void* kept = kept_blocks().take(whole_huge_pages(bytes))) return kept;
+  if (void* kept = kept_blocks().take(huge_page_ceiling(bytes))) return kept;
   return map_huge_block(bytes);
 }
 
 void release_huge_block(void* block, size_t bytes) noexcept {
   if (!block) return;
-  kept_blocks().keep({block, whole_huge_pages(bytes)});
+  kept_blocks().keep({block, huge_page_ceiling(bytes)});
 }
 
 }  // namespace pineda::raster

@@ -11,6 +11,8 @@ constexpr size_t kFirstSlabBytes = size_t{64} << 10;  // a program of a few draw
 constexpr size_t kPieceAlignment = 64;
 static_assert(kPieceAlignment >= alignof(std::max_align_t) && kPieceAlignment >= alignof(DrawRecord));
 
+size_t piece_size(size_t bytes) { return (bytes + kPieceAlignment - 1) & ~(kPieceAlignment - 1); }
+
 }  // namespace
 
 RecordPool::~RecordPool() {
@@ -21,13 +23,13 @@ RecordPool::~RecordPool() {
 }
 
 bool RecordPool::is_piece(size_t bytes) const {
-  return ((bytes + kPieceAlignment - 1) & ~(kPieceAlignment - 1)) == piece_bytes_;
+  return piece_size(bytes) == piece_bytes_;
 }
 
 void* RecordPool::take(size_t bytes) {
   {
     std::lock_guard lock(mutex_);
-    if (piece_bytes_ == 0) piece_bytes_ = (bytes + kPieceAlignment - 1) & ~(kPieceAlignment - 1);
+    if (piece_bytes_ == 0) piece_bytes_ = piece_size(bytes);
     if (is_piece(bytes)) {
       if (free_.empty()) add_slab();
       void* piece = free_.back();
