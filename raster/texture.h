@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "raster/cache_line_vector.h"
 #include "raster/compare_func.h"
+#include "raster/level_texels.h"
 #include "raster/texture_swizzle.h"
 
 namespace pineda::raster {
@@ -25,9 +25,9 @@ struct TextureLevel {
   int width = 0;
   int height = 0;
   // RGBA8, R in the lowest byte; row 0 first (t = 0), slice 0 first (r = 0, or the +X face).
-  // A level of 2 MiB or more is a huge block (huge_blocks.h): a snapshot is new memory, copied
-  // at a texture's first draw after a change.
-  CacheLineVector<uint32_t> texels;
+  // Shared with the texture's state where the snapshot's level is the state's as it is (one
+  // face, no swizzle): level_texels.h.
+  LevelTexels texels;
   int depth = 1;  // slices of a 3D level; the six faces of a cube map level
   bool srgb = false;  // R, G, B are sRGB-encoded: decoded per texel before filtering (raster/srgb.h)
   // A rectangle's level: s and t are in texels already, so the factor that turns them into texel

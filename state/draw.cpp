@@ -70,7 +70,7 @@ int snapshot_textures(Context& ctx) {
     if (!tex) continue;
     resolve_if_rendered(ctx, *tex);  // a feedback loop samples what was rendered before this draw
     const TexParams* sampling = unit.sampler ? &unit.sampler->params : nullptr;
-    out.image = tex->snapshot(sampling);
+    out.image = tex->snapshot(sampling, attached_to_draw_framebuffer(ctx, *tex));
     if (!out.image) continue;
     out.sampler = tex->sampler(sampling);
     out.sampler.lod_bias =

@@ -120,6 +120,8 @@ void note_draw_framebuffer_rendered(Context& ctx);
 void resolve_rendered_textures(Context& ctx);
 // As resolve_rendered_textures, only when `tex` is attached to the draw framebuffer.
 void resolve_if_rendered(Context& ctx, const TextureObject& tex);
+// Whether `tex` is attached to the draw framebuffer (a draw sampling it is a feedback loop).
+bool attached_to_draw_framebuffer(Context& ctx, const TextureObject& tex);
 
 // Before a command renders into the draw framebuffer or reads the read framebuffer: true
 // when it is complete; otherwise GL_INVALID_FRAMEBUFFER_OPERATION is recorded.

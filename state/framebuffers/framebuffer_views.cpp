@@ -336,10 +336,14 @@ void resolve_rendered_textures(Context& ctx) {
 }
 
 void resolve_if_rendered(Context& ctx, const TextureObject& tex) {
+  if (ctx.framebuffers.textures_rendered && attached_to_draw_framebuffer(ctx, tex)) resolve_rendered_textures(ctx);
+}
+
+bool attached_to_draw_framebuffer(Context& ctx, const TextureObject& tex) {
   const FramebufferObject* fb = ctx.framebuffers.draw_object();
-  if (!ctx.framebuffers.textures_rendered || !fb) return;
-  for (const Attachment& a : fb->attachments)
-    if (a.type == GL_TEXTURE && ctx.textures.find(a.name) == &tex) return resolve_rendered_textures(ctx);
+  if (!fb) return false;
+  return std::any_of(fb->attachments.begin(), fb->attachments.end(),
+                     [&](const Attachment& a) { return a.type == GL_TEXTURE && ctx.textures.find(a.name) == &tex; });
 }
 
 bool check_draw_framebuffer(Context& ctx) {

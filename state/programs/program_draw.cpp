@@ -58,7 +58,7 @@ void snapshot_sampler_textures(Context& ctx, const shader::Program& program, con
       TextureObject& tex = ctx.textures.get_or_create(bound_name(ctx.texture_units[index], target), binding_enum(target));
       const SamplerObject* sampler = ctx.texture_units[index].sampler.get();
       const TexParams* sampling = sampler ? &sampler->params : nullptr;
-      out.image = tex.snapshot(sampling);
+      out.image = tex.snapshot(sampling, attached_to_draw_framebuffer(ctx, tex));
       if (!out.image) continue;
       out.sampler = tex.sampler(sampling);
       out.sampler.lod_bias = std::clamp(out.sampler.lod_bias + ctx.texture_units[index].env.lod_bias,

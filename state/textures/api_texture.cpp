@@ -198,12 +198,13 @@ void tex_sub_image(Context& ctx, const ImageTarget& target, GLint level, GLint x
   if (!valid_depth_use(ctx, storage, target.kind, format)) return;
   const bool volume = target.kind == TexTarget::T3D;
   if (!unpack_pixels(ctx, pixels, client_image_extent(ctx.unpack, width, height, depth, volume, format, type))) return;
-  const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, volume};
-  unpack_texels(ctx, l, storage, box, format, type, pixels);
   // The last draw's state still holds the images it sampled (each draw takes them again): let
-  // them go, so that an image no queued draw holds is changed in place.
+  // them go, so that texels no queued draw reads are changed in place.
   for (raster::DrawState* state : {&ctx.draw_state, &ctx.programs.draw_state})
     for (raster::TextureUnit& unit : state->texture_units) unit.image.reset();
+  tex.before_texels_change(level, target.face);
+  const ClientBox box{xoffset, yoffset, zoffset, width, height, depth, 0, 0, 0, volume};
+  unpack_texels(ctx, l, storage, box, format, type, pixels);
   tex.box_changed(level, target.face, {xoffset, yoffset, zoffset, width, height, depth});
 }
 

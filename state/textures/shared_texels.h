@@ -3,6 +3,11 @@
 // (Drawable::kept_storage), so another context of the share group may respecify or delete
 // the texture while rendering is still queued into it. Copies are deep; assign and resize
 // allocate anew and never move elements that a view may point into.
+//
+// Texture snapshots read the elements where they are (share()): through a pin of their own, so
+// that snapshot_holders() counts them apart from the views. Before the elements change in place,
+// the texture detaches them from snapshots that queued draws hold (TextureObject::
+// before_texels_change).
 #pragma once
 #include <algorithm>
 #include <cstddef>
@@ -16,8 +21,10 @@ namespace pineda {
 template <typename T>
 class SharedTexels {
  public:
+  using Storage = raster::CacheLineVector<T>;
+
   SharedTexels() = default;
-  SharedTexels(const SharedTexels& other) : v_(other.v_ ? std::make_shared<raster::CacheLineVector<T>>(*other.v_) : nullptr) {}
+  SharedTexels(const SharedTexels& other) : v_(other.v_ ? std::make_shared<Storage>(*other.v_) : nullptr) {}
   SharedTexels& operator=(const SharedTexels& other) {
     if (this != &other) *this = SharedTexels(other);
     return *this;
@@ -36,18 +43,41 @@ class SharedTexels {
   const T* begin() const { return data(); }
   const T* end() const { return data() + size(); }
 
-  void assign(size_t n, T value) { v_ = std::make_shared<raster::CacheLineVector<T>>(n, value); }
+  void assign(size_t n, T value) {
+    v_ = std::make_shared<Storage>(n, value);
+    pin_.reset();
+  }
   void resize(size_t n, T value = T{}) {
-    auto next = std::make_shared<raster::CacheLineVector<T>>(begin(), begin() + std::min(n, size()));
+    auto next = std::make_shared<Storage>(begin(), begin() + std::min(n, size()));
     next->resize(n, value);
     v_ = std::move(next);
+    pin_.reset();
   }
 
   // What keeps the elements alive for a holder that points into them.
   std::shared_ptr<const void> owner() const { return v_; }
 
+  // The elements for a texture snapshot to read where they are (null when there are none).
+  std::shared_ptr<const Storage> share() const {
+    if (!v_) return nullptr;
+    if (!pin_) pin_ = std::make_shared<Pin>(Pin{v_});
+    return std::shared_ptr<const Storage>(pin_, v_.get());
+  }
+  // How many snapshot levels read the elements where they are.
+  long snapshot_holders() const { return pin_ ? pin_.use_count() - 1 : 0; }
+  // The elements copied into storage of their own, which no snapshot reads (views keep theirs:
+  // a changed data() rebuilds them).
+  void detach() {
+    if (v_) v_ = std::make_shared<Storage>(*v_);
+    pin_.reset();
+  }
+
  private:
-  std::shared_ptr<raster::CacheLineVector<T>> v_;
+  struct Pin {
+    std::shared_ptr<Storage> storage;
+  };
+  std::shared_ptr<Storage> v_;
+  mutable std::shared_ptr<Pin> pin_;  // held by the snapshots that share v_
 };
 
 }  // namespace pineda

@@ -62,7 +62,7 @@ void swizzle_texels(raster::TextureImage& image, const raster::TexSwizzle& swizz
   const std::array<float, 256>& decode = raster::srgb_decode_table();
   for (raster::TextureLevel& level : image.levels) {
     const bool decode_first = level.srgb && mixes_alpha;
-    for (uint32_t& texel : level.texels) {
+    for (uint32_t& texel : level.texels.edit()) {
       if (decode_first) {
         uint32_t linear = texel & 0xff000000u;
         for (int c = 0; c < 3; ++c)
@@ -213,10 +213,10 @@ raster::Sampler TextureObject::sampler(const TexParams* sampling) const {
 // each face is and the faces' base levels are square, of one size and one internal format
 // (GL 1.3 3.8.10, "cube complete"). The snapshot's level 0 is the base level; a cube map level
 // holds the six faces as slices.
-std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexParams* sampling) {
+std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexParams* sampling, bool rendered_into) {
   if (sampling && target == GL_TEXTURE_RECTANGLE_ARB && !rectangle_sampling(*sampling)) return nullptr;
-  const SnapshotKey own = snapshot_key(params);
-  if (!sampling || snapshot_key(*sampling) == own) {
+  const SnapshotKey own = snapshot_key(params, rendered_into);
+  if (!sampling || snapshot_key(*sampling, rendered_into) == own) {
     if (!snapshot_valid_ || snapshot_key_ != own) {
       snapshot_ = build_snapshot(own);
       snapshot_key_ = own;
@@ -226,7 +226,7 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexPar
   }
   // A sampler object's minification filter decides completeness on its own (ARB_sampler_objects),
   // its sRGB decoding what the levels hold.
-  const SnapshotKey key = snapshot_key(*sampling);
+  const SnapshotKey key = snapshot_key(*sampling, rendered_into);
   if (!other_snapshot_valid_ || other_snapshot_key_ != key) {
     other_snapshot_ = build_snapshot(key);
     other_snapshot_key_ = key;
@@ -235,8 +235,8 @@ std::shared_ptr<const raster::TextureImage> TextureObject::snapshot(const TexPar
   return other_snapshot_;
 }
 
-TextureObject::SnapshotKey TextureObject::snapshot_key(const TexParams& sampling) {
-  return {uses_mipmaps(sampling.min_filter), sampling.srgb_decode == GL_DECODE_EXT};
+TextureObject::SnapshotKey TextureObject::snapshot_key(const TexParams& sampling, bool copies) {
+  return {uses_mipmaps(sampling.min_filter), sampling.srgb_decode == GL_DECODE_EXT, copies};
 }
 
 std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(SnapshotKey key) const {
@@ -277,11 +277,17 @@ std::shared_ptr<raster::TextureImage> TextureObject::build_snapshot(SnapshotKey 
     out.depth = faces == 1 ? in.depth : faces;
     out.srgb = key.srgb_decode && texture_format(in.internal_format).value_or(TextureFormat{}).srgb;
     out.texel_coords = kind == raster::TexKind::Rect;
-    out.texels.reserve(size_t(out.width) * out.height * out.depth);
-    for (int f = 0; f < faces; ++f) {
-      const SharedTexels<uint32_t>& texels = face_levels(f)[base + l].texels;
-      out.texels.insert(out.texels.end(), texels.begin(), texels.end());
+    if (faces == 1 && !key.copies) {
+      out.texels = raster::LevelTexels(in.texels.share());
+      continue;
     }
+    raster::LevelTexels::Storage texels;  // a cube map's faces as the slices of one level
+    texels.reserve(size_t(out.width) * out.height * out.depth);
+    for (int f = 0; f < faces; ++f) {
+      const SharedTexels<uint32_t>& face = face_levels(f)[base + l].texels;
+      texels.insert(texels.end(), face.begin(), face.end());
+    }
+    out.texels = std::move(texels);
   }
   const raster::TexSwizzle swizzle = raster_swizzle(params.swizzle);
   if (swizzle != raster::kIdentitySwizzle) {
@@ -307,6 +313,23 @@ void TextureObject::box_changed(int level, int face, const TexelBox& box) {
   ++version;
 }
 
+void TextureObject::before_texels_change(int level, int face) {
+  std::vector<TextureLevelData>& chain = face_levels(face);
+  if (level < 0 || size_t(level) >= chain.size()) return;
+  SharedTexels<uint32_t>& texels = chain[size_t(level)].texels;
+  long unheld = 0;  // levels of this object's snapshots that read the texels and that no draw holds
+  for (const std::shared_ptr<raster::TextureImage>* own : {&snapshot_, &other_snapshot_}) {
+    if (!*own || own->use_count() != 1) continue;
+    for (const raster::TextureLevel& l : (*own)->levels) unheld += l.texels.data() == texels.data() ? 1 : 0;
+  }
+  if (texels.snapshot_holders() <= unheld) return;  // they see the change, as a patch would give them
+  texels.detach();
+  snapshot_.reset();  // rebuilt at the next draw, reading the detached texels
+  snapshot_valid_ = false;
+  other_snapshot_.reset();
+  other_snapshot_valid_ = false;
+}
+
 // Only the context's thread copies snapshot_: held by no one else, no draw can be reading it.
 bool TextureObject::patch_snapshot(int level, int face, const TexelBox& box) {
   if (!snapshot_valid_ || !snapshot_ || snapshot_.use_count() != 1) return false;
@@ -315,13 +338,14 @@ bool TextureObject::patch_snapshot(int level, int face, const TexelBox& box) {
   if (l < 0 || l >= int64_t(snapshot_->levels.size())) return false;
   const TextureLevelData& in = face_levels(face)[size_t(level)];
   raster::TextureLevel& out = snapshot_->levels[size_t(l)];
+  if (out.texels.data() == in.texels.data()) return true;  // it reads the level's texels: changed already
   const size_t face_texels = in.texels.size();
   if (out.texels.size() < face_texels * size_t(face + 1)) return false;
+  raster::LevelTexels::Storage& texels = out.texels.edit();  // its own (copied), held by no draw
   for (int z = 0; z < box.depth; ++z)
     for (int y = 0; y < box.height; ++y) {
       const size_t at = (size_t(box.z + z) * size_t(in.height) + size_t(box.y + y)) * size_t(in.width) + size_t(box.x);
-      std::copy_n(in.texels.begin() + at, box.width,
-                  out.texels.begin() + ptrdiff_t(face_texels * size_t(face) + at));
+      std::copy_n(in.texels.begin() + at, box.width, texels.begin() + ptrdiff_t(face_texels * size_t(face) + at));
     }
   return true;
 }

@@ -54,8 +54,10 @@ struct TextureObject {
   // The image the sampler reads, or null when the texture is incomplete; `sampling`: the
   // parameters of a sampler object bound to the unit, which replace the texture's sampling
   // parameters (textures/sampling_params.h), its minification filter in the completeness rules
-  // too.
-  std::shared_ptr<const raster::TextureImage> snapshot(const TexParams* sampling = nullptr);
+  // too. The image reads the levels' texels where they are (one face, no swizzle), unless
+  // `rendered_into`: the draw renders into the texture (a feedback loop), and its tiles must
+  // not read what others write.
+  std::shared_ptr<const raster::TextureImage> snapshot(const TexParams* sampling = nullptr, bool rendered_into = false);
   raster::Sampler sampler(const TexParams* sampling = nullptr) const;
   void changed() {
     snapshot_.reset();
@@ -73,6 +75,9 @@ struct TextureObject {
     int x, y, z, width, height, depth;
   };
   void box_changed(int level, int face, const TexelBox& box);
+  // Before the texels of `level` change in place (glTexSubImage): a snapshot that a queued draw
+  // holds keeps the texels it reads, as they are (the level's are copied apart from them).
+  void before_texels_change(int level, int face);
   // Rebuilds the levels below `level` of cube face `face` from it (glGenerateMipmap).
   void generate_levels(int level, int face = 0);
   // Counts changes: a framebuffer attachment's copy of a depth image compares it (framebuffers/).
@@ -92,12 +97,13 @@ struct TextureObject {
   bool patch_snapshot(int level, int face, const TexelBox& box);
 
   // What of the sampling parameters a snapshot depends on: whether the minification filter
-  // needs mipmaps (completeness), and whether sRGB texels are decoded.
+  // needs mipmaps (completeness), and whether sRGB texels are decoded; and whether it copies
+  // the texels (snapshot()'s rendered_into).
   struct SnapshotKey {
-    bool mipmapped = false, srgb_decode = true;
+    bool mipmapped = false, srgb_decode = true, copies = false;
     bool operator==(const SnapshotKey&) const = default;
   };
-  static SnapshotKey snapshot_key(const TexParams& sampling);
+  static SnapshotKey snapshot_key(const TexParams& sampling, bool copies);
   std::shared_ptr<raster::TextureImage> build_snapshot(SnapshotKey key) const;
 
   // For the texture's own sampling parameters, and for the last sampler object's that differ

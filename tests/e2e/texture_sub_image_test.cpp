@@ -1,6 +1,8 @@
 // glTexSubImage and glCopyTexSubImage while draws use the texture: a queued draw samples the
 // texels it was recorded with, every later draw the replaced ones, whichever level, cube face
-// or 3D slice was replaced (the sampled image is patched in place once no draw holds it).
+// or 3D slice was replaced (the sampled image reads the texture's texels where they are; they
+// are copied apart from it first when a queued draw holds it).
+#define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -145,6 +147,77 @@ TEST_F(TextureSubImageTest, CopiesOfTheFrameBetweenDraws) {
   }
   for (int i = 0; i < 3; ++i)
     EXPECT_TRUE(near_rgba(pixel(8 * i + 1, 1), {60 * i + 20, 200 - 60 * i, 7, 255})) << i;
+}
+
+// One texture sampled through two images at once (its own filter, and a sampler object's
+// mipmapped one): both queued draws keep the texels of their time.
+TEST_F(TextureSubImageTest, QueuedDrawsThroughASamplerObjectAndWithout) {
+  glBindTexture(GL_TEXTURE_2D, 1);
+  const std::vector<uint8_t> grid = grid_texels();
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, grid.data());
+  const uint8_t grey[4 * 4] = {90, 90, 90, 255, 90, 90, 90, 255, 90, 90, 90, 255, 90, 90, 90, 255};
+  glTexImage2D(GL_TEXTURE_2D, 1, GL_RGBA, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, grey);
+  glTexImage2D(GL_TEXTURE_2D, 2, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, grey);
+  nearest(GL_TEXTURE_2D);
+  GLuint sampler = 0;
+  glGenSamplers(1, &sampler);
+  glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+  glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glEnable(GL_TEXTURE_2D);
+  draw_grid_at(0);  // magnified: level 0 either way
+  glBindSampler(0, sampler);
+  draw_grid_at(8);
+  set_texel(GL_TEXTURE_2D, 0, 1, 1, kRed);  // both draws queued
+  draw_grid_at(16);
+  glBindSampler(0, 0);
+  draw_grid_at(24);
+  expect_grid_at(0, grid_texel);
+  expect_grid_at(8, grid_texel);
+  const auto replaced = [](int s, int t) { return s == 1 && t == 1 ? kRed : grid_texel(s, t); };
+  expect_grid_at(16, replaced);
+  expect_grid_at(24, replaced);
+  glDeleteSamplers(1, &sampler);
+}
+
+// A texture rendered into through a framebuffer object, drawn into the window, then changed by
+// glTexSubImage while that draw is queued: the framebuffer renders into the texels the texture
+// has after the change, and the queued draw shows the ones of its time.
+TEST_F(TextureSubImageTest, RenderedIntoAroundAChangeWhileADrawIsQueued) {
+  glBindTexture(GL_TEXTURE_2D, 1);
+  const std::vector<uint8_t> grid = grid_texels();
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, grid.data());
+  nearest(GL_TEXTURE_2D);
+  GLuint fb = 0;
+  glGenFramebuffers(1, &fb);
+  glBindFramebuffer(GL_FRAMEBUFFER, fb);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 1, 0);
+  ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  auto render_texel = [&](int s, int t, const Rgba& c) {  // texel (s, t) by drawing into it
+    glBindFramebuffer(GL_FRAMEBUFFER, fb);
+    glViewport(0, 0, 4, 4);
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadIdentity();
+    glOrtho(0, 4, 0, 4, -1, 1);
+    glDisable(GL_TEXTURE_2D);
+    glColor4ub(GLubyte(c[0]), GLubyte(c[1]), GLubyte(c[2]), GLubyte(c[3]));
+    glRecti(s, t, s + 1, t + 1);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width(), height());
+    glEnable(GL_TEXTURE_2D);
+  };
+  render_texel(0, 0, kGreen);
+  draw_grid_at(0);
+  set_texel(GL_TEXTURE_2D, 0, 1, 1, kRed);  // while the draw at 0 is queued
+  render_texel(3, 3, kBlue);
+  draw_grid_at(8);
+  expect_grid_at(0, [](int s, int t) { return s == 0 && t == 0 ? kGreen : grid_texel(s, t); });
+  expect_grid_at(8, [](int s, int t) {
+    return s == 0 && t == 0 ? kGreen : s == 1 && t == 1 ? kRed : s == 3 && t == 3 ? kBlue : grid_texel(s, t);
+  });
+  glDeleteFramebuffers(1, &fb);
 }
 
 }  // namespace

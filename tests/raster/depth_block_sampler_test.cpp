@@ -67,7 +67,7 @@ TEST(DepthBlockSampler, TakesLevelZeroOfPlanarDepthImagesWithOneFilterAndNoCompa
   swizzled.depth_swizzle[0] = 3;
   EXPECT_EQ(select_depth_block_sampler(swizzled, plain), nullptr);
   TextureImage short_level = image;
-  short_level.levels[0].texels.pop_back();
+  short_level.levels[0].texels.edit().pop_back();
   EXPECT_EQ(select_depth_block_sampler(short_level, plain), nullptr);
 }
 

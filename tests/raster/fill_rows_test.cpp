@@ -75,13 +75,13 @@ std::shared_ptr<const TextureImage> random_texture(const Config& c) {
   image->base_format = c.texture_format;
   if (!c.mipmapped) {
     TextureLevel level{c.texture_width, c.texture_height, {}};
-    for (int i = 0; i < c.texture_width * c.texture_height; ++i) level.texels.push_back(random_texel(c.texture_format, rng));
+    for (int i = 0; i < c.texture_width * c.texture_height; ++i) level.texels.edit().push_back(random_texel(c.texture_format, rng));
     image->levels.push_back(std::move(level));
     return image;
   }
   for (int size = 16; size >= 1; size /= 2) {
     TextureLevel level{size, size, {}};
-    for (int i = 0; i < size * size; ++i) level.texels.push_back(random_texel(c.texture_format, rng));
+    for (int i = 0; i < size * size; ++i) level.texels.edit().push_back(random_texel(c.texture_format, rng));
     image->levels.push_back(std::move(level));
   }
   return image;

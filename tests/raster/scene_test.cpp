@@ -20,7 +20,7 @@ std::shared_ptr<TextureImage> noise_texture(std::mt19937& rng) {
   auto t = std::make_shared<TextureImage>();
   for (int size = 16; size >= 1; size /= 2) {
     TextureLevel l{size, size, {}};
-    for (int i = 0; i < size * size; ++i) l.texels.push_back(static_cast<uint32_t>(rng()));
+    for (int i = 0; i < size * size; ++i) l.texels.edit().push_back(static_cast<uint32_t>(rng()));
     t->levels.push_back(std::move(l));
   }
   return t;

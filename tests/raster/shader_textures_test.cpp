@@ -20,7 +20,7 @@ std::shared_ptr<const TextureImage> random_mipmapped(int size, std::mt19937& ran
   auto image = std::make_shared<TextureImage>();
   for (int w = size;; w = std::max(w / 2, 1)) {
     TextureLevel level{w, w, CacheLineVector<uint32_t>(static_cast<size_t>(w) * w)};
-    for (uint32_t& texel : level.texels) texel = static_cast<uint32_t>(random());
+    for (uint32_t& texel : level.texels.edit()) texel = static_cast<uint32_t>(random());
     image->levels.push_back(std::move(level));
     if (w == 1) break;
   }

@@ -182,7 +182,7 @@ Texture make_texture() {
   int level = 0;
   for (int size = 16; size >= 1; size /= 2, ++level) {
     TextureLevel l{size, size, {}};
-    for (int i = 0; i < size * size; ++i) l.texels.push_back(rng() | 0xff000000u);
+    for (int i = 0; i < size * size; ++i) l.texels.edit().push_back(rng() | 0xff000000u);
     glTexImage2D(GL_TEXTURE_2D, level, GL_RGBA8, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, l.texels.data());
     t.image->levels.push_back(std::move(l));
   }
