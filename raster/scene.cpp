@@ -19,6 +19,11 @@ namespace {
 // tiles read them back; at 65536 (36 MiB) binning and rasterizing small triangles both waited
 // on memory (small_tris: 340 -> 205 ms per frame, one thread).
 constexpr size_t kMaxPrims = size_t{1} << 10;
+// A new scene's room for primitives, grown to kMaxPrims when it fills: a frame of a few large
+// primitives writes one small page of records, not a huge one (on this kind of VM a first
+// touch of a huge page cost up to 4 ms, as its 512 small pages would: a tenth of texture_upload's
+// first frame).
+constexpr size_t kFirstPrims = 64;
 constexpr size_t kMaxCommands = size_t{1} << 22;
 constexpr size_t kMaxDraws = 4096;
 constexpr size_t kMaxRetainedTextureBytes = size_t{256} << 20;
@@ -43,7 +48,7 @@ void Scene::reset(const Framebuffer& fb) {
   tiles_y_ = (render_h_ + kTileSize - 1) / kTileSize;
   if (tiles_x_ == 0 || tiles_y_ == 0) tiles_x_ = tiles_y_ = 0;
   draws_.clear();
-  prims_.grow(kMaxPrims);
+  prims_.grow(kFirstPrims);
   prim_count_ = 0;
   bounded_pixels_ = 0;
   clears_.clear();
@@ -125,7 +130,7 @@ void Scene::add_prim(const PrimSetup& prim, const Plane* varying_planes, int cou
   // (Lines and points cost more per pixel than triangles: wireframe ran faster shared.)
   const size_t pixels = static_cast<size_t>(r.x1 - r.x0) * static_cast<size_t>(r.y1 - r.y0);
   bounded_pixels_ += prim.kind == CoverageKind::Triangle ? pixels : std::max(pixels, kSharedPixelsPerPrim);
-  if (prim_count_ == prims_.capacity()) prims_.grow(prims_.capacity() + kMaxPrims);  // (full() stops binning before)
+  if (prim_count_ == prims_.capacity()) prims_.grow(std::max(kMaxPrims, prims_.capacity() + kFirstPrims));
   const size_t bytes = used_bytes(std::clamp(draws_.back()->planes, 0, kMaxPlanes));
   if (prefetch_writes_ && prim_count_ + kWriteAhead < prims_.capacity())
     prefetch_for_write(&prims_.data()[prim_count_ + kWriteAhead], bytes);
