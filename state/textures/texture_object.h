@@ -70,7 +70,8 @@ struct TextureObject {
   // it when it is the base level and generation is on.
   void level_changed(int level, int face = 0);
   // The same after glTexSubImage replaced the texels of `box` in `level`: a snapshot that no
-  // queued draw holds takes the box in place instead of being rebuilt whole.
+  // queued draw holds reads the changed texels where they are (or takes the box into its own
+  // copy of them) instead of being rebuilt whole.
   struct TexelBox {
     int x, y, z, width, height, depth;
   };
