@@ -68,9 +68,10 @@ int snapshot_textures(Context& ctx) {
       break;
     }
     if (!tex) continue;
-    resolve_if_rendered(ctx, *tex);  // a feedback loop samples what was rendered before this draw
+    const bool rendered_into = attached_to_draw_framebuffer(ctx, *tex);
+    if (rendered_into) resolve_rendered_textures(ctx);  // a feedback loop samples what was rendered before this draw
     const TexParams* sampling = unit.sampler ? &unit.sampler->params : nullptr;
-    out.image = tex->snapshot(sampling, attached_to_draw_framebuffer(ctx, *tex));
+    out.image = tex->snapshot(sampling, rendered_into);
     if (!out.image) continue;
     out.sampler = tex->sampler(sampling);
     out.sampler.lod_bias =

@@ -118,8 +118,6 @@ void note_draw_framebuffer_rendered(Context& ctx);
 // Completes rendering queued into textures of the draw framebuffer and makes the textures
 // show it: before a texture is sampled, read or respecified.
 void resolve_rendered_textures(Context& ctx);
-// As resolve_rendered_textures, only when `tex` is attached to the draw framebuffer.
-void resolve_if_rendered(Context& ctx, const TextureObject& tex);
 // Whether `tex` is attached to the draw framebuffer (a draw sampling it is a feedback loop).
 bool attached_to_draw_framebuffer(Context& ctx, const TextureObject& tex);
 

@@ -335,10 +335,6 @@ void resolve_rendered_textures(Context& ctx) {
   }
 }
 
-void resolve_if_rendered(Context& ctx, const TextureObject& tex) {
-  if (ctx.framebuffers.textures_rendered && attached_to_draw_framebuffer(ctx, tex)) resolve_rendered_textures(ctx);
-}
-
 bool attached_to_draw_framebuffer(Context& ctx, const TextureObject& tex) {
   const FramebufferObject* fb = ctx.framebuffers.draw_object();
   if (!fb) return false;

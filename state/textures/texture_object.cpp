@@ -324,10 +324,7 @@ void TextureObject::before_texels_change(int level, int face) {
   }
   if (texels.snapshot_holders() <= unheld) return;  // they see the change, as a patch would give them
   texels.detach();
-  snapshot_.reset();  // rebuilt at the next draw, reading the detached texels
-  snapshot_valid_ = false;
-  other_snapshot_.reset();
-  other_snapshot_valid_ = false;
+  drop_snapshots();  // rebuilt at the next draw, reading the detached texels
 }
 
 // Only the context's thread copies snapshot_: held by no one else, no draw can be reading it.

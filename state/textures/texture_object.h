@@ -60,10 +60,7 @@ struct TextureObject {
   std::shared_ptr<const raster::TextureImage> snapshot(const TexParams* sampling = nullptr, bool rendered_into = false);
   raster::Sampler sampler(const TexParams* sampling = nullptr) const;
   void changed() {
-    snapshot_.reset();
-    snapshot_valid_ = false;
-    other_snapshot_.reset();
-    other_snapshot_valid_ = false;
+    drop_snapshots();
     ++version;
   }
   // GL_GENERATE_MIPMAP: after `level` (of cube face `face`) changed, rebuilds the levels below
@@ -94,6 +91,12 @@ struct TextureObject {
   GLint clamped_level_param(GLenum pname, GLint level) const;
 
  private:
+  void drop_snapshots() {
+    snapshot_.reset();
+    snapshot_valid_ = false;
+    other_snapshot_.reset();
+    other_snapshot_valid_ = false;
+  }
   // Copies `box` of `level` into the snapshot; false when there is none to patch.
   bool patch_snapshot(int level, int face, const TexelBox& box);
 
