@@ -13,6 +13,11 @@ namespace pineda::raster {
 
 class EdgeRowBound {
  public:
+  // Lower: the edge keeps the columns from a first one on; Upper: up to a last one; Row: all
+  // of a row or none (a horizontal edge).
+  enum class Kind : uint8_t { Lower, Upper, Row };
+
+  EdgeRowBound() = default;
   // The bound in row y; next() moves it to row y + 1.
   EdgeRowBound(const EdgeFunction& e, int y) {
     // a * (256x + 128) + b * (256y + 128) + c >= 0  <=>  256a * x >= n.
@@ -27,38 +32,26 @@ class EdgeRowBound {
     } else {  // the same for every column: all of the row when n <= 0, none otherwise
       kind_ = Kind::Row;
       quotient_ = n;
-      step_q_ = n_step;
+      step_q_ = n_step;  // (rest_ stays 0 below den_ 1: next() adds step_q_ alone)
     }
   }
 
-  // Narrows the columns [lo, hi] (inclusive) to the ones this edge keeps in the current row.
-  void narrow(int64_t& lo, int64_t& hi) const {
-    switch (kind_) {
-      case Kind::Lower:
-        if (-quotient_ > lo) lo = -quotient_;
-        break;
-      case Kind::Upper:
-        if (quotient_ < hi) hi = quotient_;
-        break;
-      case Kind::Row:
-        if (quotient_ > 0) hi = lo - 1;
-        break;
-    }
-  }
+  Kind kind() const { return kind_; }
+  // In the current row: the first column kept (Lower), the last one (Upper), whether none is (Row).
+  int64_t first_column() const { return -quotient_; }
+  int64_t last_column() const { return quotient_; }
+  bool keeps_no_column() const { return quotient_ > 0; }
 
+  // Without a branch: the carry of the remainder is as likely as not on a slanted edge.
   void next() {
     quotient_ += step_q_;
-    if (kind_ == Kind::Row) return;
     rest_ += step_r_;
-    if (rest_ >= den_) {
-      ++quotient_;
-      rest_ -= den_;
-    }
+    const int64_t carry = rest_ >= den_ ? 1 : 0;
+    quotient_ += carry;
+    rest_ -= den_ & -carry;
   }
 
  private:
-  enum class Kind : uint8_t { Lower, Upper, Row };
-
   // quotient = floor(m / den), m = quotient * den + rest with rest in [0, den); m grows by m_step a row.
   void start(int64_t m, int64_t den, int64_t m_step) {
     den_ = den;

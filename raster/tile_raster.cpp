@@ -240,14 +240,33 @@ void rasterize_triangle(const PrimSetup& p, const PixelRect& area, const Sink& s
     return;
   }
   TileMask mask{area};
-  EdgeRowBound bounds[3] = {{p.edges[0], area.y0}, {p.edges[1], area.y0}, {p.edges[2], area.y0}};
+  // The edges by kind: a row takes each one's bound without a switch.
+  EdgeRowBound lower[3], upper[3], level[3];
+  int lowers = 0, uppers = 0, levels = 0;
+  for (const EdgeFunction& e : p.edges) {
+    const EdgeRowBound b(e, area.y0);
+    switch (b.kind()) {
+      case EdgeRowBound::Kind::Lower: lower[lowers++] = b; break;
+      case EdgeRowBound::Kind::Upper: upper[uppers++] = b; break;
+      case EdgeRowBound::Kind::Row: level[levels++] = b; break;
+    }
+  }
   for (int y = area.y0; y < area.y1; ++y) {
     int64_t lo = area.x0, hi = area.x1 - 1;
-    for (EdgeRowBound& b : bounds) {
-      b.narrow(lo, hi);
-      b.next();
+    bool none = false;
+    for (int i = 0; i < lowers; ++i) {
+      lo = std::max(lo, lower[i].first_column());
+      lower[i].next();
     }
-    if (lo > hi) continue;
+    for (int i = 0; i < uppers; ++i) {
+      hi = std::min(hi, upper[i].last_column());
+      upper[i].next();
+    }
+    for (int i = 0; i < levels; ++i) {
+      none |= level[i].keeps_no_column();
+      level[i].next();
+    }
+    if (none || lo > hi) continue;
     const int width = static_cast<int>(hi - lo + 1);  // at most 64: the area lies in one tile
     const uint64_t span = width == 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1;
     mask.rows[y - area.y0] = span << (lo - area.x0);
