@@ -1,6 +1,7 @@
 #include "raster/tile_raster.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 
@@ -103,21 +104,34 @@ struct TileMask {
   void set(int x, int y) { rows[y - area.y0] |= uint64_t{1} << (x - area.x0); }
 };
 
-// Each quad row's quads from its first to its last covered one, their masks from two bit rows.
+// A byte of a bit row as four quads' bits of that row: its pairs of bits one to a byte.
+constexpr std::array<uint32_t, 256> kPairsToBytes = [] {
+  std::array<uint32_t, 256> out{};
+  for (uint32_t b = 0; b < 256; ++b)
+    for (int k = 0; k < 4; ++k) out[b] |= ((b >> (2 * k)) & 3u) << (8 * k);
+  return out;
+}();
+
+// Each quad row's quads from its first to its last covered one, their masks from two bit rows
+// (four at a time).
 template <class Sink>
 void emit_mask(const TileMask& mask, const Sink& sink) {
   const PixelRect& area = mask.area;
   const int x0 = area.x0 & ~1;
   const int shift = area.x0 - x0;  // bit i of a shifted row is pixel x0 + i (an odd x0 leaves bit 63 free)
   auto bits = [&](int y) { return y >= area.y0 && y < area.y1 ? mask.rows[y - area.y0] << shift : 0; };
-  uint8_t masks[kMaxQuadsPerRow];
+  uint8_t masks[kMaxQuadsPerRow + 3];  // (the last four may run past the row's quads: with zeros)
   for (int y = area.y0 & ~1; y < area.y1; y += 2) {
     const uint64_t r0 = bits(y), r1 = bits(y + 1);
     if (!(r0 | r1)) continue;
     const int q0 = __builtin_ctzll(r0 | r1) / 2, q1 = (63 - __builtin_clzll(r0 | r1)) / 2;
-    for (int q = q0; q <= q1; ++q)
-      masks[q - q0] = static_cast<uint8_t>(((r0 >> (2 * q)) & 3u) | (((r1 >> (2 * q)) & 3u) << 2));
-    sink.row(x0 + 2 * q0, y, q1 - q0 + 1, masks);
+    const uint64_t row0 = r0 >> (2 * q0), row1 = r1 >> (2 * q0);
+    const int count = q1 - q0 + 1;
+    for (int k = 0; k < count; k += 4) {
+      const uint32_t four = kPairsToBytes[(row0 >> (2 * k)) & 0xffu] | kPairsToBytes[(row1 >> (2 * k)) & 0xffu] << 2;
+      std::memcpy(masks + k, &four, sizeof four);
+    }
+    sink.row(x0 + 2 * q0, y, count, masks);
   }
 }
 
