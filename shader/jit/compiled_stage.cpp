@@ -19,9 +19,9 @@ using ir::Operand;
 
 namespace {
 
-// Bit patterns the generated code broadcasts: 1.0, the sign bit, all but the sign.
-alignas(64) constexpr uint32_t kPool[] = {0x3F800000u, 0x80000000u, 0x7FFFFFFFu};
-enum PoolEntry { kOne, kSignBit, kAbsBits };
+// Bit patterns the generated code broadcasts: 1.0, the sign bit, all but the sign, 3.0.
+alignas(64) constexpr uint32_t kPool[] = {0x3F800000u, 0x80000000u, 0x7FFFFFFFu, 0x40400000u};
+enum PoolEntry { kOne, kSignBit, kAbsBits, kThree };
 alignas(64) constexpr int32_t kLaneIndex[kLanes] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 constexpr uint8_t kFloor = 0x09, kTruncate = 0x0B;  // vrndscaleps modes
 
@@ -46,8 +46,8 @@ bool natively_emitted(Op op) {
     case Op::Abs: case Op::Floor: case Op::Fract: case Op::Trunc: case Op::Sqrt: case Op::Not: case Op::ToBool:
     case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Min: case Op::Max: case Op::Step:
     case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne: case Op::And: case Op::Or:
-    case Op::Xor: case Op::Clamp: case Op::Mix: case Op::Select: case Op::Mad: case Op::GatherUniform:
-    case Op::Rsq: case Op::NormScale: case Op::Gather: case Op::Scatter:
+    case Op::Xor: case Op::Clamp: case Op::Mix: case Op::Smoothstep: case Op::Select: case Op::Mad:
+    case Op::GatherUniform: case Op::Rsq: case Op::NormScale: case Op::Gather: case Op::Scatter:
       return true;
     default:
       return false;
@@ -752,6 +752,17 @@ class Generator {
         x_.vmulps(kScratch, a, kScratch);
         x_.vmulps(kScratch2, b, c);
         return x_.vaddps(d, kScratch, kScratch2);
+      case Op::Smoothstep:  // t * t * (3 - 2 * t), t = lane_min(lane_max((c - a) / (b - a), 0), 1)
+        x_.vsubps(kScratch, c, a);
+        x_.vsubps(kScratch2, b, a);
+        x_.vdivps(kScratch, kScratch, kScratch2);
+        min_max(kScratch, kScratch, kZeroReg, true);
+        min_max(kScratch, kScratch, kOneReg, false);
+        pool(d, kThree);  // (the operands are read: d may be one of them)
+        x_.vaddps(kScratch2, kScratch, kScratch);  // 2 * t, exactly
+        x_.vsubps(d, d, kScratch2);
+        x_.vmulps(kScratch2, kScratch, kScratch);
+        return x_.vmulps(d, kScratch2, d);
       case Op::Select:  // a != 0 ? b : c
         x_.vcmpps(1, a, kZeroReg, Cmp::Neq);
         return x_.vblendmps(d, 1, c, b);
