@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "raster/quad_vector.h"
 #include "raster/texture.h"
 
 namespace pineda::raster {
@@ -81,6 +82,40 @@ inline LevelChoice levels_at(const Sampler& sampler, float lambda, int max_level
 
 inline LevelChoice choose_levels(const Sampler& sampler, float lambda, int max_level) {
   return levels_at(sampler, clamped_lambda(sampler, lambda), max_level);
+}
+
+// The same over four lanes (four quads' rho^2), the same operations per lane: clamped_lambda's
+// lambda of lambda_from_rho2 (the fill routines' groups; a template, so that every copy of them
+// inlines its own).
+template <typename V = F4>
+[[gnu::always_inline]] inline V clamped_lambda_lanes(const Sampler& sampler, V rho2) {
+  const I4 subnormal = rho2 < 0x1p-126f;
+  const V scaled = subnormal ? rho2 * 0x1p24f : rho2;
+  const U4 bits = reinterpret_cast<U4>(scaled);
+  const I4 e = reinterpret_cast<I4>(bits >> 23) - 126 - (subnormal & 24);
+  const V m = reinterpret_cast<V>((bits & 0x807fffffu) | 0x3f000000u);
+  V lambda = 0.5f * (__builtin_convertvector(e - 1, V) + (2.f * m - 1.f));
+  lambda = bits >= 0x7f800000u ? V{} + INFINITY : lambda;
+  lambda = rho2 > 0.f ? lambda : rho2 == 0.f ? V{} - INFINITY : V{} + NAN;
+  // clamped_lambda: NaN as 0; std::max(l + bias, min_lod), then std::min(that, max_lod).
+  lambda = lambda != lambda ? V{} : lambda;
+  lambda += sampler.lod_bias;
+  lambda = lambda < sampler.min_lod ? V{} + sampler.min_lod : lambda;
+  lambda = sampler.max_lod < lambda ? V{} + sampler.max_lod : lambda;
+  const I4 in_range = (lambda > -1e30f) & (lambda < 1e30f);
+  return in_range ? lambda : lambda > 0.f ? V{} + 1e30f : V{} - 1e30f;
+}
+
+// levels_at's choice over four lanes for the filters that blend two levels (NEAREST_ or
+// LINEAR_MIPMAP_LINEAR): `first`, `two` (lanes) and the blend in 1/256 (where two).
+inline void blended_levels_lanes(const Sampler& sampler, F4 lambda, int max_level, I4& first, I4& two, I4& blend256) {
+  const float c = sampler.mag_filter == TexFilter::Linear && sampler.min_filter == TexFilter::NearestMipmapLinear ? 0.5f : 0.f;
+  const I4 magnified = lambda <= c, top = lambda >= static_cast<float>(max_level);
+  two = ~magnified & ~top;
+  const F4 inside = two ? lambda : F4{};  // positive: truncation is floor
+  const I4 whole = __builtin_convertvector(inside, I4);
+  first = two ? whole : top ? I4{} + max_level : I4{};
+  blend256 = __builtin_convertvector((inside - __builtin_convertvector(whole, F4)) * 256.f, I4);
 }
 
 }  // namespace pineda::raster
