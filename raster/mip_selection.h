@@ -84,11 +84,10 @@ inline LevelChoice choose_levels(const Sampler& sampler, float lambda, int max_l
   return levels_at(sampler, clamped_lambda(sampler, lambda), max_level);
 }
 
-// The same over four lanes (four quads' rho^2), the same operations per lane: clamped_lambda's
-// lambda of lambda_from_rho2 (the fill routines' groups; a template, so that every copy of them
-// inlines its own).
-template <typename V = F4>
-[[gnu::always_inline]] inline V clamped_lambda_lanes(const Sampler& sampler, V rho2) {
+// The same over four lanes (four quads' rho^2, the fill routines' groups), the same operations
+// per lane: clamped_lambda's lambda of lambda_from_rho2.
+[[gnu::always_inline]] inline F4 clamped_lambda_lanes(const Sampler& sampler, F4 rho2) {
+  using V = F4;
   const I4 subnormal = rho2 < 0x1p-126f;
   const V scaled = subnormal ? rho2 * 0x1p24f : rho2;
   const U4 bits = reinterpret_cast<U4>(scaled);
