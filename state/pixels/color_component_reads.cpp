@@ -1,9 +1,12 @@
 #include "state/pixels/color_component_reads.h"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cstring>
 
 #include "raster/color_reduction.h"
+#include "raster/simd_path.h"
 #include "state/pixels/pixel_format.h"
 
 namespace pineda::gl {
@@ -41,12 +44,37 @@ void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table,
   }
 }
 
+// read_stored_float_rows' row with AVX2, eight components at a time: each byte k as double(k) *
+// (1 / 255.0) converted to float, which is k / 255 in float for all 256 (the double product's
+// error is far below half a float step; tests/state/color_float_reads_test.cpp checks every
+// byte), without the division, whose throughput bounded the baseline loop. Returns the
+// components done (a multiple of 8).
+#if !defined(__clang__)  // (clang's copies are baseline code: raster/simd_path.h)
+__attribute__((target("avx2"))) size_t float_row_avx2(const uint8_t* src, size_t components, bool opaque, uint8_t* dst) {
+  const __m256d scale = _mm256_set1_pd(1.0 / 255.0);
+  // Alpha (every fourth component) 1 where opaque: lanes 3 and 7 taken from ones.
+  const __m256 ones = _mm256_set1_ps(1.f);
+  size_t i = 0;
+  for (; i + 8 <= components; i += 8) {
+    const __m256i bytes = _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(src + i)));
+    const __m128 low = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtepi32_pd(_mm256_castsi256_si128(bytes)), scale));
+    const __m128 high = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtepi32_pd(_mm256_extracti128_si256(bytes, 1)), scale));
+    __m256 value = _mm256_insertf128_ps(_mm256_castps128_ps256(low), high, 1);
+    if (opaque) value = _mm256_blend_ps(value, ones, 0x88);
+    _mm256_storeu_ps(reinterpret_cast<float*>(dst + i * sizeof(float)), value);
+  }
+  return i;
+}
+#endif
+
 // Rows whose four float components are the stored bytes in their order, alpha 1 where `opaque`:
 // each byte k as k / 255 in float, by a division (correctly rounded, so the table's value: the
-// double quotient converted to float, equal for all 256) over whole rows, which vectorizes.
+// double quotient converted to float, equal for all 256) over whole rows, which vectorizes; with
+// AVX2, by float_row_avx2's product.
 void read_stored_float_rows(const raster::ColorBuffer& cb, bool opaque, int x0, int x1, int y0, int y1, uint8_t* first,
                             size_t row_stride) {
   constexpr size_t kChunk = 64;  // components: 16 pixels
+  static const bool avx2 = raster::kCopiesHaveTheirTargets && raster::uses_avx2(raster::simd_path_from_environment());
   for (int y = y0; y < y1; ++y) {
     const uint8_t* src = cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0);
     uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
@@ -59,6 +87,9 @@ void read_stored_float_rows(const raster::ColorBuffer& cb, bool opaque, int x0, 
       std::memcpy(dst + done * sizeof(float), chunk, n * sizeof(float));  // (client rows need not be aligned)
     };
     size_t done = 0;
+#if !defined(__clang__)
+    if (avx2) done = float_row_avx2(src, components, opaque, dst);
+#endif
     for (; done + kChunk <= components; done += kChunk) convert(done, kChunk);
     if (done < components) convert(done, components - done);
   }
