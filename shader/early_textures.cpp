@@ -41,8 +41,10 @@ bool move_up(ir::Code& code, std::vector<char>& stays_above, size_t at) {
 }
 
 // For each instruction, whether it is arithmetic whose result a later texture lookup of the same
-// stretch reads (before anything writes that register again): one pass from the end, keeping the
-// registers the lookups below read.
+// stretch reads, directly or through other such arithmetic (before anything writes that register
+// again): one pass from the end, keeping the registers the lookups and their feeders below read.
+// (A kernel's offsets computed from uniforms, `cos(a) * r`, feed its coordinates in two steps:
+// with direct feeders only, each lookup stayed behind the last one's sums.)
 std::vector<char> feeds_lookups(ir::Code& code) {
   std::vector<char> feeds(code.insts.size());
   std::vector<Operand> read_below;
@@ -55,7 +57,7 @@ std::vector<char> feeds_lookups(ir::Code& code) {
     feeds[at] = ir::op_is_pure_arith(in.op) && in.d >= 0 &&
                 std::find(read_below.begin(), read_below.end(), in.d) != read_below.end();
     ir::for_each_def(code, in, [&](Operand& d) { std::erase(read_below, d); });
-    if (in.op == Op::Texture) ir::for_each_use(code, in, [&](Operand& o) { if (o >= 0) read_below.push_back(o); });
+    if (in.op == Op::Texture || feeds[at]) ir::for_each_use(code, in, [&](Operand& o) { if (o >= 0) read_below.push_back(o); });
   }
   return feeds;
 }

@@ -7,8 +7,8 @@
 
 namespace pineda::shader {
 
-// First the arithmetic whose result a later lookup of its stretch reads (it may rise above
-// lookups), then every texture lookup, each moves above the instructions before it that neither
+// First the arithmetic whose result a later lookup of its stretch reads, directly or through
+// other such arithmetic (it may rise above lookups), then every texture lookup, each moves above the instructions before it that neither
 // write what it reads nor read or write what it writes, stopping at structure (branches, loops,
 // discard), dynamic register indexing and the previous one of its kind (so both keep their
 // order). Values are

@@ -94,8 +94,9 @@ TEST(EarlyTextures, ALookupStaysBelowWhatReadsOrWritesItsResultOrWritesItsCoordi
 }
 
 // Two lookups with arithmetic between them that neither reads the first one's result nor writes
-// its operands: the first moves down to the second. A third after a use of the second's result
-// rises to just below the second.
+// its operands: that arithmetic feeds the second lookup through two steps (Sin, then Mul), so it
+// rises above the first lookup as far as its operands allow, and the lookups stand side by side.
+// A third after a use of the second's result rises to just below the second.
 TEST(EarlyTextures, LookupsMoveDownToTheNextLookupOfTheirStretch) {
   ir::Code code;
   code.registers = 40;
@@ -103,8 +104,8 @@ TEST(EarlyTextures, LookupsMoveDownToTheNextLookupOfTheirStretch) {
   code.insts.push_back({Op::LoadVarying, 0, ir::kNone, ir::kNone, ir::kNone, 0});
   code.insts.push_back({Op::LoadUniform, 2, ir::kNone, ir::kNone, ir::kNone, 0});
   code.insts.push_back(lookup(code, 2, 0, 0, 10));
-  code.insts.push_back({Op::Sin, 3, 0});           // not arithmetic a lookup reads: it stays
-  code.insts.push_back({Op::Mul, 30, 3, k});       // nor this
+  code.insts.push_back({Op::Sin, 3, 0});           // feeds the second lookup through the Mul:
+  code.insts.push_back({Op::Mul, 30, 3, k});       // both rise to just after the varying
   code.insts.push_back(lookup(code, 2, 0, 30, 14));
   code.insts.push_back({Op::Mul, 31, 14, k});      // reads the second one's result
   code.insts.push_back(lookup(code, 2, 0, 0, 18));
@@ -112,7 +113,7 @@ TEST(EarlyTextures, LookupsMoveDownToTheNextLookupOfTheirStretch) {
   code.insts.push_back({Op::Add, 33, 32, 18});
   code.insts.push_back({Op::StoreColor, ir::kNone, 33, ir::kNone, ir::kNone, 0});
   ASSERT_TRUE(move_texture_lookups_early(code));
-  const std::vector<Op> expected = {Op::LoadVarying, Op::LoadUniform, Op::Sin, Op::Mul, Op::Texture, Op::Texture,
+  const std::vector<Op> expected = {Op::LoadVarying, Op::Sin, Op::Mul, Op::LoadUniform, Op::Texture, Op::Texture,
                                     Op::Texture, Op::Mul, Op::Add, Op::Add, Op::StoreColor};
   EXPECT_EQ(ops(code), expected);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(code.insts[4 + static_cast<size_t>(i)].i0, i);  // in their order
