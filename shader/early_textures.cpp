@@ -47,17 +47,29 @@ bool move_up(ir::Code& code, std::vector<char>& stays_above, size_t at) {
 // with direct feeders only, each lookup stayed behind the last one's sums.)
 std::vector<char> feeds_lookups(ir::Code& code) {
   std::vector<char> feeds(code.insts.size());
-  std::vector<Operand> read_below;
+  // Per register, whether a lookup or a feeder below reads it (a set of flags: a long unrolled
+  // stretch feeds many registers).
+  const size_t registers = static_cast<size_t>(std::max(code.registers, 0));
+  std::vector<char> read_below(registers);
+  std::vector<size_t> flagged;  // the registers once flagged since the last structure
+  auto flag = [&](Operand o) -> char* { return o >= 0 && static_cast<size_t>(o) < registers ? &read_below[static_cast<size_t>(o)] : nullptr; };
   for (size_t at = code.insts.size(); at-- > 0;) {
     Inst& in = code.insts[at];
     if (ir::is_structure(in.op)) {
-      read_below.clear();
+      for (size_t r : flagged) read_below[r] = 0;
+      flagged.clear();
       continue;
     }
-    feeds[at] = ir::op_is_pure_arith(in.op) && in.d >= 0 &&
-                std::find(read_below.begin(), read_below.end(), in.d) != read_below.end();
-    ir::for_each_def(code, in, [&](Operand& d) { std::erase(read_below, d); });
-    if (in.op == Op::Texture || feeds[at]) ir::for_each_use(code, in, [&](Operand& o) { if (o >= 0) read_below.push_back(o); });
+    const char* d = flag(in.d);
+    feeds[at] = ir::op_is_pure_arith(in.op) && d && *d;
+    ir::for_each_def(code, in, [&](Operand& o) { if (char* f = flag(o)) *f = 0; });
+    if (in.op == Op::Texture || feeds[at])
+      ir::for_each_use(code, in, [&](Operand& o) {
+        if (char* f = flag(o); f && !*f) {
+          *f = 1;
+          flagged.push_back(static_cast<size_t>(o));
+        }
+      });
   }
   return feeds;
 }
