@@ -46,7 +46,7 @@ void read_rows(const raster::ColorBuffer& cb, bool opaque, const uint8_t* table,
 
 // read_stored_float_rows' row with AVX2, eight components at a time: each byte k as double(k) *
 // (1 / 255.0) converted to float, which is k / 255 in float for all 256 (the double product's
-// error is far below half a float step; tests/state/color_float_reads_test.cpp checks every
+// error is far below half a float step; tests/driver/osmesa_float_reads_test.cpp checks every
 // byte), without the division, whose throughput bounded the baseline loop. Returns the
 // components done (a multiple of 8).
 #if !defined(__clang__)  // (clang's copies are baseline code: raster/simd_path.h)
