@@ -21,6 +21,15 @@ struct ShaderDraw {
   const float* fragment_uniform_values() const {
     return computed(fragment_uniform_values_, &shader::Program::fragment_uniform_values);
   }
+  // Makes a ShaderDraw that nothing else holds (a pool's: state/programs/shader_draw_pool.h) as
+  // a new one but for its program and uniforms, which the next draw sets: no facing, colour 0,
+  // no stage values yet (their vectors keep their room).
+  void prepare_for_reuse() {
+    two_side = false;
+    color_output = 0;
+    fragment_uniform_values_.ready.store(false, std::memory_order_relaxed);
+    vertex_uniform_values_.ready.store(false, std::memory_order_relaxed);
+  }
   // The same of the vertex shader, computed by the first run that asks: a draw whose uniforms
   // are unchanged shares the last draw's ShaderDraw, and so these (glsl_small_draws computed
   // them per draw).

@@ -394,9 +394,9 @@ std::shared_ptr<const raster::ShaderDraw> shader_draw_for(Context& ctx, const Li
   if (last && last->program == exec.program && last->two_side == two_side && last->uniforms.size() == values.size() &&
       (values.empty() || std::memcmp(last->uniforms.data(), values.data(), values.size() * sizeof(float)) == 0))
     return last;
-  auto draw = std::make_shared<raster::ShaderDraw>();
+  std::shared_ptr<raster::ShaderDraw> draw = ctx.programs.shader_draws.take(values.size());
   draw->program = exec.program;
-  draw->uniforms = values;
+  draw->uniforms.assign(values.begin(), values.end());
   draw->two_side = two_side;
   last = draw;
   return draw;

@@ -13,6 +13,7 @@
 #include "shader/program.h"
 #include "state/buffers/buffer_object.h"
 #include "state/programs/program_objects.h"
+#include "state/programs/shader_draw_pool.h"
 #include "state/programs/vertex_run_scratch.h"
 #include "state/state_key.h"
 
@@ -62,6 +63,7 @@ struct ProgramState {
   // The last draw's program, uniform values and facing: a draw that changed none of them shares
   // it (program_draw.cpp), and then its record (raster::Scene::repeats_current_draw).
   std::shared_ptr<const raster::ShaderDraw> last_shader_draw;
+  ShaderDrawPool shader_draws;  // where the draws' ShaderDraws come from
   std::vector<float> draw_uniforms;  // (scratch)
   // The last draw's whole state (last_shader_draw, the textures its samplers read, ...) and the
   // state it was worked out from: a draw of the same state takes it as it is (program_draw.cpp).
