@@ -166,8 +166,16 @@ void DrawElements(Context& ctx, GLenum mode, GLsizei count, GLenum type, const v
 // Behaves as the Color/Normal/TexCoord/Vertex calls it stands for: the current values change.
 void ArrayElement(Context& ctx, GLint i) {
   if (i < 0) return ctx.record_error(GL_INVALID_VALUE, "i is negative");
+  // The array draws' fetch plan, built again only when a counted call other than this one
+  // changed state since it was (this call changes nothing the plan reads: it sets the current
+  // values of enabled arrays, which the plan reads from the arrays): a glBegin/glEnd of
+  // glArrayElement calls built one per vertex (wireframe's strips).
+  const StateKey key = ctx.state_key();
+  if (key != ctx.vertex_fetch_planned && StateKey{key.context - 1, key.group} != ctx.vertex_fetch_planned)
+    ctx.vertex_fetch_plan.build(ctx);
+  ctx.vertex_fetch_planned = key;
   raster::VertexInput v;
-  fetch_vertex(ctx, size_t(i), v);
+  ctx.vertex_fetch_plan.fetch(size_t(i), v);
   if (ctx.color_array.active()) {
     std::copy(v.color, v.color + 4, ctx.current_color);
     track_color_material(ctx);

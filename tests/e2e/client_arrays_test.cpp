@@ -2,6 +2,7 @@
 // what the same vertices draw in immediate mode.
 #define GL_GLEXT_PROTOTYPES  // the GL_EXT_vertex_array names
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "tests/e2e/support/gl_test.h"
@@ -278,6 +279,65 @@ TEST_F(ClientArraysTest, SparseIndicesEqualImmediateMode) {
   glDrawElements(GL_QUADS, 4, GL_UNSIGNED_INT, indices);
   glLoadIdentity();
   EXPECT_EQ(read_all(), reference);
+}
+
+// glArrayElement fetches with the array draws' plan, kept from call to call while nothing but
+// glArrayElement ran: values that calls between them change (the current colour of a disabled
+// colour array, the vertex array's pointer, the colour array enabled) reach the next element,
+// called directly and compiled into a display list (which takes the elements' values as it
+// compiles).
+TEST_F(ClientArraysTest, ArrayElementSeesWhatChangedSinceTheLastOne) {
+  glDisable(GL_TEXTURE_2D);
+  const GLfloat first[4][2] = {{2.5f, 2.5f}, {6.5f, 2.5f}, {10.5f, 2.5f}, {14.5f, 2.5f}};
+  const GLfloat second[4][2] = {{2.5f, 9.5f}, {6.5f, 9.5f}, {10.5f, 9.5f}, {14.5f, 9.5f}};
+  const GLfloat colors[4][3] = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {1, 1, 1}};
+  glVertexPointer(2, GL_FLOAT, 0, first);
+  glColorPointer(3, GL_FLOAT, 0, colors);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  auto points = [&] {
+    glBegin(GL_POINTS);
+    glColor3f(1, 0, 0);
+    glArrayElement(0);
+    glArrayElement(1);
+    glColor3f(0, 1, 0);
+    glArrayElement(2);
+    glEnd();
+    glVertexPointer(2, GL_FLOAT, 0, second);
+    glBegin(GL_POINTS);
+    glArrayElement(0);
+    glEnd();
+    glEnableClientState(GL_COLOR_ARRAY);
+    glBegin(GL_POINTS);
+    glArrayElement(3);
+    glEnd();
+    glDisableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(2, GL_FLOAT, 0, first);
+  };
+  auto expect_points = [&](const char* how) {
+    const std::vector<uint8_t> all = read_all();
+    auto at = [&](int x, int y) {
+      const uint8_t* p = &all[(size_t(y) * size_t(width()) + size_t(x)) * 4];
+      return std::array<int, 3>{p[0], p[1], p[2]};
+    };
+    EXPECT_EQ(at(2, 2), (std::array<int, 3>{255, 0, 0})) << how;
+    EXPECT_EQ(at(6, 2), (std::array<int, 3>{255, 0, 0})) << how;
+    EXPECT_EQ(at(10, 2), (std::array<int, 3>{0, 255, 0})) << how;
+    EXPECT_EQ(at(2, 9), (std::array<int, 3>{0, 255, 0})) << how;    // the second vertex array
+    EXPECT_EQ(at(14, 9), (std::array<int, 3>{255, 255, 255})) << how;  // the colour array's
+    EXPECT_EQ(at(14, 2), (std::array<int, 3>{0, 0, 0})) << how;
+  };
+  clear_to(0, 0, 0, 0);
+  points();
+  expect_points("called");
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  points();
+  glEndList();
+  clear_to(0, 0, 0, 0);
+  glCallList(list);
+  expect_points("from a list");
+  glDeleteLists(list, 1);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 // Found by the API fuzzer (UBSan: offset applied to a null pointer): with an array buffer bound,
