@@ -18,8 +18,8 @@ class ShaderDrawPool {
  public:
   // A ShaderDraw that nothing else holds, for a program of `uniform_floats` uniform values: its
   // fields as a new one's but its vectors' room and `program`, which the caller sets (one kept
-  // holds its last program until it is used again). Kept only for up to 256 values (1 KiB), so
-  // that what the pool keeps stays a few megabytes.
+  // holds its last program until it is used again). Kept only for up to 256 values (1 KiB): what
+  // the pool keeps is then about what the draws of two full scenes held at once.
   std::shared_ptr<raster::ShaderDraw> take(size_t uniform_floats);
 
  private:
