@@ -74,7 +74,9 @@ __attribute__((target("avx2"))) size_t float_row_avx2(const uint8_t* src, size_t
 void read_stored_float_rows(const raster::ColorBuffer& cb, bool opaque, int x0, int x1, int y0, int y1, uint8_t* first,
                             size_t row_stride) {
   constexpr size_t kChunk = 64;  // components: 16 pixels
+#if !defined(__clang__)
   static const bool avx2 = raster::kCopiesHaveTheirTargets && raster::uses_avx2(raster::simd_path_from_environment());
+#endif
   for (int y = y0; y < y1; ++y) {
     const uint8_t* src = cb.base + cb.stride * y + 4 * static_cast<ptrdiff_t>(x0);
     uint8_t* dst = first + row_stride * static_cast<size_t>(y - y0);
