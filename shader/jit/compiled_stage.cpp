@@ -35,6 +35,9 @@ constexpr int kMaskReg = 7;
 // block: only a shader that exhausts it can tell).
 constexpr uint32_t kIterationBudget = 1u << 18;
 constexpr int kBytesPerValue = kLanes * 4;
+// Values a loop keeps in registers (load_resident_values): the rest leave a library operation the
+// registers it takes (emit_library_ops.h's scratch, its operands and its result).
+constexpr size_t kMaxResident = 10;
 
 // Where the frame's pointers live while the code runs.
 constexpr Gpr kSpill = rbx, kSlots = rbp, kConstants = r12, kBlock = r13, kLanesIn = r14, kUniforms = r15;
@@ -289,7 +292,7 @@ class Generator {
   void flush_registers(int at) {
     for (int r = 0; r < kValueRegisters; ++r) {
       const int v = holder_[static_cast<size_t>(r)];
-      if (v < 0) continue;
+      if (v < 0 || (resident_registers_ >> r & 1)) continue;
       if (dirty_[static_cast<size_t>(v)] && next_read(v, at - 1) >= 0) x_.store(home(v), r);
       release(r);
     }
@@ -309,7 +312,43 @@ class Generator {
     x_.kmovw_store(entry_slot(frame), kMaskReg);
     x_.kmovw_store(cond_slot(frame), kMaskReg);  // a loop frame's running lanes
     stack_.push_back(Op::LoopBegin);
+    load_resident_values(at, end);
     loop_starts_.push_back(x_.size());
+  }
+  // An innermost loop whose body nothing flushes (no call-out that flushes, no inner loop, no
+  // indexed registers): the values its body reads most, up to kMaxResident, stay in registers
+  // from its start to its end, the same ones at the head and at the back edge, instead of going
+  // to their homes at every back edge and coming back (glmark2's loop scene: a five-iteration
+  // loop was a third of its frame). Loaded here, before the head.
+  void load_resident_values(int at, int end) {
+    resident_registers_ = 0;
+    std::vector<int> reads(static_cast<size_t>(values_), 0);  // in the body, by value
+    std::vector<Operand> operand(static_cast<size_t>(values_), ir::kNone);
+    for (int i = at + 1; i < end; ++i) {
+      const ir::Inst& in = insts_[static_cast<size_t>(i)];
+      if (in.op == Op::LoopBegin || in.op == Op::Gather || in.op == Op::Scatter || in.op == Op::Texture ||
+          run_at_[static_cast<size_t>(i)] ||
+          (called_out(in.op) && in.op != Op::Pow && in.op != Op::Exp && in.op != Op::Exp2 && in.op != Op::Sin &&
+           in.op != Op::Cos))
+        return;
+      for (Operand o : sources(in, i)) {
+        ++reads[static_cast<size_t>(id(o))];
+        operand[static_cast<size_t>(id(o))] = o;
+      }
+    }
+    std::vector<std::pair<int, Operand>> read_counts;  // (reads in the body, operand), most first
+    for (int v = 0; v < values_; ++v)
+      if (reads[static_cast<size_t>(v)] > 0) read_counts.push_back({reads[static_cast<size_t>(v)], operand[static_cast<size_t>(v)]});
+    std::stable_sort(read_counts.begin(), read_counts.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    if (read_counts.size() > kMaxResident) read_counts.resize(kMaxResident);
+    uint32_t pinned = 0;
+    for (const auto& read : read_counts) {
+      const int r = use(read.second, at, pinned);
+      // A register value's register may differ from its home from the second iteration on: a
+      // call-out that keeps the registers (a library operation's) must store it first.
+      if (const int v = id(read.second); v < registers_) dirty_[static_cast<size_t>(v)] = true;
+      resident_registers_ |= 1u << r;
+    }
   }
   // Again while any lane runs and the invocation's iteration budget lasts; then the lanes that
   // entered the loop go on.
@@ -329,6 +368,7 @@ class Generator {
     x_.kmovw_load(1, entry_slot(frame));
     stack_.pop_back();
     set_mask(1);
+    resident_registers_ = 0;  // (the values stay held, dirty)
   }
 
   int constant_count() const {
@@ -433,6 +473,7 @@ class Generator {
   }
   // A register for a new value at instruction `at`, not one of `pinned`.
   int allocate(int at, uint32_t pinned) {
+    pinned |= resident_registers_;
     int best = -1;
     long best_score = -1;
     for (int r = 0; r < kValueRegisters; ++r) {
@@ -556,8 +597,7 @@ class Generator {
     if (needs_call) emit_call_out_keeping_registers(at, needs_call);
     finish_sources(at, in);
     const int dv = id(in.d);
-    if (where_[static_cast<size_t>(dv)] >= 0) release(where_[static_cast<size_t>(dv)]);
-    const int d = allocate(at, resident_sources(in, at));
+    const int d = destination(at, in, dv);
     if (old >= 0) x_.vblendmps(d, kMaskReg, old, kMaskedResult);
     else x_.vmovaps(d, kMaskedResult);
     hold(d, dv, at);
@@ -584,7 +624,16 @@ class Generator {
     holder_[static_cast<size_t>(d)] = dv;
     where_[static_cast<size_t>(dv)] = d;
     dirty_[static_cast<size_t>(dv)] = true;
-    if (next_read(dv, at) < 0) release(d);
+    if (next_read(dv, at) < 0 && !resident(d)) release(d);
+  }
+  bool resident(int reg) const { return resident_registers_ >> reg & 1; }
+  // The register for instruction `at`'s new value of dv: a loop-resident value's own, else one
+  // allocated (its old one released first).
+  int destination(int at, const ir::Inst& in, int dv) {
+    const int held = where_[static_cast<size_t>(dv)];
+    if (held >= 0 && resident(held)) return held;
+    if (held >= 0) release(held);
+    return allocate(at, resident_sources(in, at));
   }
 
   void native(int at, const ir::Inst& in) {
@@ -621,8 +670,7 @@ class Generator {
     finish_sources(at, in);
     // The destination's old value ends here; the sequence below writes d last.
     const int dv = id(in.d);
-    if (where_[static_cast<size_t>(dv)] >= 0) release(where_[static_cast<size_t>(dv)]);
-    const int d = allocate(at, resident_sources(in, at));
+    const int d = destination(at, in, dv);
     if (old >= 0) {  // the running lanes take the result, the others keep the old value
       emit(in, kMaskedResult, a, b, c);
       x_.vblendmps(d, kMaskReg, old, kMaskedResult);
@@ -635,7 +683,8 @@ class Generator {
   void finish_sources(int at, const ir::Inst& in) {
     for (Operand o : sources(in, at)) {
       const int v = id(o);
-      if (where_[static_cast<size_t>(v)] >= 0 && next_read(v, at) < 0) release(where_[static_cast<size_t>(v)]);
+      const int r = where_[static_cast<size_t>(v)];
+      if (r >= 0 && next_read(v, at) < 0 && !resident(r)) release(r);
     }
   }
   // The registers holding operands the instruction reads from registers (a gather's or
@@ -792,6 +841,7 @@ class Generator {
   std::vector<std::pair<int, int>> loops_;  // each loop's LoopBegin and LoopEnd
   std::vector<size_t> loop_starts_;         // the open loops' first instructions in the code
   std::array<int, kValueRegisters> holder_;
+  uint32_t resident_registers_ = 0;  // the registers of the loop-resident values (load_resident_values)
   X86Encoder x_;
 };
 

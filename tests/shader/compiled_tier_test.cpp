@@ -234,6 +234,62 @@ TEST_F(CompiledTier, PowNativelyButForBlocksOfBothWays) {
   expect_same_bits(std::move(code), Stage::Fragment, {}, "pow in a branch", block_of_exponents);
 }
 
+// A loop whose body runs nothing that flushes the registers keeps the values it reads most in
+// the same registers from its start to its end (load_resident_values): with more values live
+// across it and read in it than registers, a data-dependent break, a branch, and pow in its body whose call-out
+// (blocks with a lane the emitted code leaves out) stores the registers and loads them back, the
+// same bits as the interpreter.
+TEST_F(CompiledTier, LoopResidentValuesKeepTheInterpretersBits) {
+  ir::Code code;
+  const Operand x = load(code, Stage::Fragment, 0), y = load(code, Stage::Fragment, 1), c = load(code, Stage::Fragment, 2);
+  std::vector<Operand> live;
+  for (int i = 0; i < 32; ++i) {
+    live.push_back(code.new_register());
+    code.insts.push_back(ir::Inst{Op::Mad, live.back(), x, c, code.constant(0.25f * static_cast<float>(i)), 0, 0});
+  }
+  const Operand counter = code.new_register(), test = code.new_register(), acc = code.new_register(),
+                other = code.new_register(), p = code.new_register(), t = code.new_register();
+  code.insts.push_back(ir::Inst{Op::Mov, counter, code.constant(0.0f), ir::kNone, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Mov, acc, x, ir::kNone, ir::kNone, 0, 0});
+  const size_t begin = code.insts.size();
+  code.insts.push_back(ir::Inst{Op::LoopBegin});
+  code.insts.push_back(ir::Inst{Op::Lt, test, counter, code.constant(4.0f), ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::BreakIfNot, ir::kNone, test});
+  code.insts.push_back(ir::Inst{Op::Lt, test, acc, code.constant(3.0f), ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::BreakIfNot, ir::kNone, test});  // some lanes leave early
+  for (int i = 0; i < 10; ++i)  // read here and below: kept in registers
+    code.insts.push_back(ir::Inst{Op::Add, other, other, live[static_cast<size_t>(i)], ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Pow, p, acc, y, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Mad, acc, p, c, live[5], 0, 0});
+  code.insts.push_back(ir::Inst{Op::Fract, t, acc, ir::kNone, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Lt, test, t, code.constant(0.5f), ir::kNone, 0, 0});
+  const size_t branch = code.insts.size();
+  code.insts.push_back(ir::Inst{Op::IfBegin, ir::kNone, test});
+  code.insts.push_back(ir::Inst{Op::Add, other, other, t, ir::kNone, 0, 0});
+  code.insts.push_back(ir::Inst{Op::Sin, live[9], acc, ir::kNone, ir::kNone, 0, 0});
+  for (int i = 0; i < 32; ++i)  // more values read in the body than registers are left
+    code.insts.push_back(ir::Inst{Op::Mad, other, live[static_cast<size_t>(i)], t, other, 0, 0});
+  code.insts[branch].i0 = static_cast<int32_t>(code.insts.size());
+  code.insts.push_back(ir::Inst{Op::EndIf});
+  code.insts.push_back(ir::Inst{Op::ContinuePoint});
+  code.insts.push_back(ir::Inst{Op::Add, counter, counter, code.constant(1.0f), ir::kNone, 0, 0});
+  const size_t end = code.insts.size();
+  code.insts.push_back(ir::Inst{Op::LoopEnd});
+  code.insts[begin].i0 = static_cast<int32_t>(end);
+  code.insts[end].i0 = static_cast<int32_t>(begin + 1);
+  Operand sum = acc;
+  for (Operand v : live) {
+    const Operand next = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Add, next, sum, v, ir::kNone, 0, 0});
+    sum = next;
+  }
+  store(code, Stage::Fragment, sum, 0);
+  store(code, Stage::Fragment, other, 1);
+  store(code, Stage::Fragment, counter, 2);
+  store(code, Stage::Fragment, live[9], 3);
+  expect_same_bits(std::move(code), Stage::Fragment, {}, "loop-resident values", block_of_exponents);
+}
+
 // sin and cos of |x| < 2^17 run natively, a block with a farther, infinite or NaN x in a lane
 // calls out: varying 0 holds angles of every size up to the edge, with multiples of pi/4 and
 // zeros, denormals and the edge itself.
