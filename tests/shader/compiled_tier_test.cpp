@@ -123,6 +123,26 @@ void store(ir::Code& code, Stage kind, Operand value, int index) {
                                 ir::kNone, ir::kNone, index, 0});
 }
 
+// n values x * c + step * i, for more values live at once than registers.
+std::vector<Operand> many_values(ir::Code& code, Operand x, Operand c, int n, float step) {
+  std::vector<Operand> values;
+  for (int i = 0; i < n; ++i) {
+    values.push_back(code.new_register());
+    code.insts.push_back(ir::Inst{Op::Mad, values.back(), x, c, code.constant(step * static_cast<float>(i)), 0, 0});
+  }
+  return values;
+}
+// first + the sum of `values`, in order.
+Operand sum_of(ir::Code& code, Operand first, const std::vector<Operand>& values) {
+  Operand sum = first;
+  for (Operand v : values) {
+    const Operand next = code.new_register();
+    code.insts.push_back(ir::Inst{Op::Add, next, sum, v, ir::kNone, 0, 0});
+    sum = next;
+  }
+  return sum;
+}
+
 TEST_F(CompiledTier, EveryOperationGivesTheInterpretersBits) {
   for (Stage kind : {Stage::Fragment, Stage::Vertex}) {
     for (int o = static_cast<int>(Op::Mov); o < static_cast<int>(Op::Count); ++o) {
@@ -208,11 +228,7 @@ TEST_F(CompiledTier, PowNativelyButForBlocksOfBothWays) {
   // registers: the call-out keeps them.
   ir::Code code;
   const Operand x = load(code, Stage::Fragment, 0), y = load(code, Stage::Fragment, 1), c = load(code, Stage::Fragment, 2);
-  std::vector<Operand> live;
-  for (int i = 0; i < 32; ++i) {
-    live.push_back(code.new_register());
-    code.insts.push_back(ir::Inst{Op::Mad, live.back(), x, c, code.constant(0.5f * static_cast<float>(i)), 0, 0});
-  }
+  const std::vector<Operand> live = many_values(code, x, c, 32, 0.5f);
   const Operand test = code.new_register(), p = code.new_register();
   code.insts.push_back(ir::Inst{Op::Mov, p, c, ir::kNone, ir::kNone, 0, 0});
   code.insts.push_back(ir::Inst{Op::Lt, test, c, code.constant(0.5f), ir::kNone, 0, 0});
@@ -222,13 +238,7 @@ TEST_F(CompiledTier, PowNativelyButForBlocksOfBothWays) {
   code.insts.push_back(ir::Inst{Op::Pow, live[7], x, y, ir::kNone, 0, 0});
   code.insts[begin].i0 = static_cast<int32_t>(code.insts.size());
   code.insts.push_back(ir::Inst{Op::EndIf});
-  Operand sum = p;
-  for (Operand v : live) {
-    const Operand next = code.new_register();
-    code.insts.push_back(ir::Inst{Op::Add, next, sum, v, ir::kNone, 0, 0});
-    sum = next;
-  }
-  store(code, Stage::Fragment, sum, 0);
+  store(code, Stage::Fragment, sum_of(code, p, live), 0);
   store(code, Stage::Fragment, p, 1);
   store(code, Stage::Fragment, live[7], 2);
   expect_same_bits(std::move(code), Stage::Fragment, {}, "pow in a branch", block_of_exponents);
@@ -242,11 +252,7 @@ TEST_F(CompiledTier, PowNativelyButForBlocksOfBothWays) {
 TEST_F(CompiledTier, LoopResidentValuesKeepTheInterpretersBits) {
   ir::Code code;
   const Operand x = load(code, Stage::Fragment, 0), y = load(code, Stage::Fragment, 1), c = load(code, Stage::Fragment, 2);
-  std::vector<Operand> live;
-  for (int i = 0; i < 32; ++i) {
-    live.push_back(code.new_register());
-    code.insts.push_back(ir::Inst{Op::Mad, live.back(), x, c, code.constant(0.25f * static_cast<float>(i)), 0, 0});
-  }
+  const std::vector<Operand> live = many_values(code, x, c, 32, 0.25f);
   const Operand counter = code.new_register(), test = code.new_register(), acc = code.new_register(),
                 other = code.new_register(), p = code.new_register(), t = code.new_register();
   code.insts.push_back(ir::Inst{Op::Mov, counter, code.constant(0.0f), ir::kNone, ir::kNone, 0, 0});
@@ -277,13 +283,7 @@ TEST_F(CompiledTier, LoopResidentValuesKeepTheInterpretersBits) {
   code.insts.push_back(ir::Inst{Op::LoopEnd});
   code.insts[begin].i0 = static_cast<int32_t>(end);
   code.insts[end].i0 = static_cast<int32_t>(begin + 1);
-  Operand sum = acc;
-  for (Operand v : live) {
-    const Operand next = code.new_register();
-    code.insts.push_back(ir::Inst{Op::Add, next, sum, v, ir::kNone, 0, 0});
-    sum = next;
-  }
-  store(code, Stage::Fragment, sum, 0);
+  store(code, Stage::Fragment, sum_of(code, acc, live), 0);
   store(code, Stage::Fragment, other, 1);
   store(code, Stage::Fragment, counter, 2);
   store(code, Stage::Fragment, live[9], 3);
