@@ -57,6 +57,10 @@ bool natively_emitted(Op op) {
   }
 }
 
+// The library operations emitted natively (emit_library_ops.h), calling out only for blocks whose
+// running lanes need what the emitted code leaves out, every register kept around the call.
+bool library_op_kind(Op op) { return op == Op::Pow || op == Op::Exp || op == Op::Exp2 || op == Op::Sin || op == Op::Cos; }
+
 // The operations run by call_out: every value operation and the loads without a native form.
 bool called_out(Op op) {
   return op == Op::Texture || op == Op::LoadFrontFacing ||
@@ -211,7 +215,7 @@ class Generator {
         default:
           break;
       }
-      if (in.op == Op::Pow || in.op == Op::Exp || in.op == Op::Exp2 || in.op == Op::Sin || in.op == Op::Cos)
+      if (library_op_kind(in.op))
         library_op(i, stable_insts + i);
       else if (const FrameTextureRun* run = run_at_[static_cast<size_t>(i)]) {
         call_run(i, *run);
@@ -328,8 +332,7 @@ class Generator {
       const ir::Inst& in = insts_[static_cast<size_t>(i)];
       if (in.op == Op::LoopBegin || in.op == Op::Gather || in.op == Op::Scatter || in.op == Op::Texture ||
           run_at_[static_cast<size_t>(i)] ||
-          (called_out(in.op) && in.op != Op::Pow && in.op != Op::Exp && in.op != Op::Exp2 && in.op != Op::Sin &&
-           in.op != Op::Cos))
+          (called_out(in.op) && !library_op_kind(in.op)))
         return;
       for (Operand o : sources(in, i)) {
         ++reads[static_cast<size_t>(id(o))];

@@ -11,7 +11,7 @@ constexpr int kLooks = 4;
 }  // namespace
 
 std::shared_ptr<raster::ShaderDraw> ShaderDrawPool::take(size_t uniform_floats) {
-  if (uniform_floats > 256) return std::make_shared<raster::ShaderDraw>();
+  if (uniform_floats > kMaxKeptUniformFloats) return std::make_shared<raster::ShaderDraw>();
   for (int look = 0; look < kLooks && !kept_.empty(); ++look) {
     std::shared_ptr<raster::ShaderDraw>& kept = kept_[next_];
     next_ = (next_ + 1) % kept_.size();

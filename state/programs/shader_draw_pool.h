@@ -18,11 +18,12 @@ class ShaderDrawPool {
  public:
   // A ShaderDraw that nothing else holds, for a program of `uniform_floats` uniform values: its
   // fields as a new one's but its vectors' room and `program`, which the caller sets (one kept
-  // holds its last program until it is used again). Kept only for up to 256 values (1 KiB): what
-  // the pool keeps is then about what the draws of two full scenes held at once.
+  // holds its last program until it is used again). Kept only for up to kMaxKeptUniformFloats
+  // values: what the pool keeps is then about what the draws of two full scenes held at once.
   std::shared_ptr<raster::ShaderDraw> take(size_t uniform_floats);
 
  private:
+  static constexpr size_t kMaxKeptUniformFloats = 256;  // 1 KiB
   // Kept: the ShaderDraws of the draws two scenes hold (Scene's kMaxDraws each) and some more.
   // Draws let theirs go about in the order they were made, so the next one looked at was taken
   // about kept_.size() draws ago.
