@@ -27,26 +27,35 @@ bool RecordPool::is_piece(size_t bytes) const {
 }
 
 void* RecordPool::take(size_t bytes) {
+  void* piece = nullptr;
   {
     std::lock_guard lock(mutex_);
     if (piece_bytes_ == 0) piece_bytes_ = piece_size(bytes);
     if (is_piece(bytes)) {
       if (free_.empty()) add_slab();
-      void* piece = free_.back();
+      piece = free_.back();
       free_.pop_back();
-      return piece;
     }
   }
-  return ::operator new(bytes, std::align_val_t{kPieceAlignment});
+  if (!piece) piece = ::operator new(bytes, std::align_val_t{kPieceAlignment});
+  references_.fetch_add(1, std::memory_order_relaxed);  // (the taker holds one already)
+  return piece;
 }
 
 void RecordPool::give_back(void* piece, size_t bytes) noexcept {
   if (!piece) return;
+  bool kept;
   {
     std::lock_guard lock(mutex_);
-    if (is_piece(bytes)) return free_.push_back(piece);
+    kept = is_piece(bytes);
+    if (kept) free_.push_back(piece);
   }
-  ::operator delete(piece, std::align_val_t{kPieceAlignment});
+  if (!kept) ::operator delete(piece, std::align_val_t{kPieceAlignment});
+  drop_reference();
+}
+
+void RecordPool::drop_reference() noexcept {
+  if (references_.fetch_sub(1, std::memory_order_acq_rel) == 1) delete this;
 }
 
 void RecordPool::add_slab() {

@@ -4,8 +4,11 @@
 // the huge blocks and this pool, 16.9 with both, in runs side by side). A slab after the first
 // is a huge block (huge_blocks.h). Records released on any thread (a band's scene drops its
 // commands on its own) return to the pool; the pool lives until its renderer and the last record
-// are gone.
+// are gone: its owner's handle and each piece taken hold a reference. (The allocator held a
+// shared_ptr to the pool, whose copies inside allocate_shared were three atomic increments and
+// decrements a record once the pool's threads exist: glsl_many_draws 5% slower with two threads.)
 #pragma once
+#include <atomic>
 #include <cstddef>
 #include <memory>
 #include <mutex>
@@ -19,8 +22,7 @@ namespace pineda::raster {
 
 class RecordPool {
  public:
-  RecordPool() = default;
-  ~RecordPool();
+  RecordPool() = default;  // with its owner's reference
   RecordPool(const RecordPool&) = delete;
   RecordPool& operator=(const RecordPool&) = delete;
 
@@ -28,8 +30,11 @@ class RecordPool {
   // size (set by the first request), else from operator new. Throws std::bad_alloc.
   void* take(size_t bytes);
   void give_back(void* piece, size_t bytes) noexcept;
+  // The owner's reference goes (RecordPoolHandle); the pool goes with the last reference.
+  void drop_reference() noexcept;
 
  private:
+  ~RecordPool();
   bool is_piece(size_t bytes) const;  // these and the rest: with mutex_ held
   void add_slab();
 
@@ -37,6 +42,7 @@ class RecordPool {
     void* block;
     bool huge;
   };
+  std::atomic<size_t> references_{1};
   std::mutex mutex_;
   size_t piece_bytes_ = 0;
   size_t pieces_ = 0;  // in all slabs; free_ has room for all, so that give_back never allocates
@@ -44,13 +50,21 @@ class RecordPool {
   std::vector<Slab> slabs_;
 };
 
-// The allocator allocate_shared uses for a record and its count: the pool's pieces.
+struct RecordPoolRelease {
+  void operator()(RecordPool* pool) const noexcept { pool->drop_reference(); }
+};
+// The renderer's hold on its pool.
+using RecordPoolHandle = std::unique_ptr<RecordPool, RecordPoolRelease>;
+inline RecordPoolHandle make_record_pool() { return RecordPoolHandle(new RecordPool); }
+
+// The allocator allocate_shared uses for a record and its count: the pool's pieces (each piece
+// holds a reference to the pool; the allocator's copies hold none).
 template <typename T>
 struct RecordPoolAllocator {
   using value_type = T;
-  std::shared_ptr<RecordPool> pool;
+  RecordPool* pool;
 
-  explicit RecordPoolAllocator(std::shared_ptr<RecordPool> p) noexcept : pool(std::move(p)) {}
+  explicit RecordPoolAllocator(RecordPool* p) noexcept : pool(p) {}
   template <typename U>
   RecordPoolAllocator(const RecordPoolAllocator<U>& other) noexcept : pool(other.pool) {}
 
@@ -66,8 +80,7 @@ struct RecordPoolAllocator {
 };
 
 // A shared record in `pool`'s memory.
-inline std::shared_ptr<const DrawRecord> make_pooled_record(const std::shared_ptr<RecordPool>& pool,
-                                                             DrawRecord&& record) {
+inline std::shared_ptr<const DrawRecord> make_pooled_record(RecordPool* pool, DrawRecord&& record) {
   return std::allocate_shared<const DrawRecord>(RecordPoolAllocator<DrawRecord>(pool), std::move(record));
 }
 

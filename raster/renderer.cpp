@@ -61,7 +61,7 @@ struct Renderer::Impl {
   std::chrono::steady_clock::time_point last_small_hand_off;
   bool timing_small = false, last_small_shared = false;
   ZeroedStore<PreparedWindow> windows;  // room for a large draw's vertices
-  std::shared_ptr<RecordPool> records = std::make_shared<RecordPool>();  // Scene::begin_draw's
+  RecordPoolHandle records = make_record_pool();  // Scene::begin_draw's
   WindowCache window_cache;  // the draws' post-transform cache (the binning thread's)
   std::vector<Plane> varying_planes;  // GeometryStage's
   PrimSetup filled_triangle;  // GeometryStage's
@@ -110,7 +110,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
       record.routine = reference_plane_quads;
       record.sample_routine = nullptr;  // multisampled: the reference routine on each sample plane
     }
-    scene.begin_draw(make_pooled_record(impl_->records, std::move(record)), impl_->reference ? nullptr : &state);
+    scene.begin_draw(make_pooled_record(impl_->records.get(), std::move(record)), impl_->reference ? nullptr : &state);
     impl_->geometry.reset();
   }
   // Kept for the next draw while it repeats this draw's record (the only one begin_draw made).

@@ -2,8 +2,9 @@
 // values (the draw runs later on worker threads while the application changes them).
 #pragma once
 #include <atomic>
+#include <cstdint>
 #include <memory>
-#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "shader/program.h"
@@ -27,8 +28,8 @@ struct ShaderDraw {
   void prepare_for_reuse() {
     two_side = false;
     color_output = 0;
-    fragment_uniform_values_.ready.store(false, std::memory_order_relaxed);
-    vertex_uniform_values_.ready.store(false, std::memory_order_relaxed);
+    fragment_uniform_values_.state.store(kNotComputed, std::memory_order_relaxed);
+    vertex_uniform_values_.state.store(kNotComputed, std::memory_order_relaxed);
   }
   // The same of the vertex shader, computed by the first run that asks: a draw whose uniforms
   // are unchanged shares the last draw's ShaderDraw, and so these (glsl_small_draws computed
@@ -38,10 +39,10 @@ struct ShaderDraw {
   }
 
  private:
+  enum : uint8_t { kNotComputed, kComputing, kComputed };
   // A copy (a draw that changes some uniforms) starts without values.
   struct UniformValues {
-    std::mutex mutex;
-    std::atomic<bool> ready{false};
+    std::atomic<uint8_t> state{kNotComputed};
     std::vector<float> values;
     UniformValues() = default;
     UniformValues(const UniformValues&) {}
@@ -51,14 +52,19 @@ struct ShaderDraw {
 
   using ComputeValues = void (shader::Program::*)(const float* uniforms, std::vector<float>& out) const;
   const float* computed(UniformValues& values, ComputeValues compute) const {
-    // Once computed, a flag read (every quad row asks). A mutex, not std::call_once: glibc's
+    // Once computed, a load (every quad row asks). The first asker claims the computing with
+    // one compare-and-swap; one that finds it claimed waits for it. Not std::call_once: glibc's
     // pthread_once ends every first call with a futex wake system call, once per draw here
-    // (2-3% of glmark2's ideas scene, many small draws, under this VM's costly system calls).
-    if (!values.ready.load(std::memory_order_acquire)) {
-      const std::lock_guard lock(values.mutex);
-      if (!values.ready.load(std::memory_order_relaxed)) {
+    // (2-3% of glmark2's ideas scene, many small draws, under this VM's costly system calls);
+    // not a mutex: its lock and unlock were two atomic operations on a line the pool's threads
+    // had written, about 3% of glsl_many_draws' calling thread with two threads.
+    if (values.state.load(std::memory_order_acquire) != kComputed) {
+      uint8_t expected = kNotComputed;
+      if (values.state.compare_exchange_strong(expected, kComputing, std::memory_order_acquire)) {
         if (program) (*program.*compute)(uniforms.data(), values.values);
-        values.ready.store(true, std::memory_order_release);
+        values.state.store(kComputed, std::memory_order_release);
+      } else {
+        while (values.state.load(std::memory_order_acquire) != kComputed) std::this_thread::yield();
       }
     }
     return values.values.empty() ? nullptr : values.values.data();
