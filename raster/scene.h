@@ -44,6 +44,11 @@ class Scene {
   // `state` and `fades_points` (its other inputs, the framebuffer and the SIMD path, do not
   // change within a scene): its made_from had the same bytes.
   bool repeats_current_draw(const DrawState& state, bool fades_points) const;
+  // Whether a programmable draw of `state` differs from the current draw's made_from only in its
+  // ShaderDraw, of the same program, facing and colour output (its uniforms changed): the record
+  // that make_draw_record would make is the current one with `state.shader`, where a record
+  // depends on the ShaderDraw only through those.
+  bool repeats_current_draw_but_uniforms(const DrawState& state, bool fades_points) const;
   // A programmable draw's primitives bring their varying planes (`count` of them, copied into
   // the scene with a primitive that touches a tile).
   void add_prim(const PrimSetup& prim, const Plane* varying_planes = nullptr, int count = 0);
