@@ -39,7 +39,7 @@ class GeometryStage final : public PrimitiveSink {
   bool active() const { return active_; }
 
   // The scene's current record is a new one that differs from this stage's only in its
-  // ShaderDraw (Scene::repeats_current_draw_but_uniforms): the stage goes on with it.
+  // ShaderDraw (Scene::repeat_of_current_draw): the stage goes on with it.
   void follow_new_uniforms() { shader_ = scene_.current_draw().state.shader.get(); }
 
   // Ends the draw's assembly: a triangle held back as half of a rectangle goes to the scene.

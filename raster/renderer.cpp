@@ -102,18 +102,18 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   // A draw of the current draw's state (nothing changed since the last call) goes on with its
   // record: making and releasing one was a fifth of a one-triangle draw's time.
   const bool fades_points = impl_->fb.samples > 1 && may_fade_points(state, mode);
-  const bool repeats = scene.repeats_current_draw(state, fades_points);
+  const DrawRepeat repeat = scene.repeat_of_current_draw(state, fades_points);
   // Only the uniforms changed (a uniform set between draws): the current record with the draw's
   // ShaderDraw and the same geometry stage, without working the rest out again (making the
   // record and the stage was a seventh of glsl_many_draws' frame). Not where records are made
   // per sample or per draw buffer: those hold the ShaderDraw too.
-  if (!repeats && impl_->fb.samples == 1 && impl_->fb.color_targets <= 1 && !impl_->reference &&
-      scene.repeats_current_draw_but_uniforms(state, fades_points)) {
+  if (repeat == DrawRepeat::ButUniforms && impl_->fb.samples == 1 && impl_->fb.color_targets <= 1 &&
+      !impl_->reference) {
     DrawRecord record = scene.current_draw();
     record.state.shader = state.shader;
     scene.begin_draw(make_pooled_record(impl_->records.get(), std::move(record)), &state);
     if (impl_->geometry) impl_->geometry->follow_new_uniforms();
-  } else if (!repeats) {
+  } else if (repeat != DrawRepeat::Whole) {
     DrawRecord record = make_draw_record(state, impl_->fb, impl_->simd, fades_points);
     if (impl_->fb.samples > 1) prepare_sample_draws(record, impl_->fb, impl_->simd);
     if (impl_->reference && !state.shader) {

@@ -62,23 +62,22 @@ void Scene::reset(const Framebuffer& fb) {
   planes_used_ = 0;
 }
 
-bool Scene::repeats_current_draw(const DrawState& state, bool fades_points) const {
-  return current_repeatable_ && !draws_.empty() && draws_.back()->fades_points == fades_points &&
-         std::memcmp(current_state_.data(), static_cast<const void*>(&state), sizeof(DrawState)) == 0;
-}
-
-bool Scene::repeats_current_draw_but_uniforms(const DrawState& state, bool fades_points) const {
-  if (!current_repeatable_ || draws_.empty() || draws_.back()->fades_points != fades_points || !state.shader) return false;
-  const ShaderDraw* current = draws_.back()->state.shader.get();
-  if (!current || current->program != state.shader->program || current->two_side != state.shader->two_side ||
-      current->color_output != state.shader->color_output)
-    return false;
-  // The bytes before and after the shader's pointer.
+DrawRepeat Scene::repeat_of_current_draw(const DrawState& state, bool fades_points) const {
+  if (!current_repeatable_ || draws_.empty() || draws_.back()->fades_points != fades_points) return DrawRepeat::No;
+  // The bytes before and after the shader's pointer, then the pointer.
   const auto* bytes = reinterpret_cast<const unsigned char*>(&state);
   const size_t at = static_cast<size_t>(reinterpret_cast<const unsigned char*>(&state.shader) - bytes);
   const size_t after = at + sizeof state.shader;
-  return std::memcmp(current_state_.data(), bytes, at) == 0 &&
-         std::memcmp(current_state_.data() + after, bytes + after, sizeof(DrawState) - after) == 0;
+  if (std::memcmp(current_state_.data(), bytes, at) != 0 ||
+      std::memcmp(current_state_.data() + after, bytes + after, sizeof(DrawState) - after) != 0)
+    return DrawRepeat::No;
+  if (std::memcmp(current_state_.data() + at, bytes + at, sizeof state.shader) == 0) return DrawRepeat::Whole;
+  const ShaderDraw* current = draws_.back()->state.shader.get();
+  const ShaderDraw* next = state.shader.get();
+  return current && next && current->program == next->program && current->two_side == next->two_side &&
+                 current->color_output == next->color_output
+             ? DrawRepeat::ButUniforms
+             : DrawRepeat::No;
 }
 
 void Scene::begin_draw(std::shared_ptr<const DrawRecord> draw, const DrawState* made_from) {

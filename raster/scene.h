@@ -18,6 +18,8 @@ namespace pineda::raster {
 
 class WorkerPool;
 
+enum class DrawRepeat { No, Whole, ButUniforms };
+
 class Scene {
  public:
   // Drops everything queued and bins for `fb` from now on.
@@ -42,13 +44,11 @@ class Scene {
   const DrawRecord& current_draw() const { return *draws_.back(); }
   // Whether the current draw's record is the one make_draw_record would make for a draw of
   // `state` and `fades_points` (its other inputs, the framebuffer and the SIMD path, do not
-  // change within a scene): its made_from had the same bytes.
-  bool repeats_current_draw(const DrawState& state, bool fades_points) const;
-  // Whether a programmable draw of `state` differs from the current draw's made_from only in its
-  // ShaderDraw, of the same program, facing and colour output (its uniforms changed): the record
-  // that make_draw_record would make is the current one with `state.shader`, where a record
-  // depends on the ShaderDraw only through those.
-  bool repeats_current_draw_but_uniforms(const DrawState& state, bool fades_points) const;
+  // change within a scene): its made_from had the same bytes (Whole). ButUniforms: a
+  // programmable draw whose state differs only in its ShaderDraw, of the same program, facing and
+  // colour output (its uniforms changed): the record make_draw_record would make is the current
+  // one with `state.shader`, where a record depends on the ShaderDraw only through those.
+  DrawRepeat repeat_of_current_draw(const DrawState& state, bool fades_points) const;
   // A programmable draw's primitives bring their varying planes (`count` of them, copied into
   // the scene with a primitive that touches a tile).
   void add_prim(const PrimSetup& prim, const Plane* varying_planes = nullptr, int count = 0);

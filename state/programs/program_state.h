@@ -61,7 +61,7 @@ struct ProgramState {
   // The vertex shader's varyings of the current draw (scratch).
   std::vector<float> draw_varyings;
   // The last draw's program, uniform values and facing: a draw that changed none of them shares
-  // it (program_draw.cpp), and then its record (raster::Scene::repeats_current_draw).
+  // it (program_draw.cpp), and then its record (raster::Scene::repeat_of_current_draw).
   std::shared_ptr<const raster::ShaderDraw> last_shader_draw;
   ShaderDrawPool shader_draws;  // where the draws' ShaderDraws come from
   std::vector<float> draw_uniforms;  // (scratch)

@@ -510,7 +510,7 @@ TEST_F(MultisampleTest, PointFadeUnderTheThresholdSize) {
 }
 
 // A point drawn right after a rectangle of the same state fades all the same: the rectangle's
-// draw record (made without fading) does not serve it (Scene::repeats_current_draw).
+// draw record (made without fading) does not serve it (Scene::repeat_of_current_draw).
 TEST_F(MultisampleTest, APointAfterARectangleOfTheSameStateStillFades) {
   glPointParameterf(GL_POINT_FADE_THRESHOLD_SIZE, 2.0f);
   glColor4f(1, 1, 1, 1);

@@ -1,5 +1,5 @@
 // A draw whose only change since the last is a uniform goes on with the last draw's record,
-// with its own ShaderDraw (Scene::repeats_current_draw_but_uniforms), and its geometry stage
+// with its own ShaderDraw (Scene::repeat_of_current_draw), and its geometry stage
 // with it; a draw that changes a uniform and anything else (the program, blending, two-sided
 // colours) gets a record of its own. Each cell of the surface is a quad of two triangles
 // drawn after the uniform changes, and shows which record drew it.

@@ -291,7 +291,7 @@ TEST(Scene, DrawStateAndVerticesAreCopied) {
     }
 }
 
-// Draws of one DrawState in a row go on with one record (Scene::repeats_current_draw): each
+// Draws of one DrawState in a row go on with one record (Scene::repeat_of_current_draw): each
 // still draws its own primitives, and a change of the state in place, as a context makes it,
 // reaches the next draw, as does the change back.
 TEST(Scene, DrawsOfAnUnchangedStateDrawTheirOwnPrimitivesAndAChangeReachesTheNext) {
