@@ -77,11 +77,43 @@ __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) bool masks_of_four
   return true;
 }
 
+// An area within four quads by four from (x0, y0) (a dense mesh's triangle of a dozen pixels):
+// each quad row's 16 pixels in one vector of 32-bit lanes, lane 4q + i for pixel i of quad q, each
+// row the previous one's values plus two rows' steps. Exact under masks_of_four_quads' condition,
+// for offsets up to 7: false then, and nothing written.
+__attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) bool masks_of_quad_rows(
+    const PrimSetup& p, const PixelRect& area, int x0, int y0, uint8_t (*masks)[kSmallAreaRowBytes]) {
+  constexpr int64_t kLimit = int64_t{1} << 31;
+  const I16 dx = {0, 1, 0, 1, 2, 3, 2, 3, 4, 5, 4, 5, 6, 7, 6, 7};
+  const I16 dy = {0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1};
+  I16 values[3], two_rows[3];
+  for (int e = 0; e < 3; ++e) {
+    const EdgeFunction& edge = p.edges[e];
+    const int64_t v = edge_at(edge, x0, y0), sx = edge.a * kSubpixelOne, sy = edge.b * kSubpixelOne;
+    if (std::llabs(v) + 7 * (std::llabs(sx) + std::llabs(sy)) >= kLimit) return false;
+    values[e] = static_cast<int32_t>(v) + dx * static_cast<int32_t>(sx) + dy * static_cast<int32_t>(sy);
+    two_rows[e] = I16{} + 2 * static_cast<int32_t>(sy);
+  }
+  const I16 columns = (dx >= area.x0 - x0) & (dx < area.x1 - x0);
+  for (int y = y0, r = 0; y < area.y1; y += 2, ++r) {
+    const I16 rows = (dy + (y - y0) >= area.y0 - y0) & (dy + (y - y0) < area.y1 - y0);
+    const I16 in_area = columns & rows;
+    __mmask16 inside = _mm512_test_epi32_mask(reinterpret_cast<__m512i>(in_area), reinterpret_cast<__m512i>(in_area));
+    for (int e = 0; e < 3; ++e) {
+      inside &= _mm512_cmpge_epi32_mask(reinterpret_cast<__m512i>(values[e]), _mm512_setzero_si512());
+      values[e] += two_rows[e];
+    }
+    for (int q = 0; q < 4; ++q) masks[r][q] = static_cast<uint8_t>((inside >> (4 * q)) & 15);
+  }
+  return true;
+}
+
 __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) int masks_avx512(const PrimSetup& p,
                                                                               const PixelRect& area,
                                                                               uint8_t (*masks)[kSmallAreaRowBytes]) {
   const int x0 = area.x0 & ~1, y0 = area.y0 & ~1, count = count_of(area);
   if (area.x1 - x0 <= 4 && area.y1 - y0 <= 4 && masks_of_four_quads(p, area, x0, y0, masks)) return count;
+  if (area.x1 - x0 <= 8 && area.y1 - y0 <= 8 && masks_of_quad_rows(p, area, x0, y0, masks)) return count;
   const L8 quad = {0, 1, 2, 3, 4, 5, 6, 7};
   uint64_t columns[2] = {};  // the area's column bits of each quad, a byte each
   for (int q = 0; q < count; ++q) columns[q / 8] |= uint64_t{column_bits(x0 + 2 * q, area)} << (8 * (q % 8));

@@ -1,7 +1,8 @@
 // The quad masks of a triangle over a small area (at most kSmallAreaSide pixels each way, inside
 // one tile): each quad's pixels whose centres lie inside all three edges and inside the area, for
 // every quad row of the area. Most of a dense mesh's triangles are rasterized this way
-// (tile_raster.cpp). A scalar copy and an AVX-512 one (eight quads a vector); the same masks.
+// (tile_raster.cpp). A scalar copy and an AVX-512 one (an area of two quads by two in one
+// vector, of four by four in a vector per quad row, else eight quads a vector); the same masks.
 #pragma once
 #include <cstdint>
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "raster/raster_limits.h"
 #include "raster/setup.h"
@@ -74,28 +75,46 @@ TEST(SmallAreaMasks, EveryCopySetsThePixelsInsideTheEdgesAndTheArea) {
   EXPECT_GT(pixels, 150000) << pixels;  // the areas are mostly covered in part, often wholly
 }
 
-// Areas of at most two quads by two (the AVX-512 copy's one-vector case): triangles of a few
-// pixels, whose edge values there fit 32 bits, and corners of triangles thousands of pixels wide,
-// whose do not (the copy falls back to 64-bit lanes).
-TEST(SmallAreaMasks, AreasOfFourQuadsNearAndFarFromTheVertices) {
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> pos(1000.0, 1040.0), small(-3.0, 3.0), large(-4000.0, 4000.0);
-  std::uniform_int_distribution<int> side(1, 4), start(-2, 2);
+// Random areas of `sides` pixels each way from near a triangle's first vertex, the other two
+// within `near` pixels of it on odd trials (edge values that fit 32 bits there) and within 4000
+// on even ones (they do not: the AVX-512 copy falls back to 64-bit lanes): every copy's masks
+// against the definition. Returns the areas and the pixels set.
+std::pair<int, int> compare_areas_near_and_far(unsigned seed, double near, std::uniform_int_distribution<int> sides,
+                                               std::uniform_int_distribution<int> start) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> pos(1000.0, 1040.0), small(-near, near), large(-4000.0, 4000.0);
   int pixels = 0, areas = 0;
   for (int trial = 0; trial < 20000; ++trial) {
     const double cx = pos(rng), cy = pos(rng);
     auto offset = [&]() { return trial % 2 ? small(rng) : large(rng); };
     const PrimSetup p = triangle(cx, cy, cx + offset(), cy + offset(), cx + offset(), cy + offset());
     const int ax = static_cast<int>(cx) + start(rng), ay = static_cast<int>(cy) + start(rng);
-    const PixelRect area = intersect(p.bounds, PixelRect{ax, ay, ax + side(rng), ay + side(rng)});
+    const PixelRect area = intersect(p.bounds, PixelRect{ax, ay, ax + sides(rng), ay + sides(rng)});
     if (area.empty()) continue;
     const int scalar = covered(p, area, SimdPath::Baseline);
     EXPECT_EQ(covered(p, area, SimdPath::Best), scalar);
     pixels += scalar;
     ++areas;
   }
+  return {areas, pixels};
+}
+
+// Areas of at most two quads by two (the AVX-512 copy's one-vector case): triangles of a few
+// pixels and corners of triangles thousands of pixels wide.
+TEST(SmallAreaMasks, AreasOfFourQuadsNearAndFarFromTheVertices) {
+  const auto [areas, pixels] = compare_areas_near_and_far(5, 3.0, std::uniform_int_distribution<int>(1, 4),
+                                                          std::uniform_int_distribution<int>(-2, 2));
   EXPECT_GT(areas, 10000);
   EXPECT_GT(pixels, 15000) << pixels;
+}
+
+// Areas of at most four quads by four (the AVX-512 copy's vector per quad row): triangles of a
+// dozen pixels and corners of triangles thousands of pixels wide.
+TEST(SmallAreaMasks, AreasOfFourQuadRowsNearAndFarFromTheVertices) {
+  const auto [areas, pixels] = compare_areas_near_and_far(7, 7.0, std::uniform_int_distribution<int>(5, 8),
+                                                          std::uniform_int_distribution<int>(-3, 3));
+  EXPECT_GT(areas, 10000);
+  EXPECT_GT(pixels, 100000) << pixels;
 }
 
 // A right triangle over a 16x16 area from odd corners (9 quad rows of 9 quads), its slanted side
