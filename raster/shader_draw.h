@@ -61,10 +61,17 @@ struct ShaderDraw {
     if (values.state.load(std::memory_order_acquire) != kComputed) {
       uint8_t expected = kNotComputed;
       if (values.state.compare_exchange_strong(expected, kComputing, std::memory_order_acquire)) {
-        if (program) (*program.*compute)(uniforms.data(), values.values);
+        try {
+          if (program) (*program.*compute)(uniforms.data(), values.values);
+        } catch (...) {  // (std::bad_alloc) the next asker tries again; none waits forever
+          values.state.store(kNotComputed, std::memory_order_release);
+          throw;
+        }
         values.state.store(kComputed, std::memory_order_release);
       } else {
-        while (values.state.load(std::memory_order_acquire) != kComputed) std::this_thread::yield();
+        // Until computed, or given up (then this one computes, as the first asker would have).
+        while ((expected = values.state.load(std::memory_order_acquire)) == kComputing) std::this_thread::yield();
+        if (expected != kComputed) return computed(values, compute);
       }
     }
     return values.values.empty() ? nullptr : values.values.data();
