@@ -100,8 +100,8 @@ __attribute__((target("avx512f,avx512bw,avx512vl,avx512dq"))) bool masks_of_quad
     const I16 in_area = columns & rows;
     __mmask16 inside = _mm512_test_epi32_mask(reinterpret_cast<__m512i>(in_area), reinterpret_cast<__m512i>(in_area));
     for (int e = 0; e < 3; ++e) {
+      if (r > 0) values[e] += two_rows[e];  // (not past the last row: there it might not fit)
       inside &= _mm512_cmpge_epi32_mask(reinterpret_cast<__m512i>(values[e]), _mm512_setzero_si512());
-      values[e] += two_rows[e];
     }
     for (int q = 0; q < 4; ++q) masks[r][q] = static_cast<uint8_t>((inside >> (4 * q)) & 15);
   }
