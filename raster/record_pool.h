@@ -6,7 +6,7 @@
 // commands on its own) return to the pool; the pool lives until its renderer and the last record
 // are gone: its owner's handle and each piece taken hold a reference. (The allocator held a
 // shared_ptr to the pool, whose copies inside allocate_shared were three atomic increments and
-// decrements a record once the pool's threads exist: glsl_many_draws 5% slower with two threads.)
+// decrements a record once the pool's threads exist: glsl_many_draws 4% slower with two threads.)
 #pragma once
 #include <atomic>
 #include <cstddef>

@@ -105,7 +105,7 @@ void Renderer::draw(const DrawState& state, Primitive mode, std::span<const Clip
   const DrawRepeat repeat = scene.repeat_of_current_draw(state, fades_points);
   // Only the uniforms changed (a uniform set between draws): the current record with the draw's
   // ShaderDraw and the same geometry stage, without working the rest out again (making the
-  // record and the stage was a seventh of glsl_many_draws' frame). Not where records are made
+  // record and the stage was a tenth of glsl_many_draws' frame). Not where records are made
   // per sample or per draw buffer: those hold the ShaderDraw too.
   if (repeat == DrawRepeat::ButUniforms && impl_->fb.samples == 1 && impl_->fb.color_targets <= 1 &&
       !impl_->reference) {
